@@ -1,0 +1,73 @@
+#include <teem/biff.h>
+#include <teem/nrrd.h>
+
+#include <cstdlib>
+#include <stdexcept>
+
+#include "io/atomic_file.h"
+#include "io/writers.h"
+
+namespace tg::io {
+namespace {
+
+std::string teemError() {
+  char* e = biffGetDone(NRRD);
+  std::string s = e ? e : "unknown Teem error";
+  std::free(e);
+  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
+  for (char& c : s)
+    if (c == '\n') c = ' ';
+  return s;
+}
+
+}  // namespace
+
+void writeNrrd(const TensorField& f, const std::string& path, const double m[9]) {
+  if (!f.grid) throw std::runtime_error("writeNrrd: " + path + ": field has no grid");
+  const GridInfo& g = *f.grid;
+  const std::size_t n = std::size_t(g.dims[0]) * g.dims[1] * g.dims[2];
+  if (n != f.size()) throw std::runtime_error("writeNrrd: " + path + ": grid is incomplete");
+  // Into the measurement frame: D_stored = Mᵀ D_world M.
+  std::vector<float> data(6 * n);
+  for (std::size_t i = 0; i < n; ++i) {
+    const float* t = &f.tensors[6 * i];
+    const double d[3][3] = {{t[0], t[1], t[2]}, {t[1], t[3], t[4]}, {t[2], t[4], t[5]}};
+    double s[3][3] = {};
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c)
+        for (int a = 0; a < 3; ++a)
+          for (int b = 0; b < 3; ++b) s[r][c] += m[a * 3 + r] * d[a][b] * m[b * 3 + c];
+    const double out[6] = {s[0][0], s[0][1], s[0][2], s[1][1], s[1][2], s[2][2]};
+    for (int k = 0; k < 6; ++k) data[6 * i + k] = float(out[k]);
+  }
+  Nrrd* nrrd = nrrdNew();
+  auto done = [&] { nrrdNix(nrrd); };
+  const std::size_t sizes[4] = {6, std::size_t(g.dims[0]), std::size_t(g.dims[1]), std::size_t(g.dims[2])};
+  if (nrrdWrap_nva(nrrd, data.data(), nrrdTypeFloat, 4, sizes) || nrrdSpaceSet(nrrd, nrrdSpaceRightAnteriorSuperior) ||
+      nrrdSpaceOriginSet(nrrd, g.origin)) {
+    done();
+    throw std::runtime_error("writeNrrd: " + path + ": " + teemError());
+  }
+  const int kinds[4] = {nrrdKind3DSymMatrix, nrrdKindSpace, nrrdKindSpace, nrrdKindSpace};
+  nrrdAxisInfoSet_nva(nrrd, nrrdAxisInfoKind, kinds);
+  double dirs[NRRD_DIM_MAX][NRRD_SPACE_DIM_MAX];
+  for (int k = 0; k < 3; ++k) dirs[0][k] = AIR_NAN;
+  for (int a = 0; a < 3; ++a)
+    for (int k = 0; k < 3; ++k) dirs[a + 1][k] = g.directions[k * 3 + a] * g.spacing[a];
+  nrrdAxisInfoSet_nva(nrrd, nrrdAxisInfoSpaceDirection, dirs);
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) nrrd->measurementFrame[c][r] = m[r * 3 + c];  // Teem: [column][row]
+  AtomicOutput out(path);
+  NrrdIoState* nio = nrrdIoStateNew();
+  nio->encoding = nrrdEncodingGzip;
+  const int err = nrrdSave(out.tempPath().c_str(), nrrd, nio);
+  nrrdIoStateNix(nio);
+  if (err) {
+    done();
+    throw std::runtime_error("writeNrrd: " + path + ": " + teemError());
+  }
+  done();
+  out.commit();
+}
+
+}  // namespace tg::io

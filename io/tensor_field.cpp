@@ -1,0 +1,57 @@
+#include "io/tensor_field.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace tg::io {
+
+void TensorField::addFull(std::uint32_t id, const double p[3], const double t[9]) {
+  ++totalPoints;
+  for (int k = 0; k < 9; ++k)
+    if (!std::isfinite(t[k])) {
+      ++skippedNonFinite;
+      return;
+    }
+  for (int k = 0; k < 3; ++k)
+    if (!std::isfinite(p[k])) {
+      ++skippedNonFinite;
+      return;
+    }
+  for (int k = 0; k < 3; ++k) positions.push_back(float(p[k]));
+  const double sym[6] = {t[0], 0.5 * (t[1] + t[3]), 0.5 * (t[2] + t[6]), t[4], 0.5 * (t[5] + t[7]), t[8]};
+  for (double v : sym) tensors.push_back(float(v));
+  ids.push_back(id);
+}
+
+double estimateSampleSpacing(const std::vector<float>& pos) {
+  const std::size_t n = pos.size() / 3;
+  if (n < 2) return 0.0;
+  // Points sorted by x; a query scans outwards until x alone exceeds its best.
+  std::vector<std::uint32_t> order(n);
+  std::iota(order.begin(), order.end(), 0u);
+  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return pos[3 * a] < pos[3 * b]; });
+  const std::size_t samples = std::min<std::size_t>(n, 512);
+  std::vector<double> nn;
+  for (std::size_t s = 0; s < samples; ++s) {
+    const std::size_t r = s * n / samples;
+    const float* q = &pos[3 * order[r]];
+    double best = INFINITY;
+    auto visit = [&](std::size_t k) {
+      const float* p = &pos[3 * order[k]];
+      const double dx = p[0] - q[0];
+      if (dx * dx >= best) return false;
+      const double d2 = dx * dx + double(p[1] - q[1]) * (p[1] - q[1]) + double(p[2] - q[2]) * (p[2] - q[2]);
+      if (d2 > 0.0) best = std::min(best, d2);
+      return true;
+    };
+    for (std::size_t k = r + 1; k < n && visit(k);) ++k;
+    for (std::size_t k = r; k-- > 0 && visit(k);) {}
+    if (std::isfinite(best)) nn.push_back(std::sqrt(best));
+  }
+  if (nn.empty()) return 0.0;
+  std::nth_element(nn.begin(), nn.begin() + nn.size() / 2, nn.end());
+  return nn[nn.size() / 2];
+}
+
+}  // namespace tg::io

@@ -1,0 +1,47 @@
+#pragma once
+// A tensor field as loaded from any format: points in WC and tensors already
+// in the world frame.
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace tg::io {
+
+// Bad input. what() is one line: "function: file: problem".
+class InputError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct GridInfo {
+  int dims[3] = {0, 0, 0};
+  double spacing[3] = {0, 0, 0};
+  double origin[3] = {0, 0, 0};
+  double directions[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};  // row-major: column k is axis k in WC
+};
+
+struct TensorField {
+  std::string path;
+  std::string description;  // dataset type and size, for `info`
+  std::string arrayName;
+  std::vector<float> positions;     // 3 per kept tensor, WC
+  std::vector<float> tensors;       // 6 per kept tensor: xx xy xz yy yz zz, WC
+  std::vector<std::uint32_t> ids;   // input index of each kept tensor
+  std::size_t totalPoints = 0;
+  std::size_t skippedNonFinite = 0;
+  std::optional<GridInfo> grid;
+  double sampleSpacing = 0;  // grid spacing, or the median nearest-neighbour distance
+
+  std::size_t size() const { return ids.size(); }
+  // Appends one tensor unless a component is NaN/Inf (then counts it skipped).
+  // t9 is a full row-major 3x3; it is symmetrised.
+  void addFull(std::uint32_t id, const double p[3], const double t9[9]);
+};
+
+// Median nearest-neighbour distance over a sample of up to 512 points.
+double estimateSampleSpacing(const std::vector<float>& positions);
+
+}  // namespace tg::io

@@ -1,0 +1,228 @@
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include <vtkCallbackCommand.h>
+#include <vtkDataArray.h>
+#include <vtkDataSet.h>
+#include <vtkDataSetReader.h>
+#include <vtkImageData.h>
+#include <vtkInformation.h>
+#include <vtkMatrix3x3.h>
+#include <vtkNew.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkStreamingDemandDrivenPipeline.h>
+#include <vtkXMLImageDataReader.h>
+#include <vtkXMLPolyDataReader.h>
+#include <vtkXMLStructuredGridReader.h>
+#include <vtkXMLUnstructuredDataReader.h>
+#include <vtkXMLUnstructuredGridReader.h>
+
+#include "io/readers.h"
+
+namespace tg::io {
+namespace {
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+  throw InputError("readVtk: " + path + ": " + what);
+}
+
+// Collects the first error a VTK algorithm raises instead of letting VTK print it.
+struct ErrorSink {
+  std::string first;
+  static void onEvent(vtkObject*, unsigned long, void* self, void* callData) {
+    auto* sink = static_cast<ErrorSink*>(self);
+    if (sink->first.empty() && callData) {
+      std::string msg(static_cast<const char*>(callData));
+      msg.erase(std::remove(msg.begin(), msg.end(), '\n'), msg.end());
+      sink->first = msg;
+    }
+  }
+};
+
+// VTK's own objects below the reader report through the global output window;
+// silence it for the duration of one read and restore it after.
+struct QuietVtk {
+  int saved = vtkObject::GetGlobalWarningDisplay();
+  QuietVtk() { vtkObject::GlobalWarningDisplayOff(); }
+  ~QuietVtk() { vtkObject::SetGlobalWarningDisplay(saved); }
+};
+
+// A legacy header states counts that VTK allocates before reading. Every
+// value takes at least one byte of the file, so a count beyond the file size
+// is corrupt; rejecting it here keeps a 20-byte file from allocating terabytes.
+void checkLegacyCounts(const std::string& path, std::uint64_t fileSize) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  auto tooMany = [&](std::uint64_t values) { return values > fileSize; };
+  while (std::getline(in, line)) {
+    std::istringstream ls(line);
+    std::string key;
+    ls >> key;
+    if (key.empty() || !std::isupper(static_cast<unsigned char>(key[0]))) continue;
+    auto count = [&](std::uint64_t& v) {
+      long double d = 0;
+      if (!(ls >> d)) return false;
+      if (d < 0 || d > 1e19L) fail(path, "header count " + std::to_string(double(d)) + " in \"" + key + "\" is impossible");
+      v = std::uint64_t(d);
+      return true;
+    };
+    std::uint64_t a = 0, b = 0, c = 0;
+    if (key == "POINTS" && count(a) && (a > fileSize / 3 + 1)) fail(path, "POINTS " + std::to_string(a) + " exceeds the file size");
+    if ((key == "POINT_DATA" || key == "CELL_DATA" || key == "VERTICES" || key == "LINES" || key == "POLYGONS" ||
+         key == "CELLS" || key == "CELL_TYPES" || key == "TRIANGLE_STRIPS") &&
+        count(a) && tooMany(a))
+      fail(path, key + " " + std::to_string(a) + " exceeds the file size");
+    if (key == "DIMENSIONS" && count(a) && count(b) && count(c)) {
+      if (a == 0 || b == 0 || c == 0 || a > fileSize || b > fileSize || c > fileSize || tooMany(a * b) ||
+          tooMany(a * b * c))
+        fail(path, "DIMENSIONS exceed the file size");
+    }
+  }
+}
+
+vtkSmartPointer<vtkDataSet> runReader(vtkAlgorithm* reader, const std::string& path, std::uint64_t fileSize,
+                                      bool xml) {
+  ErrorSink sink;
+  vtkNew<vtkCallbackCommand> cb;
+  cb->SetCallback(&ErrorSink::onEvent);
+  cb->SetClientData(&sink);
+  reader->AddObserver(vtkCommand::ErrorEvent, cb);
+  QuietVtk quiet;
+  if (xml) {
+    reader->UpdateInformation();
+    if (!sink.first.empty() || reader->GetErrorCode()) fail(path, sink.first.empty() ? "unreadable XML header" : sink.first);
+    vtkInformation* info = reader->GetOutputInformation(0);
+    std::uint64_t points = 0;
+    if (info && info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT())) {
+      int e[6];
+      info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), e);
+      points = 1;
+      for (int k = 0; k < 3; ++k) points *= std::uint64_t(std::max(e[2 * k + 1] - e[2 * k] + 1, 0));
+    } else if (auto* ug = vtkXMLUnstructuredDataReader::SafeDownCast(reader)) {
+      points = std::uint64_t(std::max<vtkIdType>(ug->GetNumberOfPoints(), 0));
+    }
+    // zlib cannot compress beyond ~1032:1, so more points than that per byte is corrupt.
+    if (points > fileSize * 1032) fail(path, "header claims " + std::to_string(points) + " points, more than the file can hold");
+  }
+  reader->Update();
+  if (!sink.first.empty() || reader->GetErrorCode()) fail(path, sink.first.empty() ? "VTK reader failed" : sink.first);
+  auto* out = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
+  if (!out) fail(path, "no dataset in file");
+  return out;
+}
+
+vtkDataArray* pickTensorArray(vtkDataSet* ds, const std::string& path, const ReadOptions& opt) {
+  vtkPointData* pd = ds->GetPointData();
+  vtkDataArray* arr = nullptr;
+  if (!opt.arrayName.empty()) {
+    arr = pd->GetArray(opt.arrayName.c_str());
+    if (!arr) fail(path, "no point array named \"" + opt.arrayName + "\"");
+  } else if ((arr = pd->GetTensors())) {
+  } else {
+    std::string seen;
+    for (int k = 0; k < pd->GetNumberOfArrays(); ++k) {
+      vtkDataArray* a = pd->GetArray(k);
+      if (!a) continue;
+      seen += std::string(seen.empty() ? "" : ", ") + (a->GetName() ? a->GetName() : "?") + " (" +
+              std::to_string(a->GetNumberOfComponents()) + ")";
+      if ((a->GetNumberOfComponents() == 9 || a->GetNumberOfComponents() == 6) && !arr) arr = a;
+    }
+    if (!arr) fail(path, seen.empty() ? "no point tensors" : "no point array with 9 or 6 components; found " + seen);
+  }
+  const int nc = arr->GetNumberOfComponents();
+  if (nc != 9 && nc != 6)
+    fail(path, "point array \"" + std::string(arr->GetName() ? arr->GetName() : "?") + "\" has " + std::to_string(nc) +
+                   " components; expected 9 or 6 (XX YY ZZ XY YZ XZ)");
+  if (arr->GetNumberOfTuples() != ds->GetNumberOfPoints())
+    fail(path, "tensor array has " + std::to_string(arr->GetNumberOfTuples()) + " tuples for " +
+                   std::to_string(ds->GetNumberOfPoints()) + " points");
+  return arr;
+}
+
+}  // namespace
+
+TensorField readVtk(const std::string& path, const ReadOptions& opt) {
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) fail(path, "cannot open file");
+  const std::uint64_t fileSize = std::uint64_t(st.st_size);
+  const std::string ext = path.substr(path.find_last_of('.') + 1);
+  vtkSmartPointer<vtkAlgorithm> reader;
+  bool xml = true;
+  if (ext == "vtk") {
+    checkLegacyCounts(path, fileSize);
+    auto r = vtkSmartPointer<vtkDataSetReader>::New();
+    r->SetFileName(path.c_str());
+    r->ReadAllTensorsOn();
+    r->ReadAllFieldsOn();
+    r->ReadAllScalarsOn();
+    r->ReadAllVectorsOn();
+    reader = r;
+    xml = false;
+  } else if (ext == "vti") {
+    auto r = vtkSmartPointer<vtkXMLImageDataReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  } else if (ext == "vtu") {
+    auto r = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  } else if (ext == "vtp") {
+    auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  } else if (ext == "vts") {
+    auto r = vtkSmartPointer<vtkXMLStructuredGridReader>::New();
+    r->SetFileName(path.c_str());
+    reader = r;
+  } else {
+    fail(path, "unknown VTK extension \"." + ext + "\"");
+  }
+  vtkSmartPointer<vtkDataSet> ds = runReader(reader, path, fileSize, xml);
+  const vtkIdType n = ds->GetNumberOfPoints();
+  if (n <= 0) fail(path, "no points");
+  if (n > vtkIdType(UINT32_MAX)) fail(path, "more than 2^32-1 points");
+  vtkDataArray* arr = pickTensorArray(ds, path, opt);
+
+  TensorField f;
+  f.path = path;
+  f.arrayName = arr->GetName() ? arr->GetName() : "";
+  f.description = std::string(ds->GetClassName()) + ", " + std::to_string(n) + " points";
+  f.positions.reserve(3 * std::size_t(n));
+  f.tensors.reserve(6 * std::size_t(n));
+  f.ids.reserve(std::size_t(n));
+  const bool six = arr->GetNumberOfComponents() == 6;
+  double p[3], t[9], full[9];
+  for (vtkIdType i = 0; i < n; ++i) {
+    ds->GetPoint(i, p);
+    arr->GetTuple(i, t);
+    if (six) {  // VTK's symmetric order: XX YY ZZ XY YZ XZ
+      const double m[9] = {t[0], t[3], t[5], t[3], t[1], t[4], t[5], t[4], t[2]};
+      std::copy(m, m + 9, full);
+    } else {
+      std::copy(t, t + 9, full);
+    }
+    f.addFull(std::uint32_t(i), p, full);
+  }
+  if (auto* img = vtkImageData::SafeDownCast(ds)) {
+    GridInfo g;
+    img->GetDimensions(g.dims);
+    img->GetSpacing(g.spacing);
+    img->GetOrigin(g.origin);
+    const double* dir = img->GetDirectionMatrix()->GetData();
+    std::copy(dir, dir + 9, g.directions);
+    f.grid = g;
+    double s = INFINITY;
+    for (int k = 0; k < 3; ++k)
+      if (g.dims[k] > 1) s = std::min(s, std::abs(g.spacing[k]));
+    f.sampleSpacing = std::isfinite(s) ? s : 0.0;
+  }
+  if (f.sampleSpacing <= 0) f.sampleSpacing = estimateSampleSpacing(f.positions);
+  return f;
+}
+
+}  // namespace tg::io

@@ -1,0 +1,59 @@
+#version 450 core
+// One vertex per glyph: fetch its record, cull it, and compute its exact
+// screen rectangle (Sigg et al. 2006, eq. 5) plus what the fragment stage
+// needs to intersect it.
+#include "lib/camera.glsl"
+#include "lib/glyph_record.glsl"
+#include "lib/ellipsoid.glsl"
+#include "lib/color.glsl"
+
+uniform float uScale;
+uniform float uFaMin;
+uniform int uColorMode;
+uniform vec2 uMdRange;
+
+out SpriteVS {
+  flat int visible;
+  flat vec4 rectNDC;
+  flat float quadDepth;
+  flat vec3 centreVC;
+  flat mat3 gcFromVC;
+  flat vec3 color;
+  flat uint id;
+} vs;
+
+void main() {
+  GlyphRecord g = glyphs[gl_VertexID];
+  vs.visible = 0;
+  gl_Position = vec4(0.0);
+  if (!(g.posWC_fa.w >= uFaMin)) return;
+  vec3 axes = ellipsoidAxes(g.eigenvalues_id.xyz, uScale);
+  float radius = max(axes.x, max(axes.y, axes.z));
+  if (!(radius > 0.0)) return;
+
+  mat3 rotWC = quatToMat3(g.frameWC);
+  mat3 rotVC = mat3(uViewWCVC) * rotWC;
+  vec3 centreVC = (uViewWCVC * vec4(g.posWC_fa.xyz, 1.0)).xyz;
+  float dist = -centreVC.z;
+  if (dist + radius < uNearVC || (uOrtho == 1 && dist - radius > uFarVC)) return;
+
+  // T of eq. (2), in VC: parameter space -> view coordinates.
+  mat4 tVC = mat4(vec4(rotVC[0] * axes.x, 0.0), vec4(rotVC[1] * axes.y, 0.0),
+                  vec4(rotVC[2] * axes.z, 0.0), vec4(centreVC, 1.0));
+  vec4 rect;
+  if (!ellipsoidRectNDC(uProjVCCC * tVC, rect)) rect = vec4(-1.0, -1.0, 1.0, 1.0);
+  // One pixel of margin so that pixel centres on the exact edge are kept.
+  vec2 px = 2.0 / uViewportDC;
+  rect = clamp(rect + vec4(-px, px), -1.0, 1.0);
+  if (rect.x >= rect.z || rect.y >= rect.w) return;
+
+  vs.visible = 1;
+  vs.rectNDC = rect;
+  // The sprite sits at the nearest depth the glyph can have, so the fragment
+  // depth only ever moves away from it (layout(depth_less) with reversed Z).
+  vs.quadDepth = windowDepthFromViewDepth(max(dist - radius, uNearVC));
+  vs.centreVC = centreVC;
+  vs.gcFromVC = transpose(mat3(rotVC[0] / axes.x, rotVC[1] / axes.y, rotVC[2] / axes.z));
+  vs.color = glyphColor(uColorMode, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, uMdRange);
+  vs.id = floatBitsToUint(g.eigenvalues_id.w);
+}

@@ -1,0 +1,38 @@
+#version 450 core
+// Deferred Blinn-Phong: ambient, a head light at the eye and one key light.
+#include "lib/camera.glsl"
+
+layout(binding = 0) uniform sampler2D uAlbedo;
+layout(binding = 1) uniform sampler2D uNormalWC;
+layout(binding = 2) uniform usampler2D uId;
+
+uniform vec4 uBackground;
+uniform vec3 uKeyDirVC;    // towards the key light
+uniform vec4 uLightMix;    // ambient, head, key, specular
+uniform float uShininess;
+
+out vec4 oColor;
+
+const uint kNoGlyph = 0xFFFFFFFFu;
+
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  if (texelFetch(uId, p, 0).r == kNoGlyph) {
+    oColor = uBackground;
+    return;
+  }
+  vec3 albedo = texelFetch(uAlbedo, p, 0).rgb;
+  vec3 n = normalize(mat3(uViewWCVC) * texelFetch(uNormalWC, p, 0).xyz);
+  vec3 originVC, dirVC;
+  rayThroughFragment(gl_FragCoord.xy, originVC, dirVC);
+  vec3 v = normalize(-dirVC);
+  if (dot(n, v) < 0.0) n = -n;  // the inside wall of a glyph the camera is in
+  vec3 l = normalize(uKeyDirVC);
+  float head = max(dot(n, v), 0.0);
+  float key = max(dot(n, l), 0.0);
+  float specHead = pow(head, uShininess);  // half vector of the head light is v
+  float specKey = pow(max(dot(n, normalize(l + v)), 0.0), uShininess);
+  vec3 c = albedo * (uLightMix.x + uLightMix.y * head + uLightMix.z * key) +
+           uLightMix.w * (uLightMix.y * specHead + uLightMix.z * specKey);
+  oColor = vec4(c, 1.0);
+}

@@ -1,0 +1,32 @@
+#pragma once
+// Shared pieces of the subcommands: strict value parsing and context creation.
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+
+#include <glm/vec3.hpp>
+
+#include "gl/context.h"
+
+namespace tg::app {
+
+// A command-line error: main prints "tensorglyph: <what>" and exits 2.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Whole-string numbers only ("1.5x" and "" are errors), finite.
+double parseDouble(std::string_view flag, std::string_view text);
+long long parseInt(std::string_view flag, std::string_view text);
+glm::dvec3 parseVec3(std::string_view flag, std::span<const char* const> args);
+
+// "osmesa", "egl", "glfw" or "auto" (a GPU through EGL if present, else OSMesa).
+std::unique_ptr<gl::Context> createContext(std::string_view backend, int width, int height);
+
+// Peak resident memory of this process so far, in bytes.
+std::size_t peakRssBytes();
+
+}  // namespace tg::app

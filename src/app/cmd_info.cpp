@@ -1,0 +1,69 @@
+#include <OpenImageIO/argparse.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+#include "app/cli_common.h"
+#include "app/commands.h"
+#include "io/readers.h"
+#include "tensor/glyph.h"
+
+namespace tg::app {
+
+int cmdInfo(int argc, const char** argv) {
+  std::string input, array;
+  OIIO::ArgParse ap;
+  ap.intro("tensorglyph info INPUT [--array NAME]").exit_on_error(false);
+  using Args = OIIO::cspan<const char*>;
+  ap.arg("filename").hidden().action([&](auto&, Args a) {
+    if (!input.empty()) throw UsageError("more than one INPUT");
+    input = a[0];
+  });
+  ap.arg("--array NAME").help("point array holding the tensors").action([&](auto&, Args a) { array = a[1]; });
+  if (ap.parse_args(argc, argv) < 0) throw UsageError(ap.geterror());
+  if (input.empty()) throw UsageError("INPUT is required");
+
+  const io::TensorField f = io::readTensorField(input, {array});
+  const tensor::GlyphSet g = tensor::buildGlyphs(f.positions, f.tensors, f.ids);
+  std::size_t negDef = 0, indefinite = 0, zero = 0;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  double lmin[3] = {inf, inf, inf}, lmax[3] = {-inf, -inf, -inf}, faMin = inf, faMax = -inf;
+  for (const auto& r : g.glyphs) {
+    const float* l = r.eigenvalues;
+    if (l[0] == 0 && l[2] == 0) ++zero;
+    else if (l[0] < 0) ++negDef;
+    else if (l[2] < 0) ++indefinite;
+    for (int k = 0; k < 3; ++k) {
+      lmin[k] = std::min(lmin[k], double(l[k]));
+      lmax[k] = std::max(lmax[k], double(l[k]));
+    }
+    faMin = std::min(faMin, double(r.fa));
+    faMax = std::max(faMax, double(r.fa));
+  }
+  std::printf("file: %s\n", f.path.c_str());
+  std::printf("dataset: %s\n", f.description.c_str());
+  std::printf("tensor array: %s\n", f.arrayName.empty() ? "(unnamed)" : f.arrayName.c_str());
+  if (f.grid) {
+    const io::GridInfo& gr = *f.grid;
+    std::printf("grid: %d x %d x %d, spacing %g %g %g, origin %g %g %g\n", gr.dims[0], gr.dims[1], gr.dims[2],
+                gr.spacing[0], gr.spacing[1], gr.spacing[2], gr.origin[0], gr.origin[1], gr.origin[2]);
+    std::printf("directions (columns): [%g %g %g] [%g %g %g] [%g %g %g]\n", gr.directions[0], gr.directions[3],
+                gr.directions[6], gr.directions[1], gr.directions[4], gr.directions[7], gr.directions[2],
+                gr.directions[5], gr.directions[8]);
+  }
+  std::printf("sample spacing: %g\n", f.sampleSpacing);
+  std::printf("tensors: %zu total, %zu drawn, %zu skipped (NaN/Inf)\n", f.totalPoints, f.size(), f.skippedNonFinite);
+  std::printf("  positive semi-definite: %zu, indefinite: %zu, negative definite: %zu, zero: %zu\n",
+              f.size() - negDef - indefinite - zero, indefinite, negDef, zero);
+  if (!g.glyphs.empty()) {
+    for (int k = 0; k < 3; ++k) std::printf("eigenvalue %d: [%g, %g]\n", k + 1, lmin[k], lmax[k]);
+    std::printf("FA: [%g, %g]\nMD: [%g, %g]\n", faMin, faMax, g.mdMin, g.mdMax);
+    std::printf("bounds: [%g %g %g] - [%g %g %g]\n", g.boundsMinWC.x, g.boundsMinWC.y, g.boundsMinWC.z,
+                g.boundsMaxWC.x, g.boundsMaxWC.y, g.boundsMaxWC.z);
+  }
+  return 0;
+}
+
+}  // namespace tg::app

@@ -1,0 +1,190 @@
+#include <OpenImageIO/argparse.h>
+#include <OpenImageIO/imageio.h>
+
+#include <chrono>
+#include <cstdio>
+#include <optional>
+#include <string>
+
+#include "app/cli_common.h"
+#include "app/commands.h"
+#include "app/scene.h"
+#include "gl/shader_library.h"
+#include "io/image_writer.h"
+#include "io/readers.h"
+#include "render/renderer.h"
+
+namespace tg::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+struct RenderOptions {
+  std::string input, output, backend = "osmesa", glyph = "ellipsoid", color = "dec", array;
+  int width = 1024, height = 768;
+  double gamma = 3.0;
+  std::optional<double> faMin, scale, fov, ortho;
+  std::optional<glm::dvec3> eye, lookAt, up;
+  glm::vec4 background{0.08f, 0.08f, 0.10f, 1.0f};
+  int repeat = 0;
+  bool verbose = false;
+};
+
+RenderOptions parse(int argc, const char** argv) {
+  RenderOptions o;
+  OIIO::ArgParse ap;
+  ap.intro("tensorglyph render [INPUT] -o OUT [options]").exit_on_error(false);
+  using Args = OIIO::cspan<const char*>;
+  auto rest = [](Args a) { return std::span<const char* const>(a.data() + 1, a.size() - 1); };
+  ap.arg("filename").hidden().action([&](auto&, Args a) {
+    if (!o.input.empty()) throw UsageError("more than one INPUT: \"" + o.input + "\" and \"" + a[0] + "\"");
+    o.input = a[0];
+  });
+  ap.arg("-o OUT").help("output image: .png (8-bit RGBA), .exr (float RGBA Z N id), other OIIO formats")
+      .action([&](auto&, Args a) { o.output = a[1]; });
+  ap.arg("--size W H").help("image size in pixels (default 1024 768)").action([&](auto&, Args a) {
+    o.width = int(parseInt("--size", a[1]));
+    o.height = int(parseInt("--size", a[2]));
+  });
+  ap.arg("--glyph KIND").help("ellipsoid").action([&](auto&, Args a) { o.glyph = a[1]; });
+  ap.arg("--gamma G").help("superquadric sharpness (Kindlmann 2004), >= 0").action([&](auto&, Args a) {
+    o.gamma = parseDouble("--gamma", a[1]);
+  });
+  ap.arg("--fa-min F").help("hide glyphs with FA below F").action([&](auto&, Args a) { o.faMin = parseDouble("--fa-min", a[1]); });
+  ap.arg("--scale S").help("world units per unit eigenvalue (default: largest glyphs one sample spacing wide)")
+      .action([&](auto&, Args a) { o.scale = parseDouble("--scale", a[1]); });
+  ap.arg("--eye X Y Z").help("camera position (WC)").action([&](auto&, Args a) { o.eye = parseVec3("--eye", rest(a)); });
+  ap.arg("--look-at X Y Z").help("point the camera looks at (WC)").action([&](auto&, Args a) {
+    o.lookAt = parseVec3("--look-at", rest(a));
+  });
+  ap.arg("--up X Y Z").help("camera up vector (WC)").action([&](auto&, Args a) { o.up = parseVec3("--up", rest(a)); });
+  ap.arg("--fov DEG").help("perspective, vertical field of view (default 30)").action([&](auto&, Args a) {
+    o.fov = parseDouble("--fov", a[1]);
+  });
+  ap.arg("--ortho HEIGHT").help("orthographic, view height in world units").action([&](auto&, Args a) {
+    o.ortho = parseDouble("--ortho", a[1]);
+  });
+  ap.arg("--color MODE").help("dec, fa, md, cl or cp").action([&](auto&, Args a) { o.color = a[1]; });
+  ap.arg("--background R G B A").help("background colour, 0..1 (default 0.08 0.08 0.1 1)").action([&](auto&, Args a) {
+    for (int k = 0; k < 4; ++k) o.background[k] = float(parseDouble("--background", a[1 + k]));
+  });
+  ap.arg("--backend NAME").help("osmesa (default), egl, glfw or auto").action([&](auto&, Args a) { o.backend = a[1]; });
+  ap.arg("--array NAME").help("point array holding the tensors").action([&](auto&, Args a) { o.array = a[1]; });
+  ap.arg("--repeat N").help("render N more frames and report the median frame time").action([&](auto&, Args a) {
+    o.repeat = int(parseInt("--repeat", a[1]));
+  });
+  ap.arg("--verbose").help("report timings and memory on stderr").action([&](auto&, Args) { o.verbose = true; });
+  if (ap.parse_args(argc, argv) < 0) throw UsageError(ap.geterror());
+  return o;
+}
+
+// Every parameter is checked before anything is loaded or created.
+void validate(const RenderOptions& o) {
+  if (o.output.empty()) throw UsageError("-o OUT is required");
+  if (o.width < 1 || o.height < 1 || o.width > 16384 || o.height > 16384)
+    throw UsageError("--size must be within 1..16384");
+  if (o.glyph != "ellipsoid")
+    throw UsageError("--glyph: \"" + o.glyph + "\" is not available; this build draws ellipsoid glyphs");
+  if (!(o.gamma >= 0.0)) throw UsageError("--gamma must be >= 0");
+  if (o.scale && !(*o.scale > 0.0)) throw UsageError("--scale must be positive");
+  if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
+  if ((o.lookAt || o.up) && !o.eye) throw UsageError("--look-at and --up need --eye");
+  if (o.color != "dec" && o.color != "fa" && o.color != "md" && o.color != "cl" && o.color != "cp")
+    throw UsageError("--color: unknown mode \"" + o.color + "\"; choose dec, fa, md, cl or cp");
+  if (o.repeat < 0 || o.repeat > 10000) throw UsageError("--repeat must be within 0..10000");
+  if (o.backend != "osmesa" && o.backend != "egl" && o.backend != "glfw" && o.backend != "auto")
+    throw UsageError("--backend: unknown backend \"" + o.backend + "\"; choose osmesa, egl, glfw or auto");
+  if (!OIIO::ImageOutput::create(o.output))
+    throw UsageError("-o: no image format for \"" + o.output + "\"");
+}
+
+render::ColorMode colorMode(const std::string& c) {
+  if (c == "fa") return render::ColorMode::FA;
+  if (c == "md") return render::ColorMode::MD;
+  if (c == "cl") return render::ColorMode::CL;
+  if (c == "cp") return render::ColorMode::CP;
+  return render::ColorMode::DEC;
+}
+
+render::CameraDesc chooseCamera(const RenderOptions& o, const Scene& s, const glm::dvec3& lo, const glm::dvec3& hi) {
+  const render::Projection proj = o.ortho ? render::Projection::Orthographic : render::Projection::Perspective;
+  const double aspect = double(o.width) / o.height;
+  render::CameraDesc d = frameBox(lo, hi, proj, o.fov.value_or(30.0), aspect);
+  if (o.eye) {
+    d.eyeWC = *o.eye;
+    d.lookAtWC = o.lookAt.value_or(0.5 * (lo + hi));
+    d.upWC = o.up.value_or(glm::dvec3(0, 1, 0));
+  } else if (s.preferredCamera) {
+    d.eyeWC = s.preferredCamera->eyeWC;
+    d.lookAtWC = s.preferredCamera->lookAtWC;
+    d.upWC = s.preferredCamera->upWC;
+  }
+  if (o.ortho) d.orthoHeight = *o.ortho;
+  if (const char* err = render::validateCamera(d); *err) throw UsageError(err);
+  return d;
+}
+
+}  // namespace
+
+int cmdRender(int argc, const char** argv) {
+  const RenderOptions o = parse(argc, argv);
+  validate(o);
+  const auto t0 = Clock::now();
+  Scene scene;
+  if (o.input.empty()) scene = defaultScene();
+  else scene.field = io::readTensorField(o.input, {o.array});
+  const double loadMs = msSince(t0);
+  if (scene.field.skippedNonFinite)
+    std::fprintf(stderr, "tensorglyph render: %s: skipped %zu tensors with NaN/Inf components\n",
+                 scene.field.path.c_str(), scene.field.skippedNonFinite);
+
+  const auto t1 = Clock::now();
+  const tensor::GlyphSet glyphs = tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids);
+  const double buildMs = msSince(t1);
+  render::FrameParams params;
+  params.scale = o.scale.value_or(tensor::defaultScale(glyphs, scene.field.sampleSpacing));
+  params.faMin = o.faMin.value_or(scene.preferredFaMin.value_or(0.0));
+  params.color = colorMode(o.color);
+  params.background = o.background;
+
+  const double pad = params.scale * glyphs.maxAbsEigenvalue;
+  const glm::dvec3 lo = glyphs.boundsMinWC - pad, hi = glyphs.boundsMaxWC + pad;
+  const render::Camera cam = render::makeCamera(chooseCamera(o, scene, lo, hi), o.width, o.height, lo, hi);
+
+  auto ctx = createContext(o.backend, o.width, o.height);
+  const gl::ShaderLibrary lib;
+  render::GlyphRenderer renderer(ctx->api(), lib);
+  render::GBuffer target(ctx->api(), o.width, o.height);
+  const auto t2 = Clock::now();
+  renderer.upload(glyphs);
+  ctx->api().Finish();
+  const double uploadMs = msSince(t2);
+  const auto t3 = Clock::now();
+  renderer.render(cam, params, target);
+  ctx->api().Finish();
+  const double frameMs = msSince(t3);
+  std::vector<double> times;
+  for (int k = 0; k < o.repeat; ++k) {
+    const auto tk = Clock::now();
+    renderer.render(cam, params, target);
+    ctx->api().Finish();
+    times.push_back(msSince(tk));
+  }
+  const render::FrameImage img = renderer.readback(cam, target);
+  io::writeImage(img, o.output);
+  if (o.verbose || o.repeat > 0) {
+    std::sort(times.begin(), times.end());
+    std::fprintf(stderr,
+                 "tensorglyph render: %zu glyphs, %dx%d, %s (%s)\n"
+                 "  load %.1f ms, eigen %.1f ms, upload %.1f ms, first frame %.1f ms",
+                 glyphs.glyphs.size(), o.width, o.height, ctx->backendName(), ctx->describe().c_str(), loadMs,
+                 buildMs, uploadMs, frameMs);
+    if (!times.empty()) std::fprintf(stderr, ", median of %zu frames %.2f ms", times.size(), times[times.size() / 2]);
+    std::fprintf(stderr, "\n  scale %.6g, fa-min %.3g, peak RSS %.1f MiB\n", params.scale, params.faMin,
+                 double(peakRssBytes()) / (1024.0 * 1024.0));
+  }
+  return 0;
+}
+
+}  // namespace tg::app

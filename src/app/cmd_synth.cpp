@@ -1,0 +1,75 @@
+#include <OpenImageIO/argparse.h>
+
+#include <cstdio>
+#include <string>
+
+#include "app/cli_common.h"
+#include "app/commands.h"
+#include "data-synthetic/generators.h"
+#include "io/writers.h"
+
+namespace tg::app {
+namespace {
+
+constexpr const char* kKinds = "helix, boussinesq, extremes, extremes-tiny, extremes-huge, random";
+
+bool endsWith(const std::string& s, const char* suffix) {
+  const std::string x(suffix);
+  return s.size() >= x.size() && s.compare(s.size() - x.size(), x.size(), x) == 0;
+}
+
+void writeField(const io::TensorField& f, const std::string& out, const double* frame) {
+  if (endsWith(out, ".nrrd")) {
+    const double identity[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+    io::writeNrrd(f, out, frame ? frame : identity);
+  } else {
+    io::writeVtk(f, out);
+  }
+}
+
+}  // namespace
+
+int cmdSynth(int argc, const char** argv) {
+  std::string kind, out;
+  long long n = 0, seed = 1;
+  OIIO::ArgParse ap;
+  ap.intro(std::string("tensorglyph synth KIND -o OUT [--n N] [--seed S]\n  KIND: ") + kKinds +
+           "\n  OUT: .vtk .vti .vtu .vtp, or .nrrd for gridded fields, or .nhdr for random (streamed)")
+      .exit_on_error(false);
+  using Args = OIIO::cspan<const char*>;
+  ap.arg("kind").hidden().action([&](auto&, Args a) {
+    if (!kind.empty()) throw UsageError("more than one KIND");
+    kind = a[0];
+  });
+  ap.arg("-o OUT").help("output file").action([&](auto&, Args a) { out = a[1]; });
+  ap.arg("--n N").help("size: grid side (helix, boussinesq) or glyph count (random)").action([&](auto&, Args a) {
+    n = parseInt("--n", a[1]);
+  });
+  ap.arg("--seed S").help("random seed").action([&](auto&, Args a) { seed = parseInt("--seed", a[1]); });
+  if (ap.parse_args(argc, argv) < 0) throw UsageError(ap.geterror());
+  if (kind.empty() || out.empty()) throw UsageError(std::string("KIND and -o OUT are required; KIND is one of ") + kKinds);
+  if (n < 0 || n > 4000000000LL) throw UsageError("--n must be within 0..4e9");
+
+  if (kind == "helix") {
+    const int side = n ? int(std::min(n, 512LL)) : 32;
+    const synth::Helix h = synth::helixPhantom(side, side, std::max(2, side / 2));
+    writeField(h.field, out, h.measurementFrame);
+  } else if (kind == "boussinesq") {
+    writeField(synth::boussinesq(n ? int(std::min(n, 512LL)) : 16, 0.3), out, nullptr);
+  } else if (kind == "extremes") {
+    writeField(synth::extremesGallery(1.0, 1.0), out, nullptr);
+  } else if (kind == "extremes-tiny") {
+    writeField(synth::extremesGallery(1e-20, 1e-6), out, nullptr);
+  } else if (kind == "extremes-huge") {
+    writeField(synth::extremesGallery(1e20, 1e6), out, nullptr);
+  } else if (kind == "random") {
+    const std::size_t count = n ? std::size_t(n) : 10000;
+    if (endsWith(out, ".nhdr")) synth::writeRandomNrrdStreaming(out, count, std::uint64_t(seed));
+    else writeField(synth::randomField(count, std::uint64_t(seed)), out, nullptr);
+  } else {
+    throw UsageError("unknown KIND \"" + kind + "\"; choose " + kKinds);
+  }
+  return 0;
+}
+
+}  // namespace tg::app

@@ -1,0 +1,11 @@
+#pragma once
+// The subcommands. Each returns the process exit code and throws
+// UsageError, io::InputError or std::runtime_error for main to report.
+
+namespace tg::app {
+
+int cmdRender(int argc, const char** argv);
+int cmdInfo(int argc, const char** argv);
+int cmdSynth(int argc, const char** argv);
+
+}  // namespace tg::app

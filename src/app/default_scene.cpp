@@ -1,0 +1,33 @@
+#include "app/scene.h"
+#include "data-synthetic/generators.h"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+namespace tg::app {
+
+Scene defaultScene() {
+  Scene s;
+  s.field = synth::helixPhantom(40, 40, 20).field;
+  s.field.path = "(built-in helix phantom)";
+  render::CameraDesc cam;
+  // Frame the field's bounding sphere from an oblique direction (30 deg fov).
+  glm::dvec3 lo(INFINITY), hi(-INFINITY);
+  for (std::size_t i = 0; i < s.field.size(); ++i) {
+    const glm::dvec3 p(s.field.positions[3 * i], s.field.positions[3 * i + 1], s.field.positions[3 * i + 2]);
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  const double r = 0.5 * glm::length(hi - lo);
+  cam.lookAtWC = 0.5 * (lo + hi);
+  cam.eyeWC = cam.lookAtWC + glm::normalize(glm::dvec3(0.9, -1.6, 1.25)) * (0.55 * r / std::sin(glm::radians(15.0)));  // the helix fills ~half the box
+  cam.upWC = glm::dvec3(0, 0, 1);
+  cam.fovYDeg = 30.0;
+  s.preferredCamera = cam;
+  s.preferredFaMin = 0.25;
+  return s;
+}
+
+}  // namespace tg::app

@@ -1,0 +1,44 @@
+// tensorglyph: exact GPU tensor glyphs. Dispatches to a subcommand.
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <string>
+
+#include "app/cli_common.h"
+#include "app/commands.h"
+#include "io/tensor_field.h"
+
+namespace {
+
+constexpr const char* kUsage =
+    "usage: tensorglyph <command> [options]\n"
+    "  render [INPUT] -o OUT   render glyphs to an image (no INPUT: the built-in scene)\n"
+    "  info INPUT              grid, counts, eigenvalue ranges, skipped tensors\n"
+    "  synth KIND -o OUT       write a synthetic field (helix, boussinesq, extremes, random, ...)\n"
+    "Run 'tensorglyph <command> --help' for a command's options.\n";
+
+}  // namespace
+
+int main(int argc, const char** argv) {
+  if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
+    std::fputs(kUsage, argc < 2 ? stderr : stdout);
+    return argc < 2 ? 2 : 0;
+  }
+  const std::string cmd = argv[1];
+  try {
+    if (cmd == "render") return tg::app::cmdRender(argc - 1, argv + 1);
+    if (cmd == "info") return tg::app::cmdInfo(argc - 1, argv + 1);
+    if (cmd == "synth") return tg::app::cmdSynth(argc - 1, argv + 1);
+    std::fprintf(stderr, "tensorglyph: unknown command \"%s\"\n%s", cmd.c_str(), kUsage);
+    return 2;
+  } catch (const tg::app::UsageError& e) {
+    std::fprintf(stderr, "tensorglyph %s: %s\n", cmd.c_str(), e.what());
+    return 2;
+  } catch (const tg::io::InputError& e) {
+    std::fprintf(stderr, "tensorglyph %s: %s\n", cmd.c_str(), e.what());
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "tensorglyph %s: %s\n", cmd.c_str(), e.what());
+    return 1;
+  }
+}

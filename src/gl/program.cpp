@@ -1,0 +1,82 @@
+#include "gl/program.h"
+
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace tg::gl {
+namespace {
+
+std::string shaderLog(const Api& gl, GLuint s) {
+  GLint len = 0;
+  gl.GetShaderiv(s, GL_INFO_LOG_LENGTH, &len);
+  std::string log(std::size_t(std::max(len, 1)), '\0');
+  gl.GetShaderInfoLog(s, len, nullptr, log.data());
+  return log.c_str();
+}
+
+}  // namespace
+
+Program::Program(const Api& gl, const ShaderLibrary& lib, std::initializer_list<StageSource> stages) : gl_(&gl) {
+  id_ = gl.CreateProgram();
+  std::vector<GLuint> shaders;
+  auto cleanup = [&] {
+    for (GLuint s : shaders) gl.DeleteShader(s);
+  };
+  for (const StageSource& st : stages) {
+    const ComposedSource src = lib.compose(st.path);
+    const GLuint s = gl.CreateShader(st.stage);
+    shaders.push_back(s);
+    const char* text = src.text.c_str();
+    gl.ShaderSource(s, 1, &text, nullptr);
+    gl.CompileShader(s);
+    GLint ok = 0;
+    gl.GetShaderiv(s, GL_COMPILE_STATUS, &ok);
+    if (!ok) {
+      const std::string log = ShaderLibrary::mapLog(shaderLog(gl, s), src);
+      cleanup();
+      gl.DeleteProgram(id_);
+      throw std::runtime_error("Program: compiling " + std::string(st.path) + " failed:\n" + log);
+    }
+    gl.AttachShader(id_, s);
+  }
+  gl.LinkProgram(id_);
+  GLint ok = 0;
+  gl.GetProgramiv(id_, GL_LINK_STATUS, &ok);
+  for (GLuint s : shaders) gl.DetachShader(id_, s);
+  cleanup();
+  if (!ok) {
+    GLint len = 0;
+    gl.GetProgramiv(id_, GL_INFO_LOG_LENGTH, &len);
+    std::string log(std::size_t(std::max(len, 1)), '\0');
+    gl.GetProgramInfoLog(id_, len, nullptr, log.data());
+    gl.DeleteProgram(id_);
+    throw std::runtime_error("Program: linking " + std::string(stages.begin()->path) + " failed:\n" + log.c_str());
+  }
+}
+
+Program::~Program() {
+  if (id_) gl_->DeleteProgram(id_);
+}
+
+void Program::set(const char* n, int v) const { gl_->ProgramUniform1i(id_, gl_->GetUniformLocation(id_, n), v); }
+void Program::set(const char* n, float v) const { gl_->ProgramUniform1f(id_, gl_->GetUniformLocation(id_, n), v); }
+void Program::set(const char* n, const glm::vec2& v) const {
+  gl_->ProgramUniform2f(id_, gl_->GetUniformLocation(id_, n), v.x, v.y);
+}
+void Program::set(const char* n, const glm::vec3& v) const {
+  gl_->ProgramUniform3f(id_, gl_->GetUniformLocation(id_, n), v.x, v.y, v.z);
+}
+void Program::set(const char* n, const glm::vec4& v) const {
+  gl_->ProgramUniform4f(id_, gl_->GetUniformLocation(id_, n), v.x, v.y, v.z, v.w);
+}
+void Program::set(const char* n, const glm::mat3& v) const {
+  gl_->ProgramUniformMatrix3fv(id_, gl_->GetUniformLocation(id_, n), 1, GL_FALSE, glm::value_ptr(v));
+}
+void Program::set(const char* n, const glm::mat4& v) const {
+  gl_->ProgramUniformMatrix4fv(id_, gl_->GetUniformLocation(id_, n), 1, GL_FALSE, glm::value_ptr(v));
+}
+
+}  // namespace tg::gl

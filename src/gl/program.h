@@ -1,0 +1,43 @@
+#pragma once
+// A linked GLSL program composed from the shader library.
+#include <initializer_list>
+#include <string_view>
+#include <utility>
+
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+
+#include "gl/loader.h"
+#include "gl/shader_library.h"
+
+namespace tg::gl {
+
+struct StageSource {
+  GLenum stage;
+  std::string_view path;
+};
+
+class Program {
+ public:
+  // Throws std::runtime_error with file:line messages on compile or link errors.
+  Program(const Api& gl, const ShaderLibrary& lib, std::initializer_list<StageSource> stages);
+  ~Program();
+  Program(Program&& o) noexcept : gl_(o.gl_), id_(std::exchange(o.id_, 0)) {}
+  Program& operator=(Program&&) = delete;
+  Program(const Program&) = delete;
+
+  GLuint id() const { return id_; }
+  void set(const char* name, int v) const;
+  void set(const char* name, float v) const;
+  void set(const char* name, const glm::vec2& v) const;
+  void set(const char* name, const glm::vec3& v) const;
+  void set(const char* name, const glm::vec4& v) const;
+  void set(const char* name, const glm::mat3& v) const;
+  void set(const char* name, const glm::mat4& v) const;
+
+ private:
+  const Api* gl_;
+  GLuint id_ = 0;
+};
+
+}  // namespace tg::gl

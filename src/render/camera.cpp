@@ -1,0 +1,117 @@
+#include "render/camera.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+namespace tg::render {
+namespace {
+
+bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+}  // namespace
+
+const char* validateCamera(const CameraDesc& d) {
+  if (!finite(d.eyeWC) || !finite(d.lookAtWC) || !finite(d.upWC)) return "camera vectors must be finite";
+  const glm::dvec3 v = d.lookAtWC - d.eyeWC;
+  if (glm::length(v) == 0.0) return "--eye and --look-at must differ";
+  if (glm::length(d.upWC) == 0.0) return "--up must be non-zero";
+  if (glm::length(glm::cross(glm::normalize(v), glm::normalize(d.upWC))) < 1e-9)
+    return "--up must not be parallel to the view direction";
+  if (d.projection == Projection::Perspective && !(d.fovYDeg > 0.0 && d.fovYDeg < 180.0))
+    return "--fov must be in (0, 180) degrees";
+  if (d.projection == Projection::Orthographic && !(d.orthoHeight > 0.0 && std::isfinite(d.orthoHeight)))
+    return "--ortho height must be positive and finite";
+  return "";
+}
+
+Camera makeCamera(const CameraDesc& d, int width, int height, const glm::dvec3& lo, const glm::dvec3& hi) {
+  Camera c;
+  c.desc = d;
+  c.width = width;
+  c.height = height;
+  c.viewWCVC = glm::lookAt(d.eyeWC, d.lookAtWC, d.upWC);
+  // Depth range of the scene box along the view axis.
+  double zmin = INFINITY, zmax = -INFINITY;
+  for (int k = 0; k < 8; ++k) {
+    const glm::dvec3 p((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
+    const double z = -(c.viewWCVC * glm::dvec4(p, 1.0)).z;
+    zmin = std::min(zmin, z);
+    zmax = std::max(zmax, z);
+  }
+  const double span = std::max(zmax - zmin, 1e-30 + std::abs(zmax) * 1e-12);
+  const double aspect = double(width) / double(height);
+  if (d.projection == Projection::Perspective) {
+    // Near as far out as the scene allows; when the eye is inside the box, a
+    // small fraction of its depth, so only geometry within it is clipped.
+    c.nearVC = std::max(zmin, 1e-6 * std::max(zmax, span));
+    c.farVC = INFINITY;
+    const double f = 1.0 / std::tan(glm::radians(d.fovYDeg) * 0.5);
+    glm::dmat4 p(0.0);
+    p[0][0] = f / aspect;
+    p[1][1] = f;
+    p[3][2] = c.nearVC;  // clip z = near, clip w = -z_VC: window depth = near / distance
+    p[2][3] = -1.0;
+    c.projVCCC = p;
+  } else {
+    c.nearVC = zmin - 0.01 * span;
+    c.farVC = zmax + 0.01 * span;
+    const double h = d.orthoHeight * 0.5, w = h * aspect;
+    glm::dmat4 p(1.0);
+    p[0][0] = 1.0 / w;
+    p[1][1] = 1.0 / h;
+    // z_VC = -near -> 1, z_VC = -far -> 0
+    p[2][2] = 1.0 / (c.farVC - c.nearVC);
+    p[3][2] = c.farVC / (c.farVC - c.nearVC);
+    c.projVCCC = p;
+  }
+  return c;
+}
+
+RayWC Camera::rayThroughPixel(double px, double py) const {
+  const double aspect = double(width) / double(height);
+  const double xn = 2.0 * px / width - 1.0;
+  const double yn = 1.0 - 2.0 * py / height;
+  glm::dvec3 oVC(0.0), dVC(0, 0, -1);
+  if (desc.projection == Projection::Perspective) {
+    const double t = std::tan(glm::radians(desc.fovYDeg) * 0.5);
+    dVC = glm::dvec3(xn * t * aspect, yn * t, -1.0);
+  } else {
+    oVC = glm::dvec3(xn * desc.orthoHeight * 0.5 * aspect, yn * desc.orthoHeight * 0.5, 0.0);
+  }
+  const glm::dmat4 inv = glm::inverse(viewWCVC);
+  return {glm::dvec3(inv * glm::dvec4(oVC, 1.0)), glm::dvec3(inv * glm::dvec4(dVC, 0.0))};
+}
+
+double Camera::windowDepthFromViewDepth(double dist) const {
+  if (desc.projection == Projection::Perspective) return nearVC / dist;
+  return (farVC - dist) / (farVC - nearVC);
+}
+
+double Camera::viewDepthFromWindowDepth(double z) const {
+  if (desc.projection == Projection::Perspective) return z > 0.0 ? nearVC / z : INFINITY;
+  return farVC - z * (farVC - nearVC);
+}
+
+glm::dvec3 Camera::viewDirectionWC() const { return glm::normalize(desc.lookAtWC - desc.eyeWC); }
+
+CameraDesc frameBox(const glm::dvec3& lo, const glm::dvec3& hi, Projection p, double fovYDeg, double aspect) {
+  CameraDesc d;
+  d.projection = p;
+  d.fovYDeg = fovYDeg;
+  const glm::dvec3 centre = 0.5 * (lo + hi);
+  double r = 0.5 * glm::length(hi - lo);
+  if (!(r > 0.0)) r = std::max(1.0, std::abs(centre.x) + std::abs(centre.y) + std::abs(centre.z)) * 1e-3;
+  const double halfFov = glm::radians(fovYDeg) * 0.5;
+  const double fit = std::min(std::tan(halfFov), std::tan(halfFov) * aspect);
+  const double dist = r * std::sqrt(1.0 + 1.0 / (fit * fit));  // sphere tangent to the narrower frustum side
+  d.lookAtWC = centre;
+  d.eyeWC = centre + glm::dvec3(0, 0, dist);
+  d.upWC = glm::dvec3(0, 1, 0);
+  d.orthoHeight = 2.0 * r * std::max(1.0, 1.0 / aspect) * 1.05;
+  return d;
+}
+
+}  // namespace tg::render

@@ -1,0 +1,53 @@
+#include "render/gbuffer.h"
+
+#include <stdexcept>
+#include <string>
+
+namespace tg::render {
+
+GBuffer::GBuffer(const gl::Api& gl, int width, int height) : gl_(gl), width_(width), height_(height) {
+  GLint maxSize = 0;
+  gl.GetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+  if (width < 1 || height < 1 || width > maxSize || height > maxSize)
+    throw std::runtime_error("GBuffer: image size " + std::to_string(width) + "x" + std::to_string(height) +
+                             " outside 1.." + std::to_string(maxSize));
+  const GLenum formats[5] = {GL_RGBA8, GL_RGBA16F, GL_R32UI, GL_DEPTH_COMPONENT32F, GL_RGBA32F};
+  gl.CreateTextures(GL_TEXTURE_2D, 5, tex_);
+  for (int k = 0; k < 5; ++k) gl.TextureStorage2D(tex_[k], 1, formats[k], width, height);
+  gl.CreateFramebuffers(2, fbo_);
+  for (int k = 0; k < 3; ++k) gl.NamedFramebufferTexture(fbo_[0], GL_COLOR_ATTACHMENT0 + k, tex_[k], 0);
+  gl.NamedFramebufferTexture(fbo_[0], GL_DEPTH_ATTACHMENT, tex_[3], 0);
+  const GLenum draw[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
+  gl.NamedFramebufferDrawBuffers(fbo_[0], 3, draw);
+  gl.NamedFramebufferTexture(fbo_[1], GL_COLOR_ATTACHMENT0, tex_[4], 0);
+  gl.NamedFramebufferDrawBuffers(fbo_[1], 1, draw);
+  for (GLuint f : fbo_)
+    if (gl.CheckNamedFramebufferStatus(f, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      throw std::runtime_error("GBuffer: framebuffer incomplete");
+  gl::checkError(gl, "GBuffer");
+}
+
+GBuffer::~GBuffer() {
+  gl_.DeleteFramebuffers(2, fbo_);
+  gl_.DeleteTextures(5, tex_);
+}
+
+void GBuffer::beginGeometry() const {
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, fbo_[0]);
+  gl_.Viewport(0, 0, width_, height_);
+  const float zero[4] = {0, 0, 0, 0};
+  const GLuint noGlyph[4] = {0xFFFFFFFFu, 0, 0, 0};
+  const float farDepth = 0.0f;  // reversed Z
+  gl_.ClearNamedFramebufferfv(fbo_[0], GL_COLOR, 0, zero);
+  gl_.ClearNamedFramebufferfv(fbo_[0], GL_COLOR, 1, zero);
+  gl_.ClearNamedFramebufferuiv(fbo_[0], GL_COLOR, 2, noGlyph);
+  gl_.ClearNamedFramebufferfv(fbo_[0], GL_DEPTH, 0, &farDepth);
+}
+
+void GBuffer::beginLighting() const {
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, fbo_[1]);
+  gl_.Viewport(0, 0, width_, height_);
+  for (int k = 0; k < 3; ++k) gl_.BindTextureUnit(GLuint(k), tex_[k]);
+}
+
+}  // namespace tg::render

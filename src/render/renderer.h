@@ -1,0 +1,54 @@
+#pragma once
+// The glyph renderer: one upload, then a geometry pass into the G-buffer and a
+// deferred lighting pass per frame.
+#include <memory>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "gl/program.h"
+#include "render/camera.h"
+#include "render/frame_image.h"
+#include "render/gbuffer.h"
+#include "tensor/glyph.h"
+
+namespace tg::render {
+
+enum class ColorMode { DEC = 0, FA = 1, MD = 2, CL = 3, CP = 4 };
+
+struct Lighting {
+  glm::vec3 keyDirVC{-0.45f, 0.55f, 0.70f};  // upper left, in front
+  float ambient = 0.22f, head = 0.55f, key = 0.40f, specular = 0.25f, shininess = 40.0f;
+};
+
+struct FrameParams {
+  double scale = 1.0;  // world units per eigenvalue unit
+  double faMin = 0.0;
+  ColorMode color = ColorMode::DEC;
+  glm::vec4 background{0.08f, 0.08f, 0.10f, 1.0f};
+  Lighting light;
+};
+
+class GlyphRenderer {
+ public:
+  GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib);
+  ~GlyphRenderer();
+  GlyphRenderer(const GlyphRenderer&) = delete;
+  GlyphRenderer& operator=(const GlyphRenderer&) = delete;
+
+  // Uploads the records once; later frames change uniforms only.
+  void upload(const tensor::GlyphSet& set);
+  void render(const Camera& cam, const FrameParams& p, const GBuffer& target) const;
+  FrameImage readback(const Camera& cam, const GBuffer& target) const;
+
+ private:
+  void setCamera(const gl::Program& prog, const Camera& cam) const;
+  const gl::Api& gl_;
+  gl::Program ellipsoid_;
+  gl::Program lighting_;
+  GLuint vao_ = 0, buffer_ = 0;
+  GLsizei count_ = 0;
+  float mdMin_ = 0, mdMax_ = 0;
+};
+
+}  // namespace tg::render

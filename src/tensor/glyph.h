@@ -1,0 +1,63 @@
+#pragma once
+// The one-vertex glyph record shared by CPU and GPU, and its construction.
+#include <cstddef>
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace tg::tensor {
+
+// std430 layout; mirrored by shaders/lib/glyph_record.glsl. 48 bytes per glyph.
+// Shape-dependent quantities (scale, gamma, thresholds) are not baked in, so
+// changing them is a uniform update, never a re-upload.
+struct GlyphRecord {
+  float posWC[3];
+  float fa;              // unclamped; > 1 is possible for indefinite tensors
+  float eigenvalues[3];  // signed, descending
+  std::uint32_t id;      // index of the tensor in the input
+  float frameWC[4];      // unit quaternion (x, y, z, w): GC axes -> eigenvectors in WC
+};
+static_assert(sizeof(GlyphRecord) == 48);
+
+struct GlyphSet {
+  std::vector<GlyphRecord> glyphs;
+  glm::dvec3 boundsMinWC{0.0}, boundsMaxWC{0.0};  // of glyph centres
+  double maxAbsEigenvalue = 0;
+  double mdMin = 0, mdMax = 0;
+};
+
+// Input: N positions (x y z) and N tensors (xx xy xz yy yz zz), all finite;
+// ids[i] is the input index reported for glyph i (empty: 0..N-1).
+// Runs on up to `threads` threads (0: hardware concurrency).
+GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> tensors,
+                     std::span<const std::uint32_t> ids, unsigned threads = 0);
+
+// Rotation matrix columns from a record's quaternion (the eigenvectors).
+void frameAxes(const GlyphRecord& g, glm::dvec3 axes[3]);
+
+}  // namespace tg::tensor
+
+namespace tg::tensor {
+
+// Thinnest axis kept, relative to the glyph's longest: zero eigenvalues give
+// a disk or needle of this relative thickness instead of a degenerate quadric
+// (whose parameter-space transform would be singular). 1e-7 keeps the 1e6
+// eigenvalue ratios of the extremes gallery exact and the inverse finite in float.
+inline constexpr double kMinAxisRatio = 1e-7;
+
+// Semi-axes in WC of glyph `g` at `scale` world units per eigenvalue unit:
+// S·|λ_i|, floored at kMinAxisRatio of the largest. All zero for a zero tensor.
+glm::dvec3 ellipsoidAxes(const GlyphRecord& g, double scale);
+
+}  // namespace tg::tensor
+
+namespace tg::tensor {
+
+// The default --scale: the largest glyphs (the 99th percentile of each
+// glyph's largest |eigenvalue|, so that a few outliers do not shrink the
+// rest) get a diameter of one sample spacing. 1 when undefined.
+double defaultScale(const GlyphSet& set, double sampleSpacing);
+
+}  // namespace tg::tensor
