@@ -92,7 +92,8 @@ void boussinesqStress(double x, double y, double z, double nu, double s[9]) {
   const double q = (1.0 - z / R) / r2;
   const double sxx = k * (a * (q * (x * x - y * y) / r2 + z * y * y / (R3 * r2)) - 3.0 * z * x * x / R5);
   const double syy = k * (a * (q * (y * y - x * x) / r2 + z * x * x / (R3 * r2)) - 3.0 * z * y * y / R5);
-  const double sxy = k * (a * (q * x * y / r2 - x * y * z / (R3 * r2)) - 3.0 * x * y * z / R5);
+  // (sigma_r - sigma_theta) xy / r^2 from the cylindrical form (Johnson, "Contact Mechanics", eq. 3.21).
+  const double sxy = k * (a * (2.0 * q * x * y / r2 - x * y * z / (R3 * r2)) - 3.0 * x * y * z / R5);
   const double szz = -3.0 * k * z * z * z / R5;
   const double sxz = -3.0 * k * x * z * z / R5;
   const double syz = -3.0 * k * y * z * z / R5;

@@ -55,34 +55,63 @@ struct QuietVtk {
 // A legacy header states counts that VTK allocates before reading. Every
 // value takes at least one byte of the file, so a count beyond the file size
 // is corrupt; rejecting it here keeps a 20-byte file from allocating terabytes.
+std::uint64_t typeSize(const std::string& t) {
+  if (t == "double" || t == "long" || t == "unsigned_long" || t == "vtkIdType") return 8;
+  if (t == "float" || t == "int" || t == "unsigned_int") return 4;
+  if (t == "short" || t == "unsigned_short") return 2;
+  return 1;
+}
+
+// Every value takes at least one byte (ASCII) or its binary size, so a
+// header count beyond the file size is corrupt and a binary file shorter than
+// its arrays is truncated (VTK's binary reader does not notice). Rejecting
+// both here keeps a 20-byte file from allocating terabytes.
 void checkLegacyCounts(const std::string& path, std::uint64_t fileSize) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
-  auto tooMany = [&](std::uint64_t values) { return values > fileSize; };
-  while (std::getline(in, line)) {
+  bool binary = false;
+  std::uint64_t tuples = 0;
+  long double dataBytes = 0;  // lower bound for binary files
+  auto impossible = [&](const std::string& key, long double values) {
+    if (values > (long double)fileSize) fail(path, key + " count exceeds the file size");
+  };
+  for (int lineNo = 0; std::getline(in, line); ++lineNo) {
+    if (lineNo == 2) binary = line.rfind("BINARY", 0) == 0;
     std::istringstream ls(line);
-    std::string key;
+    std::string key, type;
     ls >> key;
-    if (key.empty() || !std::isupper(static_cast<unsigned char>(key[0]))) continue;
-    auto count = [&](std::uint64_t& v) {
-      long double d = 0;
-      if (!(ls >> d)) return false;
-      if (d < 0 || d > 1e19L) fail(path, "header count " + std::to_string(double(d)) + " in \"" + key + "\" is impossible");
-      v = std::uint64_t(d);
-      return true;
-    };
-    std::uint64_t a = 0, b = 0, c = 0;
-    if (key == "POINTS" && count(a) && (a > fileSize / 3 + 1)) fail(path, "POINTS " + std::to_string(a) + " exceeds the file size");
-    if ((key == "POINT_DATA" || key == "CELL_DATA" || key == "VERTICES" || key == "LINES" || key == "POLYGONS" ||
-         key == "CELLS" || key == "CELL_TYPES" || key == "TRIANGLE_STRIPS") &&
-        count(a) && tooMany(a))
-      fail(path, key + " " + std::to_string(a) + " exceeds the file size");
-    if (key == "DIMENSIONS" && count(a) && count(b) && count(c)) {
-      if (a == 0 || b == 0 || c == 0 || a > fileSize || b > fileSize || c > fileSize || tooMany(a * b) ||
-          tooMany(a * b * c))
-        fail(path, "DIMENSIONS exceed the file size");
+    if (key.empty() || !std::isalpha(static_cast<unsigned char>(key[0]))) continue;
+    long double a = -1, b = -1, c = -1;
+    if (key == "POINTS" && (ls >> a >> type)) {
+      impossible(key, 3 * a);
+      dataBytes += 3 * a * typeSize(type);
+    } else if ((key == "POINT_DATA" || key == "CELL_DATA") && (ls >> a)) {
+      impossible(key, a);
+      tuples = std::uint64_t(std::max<long double>(a, 0));
+    } else if ((key == "CELLS" || key == "VERTICES" || key == "LINES" || key == "POLYGONS" ||
+                key == "TRIANGLE_STRIPS" || key == "CELL_TYPES") && (ls >> a)) {
+      impossible(key, a);
+    } else if (key == "DIMENSIONS" && (ls >> a >> b >> c)) {
+      if (a < 1 || b < 1 || c < 1) fail(path, "DIMENSIONS must be positive");
+      impossible(key, a * b * c);
+    } else if (key == "TENSORS" && (ls >> type >> type)) {
+      dataBytes += 9.0L * tuples * typeSize(type);
+    } else if ((key == "VECTORS" || key == "NORMALS") && (ls >> type >> type)) {
+      dataBytes += 3.0L * tuples * typeSize(type);
+    } else if (key == "SCALARS" && (ls >> type >> type)) {
+      long double n = 1;
+      ls >> n;
+      dataBytes += n * tuples * typeSize(type);
+    } else if (ls >> a >> b >> type && a >= 0 && b >= 0 && typeSize(type) > 1) {
+      // A FIELD array: NAME COMPONENTS TUPLES TYPE
+      impossible("field array", a * b);
+      dataBytes += a * b * typeSize(type);
     }
+    if (a < -1 || b < -1 || c < -1) fail(path, "negative count in \"" + key + "\"");
   }
+  if (binary && dataBytes > (long double)fileSize)
+    fail(path, "file is truncated: its header describes " + std::to_string(std::uint64_t(dataBytes)) +
+                   " bytes of binary data, the file has " + std::to_string(fileSize));
 }
 
 vtkSmartPointer<vtkDataSet> runReader(vtkAlgorithm* reader, const std::string& path, std::uint64_t fileSize,
@@ -129,7 +158,7 @@ vtkDataArray* pickTensorArray(vtkDataSet* ds, const std::string& path, const Rea
       vtkDataArray* a = pd->GetArray(k);
       if (!a) continue;
       seen += std::string(seen.empty() ? "" : ", ") + (a->GetName() ? a->GetName() : "?") + " (" +
-              std::to_string(a->GetNumberOfComponents()) + ")";
+              std::to_string(a->GetNumberOfComponents()) + " components)";
       if ((a->GetNumberOfComponents() == 9 || a->GetNumberOfComponents() == 6) && !arr) arr = a;
     }
     if (!arr) fail(path, seen.empty() ? "no point tensors" : "no point array with 9 or 6 components; found " + seen);

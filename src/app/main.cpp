@@ -29,7 +29,7 @@ int main(int argc, const char** argv) {
     if (cmd == "render") return tg::app::cmdRender(argc - 1, argv + 1);
     if (cmd == "info") return tg::app::cmdInfo(argc - 1, argv + 1);
     if (cmd == "synth") return tg::app::cmdSynth(argc - 1, argv + 1);
-    std::fprintf(stderr, "tensorglyph: unknown command \"%s\"\n%s", cmd.c_str(), kUsage);
+    std::fprintf(stderr, "tensorglyph: unknown command \"%s\"; run 'tensorglyph --help'\n", cmd.c_str());
     return 2;
   } catch (const tg::app::UsageError& e) {
     std::fprintf(stderr, "tensorglyph %s: %s\n", cmd.c_str(), e.what());

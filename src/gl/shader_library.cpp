@@ -48,7 +48,9 @@ void ShaderLibrary::expand(std::string_view path, ComposedSource& out, std::vect
       const std::size_t q0 = body.find('"'), q1 = body.rfind('"');
       if (q0 == std::string_view::npos || q1 <= q0)
         throw std::runtime_error("ShaderLibrary::compose: " + where + ": malformed #include");
-      expand(body.substr(q0 + 1, q1 - q0 - 1), out, stack);
+      const std::string_view target = body.substr(q0 + 1, q1 - q0 - 1);
+      find(target, where);
+      expand(target, out, stack);
       out.text += "#line " + std::to_string(line + 1) + " " + std::to_string(index) + "\n";
     } else if (body.starts_with("#version")) {
       if (!top) throw std::runtime_error("ShaderLibrary::compose: " + where + ": #version in an included file");

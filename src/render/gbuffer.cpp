@@ -13,7 +13,13 @@ GBuffer::GBuffer(const gl::Api& gl, int width, int height) : gl_(gl), width_(wid
                              " outside 1.." + std::to_string(maxSize));
   const GLenum formats[5] = {GL_RGBA8, GL_RGBA16F, GL_R32UI, GL_DEPTH_COMPONENT32F, GL_RGBA32F};
   gl.CreateTextures(GL_TEXTURE_2D, 5, tex_);
-  for (int k = 0; k < 5; ++k) gl.TextureStorage2D(tex_[k], 1, formats[k], width, height);
+  for (int k = 0; k < 5; ++k) {
+    gl.TextureStorage2D(tex_[k], 1, formats[k], width, height);
+    // Nearest: an integer texture with the default linear filter is
+    // incomplete, and texelFetch from it silently returns zero.
+    gl.TextureParameteri(tex_[k], GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl.TextureParameteri(tex_[k], GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  }
   gl.CreateFramebuffers(2, fbo_);
   for (int k = 0; k < 3; ++k) gl.NamedFramebufferTexture(fbo_[0], GL_COLOR_ATTACHMENT0 + k, tex_[k], 0);
   gl.NamedFramebufferTexture(fbo_[0], GL_DEPTH_ATTACHMENT, tex_[3], 0);

@@ -1,0 +1,117 @@
+// Tier 2: VTK input through VTK's readers, round trips and bad input.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <filesystem>
+#include <fstream>
+
+#include "data-synthetic/generators.h"
+#include "io/readers.h"
+#include "io/writers.h"
+
+using namespace tg;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path tmpDir() {
+  const fs::path d = fs::temp_directory_path() / ("tg_test_vtk_" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  return d;
+}
+
+void writeText(const fs::path& p, const std::string& s) { std::ofstream(p, std::ios::binary) << s; }
+
+std::string errorOf(const fs::path& p) {
+  try {
+    io::readTensorField(p.string(), {});
+  } catch (const io::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(Vtk, RoundTripEveryFormat) {
+  const auto h = synth::helixPhantom(6, 5, 4);
+  for (const char* ext : {".vtk", ".vti", ".vtu", ".vtp"}) {
+    const fs::path p = tmpDir() / (std::string("helix") + ext);
+    io::writeVtk(h.field, p.string());
+    const io::TensorField f = io::readTensorField(p.string(), {});
+    ASSERT_EQ(f.size(), h.field.size()) << ext;
+    for (std::size_t i = 0; i < f.size(); ++i) {
+      for (int k = 0; k < 3; ++k) ASSERT_NEAR(f.positions[3 * i + k], h.field.positions[3 * i + k], 1e-4) << ext;
+      for (int k = 0; k < 6; ++k) ASSERT_EQ(f.tensors[6 * i + k], h.field.tensors[6 * i + k]) << ext;
+    }
+    if (std::string(ext) == ".vti") {
+      ASSERT_TRUE(f.grid);
+      EXPECT_NEAR(f.grid->directions[1], h.field.grid->directions[1], 1e-12);  // Direction survives
+      EXPECT_DOUBLE_EQ(f.sampleSpacing, 1.0);
+    }
+  }
+}
+
+TEST(Vtk, NaNTensorsAreSkippedAndCounted) {
+  io::TensorField src = synth::randomField(5, 2);
+  src.tensors[6 * 1 + 2] = std::numeric_limits<float>::quiet_NaN();
+  src.tensors[6 * 3 + 0] = std::numeric_limits<float>::infinity();
+  const fs::path p = tmpDir() / "nan.vtu";
+  io::writeVtk(src, p.string());
+  const io::TensorField f = io::readTensorField(p.string(), {});
+  EXPECT_EQ(f.size(), 3u);
+  EXPECT_EQ(f.skippedNonFinite, 2u);
+  EXPECT_EQ(f.ids[1], 2u);
+}
+
+TEST(Vtk, SixComponentsInVtkOrder) {
+  const fs::path p = tmpDir() / "six.vtk";
+  writeText(p,
+            "# vtk DataFile Version 3.0\nsix\nASCII\nDATASET POLYDATA\nPOINTS 2 float\n0 0 0 1 0 0\n"
+            "POINT_DATA 2\nFIELD f 1\nsym 6 2 float\n1 2 3 4 5 6\n1 1 1 0 0 0\n");
+  const io::TensorField f = io::readTensorField(p.string(), {});
+  ASSERT_EQ(f.size(), 2u);
+  // XX YY ZZ XY YZ XZ -> xx xy xz yy yz zz
+  const float expect[6] = {1, 4, 6, 2, 5, 3};
+  for (int k = 0; k < 6; ++k) EXPECT_EQ(f.tensors[k], expect[k]);
+}
+
+TEST(Vtk, FullTensorsAreSymmetrised) {
+  const fs::path p = tmpDir() / "full.vtk";
+  writeText(p, "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 1 float\n0 0 0\n"
+               "POINT_DATA 1\nTENSORS t float\n1 2 0\n4 1 0\n0 0 1\n");
+  const io::TensorField f = io::readTensorField(p.string(), {});
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f.tensors[1], 3.0f);
+}
+
+TEST(Vtk, BadInputGetsOneLineNamingFileAndProblem) {
+  const fs::path d = tmpDir();
+  writeText(d / "empty.vtk", "");
+  writeText(d / "garbage.vtk", "this is not a vtk file at all\n");
+  writeText(d / "fourcomp.vtk", "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 1 float\n0 0 0\n"
+                                "POINT_DATA 1\nFIELD f 1\nq 4 1 float\n1 2 3 4\n");
+  writeText(d / "huge.vtk", "# vtk DataFile Version 3.0\nx\nBINARY\nDATASET POLYDATA\nPOINTS 99999999999 float\n");
+  writeText(d / "hugexml.vtu",
+            "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n<UnstructuredGrid>\n"
+            "<Piece NumberOfPoints=\"999999999999\" NumberOfCells=\"0\">\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
+  writeText(d / "data.xyz", "1 2 3\n");
+  // A valid binary file cut in half.
+  io::writeVtk(synth::helixPhantom(6, 6, 6).field, (d / "whole.vtk").string());
+  {
+    const auto size = fs::file_size(d / "whole.vtk");
+    fs::copy_file(d / "whole.vtk", d / "truncated.vtk", fs::copy_options::overwrite_existing);
+    fs::resize_file(d / "truncated.vtk", size / 2);
+  }
+  const std::pair<const char*, const char*> cases[] = {
+      {"missing.vtk", "no such file"}, {"empty.vtk", "empty"},           {"garbage.vtk", "garbage.vtk"},
+      {"fourcomp.vtk", "4 components"}, {"huge.vtk", "exceeds the file size"}, {"hugexml.vtu", "points"},
+      {"data.xyz", "unknown extension"}, {"truncated.vtk", "truncated.vtk"}, {"", "is a directory"}};
+  for (const auto& [name, what] : cases) {
+    const std::string msg = errorOf(d / name);
+    EXPECT_NE(msg.find(what), std::string::npos) << name << ": \"" << msg << "\"";
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << name << ": " << msg;
+    EXPECT_NE(msg.find((d / name).string()), std::string::npos) << "message names the file: " << msg;
+  }
+}
