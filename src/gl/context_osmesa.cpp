@@ -24,7 +24,7 @@ class OSMesaBackend final : public Context {
 
   const char* backendName() const override { return "osmesa"; }
   void makeCurrent() override {
-    // All rendering goes to framebuffer objects; the default buffer is a 1x1 stub.
+    // All rendering goes to framebuffer objects, so the default buffer needs only one pixel.
     if (!OSMesaMakeCurrent(ctx_, pixel_, GL_UNSIGNED_BYTE, 1, 1))
       throw std::runtime_error("createOSMesaContext: OSMesaMakeCurrent failed");
   }
