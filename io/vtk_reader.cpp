@@ -179,7 +179,8 @@ TensorField readVtk(const std::string& path, const ReadOptions& opt) {
   struct stat st {};
   if (stat(path.c_str(), &st) != 0) fail(path, "cannot open file");
   const std::uint64_t fileSize = std::uint64_t(st.st_size);
-  const std::string ext = path.substr(path.find_last_of('.') + 1);
+  std::string ext = path.substr(path.find_last_of('.') + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
   vtkSmartPointer<vtkAlgorithm> reader;
   bool xml = true;
   if (ext == "vtk") {
