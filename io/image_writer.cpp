@@ -15,19 +15,29 @@ namespace {
   throw std::runtime_error("writeImage: " + path + ": " + what);
 }
 
+std::string lowerExtension(const std::string& path) {
+  const auto dot = path.find_last_of('.');
+  if (dot == std::string::npos || path.find('/', dot) != std::string::npos) return {};
+  std::string ext = path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
 }  // namespace
+
+bool writesGeometryChannels(const std::string& path) { return lowerExtension(path) == "exr"; }
 
 void writeImage(const render::FrameImage& img, const std::string& path) {
   const std::size_t n = std::size_t(img.width) * img.height;
-  const auto dot = path.find_last_of('.');
-  if (dot == std::string::npos || path.find('/', dot) != std::string::npos) fail(path, "no file extension");
-  std::string ext = path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  const std::string ext = lowerExtension(path);
+  if (ext.empty()) fail(path, "no file extension");
   AtomicOutput out(path);
   auto writer = OIIO::ImageOutput::create(out.tempPath());
   if (!writer) fail(path, "no image format for extension \"." + ext + "\"");
   bool ok = false;
   if (ext == "exr") {
+    if (img.depth.size() != n || img.normalWC.size() != 3 * n || img.id.size() != n)
+      fail(path, "EXR output needs the depth, normal and id channels read back");
     OIIO::ImageSpec spec(img.width, img.height, 9, OIIO::TypeDesc::FLOAT);
     spec.nchannels = 9;
     spec.channelnames = {"R", "G", "B", "A", "Z", "N.X", "N.Y", "N.Z", "id"};

@@ -13,4 +13,8 @@ namespace tg::io {
 // partial file at `path`.
 void writeImage(const render::FrameImage& img, const std::string& path);
 
+// Whether writeImage(…, path) writes depth, normal and id (EXR) and so needs
+// them read back.
+bool writesGeometryChannels(const std::string& path);
+
 }  // namespace tg::io

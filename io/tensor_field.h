@@ -39,6 +39,13 @@ struct TensorField {
   // Appends one tensor unless a component is NaN/Inf (then counts it skipped).
   // t9 is a full row-major 3x3; it is symmetrised.
   void addFull(std::uint32_t id, const double p[3], const double t9[9]);
+  // Frees positions, tensors and ids once glyphs have been built from them;
+  // the counts and grid stay.
+  void releaseSamples() {
+    positions = {};
+    tensors = {};
+    ids = {};
+  }
 };
 
 // Median nearest-neighbour distance over a sample of up to 512 points.

@@ -1,21 +1,19 @@
 #version 450 core
-// One vertex per glyph: fetch its record, cull it, and compute its exact
-// screen rectangle (Sigg et al. 2006, eq. 5) plus what the fragment stage
-// needs to intersect it.
+// Four vertices per glyph (lib/sprite.glsl): fetch the record, cull it, and
+// place this vertex at a corner of the glyph's exact screen rectangle (Sigg
+// et al. 2006, eq. 5), passing what the fragment stage needs to intersect it.
 #include "lib/camera.glsl"
 #include "lib/glyph_record.glsl"
 #include "lib/ellipsoid.glsl"
 #include "lib/color.glsl"
+#include "lib/sprite.glsl"
 
 uniform float uScale;
 uniform float uFaMin;
 uniform int uColorMode;
 uniform vec2 uMdRange;
 
-out SpriteVS {
-  flat int visible;
-  flat vec4 rectNDC;
-  flat float quadDepth;
+out SpriteFS {
   flat vec3 centreVC;
   flat mat3 gcFromVC;
   flat vec3 color;
@@ -23,9 +21,8 @@ out SpriteVS {
 } vs;
 
 void main() {
-  GlyphRecord g = glyphs[gl_VertexID];
-  vs.visible = 0;
-  gl_Position = vec4(0.0);
+  gl_Position = kSpriteCulledCC;
+  GlyphRecord g = glyphs[spriteGlyphIndex()];
   if (!(g.posWC_fa.w >= uFaMin)) return;
   vec3 axes = ellipsoidAxes(g.eigenvalues_id.xyz, uScale);
   float radius = max(axes.x, max(axes.y, axes.z));
@@ -47,11 +44,9 @@ void main() {
   rect = clamp(rect + vec4(-px, px), -1.0, 1.0);
   if (rect.x >= rect.z || rect.y >= rect.w) return;
 
-  vs.visible = 1;
-  vs.rectNDC = rect;
-  // The sprite sits at the nearest depth the glyph can have, so the fragment
+  // The quad sits at the nearest depth the glyph can have, so the fragment
   // depth only ever moves away from it (layout(depth_less) with reversed Z).
-  vs.quadDepth = windowDepthFromViewDepth(max(dist - radius, uNearVC));
+  gl_Position = spriteCornerCC(rect, windowDepthFromViewDepth(max(dist - radius, uNearVC)));
   vs.centreVC = centreVC;
   vs.gcFromVC = transpose(mat3(rotVC[0] / axes.x, rotVC[1] / axes.y, rotVC[2] / axes.z));
   vs.color = glyphColor(uColorMode, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, uMdRange);

@@ -140,8 +140,11 @@ int cmdRender(int argc, const char** argv) {
                  scene.field.path.c_str(), scene.field.skippedNonFinite);
 
   const auto t1 = Clock::now();
-  const tensor::GlyphSet glyphs = tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids);
+  tensor::GlyphSet glyphs = tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids);
   const double buildMs = msSince(t1);
+  // Each stage frees what the next no longer needs, so that peak memory holds
+  // at most two copies of the glyphs (here the records and the GL buffer).
+  scene.field.releaseSamples();
   render::FrameParams params;
   params.scale = o.scale.value_or(tensor::defaultScale(glyphs, scene.field.sampleSpacing));
   params.faMin = o.faMin.value_or(scene.preferredFaMin.value_or(0.0));
@@ -160,6 +163,8 @@ int cmdRender(int argc, const char** argv) {
   renderer.upload(glyphs);
   ctx->api().Finish();
   const double uploadMs = msSince(t2);
+  const std::size_t glyphCount = glyphs.glyphs.size();
+  glyphs.glyphs = {};
   const auto t3 = Clock::now();
   renderer.render(cam, params, target);
   ctx->api().Finish();
@@ -171,14 +176,15 @@ int cmdRender(int argc, const char** argv) {
     ctx->api().Finish();
     times.push_back(msSince(tk));
   }
-  const render::FrameImage img = renderer.readback(cam, target);
+  const render::FrameImage img = renderer.readback(
+      cam, target, io::writesGeometryChannels(o.output) ? render::Channels::All : render::Channels::Color);
   io::writeImage(img, o.output);
   if (o.verbose || o.repeat > 0) {
     std::sort(times.begin(), times.end());
     std::fprintf(stderr,
                  "tensorglyph render: %zu glyphs, %dx%d, %s (%s)\n"
                  "  load %.1f ms, eigen %.1f ms, upload %.1f ms, first frame %.1f ms",
-                 glyphs.glyphs.size(), o.width, o.height, ctx->backendName(), ctx->describe().c_str(), loadMs,
+                 glyphCount, o.width, o.height, ctx->backendName(), ctx->describe().c_str(), loadMs,
                  buildMs, uploadMs, frameMs);
     if (!times.empty()) std::fprintf(stderr, ", median of %zu frames %.2f ms", times.size(), times[times.size() / 2]);
     std::fprintf(stderr, "\n  scale %.6g, fa-min %.3g, peak RSS %.1f MiB\n", params.scale, params.faMin,

@@ -1,5 +1,6 @@
 #pragma once
 // A rendered frame on the CPU, in the output channels of the CLI contract.
+// depth, normalWC and id are empty when only colour was read back.
 #include <cstdint>
 #include <vector>
 

@@ -1,5 +1,6 @@
 #include "render/renderer.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -10,11 +11,11 @@ namespace tg::render {
 
 GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib)
     : gl_(gl),
-      ellipsoid_(gl, lib, {{GL_VERTEX_SHADER, "ellipsoid.vert"}, {GL_GEOMETRY_SHADER, "sprite.geom"},
-                           {GL_FRAGMENT_SHADER, "ellipsoid.frag"}}),
-      lighting_(gl, lib, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "lighting.frag"}}) {
-  // Core profile draws need a vertex array object even with no attributes:
-  // every glyph is pulled from the storage buffer by gl_VertexID.
+      ellipsoid_(gl, lib, {{GL_VERTEX_SHADER, "ellipsoid.vert"}, {GL_FRAGMENT_SHADER, "ellipsoid.frag"}}),
+      lighting_(gl, lib, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "lighting.frag"}}),
+      sprites_(gl) {
+  // The lighting pass's core-profile draw needs a vertex array object even
+  // with no attributes.
   gl.CreateVertexArrays(1, &vao_);
 }
 
@@ -24,8 +25,9 @@ GlyphRenderer::~GlyphRenderer() {
 }
 
 void GlyphRenderer::upload(const tensor::GlyphSet& set) {
-  if (set.glyphs.size() > std::size_t(std::numeric_limits<GLsizei>::max()))
-    throw std::runtime_error("GlyphRenderer::upload: more glyphs than one draw call can address");
+  if (set.glyphs.size() > std::size_t(INT32_MAX / 4))
+    throw std::runtime_error("GlyphRenderer::upload: " + std::to_string(set.glyphs.size()) +
+                             " glyphs; at most 2^29 fit gl_VertexID's four vertices per glyph");
   if (buffer_) gl_.DeleteBuffers(1, &buffer_);
   buffer_ = 0;
   count_ = GLsizei(set.glyphs.size());
@@ -65,8 +67,7 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
     ellipsoid_.set("uMdRange", glm::vec2(mdMin_, mdMax_));
     gl_.UseProgram(ellipsoid_.id());
     gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer_);
-    gl_.BindVertexArray(vao_);
-    gl_.DrawArrays(GL_POINTS, 0, count_);
+    sprites_.draw(0, count_);
   }
   gl_.Disable(GL_DEPTH_TEST);
   target.beginLighting();
@@ -81,36 +82,49 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   gl::checkError(gl_, "GlyphRenderer::render");
 }
 
-FrameImage GlyphRenderer::readback(const Camera& cam, const GBuffer& t) const {
+namespace {
+
+// GL rows run bottom-up; FrameImage rows top-down.
+template <class T>
+void flipRows(std::vector<T>& v, int width, int height, int channels) {
+  const std::size_t row = std::size_t(width) * channels;
+  for (int j = 0; j < height / 2; ++j)
+    std::swap_ranges(v.begin() + std::ptrdiff_t(j * row), v.begin() + std::ptrdiff_t((j + 1) * row),
+                     v.begin() + std::ptrdiff_t((height - 1 - j) * row));
+}
+
+}  // namespace
+
+// Reads each channel straight into its final array: no staging copies, so a
+// PNG frame costs 16 bytes per pixel on the CPU and an EXR frame 36.
+FrameImage GlyphRenderer::readback(const Camera& cam, const GBuffer& t, Channels channels) const {
   FrameImage img;
   const int w = t.width(), h = t.height();
   img.width = w;
   img.height = h;
   const std::size_t n = std::size_t(w) * h;
-  std::vector<float> rgba(4 * n), normal(4 * n), depth(n);
-  std::vector<std::uint32_t> id(n);
-  gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
   auto bytes = [](const auto& v) { return GLsizei(v.size() * sizeof(v[0])); };
-  gl_.GetTextureImage(t.color(), 0, GL_RGBA, GL_FLOAT, bytes(rgba), rgba.data());
-  gl_.GetTextureImage(t.normalWC(), 0, GL_RGBA, GL_FLOAT, bytes(normal), normal.data());
-  gl_.GetTextureImage(t.depth(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, bytes(depth), depth.data());
-  gl_.GetTextureImage(t.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, bytes(id), id.data());
-  gl::checkError(gl_, "GlyphRenderer::readback");
+  gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
   img.rgba.resize(4 * n);
-  img.depth.resize(n);
-  img.normalWC.resize(3 * n);
-  img.id.resize(n);
-  for (int j = 0; j < h; ++j) {
-    const std::size_t src = std::size_t(h - 1 - j) * w, dst = std::size_t(j) * w;  // GL rows run bottom-up
-    for (int i = 0; i < w; ++i) {
-      const std::size_t s = src + i, d = dst + i;
-      for (int c = 0; c < 4; ++c) img.rgba[4 * d + c] = rgba[4 * s + c];
-      img.id[d] = id[s];
-      const bool empty = id[s] == 0xFFFFFFFFu;
-      img.depth[d] = empty ? INFINITY : float(cam.viewDepthFromWindowDepth(depth[s]));
-      for (int c = 0; c < 3; ++c) img.normalWC[3 * d + c] = empty ? 0.0f : normal[4 * s + c];
+  gl_.GetTextureImage(t.color(), 0, GL_RGBA, GL_FLOAT, bytes(img.rgba), img.rgba.data());
+  flipRows(img.rgba, w, h, 4);
+  if (channels == Channels::All) {
+    img.id.resize(n);
+    img.depth.resize(n);
+    img.normalWC.resize(3 * n);
+    gl_.GetTextureImage(t.id(), 0, GL_RED_INTEGER, GL_UNSIGNED_INT, bytes(img.id), img.id.data());
+    gl_.GetTextureImage(t.depth(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, bytes(img.depth), img.depth.data());
+    gl_.GetTextureImage(t.normalWC(), 0, GL_RGB, GL_FLOAT, bytes(img.normalWC), img.normalWC.data());
+    flipRows(img.id, w, h, 1);
+    flipRows(img.depth, w, h, 1);
+    flipRows(img.normalWC, w, h, 3);
+    for (std::size_t i = 0; i < n; ++i) {
+      const bool empty = img.id[i] == 0xFFFFFFFFu;
+      img.depth[i] = empty ? INFINITY : float(cam.viewDepthFromWindowDepth(img.depth[i]));
+      if (empty) img.normalWC[3 * i] = img.normalWC[3 * i + 1] = img.normalWC[3 * i + 2] = 0.0f;
     }
   }
+  gl::checkError(gl_, "GlyphRenderer::readback");
   return img;
 }
 

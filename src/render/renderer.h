@@ -10,9 +10,13 @@
 #include "render/camera.h"
 #include "render/frame_image.h"
 #include "render/gbuffer.h"
+#include "render/quad_sprites.h"
 #include "tensor/glyph.h"
 
 namespace tg::render {
+
+// What readback fetches: colour only (PNG and the like) or every channel (EXR).
+enum class Channels { Color, All };
 
 enum class ColorMode { DEC = 0, FA = 1, MD = 2, CL = 3, CP = 4 };
 
@@ -39,13 +43,14 @@ class GlyphRenderer {
   // Uploads the records once; later frames change uniforms only.
   void upload(const tensor::GlyphSet& set);
   void render(const Camera& cam, const FrameParams& p, const GBuffer& target) const;
-  FrameImage readback(const Camera& cam, const GBuffer& target) const;
+  FrameImage readback(const Camera& cam, const GBuffer& target, Channels channels = Channels::All) const;
 
  private:
   void setCamera(const gl::Program& prog, const Camera& cam) const;
   const gl::Api& gl_;
   gl::Program ellipsoid_;
   gl::Program lighting_;
+  QuadSprites sprites_;
   GLuint vao_ = 0, buffer_ = 0;
   GLsizei count_ = 0;
   float mdMin_ = 0, mdMax_ = 0;

@@ -1,0 +1,49 @@
+#include "render/quad_sprites.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <stdexcept>
+#include <vector>
+
+namespace tg::render {
+
+QuadSprites::QuadSprites(const gl::Api& gl) : gl_(gl) {
+  std::vector<std::uint16_t> idx(6 * std::size_t(kQuadsPerBatch));
+  for (GLsizei q = 0; q < kQuadsPerBatch; ++q) {
+    const auto v = std::uint16_t(4 * q);
+    const std::uint16_t tri[6] = {v, std::uint16_t(v + 1), std::uint16_t(v + 2),
+                                  std::uint16_t(v + 2), std::uint16_t(v + 1), std::uint16_t(v + 3)};
+    for (int k = 0; k < 6; ++k) idx[6 * std::size_t(q) + k] = tri[k];
+  }
+  gl.CreateBuffers(1, &indices_);
+  gl.NamedBufferStorage(indices_, GLsizeiptr(idx.size() * sizeof(idx[0])), idx.data(), 0);
+  gl.CreateVertexArrays(1, &vao_);
+  gl.VertexArrayElementBuffer(vao_, indices_);
+  gl::checkError(gl, "QuadSprites::QuadSprites");
+}
+
+QuadSprites::~QuadSprites() {
+  gl_.DeleteVertexArrays(1, &vao_);
+  gl_.DeleteBuffers(1, &indices_);
+}
+
+void QuadSprites::draw(GLint first, GLsizei count) const {
+  if (count <= 0) return;
+  // gl_VertexID = 4 * glyph + corner, so the vertex index range must fit a GLint.
+  if (first < 0 || std::int64_t(first) + count > std::int64_t(INT32_MAX) / 4)
+    throw std::runtime_error("QuadSprites::draw: glyph range beyond 2^29");
+  std::vector<GLsizei> counts;
+  std::vector<const void*> offsets;
+  std::vector<GLint> baseVertices;
+  for (GLsizei done = 0; done < count; done += kQuadsPerBatch) {
+    const GLsizei n = std::min(kQuadsPerBatch, count - done);
+    counts.push_back(6 * n);
+    offsets.push_back(nullptr);
+    baseVertices.push_back(4 * (first + done));
+  }
+  gl_.BindVertexArray(vao_);
+  gl_.MultiDrawElementsBaseVertex(GL_TRIANGLES, counts.data(), GL_UNSIGNED_SHORT, offsets.data(),
+                                  GLsizei(counts.size()), baseVertices.data());
+}
+
+}  // namespace tg::render
