@@ -27,8 +27,9 @@ struct RenderOptions {
   std::optional<double> faMin, scale, fov, ortho;
   std::optional<glm::dvec3> eye, lookAt, up;
   glm::vec4 background{0.08f, 0.08f, 0.10f, 1.0f};
-  int repeat = 0;
-  bool verbose = false;
+  int repeat = 0, maxIterations = render::MarchParams{}.maxIterations;
+  double epsilon = render::MarchParams{}.epsilon;
+  bool verbose = false, stats = false;
 };
 
 RenderOptions parse(int argc, const char** argv) {
@@ -47,7 +48,13 @@ RenderOptions parse(int argc, const char** argv) {
     o.width = int(parseInt("--size", a[1]));
     o.height = int(parseInt("--size", a[2]));
   });
-  ap.arg("--glyph KIND").help("ellipsoid").action([&](auto&, Args a) { o.glyph = a[1]; });
+  ap.arg("--glyph KIND").help("ellipsoid (default) or superquadric").action([&](auto&, Args a) { o.glyph = a[1]; });
+  ap.arg("--iterations N").help("superquadric Newton iterations at most (default 10)").action([&](auto&, Args a) {
+    o.maxIterations = int(parseInt("--iterations", a[1]));
+  });
+  ap.arg("--epsilon E").help("superquadric hit tolerance, relative to glyph size (default 1e-4)")
+      .action([&](auto&, Args a) { o.epsilon = parseDouble("--epsilon", a[1]); });
+  ap.arg("--stats").help("report Newton iteration statistics on stderr").action([&](auto&, Args) { o.stats = true; });
   ap.arg("--gamma G").help("superquadric sharpness (Kindlmann 2004), >= 0").action([&](auto&, Args a) {
     o.gamma = parseDouble("--gamma", a[1]);
   });
@@ -84,9 +91,11 @@ void validate(const RenderOptions& o) {
   if (o.output.empty()) throw UsageError("-o OUT is required");
   if (o.width < 1 || o.height < 1 || o.width > 16384 || o.height > 16384)
     throw UsageError("--size must be within 1..16384");
-  if (o.glyph != "ellipsoid")
-    throw UsageError("--glyph: \"" + o.glyph + "\" is not available; this build draws ellipsoid glyphs");
-  if (!(o.gamma >= 0.0)) throw UsageError("--gamma must be >= 0");
+  if (o.glyph != "ellipsoid" && o.glyph != "superquadric")
+    throw UsageError("--glyph: unknown kind \"" + o.glyph + "\"; choose ellipsoid or superquadric");
+  if (!(o.gamma >= 0.0 && o.gamma <= 1e4)) throw UsageError("--gamma must be within 0..10000");
+  if (o.maxIterations < 1 || o.maxIterations > 1000) throw UsageError("--iterations must be within 1..1000");
+  if (!(o.epsilon >= 1e-9 && o.epsilon <= 0.5)) throw UsageError("--epsilon must be within 1e-9..0.5");
   if (o.scale && !(*o.scale > 0.0)) throw UsageError("--scale must be positive");
   if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
   if ((o.lookAt || o.up) && !o.eye) throw UsageError("--look-at and --up need --eye");
@@ -149,6 +158,10 @@ int cmdRender(int argc, const char** argv) {
   params.scale = o.scale.value_or(tensor::defaultScale(glyphs, scene.field.sampleSpacing));
   params.faMin = o.faMin.value_or(scene.preferredFaMin.value_or(0.0));
   params.color = colorMode(o.color);
+  params.glyph = o.glyph == "superquadric" ? render::GlyphKind::Superquadric : render::GlyphKind::Ellipsoid;
+  params.gamma = o.gamma;
+  params.march = {o.maxIterations, o.epsilon};
+  params.iterationStats = o.stats;
   params.background = o.background;
 
   const double pad = params.scale * glyphs.maxAbsEigenvalue;
@@ -175,6 +188,11 @@ int cmdRender(int argc, const char** argv) {
     renderer.render(cam, params, target);
     ctx->api().Finish();
     times.push_back(msSince(tk));
+  }
+  if (o.stats) {
+    const render::IterationStats st = renderer.iterationStats();
+    std::fprintf(stderr, "tensorglyph render: Newton iterations: mean %.2f, max %u over %llu pixels\n", st.mean,
+                 st.max, static_cast<unsigned long long>(st.pixels));
   }
   const render::FrameImage img = renderer.readback(
       cam, target, io::writesGeometryChannels(o.output) ? render::Channels::All : render::Channels::Color);

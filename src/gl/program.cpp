@@ -1,5 +1,6 @@
 #include "gl/program.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -19,14 +20,24 @@ std::string shaderLog(const Api& gl, GLuint s) {
 
 }  // namespace
 
-Program::Program(const Api& gl, const ShaderLibrary& lib, std::initializer_list<StageSource> stages) : gl_(&gl) {
+Program::Program(const Api& gl, const ShaderLibrary& lib, std::initializer_list<StageSource> stages,
+                 std::initializer_list<std::string_view> enable)
+    : gl_(&gl) {
+  const std::vector<std::string_view> wanted(enable);
+  std::vector<std::string> declared;
+  for (const StageSource& st : stages)
+    for (auto& o : lib.compose(st.path).options) declared.push_back(o);
+  for (std::string_view e : wanted)
+    if (std::find(declared.begin(), declared.end(), e) == declared.end())
+      throw std::runtime_error("Program: no stage of " + std::string(stages.begin()->path) + " declares option \"" +
+                               std::string(e) + "\"");
   id_ = gl.CreateProgram();
   std::vector<GLuint> shaders;
   auto cleanup = [&] {
     for (GLuint s : shaders) gl.DeleteShader(s);
   };
   for (const StageSource& st : stages) {
-    const ComposedSource src = lib.compose(st.path);
+    const ComposedSource src = lib.compose(st.path, wanted);
     const GLuint s = gl.CreateShader(st.stage);
     shaders.push_back(s);
     const char* text = src.text.c_str();

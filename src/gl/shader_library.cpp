@@ -16,11 +16,18 @@ std::string_view ShaderLibrary::find(std::string_view path, std::string_view fro
                            std::string(path) + "\"");
 }
 
-ComposedSource ShaderLibrary::compose(std::string_view path) const {
+ComposedSource ShaderLibrary::compose(std::string_view path, std::span<const std::string_view> enable) const {
   ComposedSource out;
   std::vector<std::string> stack;
   find(path, "request");
   expand(path, out, stack);
+  std::string defines;
+  for (std::string_view e : enable)
+    if (std::find(out.options.begin(), out.options.end(), e) != out.options.end())
+      defines += "#define " + std::string(e) + " 1\n";
+  // After the #version line, which is the first line of the top-level file.
+  const std::size_t eol = out.text.find('\n');
+  out.text.insert(eol + 1, defines);
   return out;
 }
 
@@ -57,6 +64,13 @@ void ShaderLibrary::expand(std::string_view path, ComposedSource& out, std::vect
       out.text.append(l).append("\n");
       out.text += "#line " + std::to_string(line + 1) + " " + std::to_string(index) + "\n";
       versionSeen = true;
+    } else if (body.starts_with("#pragma tg option ")) {
+      static const std::regex ident(R"([A-Za-z_][A-Za-z0-9_]*)");
+      const std::string opt(body.substr(18));
+      if (!std::regex_match(opt, ident))
+        throw std::runtime_error("ShaderLibrary::compose: " + where + ": malformed option \"" + opt + "\"");
+      out.options.push_back(opt);
+      out.text += "\n";
     } else if (body.starts_with("#pragma tg")) {
       throw std::runtime_error("ShaderLibrary::compose: " + where + ": unknown tag \"" + std::string(body) + "\"");
     } else {

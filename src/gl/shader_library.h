@@ -1,5 +1,6 @@
 #pragma once
 // GLSL sources embedded at build time, and their composition by #include.
+#include <span>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -16,7 +17,8 @@ const std::vector<EmbeddedFile>& embeddedShaderFiles();
 
 struct ComposedSource {
   std::string text;
-  std::vector<std::string> files;  // files[k] is GLSL source-string number k in #line
+  std::vector<std::string> files;    // files[k] is GLSL source-string number k in #line
+  std::vector<std::string> options;  // declared by `#pragma tg option NAME`
 };
 
 class ShaderLibrary {
@@ -28,7 +30,10 @@ class ShaderLibrary {
   // that compiler messages can be mapped back to files. Throws
   // std::runtime_error on an unknown file, an include cycle, a malformed
   // directive, or a #version outside the top-level file.
-  ComposedSource compose(std::string_view path) const;
+  // Each of `enable` that a composed file declares with
+  // `#pragma tg option NAME` is defined (`#define NAME 1`) after #version;
+  // the others are left for the caller to reject (see Program).
+  ComposedSource compose(std::string_view path, std::span<const std::string_view> enable = {}) const;
 
   // Rewrites "K:LINE(COL)" (Mesa) and "K(LINE)" (NVIDIA) prefixes in a
   // compiler log to "file:LINE".

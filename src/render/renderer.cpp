@@ -12,16 +12,22 @@ namespace tg::render {
 GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib)
     : gl_(gl),
       ellipsoid_(gl, lib, {{GL_VERTEX_SHADER, "ellipsoid.vert"}, {GL_FRAGMENT_SHADER, "ellipsoid.frag"}}),
+      superquadric_(gl, lib, {{GL_VERTEX_SHADER, "superquadric.vert"}, {GL_FRAGMENT_SHADER, "superquadric.frag"}}),
+      superquadricStats_(gl, lib, {{GL_VERTEX_SHADER, "superquadric.vert"}, {GL_FRAGMENT_SHADER, "superquadric.frag"}},
+                         {"TG_ITERATION_STATS"}),
       lighting_(gl, lib, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "lighting.frag"}}),
       sprites_(gl) {
   // The lighting pass's core-profile draw needs a vertex array object even
   // with no attributes.
   gl.CreateVertexArrays(1, &vao_);
+  gl.CreateBuffers(1, &stats_);
+  gl.NamedBufferStorage(stats_, 3 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
 
 GlyphRenderer::~GlyphRenderer() {
   if (buffer_) gl_.DeleteBuffers(1, &buffer_);
   gl_.DeleteVertexArrays(1, &vao_);
+  gl_.DeleteBuffers(1, &stats_);
 }
 
 void GlyphRenderer::upload(const tensor::GlyphSet& set) {
@@ -31,6 +37,7 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   if (buffer_) gl_.DeleteBuffers(1, &buffer_);
   buffer_ = 0;
   count_ = GLsizei(set.glyphs.size());
+  sphereCount_ = GLsizei(set.sphereCount);
   mdMin_ = float(set.mdMin);
   mdMax_ = float(set.mdMax);
   if (count_ == 0) return;
@@ -60,14 +67,36 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
     gl_.Enable(GL_DEPTH_TEST);
     gl_.DepthFunc(GL_GREATER);  // reversed Z
     gl_.DepthMask(GL_TRUE);
-    setCamera(ellipsoid_, cam);
-    ellipsoid_.set("uScale", float(p.scale));
-    ellipsoid_.set("uFaMin", float(p.faMin));
-    ellipsoid_.set("uColorMode", int(p.color));
-    ellipsoid_.set("uMdRange", glm::vec2(mdMin_, mdMax_));
-    gl_.UseProgram(ellipsoid_.id());
     gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer_);
-    sprites_.draw(0, count_);
+    // Dispatch (README, "How glyphs are dispatched"): at gamma 0 every glyph
+    // is an ellipsoid; otherwise only the spheres, grouped first at upload.
+    const bool superquadrics = p.glyph == GlyphKind::Superquadric && p.gamma > 0.0;
+    const GLsizei ellipsoids = superquadrics ? sphereCount_ : count_;
+    auto common = [&](const gl::Program& prog) {
+      setCamera(prog, cam);
+      prog.set("uScale", float(p.scale));
+      prog.set("uFaMin", float(p.faMin));
+      prog.set("uColorMode", int(p.color));
+      prog.set("uMdRange", glm::vec2(mdMin_, mdMax_));
+      gl_.UseProgram(prog.id());
+    };
+    if (ellipsoids > 0) {
+      common(ellipsoid_);
+      sprites_.draw(0, ellipsoids);
+    }
+    if (superquadrics && count_ > ellipsoids) {
+      const gl::Program& prog = p.iterationStats ? superquadricStats_ : superquadric_;
+      prog.set("uGamma", float(p.gamma));
+      prog.set("uMaxIterations", p.march.maxIterations);
+      prog.set("uEpsilon", float(p.march.epsilon));
+      if (p.iterationStats) {
+        const GLuint zero[3] = {0, 0, 0};
+        gl_.NamedBufferSubData(stats_, 0, sizeof(zero), zero);
+        gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, stats_);
+      }
+      common(prog);
+      sprites_.draw(ellipsoids, count_ - ellipsoids);
+    }
   }
   gl_.Disable(GL_DEPTH_TEST);
   target.beginLighting();
@@ -94,6 +123,18 @@ void flipRows(std::vector<T>& v, int width, int height, int channels) {
 }
 
 }  // namespace
+
+IterationStats GlyphRenderer::iterationStats() const {
+  GLuint v[3] = {0, 0, 0};
+  gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+  gl_.GetNamedBufferSubData(stats_, 0, sizeof(v), v);
+  gl::checkError(gl_, "GlyphRenderer::iterationStats");
+  IterationStats s;
+  s.pixels = v[2];
+  s.max = v[1];
+  s.mean = v[2] ? double(v[0]) / v[2] : 0.0;
+  return s;
+}
 
 // Reads each channel straight into its final array: no staging copies, so a
 // PNG frame costs 16 bytes per pixel on the CPU and an EXR frame 36.

@@ -1,6 +1,7 @@
 #pragma once
 // The glyph renderer: one upload, then a geometry pass into the G-buffer and a
 // deferred lighting pass per frame.
+#include <cstdint>
 #include <memory>
 
 #include <glm/vec3.hpp>
@@ -25,9 +26,28 @@ struct Lighting {
   float ambient = 0.22f, head = 0.55f, key = 0.40f, specular = 0.25f, shininess = 40.0f;
 };
 
+enum class GlyphKind { Ellipsoid, Superquadric };
+
+// Newton march settings; the defaults come from `tensorglyph bench accuracy`
+// (README, "Speed and accuracy").
+struct MarchParams {
+  int maxIterations = 10;
+  double epsilon = 1e-4;  // in units of the glyph's size
+};
+
+struct IterationStats {
+  double mean = 0;
+  unsigned max = 0;
+  std::uint64_t pixels = 0;  // superquadric fragments that ran the march
+};
+
 struct FrameParams {
   double scale = 1.0;  // world units per eigenvalue unit
   double faMin = 0.0;
+  GlyphKind glyph = GlyphKind::Ellipsoid;
+  double gamma = 3.0;  // superquadric sharpness; 0 draws ellipsoids
+  MarchParams march;
+  bool iterationStats = false;  // count Newton iterations (a shader variant; off costs nothing)
   ColorMode color = ColorMode::DEC;
   glm::vec4 background{0.08f, 0.08f, 0.10f, 1.0f};
   Lighting light;
@@ -44,15 +64,19 @@ class GlyphRenderer {
   void upload(const tensor::GlyphSet& set);
   void render(const Camera& cam, const FrameParams& p, const GBuffer& target) const;
   FrameImage readback(const Camera& cam, const GBuffer& target, Channels channels = Channels::All) const;
+  // Of the last frame rendered with iterationStats on.
+  IterationStats iterationStats() const;
 
  private:
   void setCamera(const gl::Program& prog, const Camera& cam) const;
   const gl::Api& gl_;
   gl::Program ellipsoid_;
+  gl::Program superquadric_;
+  gl::Program superquadricStats_;
   gl::Program lighting_;
   QuadSprites sprites_;
-  GLuint vao_ = 0, buffer_ = 0;
-  GLsizei count_ = 0;
+  GLuint vao_ = 0, buffer_ = 0, stats_ = 0;
+  GLsizei count_ = 0, sphereCount_ = 0;
   float mdMin_ = 0, mdMax_ = 0;
 };
 

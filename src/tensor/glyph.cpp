@@ -87,6 +87,13 @@ GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> te
   set.maxAbsEigenvalue = all.maxAbs;
   set.mdMin = all.mdMin;
   set.mdMax = all.mdMax;
+  // Spheres (equal eigenvalues, the zero tensor included) are ellipsoids at
+  // every gamma; grouping them first lets the renderer draw them with the
+  // exact quadric path and send only the rest through Newton.
+  const auto firstOther = std::partition(set.glyphs.begin(), set.glyphs.end(), [](const GlyphRecord& g) {
+    return g.eigenvalues[0] == g.eigenvalues[2];
+  });
+  set.sphereCount = std::size_t(firstOther - set.glyphs.begin());
   return set;
 }
 

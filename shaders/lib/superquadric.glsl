@@ -1,0 +1,160 @@
+// Superquadric glyphs: shape (the GLSL twin of src/tensor/superquadric.cpp,
+// after Teem's tenGlyphGen), implicit function, and the box-seeded Newton
+// march of Hlawitschka et al. with a kept bracket (Blinn 1982, §3.3).
+// Requires lib/ellipsoid.glsl (kMinAxisRatio, unitSphereRoots).
+
+const float kMinShapeExponent = 2e-3;  // mirrors tg::tensor::kMinShapeExponent
+
+float sphericalTriangleArea(vec3 a, vec3 b, vec3 c) {
+  return 2.0 * atan(abs(dot(a, cross(b, c))), 1.0 + dot(a, b) + dot(b, c) + dot(c, a));
+}
+
+vec3 sphericalBarycentric(vec3 p0, vec3 p1, vec3 p2, vec3 v) {
+  vec3 w = vec3(sphericalTriangleArea(v, p1, p2), sphericalTriangleArea(p0, v, p2), sphericalTriangleArea(p0, p1, v));
+  return w / (w.x + w.y + w.z);
+}
+
+// (a, b, c) in xyz and the eigenvector index GC z follows in w.
+vec4 kindlmann2004(vec3 l, float gamma, bool mirrored) {
+  float tr = l.x + l.y + l.z;
+  float cl = min(0.99, (l.x - l.y) / tr), cp = min(0.99, 2.0 * (l.y - l.z) / tr);
+  if (cl > cp) return vec4(pow(1.0 - cp, gamma), pow(1.0 - cl, gamma), pow(1.0 - cl, gamma), mirrored ? 2.0 : 0.0);
+  return vec4(pow(1.0 - cl, gamma), pow(1.0 - cp, gamma), pow(1.0 - cp, gamma), mirrored ? 0.0 : 2.0);
+}
+
+vec4 schultz2010(vec3 l) {
+  const float r2 = 0.70710678, r3 = 0.57735027;
+  const vec3 B = vec3(1, 0, 0), C = vec3(r2, r2, 0), D = vec3(r3, -r3, -r3), E = vec3(r2, 0, -r2),
+             F = vec3(r3, r3, -r3), G = vec3(0, -r2, -r2), H = vec3(0, 0, -1);
+  const vec3 funk = vec3(0, 4, 2), thrn = vec3(1, 4, 4), octa = vec3(0, 2, 2), cone = vec3(1, 2, 2);
+  vec3 n = normalize(l);
+  if (l.y >= -l.z) return vec4(mat3(octa, thrn, cone) * sphericalBarycentric(B, F, C, n), 2.0);
+  if (l.x >= -l.z) {
+    if (l.y >= 0.0) return vec4(mat3(octa, funk, thrn) * sphericalBarycentric(B, E, F, n), 2.0);
+    return vec4(mat3(cone, thrn, funk) * sphericalBarycentric(B, D, E, n), 0.0);
+  }
+  if (l.x < -l.y) return vec4(mat3(thrn, cone, octa) * sphericalBarycentric(D, G, H, n), 0.0);
+  if (l.y < 0.0) return vec4(mat3(funk, thrn, octa) * sphericalBarycentric(E, D, H, n), 0.0);
+  return vec4(mat3(thrn, funk, cone) * sphericalBarycentric(F, E, H, n), 2.0);
+}
+
+vec4 superquadricShape(vec3 l, float gamma) {
+  if (l.x == 0.0 && l.z == 0.0) return vec4(1.0, 1.0, 1.0, 2.0);
+  vec4 s = l.z > 0.0 ? kindlmann2004(l, gamma, false)
+         : l.x < 0.0 ? kindlmann2004(-l.zyx, gamma, true) : schultz2010(l);
+  return vec4(max(s.xyz, vec3(kMinShapeExponent)), s.w);
+}
+
+// g(p) = (s^(2/b) + |z|^(2/c))^(b/2), s = (|x|^(2/a) + |y|^(2/a))^(a/2), and
+// its gradient. Powers are taken of ratios in [0, 1] or in log2, so exponents
+// up to 1000 neither overflow nor divide by zero.
+float superquadricGauge(vec3 shape, vec3 p, out vec3 grad) {
+  vec3 ap = abs(p);
+  float m = max(ap.x, ap.y);
+  float sxy = 0.0;
+  vec2 r = vec2(0.0);
+  if (m > 0.0) {
+    vec2 q = max(ap.xy / m, vec2(1e-30));  // log2(0) is undefined in GLSL
+    vec2 pq = exp2(2.0 / shape.x * log2(q));
+    float sum = pq.x + pq.y;
+    sxy = m * exp2(shape.x / 2.0 * log2(sum));
+    r = exp2((2.0 / shape.x - 1.0) * log2(q)) / (sum * m);
+  }
+  grad = vec3(0.0);
+  if (sxy == 0.0 && ap.z == 0.0) return 0.0;
+  float lu = sxy > 0.0 ? 2.0 / shape.y * log2(sxy) : -1e30;
+  float lw = ap.z > 0.0 ? 2.0 / shape.z * log2(ap.z) : -1e30;
+  float hi = max(lu, lw), e = exp2(min(lu, lw) - hi);
+  float g = exp2(shape.y / 2.0 * (hi + log2(1.0 + e)));
+  float wu = lu >= lw ? 1.0 / (1.0 + e) : e / (1.0 + e);
+  float dz = ap.z > 0.0 ? shape.y / shape.z * (1.0 - wu) / ap.z : 0.0;
+  grad = g * sign(p) * vec3(wu * r, dz);
+  return g;
+}
+
+// Convex along every line when g is a norm (2/a, 2/b >= 1, c = b); it then
+// also contains the unit sphere when a, b <= 1.
+bool superquadricConvex(vec3 shape) { return shape.x <= 2.0 && shape.y <= 2.0 && shape.z == shape.y; }
+
+struct MarchResult {
+  bool hit;
+  float s;      // arc length along the unit GC direction
+  vec3 gradGC;
+  int iterations;
+};
+
+// The first surface crossing of the unit glyph along o + s dir (|dir| = 1,
+// GC) with s >= sNear, to tolerance eps in GC units, in at most maxIter
+// Newton steps. Seeded at the cube entry; the bracket [lo, hi] with
+// h(lo) > 0 >= h(hi) is kept, and a step that leaves it bisects instead.
+MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, int maxIter, float eps) {
+  MarchResult res = MarchResult(false, 0.0, vec3(0.0), 0);
+  // Slabs of the cube [-1, 1]^3.
+  vec3 inv = 1.0 / dir;
+  vec3 ta = (-1.0 - o) * inv, tb = (1.0 - o) * inv;
+  float s0 = max(max(min(ta.x, tb.x), min(ta.y, tb.y)), min(ta.z, tb.z));
+  float s1 = min(min(max(ta.x, tb.x), max(ta.y, tb.y)), max(ta.z, tb.z));
+  bool fromNear = sNear > s0;
+  s0 = max(s0, sNear);
+  if (!(s0 <= s1)) return res;
+
+  vec3 grad;
+  float h0 = superquadricGauge(shape, o + s0 * dir, grad) - 1.0;
+  bool exiting = false;
+  float lo = s0, hi = s1;
+  bool bracketed = false;
+  if (h0 <= 0.0) {
+    if (!fromNear) return MarchResult(true, s0, grad, 0);  // the glyph touches the cube face
+    exiting = true;  // the near point is inside: find the exit
+    bracketed = true;
+  } else if (superquadricConvex(shape)) {
+    float q0, q1;
+    // a, b <= 1: the glyph holds the unit sphere, so its entry bounds the root.
+    if (shape.x <= 1.0 && shape.y <= 1.0 && unitSphereRoots(o, dir, q0, q1) && q0 >= s0) {
+      hi = q0;
+      bracketed = true;
+    }
+  } else {
+    // Non-convex: the first sign change on a coarse grid brackets the root.
+    const int kSamples = 24;
+    float prev = s0;
+    for (int k = 1; k <= kSamples && !bracketed; ++k) {
+      float s = s0 + (s1 - s0) * float(k) / float(kSamples);
+      if (superquadricGauge(shape, o + s * dir, grad) - 1.0 <= 0.0) {
+        lo = prev;
+        hi = s;
+        bracketed = true;
+      }
+      prev = s;
+    }
+    if (!bracketed) return res;
+  }
+
+  float s = exiting ? hi : lo;
+  for (int i = 0; i < maxIter; ++i) {
+    res.iterations = i + 1;
+    float h = superquadricGauge(shape, o + s * dir, grad) - 1.0;
+    float dh = dot(grad, dir);
+    if (abs(h) < eps) return MarchResult(true, s, grad, i + 1);
+    // Keep the bracket: the side with h > 0 is lo when entering, hi when exiting.
+    if ((h > 0.0) != exiting) lo = s; else hi = s;
+    if (h <= 0.0) bracketed = true;
+    // Miss: outside a convex glyph and moving away from it (Hlawitschka's test).
+    if (!bracketed && h > 0.0 && dh >= 0.0) return res;
+    float next = s - h / dh;
+    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    if (abs(next - s) < eps || hi - lo < eps) {
+      vec3 gn;
+      superquadricGauge(shape, o + next * dir, gn);
+      return MarchResult(true, next, gn, i + 1);
+    }
+    s = next;
+  }
+  // Out of iterations: a bracketed root exists, so the pixel is covered at
+  // the current estimate; an unbracketed one is not known to be hit.
+  if (bracketed) {
+    superquadricGauge(shape, o + s * dir, grad);
+    return MarchResult(true, s, grad, maxIter);
+  }
+  return res;
+}

@@ -1,0 +1,58 @@
+#version 450 core
+// Ray-superquadric intersection per pixel into the same G-buffer as the
+// ellipsoids: the ray in GC, seeded at the unit cube, Newton with a kept
+// bracket (lib/superquadric.glsl).
+#pragma tg option TG_ITERATION_STATS
+#include "lib/camera.glsl"
+#include "lib/ellipsoid.glsl"
+#include "lib/superquadric.glsl"
+
+uniform int uMaxIterations;
+uniform float uEpsilon;
+
+in SuperquadricFS {
+  flat vec3 centreVC;
+  flat mat3 gcFromVC;
+  flat vec3 shape;
+  flat vec3 color;
+  flat uint id;
+} fin;
+
+#ifdef TG_ITERATION_STATS
+// Compiled in only when statistics are asked for: [0] sum, [1] max, [2] pixels.
+layout(std430, binding = 1) buffer IterationStats { uint iterStats[3]; };
+#endif
+
+layout(depth_less) out float gl_FragDepth;
+layout(location = 0) out vec4 oAlbedo;
+layout(location = 1) out vec4 oNormalWC;
+layout(location = 2) out uint oId;
+
+void main() {
+  vec3 originVC, dirVC;
+  rayThroughFragment(gl_FragCoord.xy, originVC, dirVC);
+  // Restart at the closest approach to the centre, as for ellipsoids, and
+  // march in GC arc length so that eps is relative to the glyph's size.
+  float tc = dot(fin.centreVC - originVC, dirVC) / dot(dirVC, dirVC);
+  vec3 o = fin.gcFromVC * (originVC + tc * dirVC - fin.centreVC);
+  vec3 d = fin.gcFromVC * dirVC;
+  float dl = length(d);
+  MarchResult m = superquadricMarch(fin.shape, o, d / dl, (uNearVC - tc) * dl, uMaxIterations, uEpsilon);
+#ifdef TG_ITERATION_STATS
+  if (m.iterations > 0) {
+    atomicAdd(iterStats[0], uint(m.iterations));
+    atomicMax(iterStats[1], uint(m.iterations));
+    atomicAdd(iterStats[2], 1u);
+  }
+#endif
+  if (!m.hit) discard;
+  float depth = tc + m.s / dl;
+  if (!(depth >= uNearVC) || (uOrtho == 1 && depth > uFarVC)) discard;
+
+  vec3 nVC = transpose(fin.gcFromVC) * m.gradGC;  // inverse transpose of GC -> VC
+  vec3 nWC = normalize(transpose(mat3(uViewWCVC)) * nVC);
+  gl_FragDepth = windowDepthFromViewDepth(depth);
+  oAlbedo = vec4(fin.color, 1.0);
+  oNormalWC = vec4(nWC, 0.0);
+  oId = fin.id;
+}

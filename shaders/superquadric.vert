@@ -1,0 +1,68 @@
+#version 450 core
+// Four vertices per glyph (lib/sprite.glsl), for glyphs that are not
+// ellipsoids at the current gamma: the shape from the record and gamma, and
+// this vertex's corner of the exact screen rectangle of the glyph's box (the
+// gamma -> infinity limit that holds every shape; Hlawitschka et al. §3.2).
+#include "lib/camera.glsl"
+#include "lib/glyph_record.glsl"
+#include "lib/ellipsoid.glsl"
+#include "lib/superquadric.glsl"
+#include "lib/color.glsl"
+#include "lib/sprite.glsl"
+
+uniform float uScale;
+uniform float uFaMin;
+uniform int uColorMode;
+uniform vec2 uMdRange;
+uniform float uGamma;
+
+out SuperquadricFS {
+  flat vec3 centreVC;
+  flat mat3 gcFromVC;  // rows: GC axes in VC over their lengths; GC z is the symmetry axis
+  flat vec3 shape;
+  flat vec3 color;
+  flat uint id;
+} vs;
+
+void main() {
+  gl_Position = kSpriteCulledCC;
+  GlyphRecord g = glyphs[spriteGlyphIndex()];
+  if (!(g.posWC_fa.w >= uFaMin)) return;
+  vec3 axes = ellipsoidAxes(g.eigenvalues_id.xyz, uScale);
+  if (!(max(axes.x, max(axes.y, axes.z)) > 0.0)) return;
+  vec4 shape = superquadricShape(g.eigenvalues_id.xyz, uGamma);
+
+  mat3 rotWC = quatToMat3(g.frameWC);
+  mat3 rotVC = mat3(uViewWCVC) * rotWC;
+  vec3 centreVC = (uViewWCVC * vec4(g.posWC_fa.xyz, 1.0)).xyz;
+  // GC axes: a cyclic permutation of the eigenvectors that puts the symmetry axis on z.
+  int ax = int(shape.w);
+  ivec3 src = ivec3((ax + 1) % 3, (ax + 2) % 3, ax);
+  vec3 e0 = rotVC[src.x] * axes[src.x], e1 = rotVC[src.y] * axes[src.y], e2 = rotVC[src.z] * axes[src.z];
+
+  // The box's corners: nearest depth, and their projected rectangle.
+  float nearest = 1e38;
+  vec4 rect = vec4(1e38, 1e38, -1e38, -1e38);
+  bool crossesEyePlane = false;
+  for (int k = 0; k < 8; ++k) {
+    vec3 c = centreVC + ((k & 1) == 0 ? -e0 : e0) + ((k & 2) == 0 ? -e1 : e1) + ((k & 4) == 0 ? -e2 : e2);
+    nearest = min(nearest, -c.z);
+    vec4 cc = uProjVCCC * vec4(c, 1.0);
+    if (cc.w <= 0.0) crossesEyePlane = true;
+    vec2 ndc = cc.xy / cc.w;
+    rect = vec4(min(rect.xy, ndc), max(rect.zw, ndc));
+  }
+  float farthest = -centreVC.z + length(axes);
+  if (farthest < uNearVC || (uOrtho == 1 && nearest > uFarVC)) return;
+  if (crossesEyePlane) rect = vec4(-1.0, -1.0, 1.0, 1.0);
+  vec2 px = 2.0 / uViewportDC;
+  rect = clamp(rect + vec4(-px, px), -1.0, 1.0);
+  if (rect.x >= rect.z || rect.y >= rect.w) return;
+
+  gl_Position = spriteCornerCC(rect, windowDepthFromViewDepth(max(nearest, uNearVC)));
+  vs.centreVC = centreVC;
+  vs.gcFromVC = transpose(mat3(e0 / dot(e0, e0), e1 / dot(e1, e1), e2 / dot(e2, e2)));
+  vs.shape = shape.xyz;
+  vs.color = glyphColor(uColorMode, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, uMdRange);
+  vs.id = floatBitsToUint(g.eigenvalues_id.w);
+}
