@@ -27,7 +27,7 @@ vec4 schultz2010(vec3 l) {
   const vec3 B = vec3(1, 0, 0), C = vec3(r2, r2, 0), D = vec3(r3, -r3, -r3), E = vec3(r2, 0, -r2),
              F = vec3(r3, r3, -r3), G = vec3(0, -r2, -r2), H = vec3(0, 0, -1);
   const vec3 funk = vec3(0, 4, 2), thrn = vec3(1, 4, 4), octa = vec3(0, 2, 2), cone = vec3(1, 2, 2);
-  vec3 n = normalize(l);
+  vec3 n = normalize(l / max(abs(l.x), abs(l.z)));  // pre-scaled: |l|^2 may overflow float
   if (l.y >= -l.z) return vec4(mat3(octa, thrn, cone) * sphericalBarycentric(B, F, C, n), 2.0);
   if (l.x >= -l.z) {
     if (l.y >= 0.0) return vec4(mat3(octa, funk, thrn) * sphericalBarycentric(B, E, F, n), 2.0);
@@ -100,6 +100,7 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, int max
 
   vec3 grad;
   float h0 = superquadricGauge(shape, o + s0 * dir, grad) - 1.0;
+  if (isnan(h0) || isinf(h0)) return res;
   bool exiting = false;
   float lo = s0, hi = s1;
   bool bracketed = false;
@@ -135,6 +136,7 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, int max
     res.iterations = i + 1;
     float h = superquadricGauge(shape, o + s * dir, grad) - 1.0;
     float dh = dot(grad, dir);
+    if (isnan(h) || isnan(dh)) return res;  // never report a hit from a NaN
     if (abs(h) < eps) return MarchResult(true, s, grad, i + 1);
     // Keep the bracket: the side with h > 0 is lo when entering, hi when exiting.
     if ((h > 0.0) != exiting) lo = s; else hi = s;
@@ -143,7 +145,9 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, int max
     if (!bracketed && h > 0.0 && dh >= 0.0) return res;
     float next = s - h / dh;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
-    if (abs(next - s) < eps || hi - lo < eps) {
+    // Step criterion (Hlawitschka et al.); a collapsed bracket only counts
+    // when it is known to hold a root.
+    if (abs(next - s) < eps || (bracketed && hi - lo < eps)) {
       vec3 gn;
       superquadricGauge(shape, o + next * dir, gn);
       return MarchResult(true, next, gn, i + 1);

@@ -68,6 +68,10 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
     gl_.DepthFunc(GL_GREATER);  // reversed Z
     gl_.DepthMask(GL_TRUE);
     gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer_);
+    if (p.iterationStats) {
+      const GLuint zero[3] = {0, 0, 0};
+      gl_.NamedBufferSubData(stats_, 0, sizeof(zero), zero);
+    }
     // Dispatch (README, "How glyphs are dispatched"): at gamma 0 every glyph
     // is an ellipsoid; otherwise only the spheres, grouped first at upload.
     const bool superquadrics = p.glyph == GlyphKind::Superquadric && p.gamma > 0.0;
@@ -89,11 +93,7 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
       prog.set("uGamma", float(p.gamma));
       prog.set("uMaxIterations", p.march.maxIterations);
       prog.set("uEpsilon", float(p.march.epsilon));
-      if (p.iterationStats) {
-        const GLuint zero[3] = {0, 0, 0};
-        gl_.NamedBufferSubData(stats_, 0, sizeof(zero), zero);
-        gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, stats_);
-      }
+      if (p.iterationStats) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, stats_);
       common(prog);
       sprites_.draw(ellipsoids, count_ - ellipsoids);
     }

@@ -11,6 +11,8 @@
 #include "gl/backends.h"
 #include "gl/shader_library.h"
 #include "ref/ellipsoid_ref.h"
+#include "ref/superquadric_ref.h"
+#include "data-synthetic/generators.h"
 #include "render/renderer.h"
 
 namespace tg::test {
@@ -74,6 +76,23 @@ inline Comparison compare(const render::FrameImage& g, const ref::RefImage& r, c
     c.medianNormalErrorDeg = normalErr[normalErr.size() / 2];
   }
   return c;
+}
+
+inline tensor::GlyphSet glyphsOf(const io::TensorField& f) { return tensor::buildGlyphs(f.positions, f.tensors, f.ids); }
+
+inline render::Camera cameraFor(const tensor::GlyphSet& s, double scale, render::CameraDesc d, int w, int h) {
+  const double pad = scale * s.maxAbsEigenvalue;
+  return render::makeCamera(d, w, h, s.boundsMinWC - pad, s.boundsMaxWC + pad);
+}
+
+inline render::CameraDesc oblique(const tensor::GlyphSet& s, double dist, render::Projection p) {
+  render::CameraDesc d;
+  d.lookAtWC = 0.5 * (s.boundsMinWC + s.boundsMaxWC);
+  d.eyeWC = d.lookAtWC + dist * glm::normalize(glm::dvec3(0.7, -1.1, 0.9));
+  d.upWC = {0, 0, 1};
+  d.projection = p;
+  d.orthoHeight = 0.9 * dist;
+  return d;
 }
 
 class GlFixture : public ::testing::Test {

@@ -9,25 +9,11 @@
 using namespace tg;
 using test::compare;
 using test::GlFixture;
+using test::glyphsOf;
+using test::cameraFor;
+using test::oblique;
 
 namespace {
-
-tensor::GlyphSet glyphsOf(const io::TensorField& f) { return tensor::buildGlyphs(f.positions, f.tensors, f.ids); }
-
-render::Camera cameraFor(const tensor::GlyphSet& s, double scale, render::CameraDesc d, int w, int h) {
-  const double pad = scale * s.maxAbsEigenvalue;
-  return render::makeCamera(d, w, h, s.boundsMinWC - pad, s.boundsMaxWC + pad);
-}
-
-render::CameraDesc oblique(const tensor::GlyphSet& s, double dist, render::Projection p) {
-  render::CameraDesc d;
-  d.lookAtWC = 0.5 * (s.boundsMinWC + s.boundsMaxWC);
-  d.eyeWC = d.lookAtWC + dist * glm::normalize(glm::dvec3(0.7, -1.1, 0.9));
-  d.upWC = {0, 0, 1};
-  d.projection = p;
-  d.orthoHeight = 0.9 * dist;
-  return d;
-}
 
 // Tolerances. Coverage may differ only on edges, where float and double
 // round a pixel centre that lies within ~1e-6 of the silhouette either way;
