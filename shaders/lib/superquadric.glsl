@@ -18,8 +18,9 @@ vec3 sphericalBarycentric(vec3 p0, vec3 p1, vec3 p2, vec3 v) {
 vec4 kindlmann2004(vec3 l, float gamma, bool mirrored) {
   float tr = l.x + l.y + l.z;
   float cl = min(0.99, (l.x - l.y) / tr), cp = min(0.99, 2.0 * (l.y - l.z) / tr);
-  if (cl > cp) return vec4(pow(1.0 - cp, gamma), pow(1.0 - cl, gamma), pow(1.0 - cl, gamma), mirrored ? 2.0 : 0.0);
-  return vec4(pow(1.0 - cl, gamma), pow(1.0 - cp, gamma), pow(1.0 - cp, gamma), mirrored ? 0.0 : 2.0);
+  bool linear = cl > cp;
+  vec2 ab = pow(1.0 - (linear ? vec2(cp, cl) : vec2(cl, cp)), vec2(gamma));
+  return vec4(ab, ab.y, linear != mirrored ? 0.0 : 2.0);
 }
 
 vec4 schultz2010(vec3 l) {

@@ -24,20 +24,24 @@ Program::Program(const Api& gl, const ShaderLibrary& lib, std::initializer_list<
                  std::initializer_list<std::string_view> enable)
     : gl_(&gl) {
   const std::vector<std::string_view> wanted(enable);
-  std::vector<std::string> declared;
-  for (const StageSource& st : stages)
-    for (auto& o : lib.compose(st.path).options) declared.push_back(o);
-  for (std::string_view e : wanted)
-    if (std::find(declared.begin(), declared.end(), e) == declared.end())
+  std::vector<ComposedSource> sources;
+  for (const StageSource& st : stages) sources.push_back(lib.compose(st.path, wanted));
+  for (std::string_view e : wanted) {
+    const bool declared = std::any_of(sources.begin(), sources.end(), [&](const ComposedSource& c) {
+      return std::find(c.options.begin(), c.options.end(), e) != c.options.end();
+    });
+    if (!declared)
       throw std::runtime_error("Program: no stage of " + std::string(stages.begin()->path) + " declares option \"" +
                                std::string(e) + "\"");
+  }
   id_ = gl.CreateProgram();
   std::vector<GLuint> shaders;
   auto cleanup = [&] {
     for (GLuint s : shaders) gl.DeleteShader(s);
   };
-  for (const StageSource& st : stages) {
-    const ComposedSource src = lib.compose(st.path, wanted);
+  for (std::size_t k = 0; k < sources.size(); ++k) {
+    const StageSource& st = stages.begin()[k];
+    const ComposedSource& src = sources[k];
     const GLuint s = gl.CreateShader(st.stage);
     shaders.push_back(s);
     const char* text = src.text.c_str();

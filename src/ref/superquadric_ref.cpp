@@ -105,10 +105,10 @@ RefImage renderSuperquadrics(const render::Camera& cam, std::span<const tensor::
   for (std::size_t i = 0; i < glyphs.size(); ++i) {
     const auto& g = glyphs[i];
     if (!(g.fa >= p.faMin)) continue;
+    const glm::dvec3 axes = tensor::ellipsoidAxes(g, p.scale);
+    if (!(std::max({axes.x, axes.y, axes.z}) > 0.0)) continue;
     detail::Prepared q;
-    q.axes = tensor::ellipsoidAxes(g, p.scale);
-    if (!(std::max({q.axes.x, q.axes.y, q.axes.z}) > 0.0)) continue;
-    q.radius = glm::length(q.axes);  // the box's half diagonal
+    q.radius = glm::length(axes);  // the box's half diagonal
     q.centre = glm::dvec3(g.posWC[0], g.posWC[1], g.posWC[2]);
     const SuperquadricShape s =
         tensor::superquadricShape(glm::dvec3(g.eigenvalues[0], g.eigenvalues[1], g.eigenvalues[2]), gamma);
@@ -118,7 +118,7 @@ RefImage renderSuperquadrics(const render::Camera& cam, std::span<const tensor::
     for (int k = 0; k < 3; ++k) {
       const int src = (s.axis + 1 + k) % 3;
       q.frame[k] = frame[src];
-      q.axes[k] = tensor::ellipsoidAxes(g, p.scale)[src];
+      q.axes[k] = axes[src];
     }
     q.id = g.id;
     q.index = shapes.size();
@@ -129,7 +129,8 @@ RefImage renderSuperquadrics(const render::Camera& cam, std::span<const tensor::
                           [&](const detail::Prepared& q, const glm::dvec3& o, const glm::dvec3& d, double tNear,
                               double tBest, double& t, glm::dvec3& nGC) {
                             const SuperquadricShape& s = shapes[q.index];
-                            if (tensor::isEllipsoid(s)) {
+                            const bool ellipsoid = tensor::isEllipsoid(s);
+                            if (ellipsoid) {
                               double t0, t1;
                               if (!detail::unitSphereRoots(o, d, t0, t1)) return false;
                               t = t0 >= tNear ? t0 : t1;
@@ -137,8 +138,8 @@ RefImage renderSuperquadrics(const render::Camera& cam, std::span<const tensor::
                               return false;
                             }
                             if (!(t >= tNear) || !(t < tBest)) return false;
-                            tensor::superquadricGauge(s, o + t * d, &nGC);
-                            if (tensor::isEllipsoid(s)) nGC = o + t * d;
+                            if (ellipsoid) nGC = o + t * d;
+                            else tensor::superquadricGauge(s, o + t * d, &nGC);
                             return true;
                           });
 }

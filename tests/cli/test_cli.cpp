@@ -9,6 +9,8 @@
 #include <fstream>
 #include <string>
 
+#include "real_data.h"
+
 namespace fs = std::filesystem;
 
 namespace {
@@ -33,7 +35,6 @@ CmdResult run(const std::string& args) {
   return {WEXITSTATUS(status), err};
 }
 
-std::string real(const char* rel) { return std::string(TG_REAL_DATA_DIR) + "/" + rel; }
 
 }  // namespace
 
@@ -55,8 +56,9 @@ TEST(Cli, DefaultSceneRendersPngOfTheRequestedSize) {
 }
 
 TEST(Cli, ExrCarriesDepthNormalAndId) {
+  TG_REQUIRE_REAL_DATA();
   const fs::path out = dir() / "frame.exr";
-  const CmdResult r = run("render " + real("slicer-fiber-tensors/fiber_vtk.vtk") + " -o " + out.string() +
+  const CmdResult r = run("render " + tg::test::realData("slicer-fiber-tensors/fiber_vtk.vtk") + " -o " + out.string() +
                     " --size 96 64 --ortho 60 --scale 600 --color fa");
   ASSERT_EQ(r.code, 0) << r.err;
   auto in = OIIO::ImageInput::open(out.string());
@@ -86,8 +88,9 @@ TEST(Cli, ExrCarriesDepthNormalAndId) {
 }
 
 TEST(Cli, InfoReportsCounts) {
+  TG_REQUIRE_REAL_DATA();
   const fs::path out = dir() / "info.txt";
-  const std::string cmd = std::string(TG_BINARY) + " info " + real("tsv-kitten-stress/kitten-stress.vtu") + " > " + out.string();
+  const std::string cmd = std::string(TG_BINARY) + " info " + tg::test::realData("tsv-kitten-stress/kitten-stress.vtu") + " > " + out.string();
   ASSERT_EQ(std::system(cmd.c_str()), 0);
   std::ifstream in(out);
   const std::string text((std::istreambuf_iterator<char>(in)), {});

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <memory>
+#include <string>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -93,6 +94,60 @@ inline render::CameraDesc oblique(const tensor::GlyphSet& s, double dist, render
   d.projection = p;
   d.orthoHeight = 0.9 * dist;
   return d;
+}
+
+// What a GPU render may differ from the reference by; each test file states
+// why its values are what they are.
+struct Tolerance {
+  double interiorMismatch, coverageMismatch, idMismatch;  // fractions of the reference's covered pixels
+  double relDepth, medianNormalDeg, maxNormalDeg;
+};
+
+inline void expectWithin(const Comparison& c, const Tolerance& t, const std::string& what) {
+  SCOPED_TRACE(what);
+  const double covered = double(c.refCovered);
+  EXPECT_GT(c.refCovered, 0u);
+  EXPECT_EQ(c.nonFinite, 0u);
+  EXPECT_LE(double(c.interiorMismatch), t.interiorMismatch * covered);
+  EXPECT_LE(double(c.coverageMismatch), t.coverageMismatch * covered);
+  EXPECT_LE(double(c.idMismatch), t.idMismatch * covered);
+  EXPECT_LT(c.maxRelDepthError, t.relDepth);
+  EXPECT_LT(c.medianNormalErrorDeg, t.medianNormalDeg);
+  EXPECT_LT(c.maxNormalErrorDeg, t.maxNormalDeg);
+}
+
+// Three glyphs around and beside the eye of insideCamera(): the eye plane cuts
+// them, so no finite rectangle exists and some rays start inside glyph 0.
+inline tensor::GlyphSet glyphsAroundTheEye() {
+  const float pos[9] = {0, 0, 0, 1.5f, 0.3f, -0.2f, -0.4f, 2.0f, 0.1f};
+  const float ten[18] = {2, 0, 0, 1, 0, 0.8f, 1, 0.2f, 0, 0.5f, 0, 0.5f, 0.7f, 0, 0.1f, 0.7f, 0, 0.3f};
+  return tensor::buildGlyphs(std::span(pos, 9), std::span(ten, 18), {});
+}
+
+inline render::Camera insideCamera(render::Projection proj) {
+  render::CameraDesc d;
+  d.eyeWC = {0.3, -0.2, 0.1};  // inside glyph 0
+  d.lookAtWC = {1, 1, 0};
+  d.upWC = {0, 0, 1};
+  d.projection = proj;
+  d.fovYDeg = 70;
+  d.orthoHeight = 3;
+  return render::makeCamera(d, 160, 120, glm::dvec3(-3), glm::dvec3(3));
+}
+
+// The extremes gallery at eigenvalue scale 1e20 and positions 1e6 (k = 1e6),
+// or 1e-20 and 1e-6: the base scene's picture, k times larger or smaller.
+struct ScaledWorld {
+  tensor::GlyphSet set;
+  double scale;
+  render::Camera cam;
+};
+inline ScaledWorld scaledExtremes(double k) {
+  const double eigenScale = k > 1 ? 1e20 : 1e-20;
+  auto set = glyphsOf(synth::extremesGallery(eigenScale, k));
+  const double scale = k / eigenScale;
+  const auto cam = cameraFor(set, scale, oblique(set, 40.0 * k, render::Projection::Perspective), 160, 80);
+  return {std::move(set), scale, cam};
 }
 
 class GlFixture : public ::testing::Test {

@@ -23,17 +23,9 @@ namespace {
 // yet catches any wrong root or projection (errors of 1e-3 and more). Normals
 // are stored as RGBA16F (11-bit mantissa, < 0.03 deg): median 0.1 deg, and
 // 2 deg worst case next to edges of very thin glyphs where the normal turns fast.
-void expectMatch(const test::Comparison& c, const char* what) {
-  SCOPED_TRACE(what);
-  EXPECT_GT(c.refCovered, 0u);
-  EXPECT_EQ(c.nonFinite, 0u);
-  EXPECT_EQ(c.interiorMismatch, 0u);
-  EXPECT_LE(double(c.coverageMismatch), 0.01 * double(c.refCovered));
-  EXPECT_EQ(c.idMismatch, 0u);
-  EXPECT_LT(c.maxRelDepthError, 2e-5);
-  EXPECT_LT(c.medianNormalErrorDeg, 0.1);
-  EXPECT_LT(c.maxNormalErrorDeg, 2.0);
-}
+const test::Tolerance kTolerance{0.0, 0.01, 0.0, 2e-5, 0.1, 2.0};
+
+void expectMatch(const test::Comparison& c, const char* what) { test::expectWithin(c, kTolerance, what); }
 
 }  // namespace
 
@@ -64,10 +56,7 @@ TEST_F(GlFixture, TinyAndHugeWorldsRenderAlike) {
   const auto baseCam = cameraFor(base, 1.0, oblique(base, 40.0, render::Projection::Perspective), 160, 80);
   const auto baseImg = draw(base, baseCam, {});
   for (double k : {1e-6, 1e6}) {
-    const double eigenScale = k > 1 ? 1e20 : 1e-20;
-    const auto set = glyphsOf(synth::extremesGallery(eigenScale, k));
-    const double scale = k / eigenScale;  // glyph size k times the base scene's
-    const auto cam = cameraFor(set, scale, oblique(set, 40.0 * k, render::Projection::Perspective), 160, 80);
+    const auto [set, scale, cam] = test::scaledExtremes(k);
     render::FrameParams p;
     p.scale = scale;
     const auto img = draw(set, cam, p);
@@ -94,20 +83,10 @@ TEST_F(GlFixture, GlyphLargerThanThePointSizeLimitIsWhole) {
 }
 
 TEST_F(GlFixture, CameraInsideAndAcrossTheNearPlane) {
-  // Glyphs around and beside the eye: the eye plane cuts them, so no finite
-  // rectangle exists (full-viewport fallback) and some rays start inside.
-  const float pos[9] = {0, 0, 0, 1.5f, 0.3f, -0.2f, -0.4f, 2.0f, 0.1f};
-  const float ten[18] = {2, 0, 0, 1, 0, 0.8f, 1, 0.2f, 0, 0.5f, 0, 0.5f, 0.7f, 0, 0.1f, 0.7f, 0, 0.3f};
-  const auto set = tensor::buildGlyphs(std::span(pos, 9), std::span(ten, 18), {});
+  // The full-viewport fallback and rays that start inside a glyph.
+  const auto set = test::glyphsAroundTheEye();
   for (auto proj : {render::Projection::Perspective, render::Projection::Orthographic}) {
-    render::CameraDesc d;
-    d.eyeWC = {0.3, -0.2, 0.1};  // inside glyph 0
-    d.lookAtWC = {1, 1, 0};
-    d.upWC = {0, 0, 1};
-    d.projection = proj;
-    d.fovYDeg = 70;
-    d.orthoHeight = 3;
-    const auto cam = render::makeCamera(d, 160, 120, glm::dvec3(-3), glm::dvec3(3));
+    const auto cam = test::insideCamera(proj);
     expectMatch(compare(draw(set, cam, {}), ref::renderEllipsoids(cam, set.glyphs, {1.0, 0.0}), cam), "inside");
   }
 }

@@ -3,8 +3,6 @@
 // glyphs, orthographic views and indefinite (stress) tensors.
 #include "render_fixture.h"
 
-#include <cstdio>
-
 using namespace tg;
 using test::cameraFor;
 using test::compare;
@@ -41,20 +39,9 @@ render::FrameParams tight(double scale, double gamma) {
 //   relative;
 // - normals: median 0.5 deg; worst case 15 deg at the rounded edges of
 //   box-like glyphs, where the normal turns by 90 deg within a pixel.
-void expectMatch(const test::Comparison& c, const std::string& what) {
-  SCOPED_TRACE(what);
-  std::fprintf(stderr, "%s: covered %zu/%zu mismatch %zu interior %zu id %zu depth %.2e normal med %.3f max %.2f nonfinite %zu\n",
-              what.c_str(), c.gpuCovered, c.refCovered, c.coverageMismatch, c.interiorMismatch, c.idMismatch,
-              c.maxRelDepthError, c.medianNormalErrorDeg, c.maxNormalErrorDeg, c.nonFinite);
-  EXPECT_GT(c.refCovered, 0u);
-  EXPECT_EQ(c.nonFinite, 0u);
-  EXPECT_LE(double(c.interiorMismatch), 0.002 * double(c.refCovered));
-  EXPECT_LE(double(c.coverageMismatch), 0.03 * double(c.refCovered));
-  EXPECT_LE(double(c.idMismatch), 0.002 * double(c.refCovered));
-  EXPECT_LT(c.maxRelDepthError, 1e-4);
-  EXPECT_LT(c.medianNormalErrorDeg, 0.5);
-  EXPECT_LT(c.maxNormalErrorDeg, 15.0);
-}
+const test::Tolerance kTolerance{0.002, 0.03, 0.002, 1e-4, 0.5, 15.0};
+
+void expectMatch(const test::Comparison& c, const std::string& what) { test::expectWithin(c, kTolerance, what); }
 
 }  // namespace
 
@@ -83,10 +70,7 @@ TEST_F(GlFixture, DISABLED_SuperquadricExtremesGalleryPerspectiveAndOrtho) {
 
 TEST_F(GlFixture, DISABLED_SuperquadricTinyAndHugeWorlds) {
   for (double k : {1e-6, 1e6}) {
-    const double eigenScale = k > 1 ? 1e20 : 1e-20;
-    const auto set = glyphsOf(synth::extremesGallery(eigenScale, k));
-    const double scale = k / eigenScale;
-    const auto cam = cameraFor(set, scale, oblique(set, 40.0 * k, render::Projection::Perspective), 160, 80);
+    const auto [set, scale, cam] = test::scaledExtremes(k);
     expectMatch(compare(draw(set, cam, tight(scale, 3.0)),
                         ref::renderSuperquadrics(cam, set.glyphs, {scale, 0.0}, 3.0), cam),
                 "world " + std::to_string(k));
@@ -94,18 +78,9 @@ TEST_F(GlFixture, DISABLED_SuperquadricTinyAndHugeWorlds) {
 }
 
 TEST_F(GlFixture, DISABLED_SuperquadricCameraInsideAndNearGlyphs) {
-  const float pos[9] = {0, 0, 0, 1.5f, 0.3f, -0.2f, -0.4f, 2.0f, 0.1f};
-  const float ten[18] = {2, 0, 0, 1, 0, 0.8f, 1, 0.2f, 0, 0.5f, 0, 0.5f, 0.7f, 0, 0.1f, 0.7f, 0, 0.3f};
-  const auto set = tensor::buildGlyphs(std::span(pos, 9), std::span(ten, 18), {});
+  const auto set = test::glyphsAroundTheEye();
   for (auto proj : {render::Projection::Perspective, render::Projection::Orthographic}) {
-    render::CameraDesc d;
-    d.eyeWC = {0.3, -0.2, 0.1};
-    d.lookAtWC = {1, 1, 0};
-    d.upWC = {0, 0, 1};
-    d.projection = proj;
-    d.fovYDeg = 70;
-    d.orthoHeight = 3;
-    const auto cam = render::makeCamera(d, 160, 120, glm::dvec3(-3), glm::dvec3(3));
+    const auto cam = test::insideCamera(proj);
     expectMatch(compare(draw(set, cam, tight(1.0, 3.0)), ref::renderSuperquadrics(cam, set.glyphs, {1.0, 0.0}, 3.0),
                         cam),
                 "inside");
