@@ -118,16 +118,35 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, int max
     }
   } else {
     // Non-convex: the first sign change on a coarse grid brackets the root.
+    // A thin spike can pass between samples; where h' turns from - to + the
+    // interval holds a local minimum, found by bisecting on the sign of h'
+    // (Teem's echo searches the derivative the same way), and a minimum with
+    // h <= 0 closes the bracket.
     const int kSamples = 24;
-    float prev = s0;
+    float prev = s0, prevSlope = dot(grad, dir);
     for (int k = 1; k <= kSamples && !bracketed; ++k) {
       float s = s0 + (s1 - s0) * float(k) / float(kSamples);
-      if (superquadricGauge(shape, o + s * dir, grad) - 1.0 <= 0.0) {
+      float h = superquadricGauge(shape, o + s * dir, grad) - 1.0;
+      float slope = dot(grad, dir);
+      float a = prev, b = s;
+      if (h <= 0.0) bracketed = true;
+      for (int j = 0; j < kSamples && !bracketed && prevSlope < 0.0 && slope > 0.0 && b - a > eps; ++j) {
+        float m = 0.5 * (a + b);
+        if (superquadricGauge(shape, o + m * dir, grad) - 1.0 <= 0.0) {
+          s = m;
+          bracketed = true;
+        } else if (dot(grad, dir) < 0.0) {
+          a = m;
+        } else {
+          b = m;
+        }
+      }
+      if (bracketed) {
         lo = prev;
         hi = s;
-        bracketed = true;
       }
       prev = s;
+      prevSlope = slope;
     }
     if (!bracketed) return res;
   }
@@ -145,6 +164,11 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, int max
     // Miss: outside a convex glyph and moving away from it (Hlawitschka's test).
     if (!bracketed && h > 0.0 && dh >= 0.0) return res;
     float next = s - h / dh;
+    // Unbracketed means convex and outside, where Newton never overshoots
+    // (the tangent of a convex function lies below it): a step past the cube
+    // exit proves there is no root. Bisecting there would instead shrink an
+    // interval holding no root until the step criterion took it for a hit.
+    if (!bracketed && !(next < hi)) return res;
     if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
     // Step criterion (Hlawitschka et al.); a collapsed bracket only counts
     // when it is known to hold a root.

@@ -44,6 +44,24 @@ double bisect(H h, double lo, double hi) {
   return 0.5 * (lo + hi);
 }
 
+// Golden-section search for a minimum of h on [a, b] (unimodal there), to
+// 1e-13; stops early at a point with h <= 0, which is all a caller needs.
+template <class H>
+double goldenMinimum(H h, double a, double b) {
+  const double r = 0.5 * (std::sqrt(5.0) - 1.0);
+  double c = b - r * (b - a), e = a + r * (b - a);
+  double hc = h(c), he = h(e);
+  for (int k = 0; k < 200 && b - a > 1e-13; ++k) {
+    if (hc <= 0.0 || he <= 0.0) break;
+    if (hc < he) {
+      b = e; e = c; he = hc; c = b - r * (b - a); hc = h(c);
+    } else {
+      a = c; c = e; hc = he; e = a + r * (b - a); he = h(e);
+    }
+  }
+  return hc <= he ? c : e;
+}
+
 }  // namespace
 
 bool superquadricFirstHit(const SuperquadricShape& s, const glm::dvec3& o, const glm::dvec3& d, double tNear,
@@ -66,33 +84,35 @@ bool superquadricFirstHit(const SuperquadricShape& s, const glm::dvec3& o, const
     return true;
   }
   if (isConvex(s)) {
-    // Golden-section search for the minimum of the convex h: a root exists
-    // only if the minimum is <= 0, and it is then the unique one before it.
-    const double r = 0.5 * (std::sqrt(5.0) - 1.0);
-    double a = t0, b = t1, c = b - r * (b - a), e = a + r * (b - a);
-    double hc = h(c), he = h(e);
-    for (int k = 0; k < 200 && b - a > 1e-13; ++k) {
-      if (hc <= 0.0 || he <= 0.0) break;
-      if (hc < he) {
-        b = e; e = c; he = hc; c = b - r * (b - a); hc = h(c);
-      } else {
-        a = c; c = e; hc = he; e = a + r * (b - a); he = h(e);
-      }
-    }
-    const double tMin = hc <= he ? c : e;
+    // Convex h: a root exists only if its minimum is <= 0, and it is then the
+    // unique one before the minimum.
+    const double tMin = goldenMinimum(h, t0, t1);
     if (h(tMin) > 0.0) return false;
     t = bisect(h, t0, tMin);
     return true;
   }
-  // Non-convex (concave) shapes: the first sign change on a fine grid.
+  // Non-convex (concave) shapes: the first sign change on a fine grid. A
+  // spike thinner than a grid step shows as a sampled local minimum of h; its
+  // true minimum, found by golden section between the neighbouring samples,
+  // closes the bracket when it is <= 0.
   constexpr int kSteps = 2048;
-  double prev = t0;
+  const double step = (t1 - t0) / kSteps;
+  double prev = t0, hPrev = h(t0), hPrevPrev = INFINITY;
   for (int k = 1; k <= kSteps; ++k) {
-    const double u = t0 + (t1 - t0) * k / kSteps;
-    if (h(u) <= 0.0) {
+    const double u = t0 + step * k, hu = h(u);
+    if (hu <= 0.0) {
       t = bisect(h, prev, u);
       return true;
     }
+    if (hPrev < hPrevPrev && hPrev < hu) {
+      const double m = goldenMinimum(h, prev - step, u);
+      if (h(m) <= 0.0) {
+        t = bisect(h, prev - step, m);
+        return true;
+      }
+    }
+    hPrevPrev = hPrev;
+    hPrev = hu;
     prev = u;
   }
   return false;

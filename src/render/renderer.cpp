@@ -38,6 +38,7 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   buffer_ = 0;
   count_ = GLsizei(set.glyphs.size());
   sphereCount_ = GLsizei(set.sphereCount);
+  definiteCount_ = GLsizei(set.definiteCount);
   mdMin_ = float(set.mdMin);
   mdMax_ = float(set.mdMax);
   if (count_ == 0) return;
@@ -72,10 +73,12 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
       const GLuint zero[3] = {0, 0, 0};
       gl_.NamedBufferSubData(stats_, 0, sizeof(zero), zero);
     }
-    // Dispatch (README, "How glyphs are dispatched"): at gamma 0 every glyph
-    // is an ellipsoid; otherwise only the spheres, grouped first at upload.
-    const bool superquadrics = p.glyph == GlyphKind::Superquadric && p.gamma > 0.0;
-    const GLsizei ellipsoids = superquadrics ? sphereCount_ : count_;
+    // Dispatch (README, "How glyphs are dispatched") over the groups made at
+    // upload: spheres, definite, mixed-sign. At gamma 0 only mixed-sign
+    // glyphs are not ellipsoids; at gamma > 0 only spheres are.
+    const bool sq = p.glyph == GlyphKind::Superquadric;
+    const GLsizei ellipsoids = !sq ? count_ : p.gamma > 0.0 ? sphereCount_ : sphereCount_ + definiteCount_;
+    const bool superquadrics = count_ > ellipsoids;
     auto common = [&](const gl::Program& prog) {
       setCamera(prog, cam);
       prog.set("uScale", float(p.scale));
@@ -88,7 +91,7 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
       common(ellipsoid_);
       sprites_.draw(0, ellipsoids);
     }
-    if (superquadrics && count_ > ellipsoids) {
+    if (superquadrics) {
       const gl::Program& prog = p.iterationStats ? superquadricStats_ : superquadric_;
       prog.set("uGamma", float(p.gamma));
       prog.set("uMaxIterations", p.march.maxIterations);

@@ -76,7 +76,7 @@ class GlyphRenderer {
   gl::Program lighting_;
   QuadSprites sprites_;
   GLuint vao_ = 0, buffer_ = 0, stats_ = 0;
-  GLsizei count_ = 0, sphereCount_ = 0;
+  GLsizei count_ = 0, sphereCount_ = 0, definiteCount_ = 0;
   float mdMin_ = 0, mdMax_ = 0;
 };
 

@@ -87,13 +87,18 @@ GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> te
   set.maxAbsEigenvalue = all.maxAbs;
   set.mdMin = all.mdMin;
   set.mdMax = all.mdMax;
-  // Spheres (equal eigenvalues, the zero tensor included) are ellipsoids at
-  // every gamma; grouping them first lets the renderer draw them with the
-  // exact quadric path and send only the rest through Newton.
+  // Grouped by what a glyph needs, so that dispatch is a pair of draw ranges:
+  // spheres (equal eigenvalues, the zero tensor included) are ellipsoids at
+  // every gamma; definite tensors are ellipsoids at gamma 0; mixed signs take
+  // Schultz-Kindlmann shapes, which do not depend on gamma.
   const auto firstOther = std::partition(set.glyphs.begin(), set.glyphs.end(), [](const GlyphRecord& g) {
     return g.eigenvalues[0] == g.eigenvalues[2];
   });
+  const auto firstMixed = std::partition(firstOther, set.glyphs.end(), [](const GlyphRecord& g) {
+    return g.eigenvalues[2] > 0.0f || g.eigenvalues[0] < 0.0f;
+  });
   set.sphereCount = std::size_t(firstOther - set.glyphs.begin());
+  set.definiteCount = std::size_t(firstMixed - firstOther);
   return set;
 }
 

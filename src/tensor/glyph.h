@@ -26,7 +26,10 @@ struct GlyphSet {
   glm::dvec3 boundsMinWC{0.0}, boundsMaxWC{0.0};  // of glyph centres
   double maxAbsEigenvalue = 0;
   double mdMin = 0, mdMax = 0;
-  std::size_t sphereCount = 0;  // glyphs[0, sphereCount) have three equal eigenvalues
+  // glyphs[0, sphereCount) have three equal eigenvalues; the next
+  // definiteCount are definite (all positive or all negative); the rest have
+  // eigenvalues of mixed sign or zero.
+  std::size_t sphereCount = 0, definiteCount = 0;
 };
 
 // Input: N positions (x y z) and N tensors (xx xy xz yy yz zz), all finite;

@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "ref/superquadric_ref.h"
+#include "tensor/glyph.h"
 #include "tensor/superquadric.h"
 
 using namespace tg;
@@ -34,6 +35,47 @@ TEST(SuperquadricShape, GammaZeroAndIsotropicGiveEllipsoids) {
 }
 
 // Kindlmann 2004 as tenGlyphGen computes it, with Teem's own cl1/cp1.
+// The renderer's dispatch is two draw ranges over these groups, so each group
+// must hold exactly the glyphs the shape rules put there.
+TEST(SuperquadricShape, GlyphsAreGroupedBySphereDefiniteAndMixed) {
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+  std::vector<float> pos, ten;
+  for (int i = 0; i < 300; ++i) {
+    // Every fourth tensor is shifted to be positive definite, every fifth is
+    // a sphere (signs of both kinds), the rest are random with mixed signs.
+    const float shift = i % 4 == 0 ? 2.5f : 0.0f;
+    const float t[6] = {shift + u(rng), u(rng), u(rng), shift + u(rng), u(rng), shift + u(rng)};
+    const float iso = u(rng);
+    const float sphere[6] = {iso, 0, 0, iso, 0, iso};
+    ten.insert(ten.end(), i % 5 == 0 ? sphere : t, (i % 5 == 0 ? sphere : t) + 6);
+    pos.insert(pos.end(), {float(i), 0.0f, 0.0f});
+  }
+  const auto set = tensor::buildGlyphs(pos, ten, {}, 1);
+  ASSERT_LE(set.sphereCount + set.definiteCount, set.glyphs.size());
+  std::size_t mixed = 0;
+  for (std::size_t i = 0; i < set.glyphs.size(); ++i) {
+    const auto& g = set.glyphs[i];
+    const glm::dvec3 l(g.eigenvalues[0], g.eigenvalues[1], g.eigenvalues[2]);
+    const bool sphere = l.x == l.z;
+    const auto shape0 = tensor::superquadricShape(l, 0.0), shape3 = tensor::superquadricShape(l, 3.0);
+    if (i < set.sphereCount) {
+      EXPECT_TRUE(sphere && tensor::isEllipsoid(shape3)) << i;
+    } else if (i < set.sphereCount + set.definiteCount) {
+      EXPECT_FALSE(sphere) << i;
+      EXPECT_TRUE(l.z > 0 || l.x < 0) << i;
+      EXPECT_TRUE(tensor::isEllipsoid(shape0)) << i;
+    } else {
+      ++mixed;
+      EXPECT_TRUE(!sphere && l.z <= 0 && l.x >= 0) << i;
+      EXPECT_FALSE(tensor::isEllipsoid(shape0)) << i;
+    }
+  }
+  EXPECT_EQ(set.sphereCount, 60u);
+  EXPECT_GT(set.definiteCount, 10u);
+  EXPECT_GT(mixed, 10u);
+}
+
 TEST(SuperquadricShape, PositiveTensorsFollowTeem) {
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(0.01, 2.0), gam(0.0, 8.0);
