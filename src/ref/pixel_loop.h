@@ -1,13 +1,15 @@
 #pragma once
-// The reference ray casters' shared pixel loop: every pixel against every
-// prepared glyph, nearest hit at or beyond the near plane wins. Internal to
-// src/ref.
+// The reference ray casters' shared pixel loop: every pixel against the
+// prepared glyphs binned to its tile, nearest hit at or beyond the near plane
+// wins. Internal to src/ref.
 #include <algorithm>
 #include <cmath>
 #include <thread>
 #include <vector>
 
 #include <glm/geometric.hpp>
+#include <glm/matrix.hpp>
+#include <glm/trigonometric.hpp>
 
 #include "ref/ellipsoid_ref.h"
 
@@ -36,6 +38,47 @@ inline bool unitSphereRoots(const glm::dvec3& o, const glm::dvec3& d, double& t0
   return true;
 }
 
+// Screen tiles of kTile x kTile pixels, each listing (in input order, so that
+// ties resolve as in an unbinned loop) the glyphs whose bounding sphere may
+// cover it. The sphere's bounding cube is projected exactly as
+// Camera::rayThroughPixel inverts it; a cube reaching the eye plane covers
+// the whole screen. Binning only skips glyphs no ray of a tile can reach.
+inline constexpr int kTile = 16;
+
+inline std::vector<std::vector<std::uint32_t>> binGlyphs(const render::Camera& cam,
+                                                         const std::vector<Prepared>& prep) {
+  const int tx = (cam.width + kTile - 1) / kTile, ty = (cam.height + kTile - 1) / kTile;
+  std::vector<std::vector<std::uint32_t>> tiles(std::size_t(tx) * ty);
+  const bool persp = cam.desc.projection == render::Projection::Perspective;
+  const double aspect = double(cam.width) / double(cam.height);
+  const double halfH = persp ? std::tan(glm::radians(cam.desc.fovYDeg) * 0.5) : 0.5 * cam.desc.orthoHeight;
+  for (std::size_t g = 0; g < prep.size(); ++g) {
+    const Prepared& q = prep[g];
+    double x0 = INFINITY, y0 = INFINITY, x1 = -INFINITY, y1 = -INFINITY;
+    bool full = false;
+    for (int k = 0; k < 8 && !full; ++k) {
+      const glm::dvec3 c = q.centre + q.radius * glm::dvec3(k & 1 ? 1 : -1, k & 2 ? 1 : -1, k & 4 ? 1 : -1);
+      const glm::dvec3 v(cam.viewWCVC * glm::dvec4(c, 1.0));
+      const double w = persp ? -v.z : 1.0;
+      if (!(w > 0.0)) {
+        full = true;
+        break;
+      }
+      const double xn = v.x / (w * halfH * aspect), yn = v.y / (w * halfH);
+      const double px = 0.5 * (xn + 1.0) * cam.width, py = 0.5 * (1.0 - yn) * cam.height;
+      x0 = std::min(x0, px), x1 = std::max(x1, px), y0 = std::min(y0, py), y1 = std::max(y1, py);
+    }
+    // Pixel centres within the rectangle, widened by a pixel against rounding.
+    const auto tileOf = [](double p, int n) { return int(std::clamp(std::floor(p / kTile), 0.0, double(n - 1))); };
+    if (!full && (x1 < -1.0 || y1 < -1.0 || x0 > cam.width + 1.0 || y0 > cam.height + 1.0)) continue;
+    const int i0 = full ? 0 : tileOf(x0 - 1.0, tx), i1 = full ? tx - 1 : tileOf(x1 + 1.0, tx);
+    const int j0 = full ? 0 : tileOf(y0 - 1.0, ty), j1 = full ? ty - 1 : tileOf(y1 + 1.0, ty);
+    for (int j = j0; j <= j1; ++j)
+      for (int i = i0; i <= i1; ++i) tiles[std::size_t(j) * tx + i].push_back(std::uint32_t(g));
+  }
+  return tiles;
+}
+
 // intersect(q, oGC, dGC, tNear, tBest, t, nGC) -> bool: the first surface point
 // of glyph q along o + t d with tNear <= t < tBest, and its GC gradient.
 template <class Intersect>
@@ -47,13 +90,17 @@ RefImage castRays(const render::Camera& cam, const std::vector<Prepared>& prep, 
   img.depth.assign(n, INFINITY);
   img.normalWC.assign(n, glm::dvec3(0.0));
   img.id.assign(n, kNoGlyph);
+  const auto tiles = binGlyphs(cam, prep);
+  const int tilesX = (cam.width + kTile - 1) / kTile;
+  const glm::dmat4 wcFromVC = glm::inverse(cam.viewWCVC);
   auto rows = [&](int r0, int r1) {
     for (int j = r0; j < r1; ++j)
       for (int i = 0; i < cam.width; ++i) {
-        const render::RayWC ray = cam.rayThroughPixel(i + 0.5, j + 0.5);
+        const render::RayWC ray = cam.rayThroughPixel(i + 0.5, j + 0.5, wcFromVC);
         const double dd = glm::dot(ray.direction, ray.direction);
         const std::size_t px = std::size_t(j) * cam.width + i;
-        for (const Prepared& q : prep) {
+        for (const std::uint32_t g : tiles[std::size_t(j / kTile) * tilesX + i / kTile]) {
+          const Prepared& q = prep[g];
           const glm::dvec3 oc = ray.origin - q.centre;
           const glm::dvec3 perp = oc - glm::dot(oc, ray.direction) / dd * ray.direction;
           if (glm::dot(perp, perp) > q.radius * q.radius) continue;

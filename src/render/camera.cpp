@@ -70,7 +70,9 @@ Camera makeCamera(const CameraDesc& d, int width, int height, const glm::dvec3& 
   return c;
 }
 
-RayWC Camera::rayThroughPixel(double px, double py) const {
+RayWC Camera::rayThroughPixel(double px, double py) const { return rayThroughPixel(px, py, glm::inverse(viewWCVC)); }
+
+RayWC Camera::rayThroughPixel(double px, double py, const glm::dmat4& wcFromVC) const {
   const double aspect = double(width) / double(height);
   const double xn = 2.0 * px / width - 1.0;
   const double yn = 1.0 - 2.0 * py / height;
@@ -81,8 +83,7 @@ RayWC Camera::rayThroughPixel(double px, double py) const {
   } else {
     oVC = glm::dvec3(xn * desc.orthoHeight * 0.5 * aspect, yn * desc.orthoHeight * 0.5, 0.0);
   }
-  const glm::dmat4 inv = glm::inverse(viewWCVC);
-  return {glm::dvec3(inv * glm::dvec4(oVC, 1.0)), glm::dvec3(inv * glm::dvec4(dVC, 0.0))};
+  return {glm::dvec3(wcFromVC * glm::dvec4(oVC, 1.0)), glm::dvec3(wcFromVC * glm::dvec4(dVC, 0.0))};
 }
 
 double Camera::windowDepthFromViewDepth(double dist) const {

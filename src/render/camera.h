@@ -32,6 +32,8 @@ struct Camera {
 
   // Pixel (i, j) has its centre at (i + 0.5, j + 0.5), row 0 at the top.
   RayWC rayThroughPixel(double px, double py) const;
+  // The same, with inverse(viewWCVC) computed once by the caller.
+  RayWC rayThroughPixel(double px, double py, const glm::dmat4& wcFromVC) const;
   double windowDepthFromViewDepth(double d) const;
   double viewDepthFromWindowDepth(double z) const;
   glm::dvec3 viewDirectionWC() const;

@@ -3,11 +3,13 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <algorithm>
 #include <random>
 
 #include <glm/geometric.hpp>
 
 #include "ref/ellipsoid_ref.h"
+#include "ref/pixel_loop.h"
 #include "render/camera.h"
 #include "tensor/glyph.h"
 
@@ -107,4 +109,38 @@ TEST(Bounds, RectangleIsTight) {
     ++checked;
   }
   EXPECT_GE(checked, 20);
+}
+
+// The reference bins glyphs to screen tiles; a tile must list every glyph
+// whose bounding sphere some pixel ray of the tile meets beyond the near
+// plane, or the oracle would lose glyphs. Random spheres and cameras, eyes
+// inside spheres included.
+TEST(Bounds, ReferenceTilesListEveryReachableGlyph) {
+  std::mt19937_64 rng(13);
+  std::uniform_real_distribution<double> u(0.0, 1.0);
+  const int size = 70;  // not a multiple of the tile size: partial tiles too
+  int reached = 0;
+  for (int k = 0; k < 60; ++k) {
+    const Case c = randomCase(rng, size);
+    std::vector<ref::detail::Prepared> prep(40);
+    for (auto& q : prep) {
+      q.centre = glm::dvec3(u(rng), u(rng), u(rng)) * 3.0 - 1.5;
+      q.radius = std::pow(10.0, -2.5 + 2.5 * u(rng));
+    }
+    const auto tiles = ref::detail::binGlyphs(c.cam, prep);
+    const int tilesX = (size + ref::detail::kTile - 1) / ref::detail::kTile;
+    for (int j = 0; j < size; ++j)
+      for (int i = 0; i < size; ++i) {
+        const auto ray = c.cam.rayThroughPixel(i + 0.5, j + 0.5);
+        const auto& list = tiles[std::size_t(j / ref::detail::kTile) * tilesX + i / ref::detail::kTile];
+        for (std::uint32_t g = 0; g < prep.size(); ++g) {
+          double t0, t1;
+          const glm::dvec3 o = (ray.origin - prep[g].centre) / prep[g].radius;
+          if (!ref::detail::unitSphereRoots(o, ray.direction / prep[g].radius, t0, t1) || t1 < c.cam.nearVC) continue;
+          ++reached;
+          ASSERT_TRUE(std::find(list.begin(), list.end(), g) != list.end()) << "case " << k << " pixel " << i << "," << j;
+        }
+      }
+  }
+  EXPECT_GT(reached, 10000);
 }
