@@ -12,74 +12,18 @@
 #include "gl/backends.h"
 #include "gl/shader_library.h"
 #include "ref/ellipsoid_ref.h"
+#include "ref/image_diff.h"
 #include "ref/superquadric_ref.h"
 #include "data-synthetic/generators.h"
 #include "render/renderer.h"
 
 namespace tg::test {
 
-struct Comparison {
-  std::size_t refCovered = 0, gpuCovered = 0;
-  std::size_t coverageMismatch = 0, interiorMismatch = 0;  // interior: not on a reference silhouette
-  std::size_t idMismatch = 0;
-  double maxRelDepthError = 0, maxNormalErrorDeg = 0, medianNormalErrorDeg = 0;
-  std::size_t nonFinite = 0;
-};
+using Comparison = ref::ImageDiff;
 
-// Depth errors are relative to the depth for perspective (float keeps
-// relative precision there) and to the depth range for orthographic
-// projection, whose depth buffer is linear.
+// The draw must read back every channel (the fixture's draw() does).
 inline Comparison compare(const render::FrameImage& g, const ref::RefImage& r, const render::Camera& cam) {
-  const bool ortho = cam.desc.projection == render::Projection::Orthographic;
-  Comparison c;
-  const int w = r.width, h = r.height;
-  auto covered = [&](int i, int j) { return r.id[std::size_t(j) * w + i] != ref::kNoGlyph; };
-  // A pixel whose 3x3 neighbourhood holds another id (or none) sits on an
-  // edge, where float and double may round the other way.
-  auto onEdge = [&](int i, int j) {
-    const std::uint32_t id = r.id[std::size_t(j) * w + i];
-    for (int dj = -1; dj <= 1; ++dj)
-      for (int di = -1; di <= 1; ++di) {
-        const int x = std::clamp(i + di, 0, w - 1), y = std::clamp(j + dj, 0, h - 1);
-        if (r.id[std::size_t(y) * w + x] != id) return true;
-      }
-    return false;
-  };
-  std::vector<double> normalErr;
-  for (int j = 0; j < h; ++j)
-    for (int i = 0; i < w; ++i) {
-      const std::size_t p = std::size_t(j) * w + i;
-      const bool rc = covered(i, j), gc = g.id[p] != ref::kNoGlyph;
-      for (int k = 0; k < 4; ++k) c.nonFinite += !std::isfinite(g.rgba[4 * p + k]);
-      for (int k = 0; k < 3; ++k) c.nonFinite += !std::isfinite(g.normalWC[3 * p + k]);
-      if (gc && !std::isfinite(g.depth[p])) ++c.nonFinite;
-      c.refCovered += rc;
-      c.gpuCovered += gc;
-      if (rc != gc) {
-        ++c.coverageMismatch;
-        if (!onEdge(i, j)) ++c.interiorMismatch;
-        continue;
-      }
-      if (!rc) continue;
-      if (g.id[p] != r.id[p]) {
-        // Two glyphs whose surfaces meet at the same depth (same-shaped cones
-        // on one axis do) may win either way; that is a tie, not an error.
-        const bool tie = std::abs(g.depth[p] - r.depth[p]) <= 1e-6 * r.depth[p];
-        if (!onEdge(i, j) && !tie) ++c.idMismatch;
-        continue;
-      }
-      if (onEdge(i, j)) continue;
-      c.maxRelDepthError = std::max(c.maxRelDepthError, std::abs(g.depth[p] - r.depth[p]) / (ortho ? cam.farVC - cam.nearVC : r.depth[p]));
-      const glm::dvec3 n(g.normalWC[3 * p], g.normalWC[3 * p + 1], g.normalWC[3 * p + 2]);
-      const double cosA = std::clamp(glm::dot(glm::normalize(n), r.normalWC[p]), -1.0, 1.0);
-      normalErr.push_back(glm::degrees(std::acos(cosA)));
-    }
-  if (!normalErr.empty()) {
-    std::sort(normalErr.begin(), normalErr.end());
-    c.maxNormalErrorDeg = normalErr.back();
-    c.medianNormalErrorDeg = normalErr[normalErr.size() / 2];
-  }
-  return c;
+  return ref::diffImages(g, r, cam);
 }
 
 inline tensor::GlyphSet glyphsOf(const io::TensorField& f) { return tensor::buildGlyphs(f.positions, f.tensors, f.ids); }
@@ -114,9 +58,9 @@ inline void expectWithin(const Comparison& c, const Tolerance& t, const std::str
   EXPECT_LE(double(c.interiorMismatch), t.interiorMismatch * covered);
   EXPECT_LE(double(c.coverageMismatch), t.coverageMismatch * covered);
   EXPECT_LE(double(c.idMismatch), t.idMismatch * covered);
-  EXPECT_LT(c.maxRelDepthError, t.relDepth);
-  EXPECT_LT(c.medianNormalErrorDeg, t.medianNormalDeg);
-  EXPECT_LT(c.maxNormalErrorDeg, t.maxNormalDeg);
+  EXPECT_LT(c.depth.max, t.relDepth);
+  EXPECT_LT(c.normalDeg.median, t.medianNormalDeg);
+  EXPECT_LT(c.normalDeg.max, t.maxNormalDeg);
 }
 
 // Three glyphs around and beside the eye of insideCamera(): the eye plane cuts
