@@ -104,6 +104,9 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, int max
   if (isnan(h0) || isinf(h0)) return res;
   bool exiting = false;
   float lo = s0, hi = s1;
+  // h at the bracket's ends, where known, for regula falsi.
+  float hLo = h0, hHi = 0.0;
+  bool knownHi = false;
   bool bracketed = false;
   if (h0 <= 0.0) {
     if (!fromNear) return MarchResult(true, s0, grad, 0);  // the glyph touches the cube face
@@ -123,7 +126,7 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, int max
     // (Teem's echo searches the derivative the same way), and a minimum with
     // h <= 0 closes the bracket.
     const int kSamples = 24;
-    float prev = s0, prevSlope = dot(grad, dir);
+    float prev = s0, prevH = h0, prevSlope = dot(grad, dir);
     for (int k = 1; k <= kSamples && !bracketed; ++k) {
       float s = s0 + (s1 - s0) * float(k) / float(kSamples);
       float h = superquadricGauge(shape, o + s * dir, grad) - 1.0;
@@ -132,8 +135,10 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, int max
       if (h <= 0.0) bracketed = true;
       for (int j = 0; j < kSamples && !bracketed && prevSlope < 0.0 && slope > 0.0 && b - a > eps; ++j) {
         float m = 0.5 * (a + b);
-        if (superquadricGauge(shape, o + m * dir, grad) - 1.0 <= 0.0) {
+        float hm = superquadricGauge(shape, o + m * dir, grad) - 1.0;
+        if (hm <= 0.0) {
           s = m;
+          h = hm;
           bracketed = true;
         } else if (dot(grad, dir) < 0.0) {
           a = m;
@@ -143,15 +148,20 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, int max
       }
       if (bracketed) {
         lo = prev;
+        hLo = prevH;
         hi = s;
+        hHi = h;
+        knownHi = true;
       }
       prev = s;
+      prevH = h;
       prevSlope = slope;
     }
     if (!bracketed) return res;
   }
 
   float s = exiting ? hi : lo;
+  bool lastFalsi = false;
   for (int i = 0; i < maxIter; ++i) {
     res.iterations = i + 1;
     float h = superquadricGauge(shape, o + s * dir, grad) - 1.0;
@@ -159,7 +169,14 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, int max
     if (isnan(h) || isnan(dh)) return res;  // never report a hit from a NaN
     if (abs(h) < eps) return MarchResult(true, s, grad, i + 1);
     // Keep the bracket: the side with h > 0 is lo when entering, hi when exiting.
-    if ((h > 0.0) != exiting) lo = s; else hi = s;
+    if ((h > 0.0) != exiting) {
+      lo = s;
+      hLo = h;
+    } else {
+      hi = s;
+      hHi = h;
+      knownHi = true;
+    }
     if (h <= 0.0) bracketed = true;
     // Miss: outside a convex glyph and moving away from it (Hlawitschka's test).
     if (!bracketed && h > 0.0 && dh >= 0.0) return res;
@@ -169,7 +186,19 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, int max
     // exit proves there is no root. Bisecting there would instead shrink an
     // interval holding no root until the step criterion took it for a hit.
     if (!bracketed && !(next < hi)) return res;
-    if (!(next > lo && next < hi)) next = 0.5 * (lo + hi);
+    // Newton left the bracket: Blinn's fallback, regula falsi on the
+    // bracket's ends, alternating with bisection so that a one-sided run of
+    // false positions still halves the bracket every second step.
+    bool falsi = false;
+    if (!(next > lo && next < hi)) {
+      falsi = bracketed && knownHi && !lastFalsi && hLo != hHi;
+      next = falsi ? lo - hLo * (hi - lo) / (hHi - hLo) : 0.5 * (lo + hi);
+      if (!(next > lo && next < hi)) {
+        next = 0.5 * (lo + hi);
+        falsi = false;
+      }
+    }
+    lastFalsi = falsi;
     // Step criterion (Hlawitschka et al.); a collapsed bracket only counts
     // when it is known to hold a root.
     if (abs(next - s) < eps || (bracketed && hi - lo < eps)) {

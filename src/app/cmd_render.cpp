@@ -119,15 +119,11 @@ render::ColorMode colorMode(const std::string& c) {
 render::CameraDesc chooseCamera(const RenderOptions& o, const Scene& s, const glm::dvec3& lo, const glm::dvec3& hi) {
   const render::Projection proj = o.ortho ? render::Projection::Orthographic : render::Projection::Perspective;
   const double aspect = double(o.width) / o.height;
-  render::CameraDesc d = frameBox(lo, hi, proj, o.fov.value_or(30.0), aspect);
+  render::CameraDesc d = sceneCamera(s, lo, hi, proj, o.fov.value_or(30.0), aspect);
   if (o.eye) {
     d.eyeWC = *o.eye;
     d.lookAtWC = o.lookAt.value_or(0.5 * (lo + hi));
     d.upWC = o.up.value_or(glm::dvec3(0, 1, 0));
-  } else if (s.preferredCamera) {
-    d.eyeWC = s.preferredCamera->eyeWC;
-    d.lookAtWC = s.preferredCamera->lookAtWC;
-    d.upWC = s.preferredCamera->upWC;
   }
   if (o.ortho) d.orthoHeight = *o.ortho;
   if (const char* err = render::validateCamera(d); *err) throw UsageError(err);
@@ -140,9 +136,7 @@ int cmdRender(int argc, const char** argv) {
   const RenderOptions o = parse(argc, argv);
   validate(o);
   const auto t0 = Clock::now();
-  Scene scene;
-  if (o.input.empty()) scene = defaultScene();
-  else scene.field = io::readTensorField(o.input, {o.array});
+  Scene scene = loadScene(o.input, o.array);
   const double loadMs = msSince(t0);
   if (scene.field.skippedNonFinite)
     std::fprintf(stderr, "tensorglyph render: %s: skipped %zu tensors with NaN/Inf components\n",

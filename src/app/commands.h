@@ -7,5 +7,6 @@ namespace tg::app {
 int cmdRender(int argc, const char** argv);
 int cmdInfo(int argc, const char** argv);
 int cmdSynth(int argc, const char** argv);
+int cmdBench(int argc, const char** argv);
 
 }  // namespace tg::app

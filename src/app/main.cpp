@@ -15,6 +15,7 @@ constexpr const char* kUsage =
     "  render [INPUT] -o OUT   render glyphs to an image (no INPUT: the built-in scene)\n"
     "  info INPUT              grid, counts, eigenvalue ranges, skipped tensors\n"
     "  synth KIND -o OUT       write a synthetic field (helix, boussinesq, extremes, random, ...)\n"
+    "  bench accuracy [INPUT]  superquadric march: error against the reference vs frame time\n"
     "Run 'tensorglyph <command> --help' for a command's options.\n";
 
 }  // namespace
@@ -29,6 +30,7 @@ int main(int argc, const char** argv) {
     if (cmd == "render") return tg::app::cmdRender(argc - 1, argv + 1);
     if (cmd == "info") return tg::app::cmdInfo(argc - 1, argv + 1);
     if (cmd == "synth") return tg::app::cmdSynth(argc - 1, argv + 1);
+    if (cmd == "bench") return tg::app::cmdBench(argc - 1, argv + 1);
     std::fprintf(stderr, "tensorglyph: unknown command \"%s\"; run 'tensorglyph --help'\n", cmd.c_str());
     return 2;
   } catch (const tg::app::UsageError& e) {

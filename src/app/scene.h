@@ -18,4 +18,13 @@ struct Scene {
 // isotropic background hidden by an FA threshold.
 Scene defaultScene();
 
+// The built-in scene when `input` is empty, else the file (`array` names the
+// tensor array, "" for the first one that fits).
+Scene loadScene(const std::string& input, const std::string& array);
+
+// The view used when no camera flag is given: the scene's preferred view if
+// it has one, else frameBox's default over the scene box.
+render::CameraDesc sceneCamera(const Scene& s, const glm::dvec3& loWC, const glm::dvec3& hiWC, render::Projection p,
+                               double fovYDeg, double aspect);
+
 }  // namespace tg::app

@@ -1,5 +1,7 @@
 #include "app/scene.h"
+
 #include "data-synthetic/generators.h"
+#include "io/readers.h"
 
 #include <cmath>
 
@@ -28,6 +30,24 @@ Scene defaultScene() {
   s.preferredCamera = cam;
   s.preferredFaMin = 0.25;
   return s;
+}
+
+Scene loadScene(const std::string& input, const std::string& array) {
+  if (input.empty()) return defaultScene();
+  Scene s;
+  s.field = io::readTensorField(input, {array});
+  return s;
+}
+
+render::CameraDesc sceneCamera(const Scene& s, const glm::dvec3& loWC, const glm::dvec3& hiWC, render::Projection p,
+                               double fovYDeg, double aspect) {
+  render::CameraDesc d = render::frameBox(loWC, hiWC, p, fovYDeg, aspect);
+  if (s.preferredCamera) {
+    d.eyeWC = s.preferredCamera->eyeWC;
+    d.lookAtWC = s.preferredCamera->lookAtWC;
+    d.upWC = s.preferredCamera->upWC;
+  }
+  return d;
 }
 
 }  // namespace tg::app

@@ -1,0 +1,8 @@
+#pragma once
+// The benchmarks behind `tensorglyph bench NAME`, each parsing its own options.
+
+namespace tg::app {
+
+int benchAccuracy(int argc, const char** argv);
+
+}  // namespace tg::app

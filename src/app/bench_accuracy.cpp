@@ -1,0 +1,245 @@
+// `tensorglyph bench accuracy`: the superquadric march's speed/accuracy trade.
+// Sweeps maximum iterations x epsilon on one scene and measures, per setting,
+// the frame time, the Newton iteration statistics and the error against the
+// double-precision reference (src/ref/superquadric_ref).
+#include <OpenImageIO/argparse.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <optional>
+#include <string>
+#include <unordered_map>
+#include <vector>
+
+#include "app/bench.h"
+#include "app/cli_common.h"
+#include "app/plot.h"
+#include "app/scene.h"
+#include "gl/shader_library.h"
+#include "io/atomic_file.h"
+#include "ref/image_diff.h"
+#include "ref/superquadric_ref.h"
+#include "render/renderer.h"
+
+namespace tg::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+struct Options {
+  std::string input, csv, plot, backend = "osmesa", array;
+  int width = 640, height = 480, frames = 5;
+  double gamma = 3.0;
+  std::optional<double> faMin, scale;
+  std::vector<int> iterations{1, 2, 3, 4, 5, 6, 8, 10, 12, 15, 20, 30};
+  std::vector<double> epsilons{1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
+};
+
+template <class T, class Parse>
+std::vector<T> parseList(std::string_view flag, std::string_view text, Parse parse) {
+  std::vector<T> out;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = text.find(',', start);
+    out.push_back(T(parse(flag, text.substr(start, comma - start))));
+    if (comma == std::string_view::npos) return out;
+    start = comma + 1;
+  }
+}
+
+Options parse(int argc, const char** argv) {
+  Options o;
+  OIIO::ArgParse ap;
+  ap.intro("tensorglyph bench accuracy [INPUT] -o CSV [options]\n"
+           "Superquadric march: frame time, Newton iterations and error against the\n"
+           "double-precision reference, over maximum iterations x epsilon.")
+      .exit_on_error(false);
+  using Args = OIIO::cspan<const char*>;
+  ap.arg("filename").hidden().action([&](auto&, Args a) {
+    if (!o.input.empty()) throw UsageError("more than one INPUT: \"" + o.input + "\" and \"" + a[0] + "\"");
+    o.input = a[0];
+  });
+  ap.arg("-o CSV").help("one row per setting").action([&](auto&, Args a) { o.csv = a[1]; });
+  ap.arg("--plot PNG").help("error against frame time (default: the CSV path with .png)").action([&](auto&, Args a) {
+    o.plot = a[1];
+  });
+  ap.arg("--size W H").help("image size in pixels (default 640 480)").action([&](auto&, Args a) {
+    o.width = int(parseInt("--size", a[1]));
+    o.height = int(parseInt("--size", a[2]));
+  });
+  ap.arg("--gamma G").help("superquadric sharpness (default 3)").action([&](auto&, Args a) {
+    o.gamma = parseDouble("--gamma", a[1]);
+  });
+  ap.arg("--iterations LIST").help("maximum iterations, comma-separated (default 1,2,3,4,5,6,8,10,12,15,20,30)")
+      .action([&](auto&, Args a) { o.iterations = parseList<int>("--iterations", a[1], parseInt); });
+  ap.arg("--epsilon LIST").help("tolerances, comma-separated (default 1e-2,1e-3,...,1e-7)").action([&](auto&, Args a) {
+    o.epsilons = parseList<double>("--epsilon", a[1], parseDouble);
+  });
+  ap.arg("--frames N").help("timed frames per setting; the median is reported (default 5)").action([&](auto&, Args a) {
+    o.frames = int(parseInt("--frames", a[1]));
+  });
+  ap.arg("--fa-min F").help("hide glyphs with FA below F").action([&](auto&, Args a) {
+    o.faMin = parseDouble("--fa-min", a[1]);
+  });
+  ap.arg("--scale S").help("world units per unit eigenvalue").action([&](auto&, Args a) {
+    o.scale = parseDouble("--scale", a[1]);
+  });
+  ap.arg("--backend NAME").help("osmesa (default), egl, glfw or auto").action([&](auto&, Args a) { o.backend = a[1]; });
+  ap.arg("--array NAME").help("point array holding the tensors").action([&](auto&, Args a) { o.array = a[1]; });
+  if (ap.parse_args(argc, argv) < 0) throw UsageError(ap.geterror());
+  return o;
+}
+
+std::string withExtension(const std::string& path, const std::string& ext) {
+  const auto slash = path.find_last_of('/'), dot = path.find_last_of('.');
+  const bool hasExt = dot != std::string::npos && (slash == std::string::npos || dot > slash);
+  return (hasExt ? path.substr(0, dot) : path) + ext;
+}
+
+void validate(Options& o) {
+  if (o.csv.empty()) throw UsageError("-o CSV is required");
+  if (o.plot.empty()) o.plot = withExtension(o.csv, ".png");
+  if (o.plot == o.csv) throw UsageError("--plot must differ from -o");
+  if (o.width < 16 || o.height < 16 || o.width > 8192 || o.height > 8192)
+    throw UsageError("--size must be within 16..8192");
+  if (!(o.gamma > 0.0 && o.gamma <= 1e4)) throw UsageError("--gamma must be within (0, 10000]: at 0 no glyph marches");
+  for (int n : o.iterations)
+    if (n < 1 || n > 1000) throw UsageError("--iterations: each must be within 1..1000");
+  for (double e : o.epsilons)
+    if (!(e >= 1e-9 && e <= 0.5)) throw UsageError("--epsilon: each must be within 1e-9..0.5");
+  if (o.frames < 1 || o.frames > 1000) throw UsageError("--frames must be within 1..1000");
+  if (o.scale && !(*o.scale > 0.0)) throw UsageError("--scale must be positive");
+  if (o.backend != "osmesa" && o.backend != "egl" && o.backend != "glfw" && o.backend != "auto")
+    throw UsageError("--backend: unknown backend \"" + o.backend + "\"; choose osmesa, egl, glfw or auto");
+}
+
+struct Row {
+  int iterations;
+  double epsilon, frameMs;
+  render::IterationStats stats;
+  double coveragePct, interiorPct;
+  ref::ImageDiff diff;
+};
+
+void writeCsv(const std::vector<Row>& rows, const std::string& path) {
+  io::AtomicOutput out(path);
+  {
+    std::ofstream f(out.tempPath());
+    f << "iterations,epsilon,frame_ms,mean_iterations,max_iterations,coverage_error_pct,interior_error_pct,"
+         "depth_err_median,depth_err_p99,depth_err_max,normal_err_median_deg,normal_err_p99_deg,normal_err_max_deg\n";
+    char line[512];
+    for (const Row& r : rows) {
+      std::snprintf(line, sizeof line, "%d,%g,%.3f,%.3f,%u,%.4f,%.4f,%.3g,%.3g,%.3g,%.3g,%.3g,%.3g\n", r.iterations,
+                    r.epsilon, r.frameMs, r.stats.mean, r.stats.max, r.coveragePct, r.interiorPct, r.diff.depth.median,
+                    r.diff.depth.p99, r.diff.depth.max, r.diff.normalDeg.median, r.diff.normalDeg.p99,
+                    r.diff.normalDeg.max);
+      f << line;
+    }
+    f.close();
+    if (!f) throw std::runtime_error("bench accuracy: " + path + ": write failed");
+  }
+  out.commit();
+}
+
+bool plot(const std::vector<Row>& rows, const std::vector<double>& epsilons, const std::string& path) {
+  // One series per epsilon, its points in order of maximum iterations.
+  PlotPanel cover{"Coverage error vs frame time", "frame time (ms)", "% glyph pixels", true, {}};
+  PlotPanel depth{"Depth error (p99) vs frame time", "frame time (ms)", "glyph sizes", true, {}};
+  PlotPanel normal{"Normal error (p99) vs frame time", "frame time (ms)", "degrees", true, {}};
+  const std::array<float, 3> palette[] = {{0.85f, 0.1f, 0.1f}, {0.9f, 0.55f, 0.0f}, {0.2f, 0.65f, 0.2f},
+                                          {0.1f, 0.6f, 0.8f},  {0.2f, 0.3f, 0.85f}, {0.6f, 0.2f, 0.7f}};
+  for (std::size_t k = 0; k < epsilons.size(); ++k) {
+    char label[32];
+    std::snprintf(label, sizeof label, "eps %g", epsilons[k]);
+    PlotSeries c{label, palette[k % 6], {}}, d = c, n = c;
+    for (const Row& r : rows)
+      if (r.epsilon == epsilons[k]) {
+        c.points.push_back({r.frameMs, r.coveragePct});
+        d.points.push_back({r.frameMs, r.diff.depth.p99});
+        n.points.push_back({r.frameMs, r.diff.normalDeg.p99});
+      }
+    cover.series.push_back(c);
+    depth.series.push_back(d);
+    normal.series.push_back(n);
+  }
+  return writePlot({cover, depth, normal}, path);
+}
+
+}  // namespace
+
+int benchAccuracy(int argc, const char** argv) {
+  Options o = parse(argc, argv);
+  validate(o);
+  Scene scene = loadScene(o.input, o.array);
+  const tensor::GlyphSet glyphs = tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids);
+  render::FrameParams params;
+  params.scale = o.scale.value_or(tensor::defaultScale(glyphs, scene.field.sampleSpacing));
+  params.faMin = o.faMin.value_or(scene.preferredFaMin.value_or(0.0));
+  params.glyph = render::GlyphKind::Superquadric;
+  params.gamma = o.gamma;
+  const double pad = params.scale * glyphs.maxAbsEigenvalue;
+  const glm::dvec3 lo = glyphs.boundsMinWC - pad, hi = glyphs.boundsMaxWC + pad;
+  const render::Camera cam = render::makeCamera(
+      sceneCamera(scene, lo, hi, render::Projection::Perspective, 30.0, double(o.width) / o.height), o.width, o.height,
+      lo, hi);
+
+  const auto tr = Clock::now();
+  const ref::RefImage reference = ref::renderSuperquadrics(cam, glyphs.glyphs, {params.scale, params.faMin}, o.gamma);
+  const double refMs = std::chrono::duration<double, std::milli>(Clock::now() - tr).count();
+  // Depth errors in units of each glyph's largest semi-axis, the unit of epsilon.
+  std::unordered_map<std::uint32_t, double> size;
+  for (const auto& g : glyphs.glyphs)
+    size[g.id] = params.scale * std::max({std::abs(g.eigenvalues[0]), std::abs(g.eigenvalues[1]),
+                                          std::abs(g.eigenvalues[2])});
+  ref::DiffOptions diffOpt;
+  diffOpt.depthUnit = [&](std::uint32_t id, double) { return size.at(id); };
+
+  auto ctx = createContext(o.backend, o.width, o.height);
+  const gl::ShaderLibrary lib;
+  render::GlyphRenderer renderer(ctx->api(), lib);
+  render::GBuffer target(ctx->api(), o.width, o.height);
+  renderer.upload(glyphs);
+  std::fprintf(stderr, "bench accuracy: %s, %zu glyphs, gamma %g, %dx%d, %s (%s); reference %.0f ms, %zu glyph pixels\n",
+               scene.field.path.c_str(), glyphs.glyphs.size(), o.gamma, o.width, o.height, ctx->backendName(),
+               ctx->describe().c_str(), refMs, std::size_t(std::count_if(reference.id.begin(), reference.id.end(),
+                                                                         [](auto id) { return id != ref::kNoGlyph; })));
+
+  std::vector<Row> rows;
+  std::printf("%5s %8s %9s %6s %4s %9s %10s %10s %9s\n", "iter", "eps", "frame_ms", "mean", "max", "cover_%",
+              "depth_p99", "depth_max", "norm_p99");
+  for (double eps : o.epsilons)
+    for (int it : o.iterations) {
+      params.march = {it, eps};
+      params.iterationStats = false;
+      renderer.render(cam, params, target);  // warm-up: compiles and caches state
+      ctx->api().Finish();
+      std::vector<double> times;
+      for (int f = 0; f < o.frames; ++f) {
+        const auto t0 = Clock::now();
+        renderer.render(cam, params, target);
+        ctx->api().Finish();
+        times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+      }
+      std::sort(times.begin(), times.end());
+      const render::FrameImage img = renderer.readback(cam, target, render::Channels::All);
+      params.iterationStats = true;  // a separate frame: the counters cost time
+      renderer.render(cam, params, target);
+      Row r{it, eps, times[times.size() / 2], renderer.iterationStats(), 0, 0, ref::diffImages(img, reference, cam, diffOpt)};
+      const double covered = double(std::max<std::size_t>(r.diff.refCovered, 1));
+      r.coveragePct = 100.0 * double(r.diff.coverageMismatch) / covered;
+      r.interiorPct = 100.0 * double(r.diff.interiorMismatch) / covered;
+      std::printf("%5d %8.0e %9.2f %6.2f %4u %9.4f %10.2e %10.2e %9.3f\n", it, eps, r.frameMs, r.stats.mean,
+                  r.stats.max, r.coveragePct, r.diff.depth.p99, r.diff.depth.max, r.diff.normalDeg.p99);
+      std::fflush(stdout);
+      if (r.diff.nonFinite) std::fprintf(stderr, "bench accuracy: %zu non-finite GPU values\n", r.diff.nonFinite);
+      rows.push_back(r);
+    }
+  writeCsv(rows, o.csv);
+  if (!plot(rows, o.epsilons, o.plot))
+    std::fprintf(stderr, "bench accuracy: %s: no font found, so the plot has no labels\n", o.plot.c_str());
+  std::fprintf(stderr, "bench accuracy: wrote %s and %s\n", o.csv.c_str(), o.plot.c_str());
+  return 0;
+}
+
+}  // namespace tg::app
