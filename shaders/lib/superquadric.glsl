@@ -87,7 +87,8 @@ struct MarchResult {
 // The first surface crossing of the unit glyph along o + s dir (|dir| = 1,
 // GC) with s >= sNear, to tolerance eps in GC units, in at most maxIter
 // Newton steps. Seeded at the cube entry; the bracket [lo, hi] with
-// h(lo) > 0 >= h(hi) is kept, and a step that leaves it bisects instead.
+// h(lo) > 0 >= h(hi) is kept, and a step that leaves it falls back to
+// regula falsi or bisection.
 MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, int maxIter, float eps) {
   MarchResult res = MarchResult(false, 0.0, vec3(0.0), 0);
   // Slabs of the cube [-1, 1]^3.

@@ -6,7 +6,9 @@
 
 #include <cstdio>
 #include <filesystem>
+#include <algorithm>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "real_data.h"
@@ -175,4 +177,49 @@ TEST(Cli, DefaultSceneMatchesGoldenImage) {
   // mode shifts it by tens.
   EXPECT_LE(worst, 40);
   EXPECT_LE(sum / double(pa.size()), 0.6);
+}
+
+// `bench accuracy` on the built-in scene, two settings: one row per setting
+// with every column, error that falls as iterations rise, and the plot.
+TEST(Cli, BenchAccuracyWritesCsvAndPlot) {
+  const fs::path csv = dir() / "acc.csv", png = dir() / "acc.png";
+  fs::remove(csv);
+  fs::remove(png);
+  const CmdResult r = run("bench accuracy -o " + csv.string() + " --size 160 120 --iterations 1,10 --epsilon 1e-4 --frames 1");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::ifstream in(csv);
+  std::string header, line;
+  ASSERT_TRUE(std::getline(in, header));
+  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 12);
+  std::vector<std::vector<double>> rows;
+  while (std::getline(in, line)) {
+    std::vector<double> v;
+    std::stringstream ss(line);
+    for (std::string cell; std::getline(ss, cell, ',');) v.push_back(std::stod(cell));
+    ASSERT_EQ(v.size(), 13u) << line;
+    rows.push_back(v);
+  }
+  ASSERT_EQ(rows.size(), 2u);
+  EXPECT_EQ(rows[0][0], 1);
+  EXPECT_EQ(rows[1][0], 10);
+  EXPECT_EQ(rows[0][4], 1);        // one iteration allowed, one used at most
+  EXPECT_GT(rows[0][5], 1.0);      // a single Newton step leaves many pixels unresolved
+  EXPECT_LT(rows[1][5], 0.5);      // ten resolve them: coverage error in %
+  EXPECT_GT(rows[1][2], 0.0);      // frame time
+  auto plot = OIIO::ImageInput::open(png.string());
+  ASSERT_TRUE(plot) << "no plot at " << png;
+  EXPECT_EQ(plot->spec().width, 3 * 640);
+}
+
+TEST(Cli, BenchAccuracyRejectsBadSettingsBeforeWriting) {
+  const fs::path csv = dir() / "bad.csv";
+  fs::remove(csv);
+  for (const char* args : {"--iterations 0", "--iterations 3,x", "--epsilon 1", "--gamma 0", "--frames 0"}) {
+    const CmdResult r = run("bench accuracy -o " + csv.string() + " " + args);
+    EXPECT_EQ(r.code, 2) << args;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find("bench"), std::string::npos) << r.err;
+    EXPECT_FALSE(fs::exists(csv)) << args;
+  }
+  EXPECT_EQ(run("bench nonsense").code, 2);
 }
