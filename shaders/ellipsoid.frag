@@ -2,11 +2,15 @@
 // Exact ray-ellipsoid intersection per pixel into the G-buffer.
 #include "lib/camera.glsl"
 #include "lib/ellipsoid.glsl"
+#include "lib/color.glsl"
+
+uniform int uColorMode;
 
 in SpriteFS {
   flat vec3 centreVC;
   flat mat3 gcFromVC;
   flat vec3 color;
+  flat vec3 signWeightsGC;
   flat uint id;
 } fin;
 
@@ -34,7 +38,7 @@ void main() {
   vec3 nVC = transpose(fin.gcFromVC) * nGC;  // inverse transpose of GC -> VC
   vec3 nWC = normalize(transpose(mat3(uViewWCVC)) * nVC);
   gl_FragDepth = windowDepthFromViewDepth(depth);
-  oAlbedo = vec4(fin.color, 1.0);
+  oAlbedo = vec4(uColorMode == kColorSign ? signColor(fin.signWeightsGC, nGC) : fin.color, 1.0);
   oNormalWC = vec4(nWC, 0.0);
   oId = fin.id;
 }

@@ -17,6 +17,7 @@ out SpriteFS {
   flat vec3 centreVC;
   flat mat3 gcFromVC;
   flat vec3 color;
+  flat vec3 signWeightsGC;
   flat uint id;
 } vs;
 
@@ -50,5 +51,6 @@ void main() {
   vs.centreVC = centreVC;
   vs.gcFromVC = transpose(mat3(rotVC[0] / axes.x, rotVC[1] / axes.y, rotVC[2] / axes.z));
   vs.color = glyphColor(uColorMode, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, uMdRange);
+  vs.signWeightsGC = signWeights(g.eigenvalues_id.xyz, axes);
   vs.id = floatBitsToUint(g.eigenvalues_id.w);
 }

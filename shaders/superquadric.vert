@@ -21,6 +21,7 @@ out SuperquadricFS {
   flat mat3 gcFromVC;  // rows: GC axes in VC over their lengths; GC z is the symmetry axis
   flat vec3 shape;
   flat vec3 color;
+  flat vec3 signWeightsGC;
   flat uint id;
 } vs;
 
@@ -64,5 +65,7 @@ void main() {
   vs.gcFromVC = transpose(mat3(e0 / dot(e0, e0), e1 / dot(e1, e1), e2 / dot(e2, e2)));
   vs.shape = shape.xyz;
   vs.color = glyphColor(uColorMode, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, uMdRange);
+  vs.signWeightsGC = signWeights(vec3(g.eigenvalues_id[src.x], g.eigenvalues_id[src.y], g.eigenvalues_id[src.z]),
+                                 vec3(axes[src.x], axes[src.y], axes[src.z]));
   vs.id = floatBitsToUint(g.eigenvalues_id.w);
 }

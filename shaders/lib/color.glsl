@@ -1,5 +1,5 @@
 // Glyph base colour. Modes match tg::render::ColorMode.
-const int kColorDEC = 0, kColorFA = 1, kColorMD = 2, kColorCL = 3, kColorCP = 4;
+const int kColorDEC = 0, kColorFA = 1, kColorMD = 2, kColorCL = 3, kColorCP = 4, kColorSign = 5;
 
 // Viridis (van der Walt & Smith, matplotlib), 9 samples; linear in between.
 vec3 viridis(float t) {
@@ -34,4 +34,24 @@ vec3 glyphColor(int mode, vec3 e1WC, float fa, vec3 eigenvalues, vec2 mdRange) {
   }
   vec2 c = westinLinearPlanar(eigenvalues);
   return viridis(mode == kColorCL ? c.x : c.y);
+}
+
+// Sign colouring for stress (kColorSign), per surface point: the normal
+// stress r.D.r along the direction r from the centre to the point, on a
+// diverging map, orange where positive (tension), blue where negative
+// (compression), white where it vanishes. Per GC axis k, weight_k =
+// lambda_k * axis_k^2, both normalised so that tiny or huge fields neither
+// underflow nor overflow; then r.D.r is proportional to sum weight_k p_k^2
+// for the unit-glyph point p.
+vec3 signWeights(vec3 eigenvalues, vec3 axes) {
+  float l = max(abs(eigenvalues.x), max(abs(eigenvalues.y), abs(eigenvalues.z)));
+  vec3 a = axes / max(axes.x, max(axes.y, axes.z));
+  return l > 0.0 ? eigenvalues / l * a * a : vec3(0.0);
+}
+
+vec3 signColor(vec3 weightsGC, vec3 pGC) {
+  vec3 p2 = pGC * pGC;
+  float m = dot(abs(weightsGC), p2);
+  float t = m > 0.0 ? dot(weightsGC, p2) / m : 0.0;
+  return t >= 0.0 ? mix(vec3(1.0), vec3(0.90, 0.42, 0.10), t) : mix(vec3(1.0), vec3(0.15, 0.40, 0.90), -t);
 }

@@ -72,7 +72,7 @@ RenderOptions parse(int argc, const char** argv) {
   ap.arg("--ortho HEIGHT").help("orthographic, view height in world units").action([&](auto&, Args a) {
     o.ortho = parseDouble("--ortho", a[1]);
   });
-  ap.arg("--color MODE").help("dec, fa, md, cl or cp").action([&](auto&, Args a) { o.color = a[1]; });
+  ap.arg("--color MODE").help("dec, fa, md, cl, cp or sign (normal stress: orange tension, blue compression)").action([&](auto&, Args a) { o.color = a[1]; });
   ap.arg("--background R G B A").help("background colour, 0..1 (default 0.08 0.08 0.1 1)").action([&](auto&, Args a) {
     for (int k = 0; k < 4; ++k) o.background[k] = float(parseDouble("--background", a[1 + k]));
   });
@@ -99,8 +99,9 @@ void validate(const RenderOptions& o) {
   if (o.scale && !(*o.scale > 0.0)) throw UsageError("--scale must be positive");
   if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
   if ((o.lookAt || o.up) && !o.eye) throw UsageError("--look-at and --up need --eye");
-  if (o.color != "dec" && o.color != "fa" && o.color != "md" && o.color != "cl" && o.color != "cp")
-    throw UsageError("--color: unknown mode \"" + o.color + "\"; choose dec, fa, md, cl or cp");
+  if (o.color != "dec" && o.color != "fa" && o.color != "md" && o.color != "cl" && o.color != "cp" &&
+      o.color != "sign")
+    throw UsageError("--color: unknown mode \"" + o.color + "\"; choose dec, fa, md, cl, cp or sign");
   if (o.repeat < 0 || o.repeat > 10000) throw UsageError("--repeat must be within 0..10000");
   if (o.backend != "osmesa" && o.backend != "egl" && o.backend != "glfw" && o.backend != "auto")
     throw UsageError("--backend: unknown backend \"" + o.backend + "\"; choose osmesa, egl, glfw or auto");
@@ -113,6 +114,7 @@ render::ColorMode colorMode(const std::string& c) {
   if (c == "md") return render::ColorMode::MD;
   if (c == "cl") return render::ColorMode::CL;
   if (c == "cp") return render::ColorMode::CP;
+  if (c == "sign") return render::ColorMode::Sign;
   return render::ColorMode::DEC;
 }
 

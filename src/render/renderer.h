@@ -19,7 +19,7 @@ namespace tg::render {
 // What readback fetches: colour only (PNG and the like) or every channel (EXR).
 enum class Channels { Color, All };
 
-enum class ColorMode { DEC = 0, FA = 1, MD = 2, CL = 3, CP = 4 };
+enum class ColorMode { DEC = 0, FA = 1, MD = 2, CL = 3, CP = 4, Sign = 5 };
 
 struct Lighting {
   glm::vec3 keyDirVC{-0.45f, 0.55f, 0.70f};  // upper left, in front

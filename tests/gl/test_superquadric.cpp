@@ -211,3 +211,31 @@ TEST_F(GlFixture, DefaultMarchMeetsIterationAndCoverageTargets) {
                 d.coverageMismatch, d.refCovered, st.mean, st.max);
   }
 }
+
+// Sign colouring: a tension glyph is orange all over, a compression glyph
+// blue all over, and a mixed one shows both, on either glyph path.
+TEST_F(GlFixture, SignColourShowsTensionAndCompression) {
+  const float pos[9] = {-2.5f, 0, 0, 0, 0, 0, 2.5f, 0, 0};
+  const float ten[18] = {1, 0.1f, 0, 0.6f, 0, 0.3f, -0.3f, 0, 0.1f, -0.6f, 0, -1, 1, 0.2f, 0, 0.1f, 0, -0.8f};
+  const auto set = tensor::buildGlyphs(std::span(pos, 9), std::span(ten, 18), {});
+  const auto cam = cameraFor(set, 1.0, oblique(set, 12.0, render::Projection::Perspective), 240, 120);
+  for (auto kind : {render::GlyphKind::Ellipsoid, render::GlyphKind::Superquadric}) {
+    render::FrameParams p;
+    p.glyph = kind;
+    p.color = render::ColorMode::Sign;
+    const auto img = draw(set, cam, p);
+    std::size_t warm[3] = {0, 0, 0}, cool[3] = {0, 0, 0}, total[3] = {0, 0, 0};
+    for (std::size_t i = 0; i < img.id.size(); ++i) {
+      if (img.id[i] > 2) continue;
+      const float r = img.rgba[4 * i], b = img.rgba[4 * i + 2];
+      ++total[img.id[i]];
+      warm[img.id[i]] += r > b + 0.02f;
+      cool[img.id[i]] += b > r + 0.02f;
+    }
+    for (int k = 0; k < 3; ++k) ASSERT_GT(total[k], 200u) << k;
+    EXPECT_EQ(warm[0], total[0]);
+    EXPECT_EQ(cool[1], total[1]);
+    EXPECT_GT(warm[2], total[2] / 10);
+    EXPECT_GT(cool[2], total[2] / 10);
+  }
+}
