@@ -51,6 +51,6 @@ void main() {
   vs.centreVC = centreVC;
   vs.gcFromVC = transpose(mat3(rotVC[0] / axes.x, rotVC[1] / axes.y, rotVC[2] / axes.z));
   vs.color = glyphColor(uColorMode, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, uMdRange);
-  vs.signWeightsGC = signWeights(g.eigenvalues_id.xyz, axes);
+  vs.signWeightsGC = uColorMode == kColorSign ? signWeights(g.eigenvalues_id.xyz, axes) : vec3(0.0);
   vs.id = floatBitsToUint(g.eigenvalues_id.w);
 }

@@ -65,7 +65,8 @@ void main() {
   vs.gcFromVC = transpose(mat3(e0 / dot(e0, e0), e1 / dot(e1, e1), e2 / dot(e2, e2)));
   vs.shape = shape.xyz;
   vs.color = glyphColor(uColorMode, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, uMdRange);
-  vs.signWeightsGC = signWeights(vec3(g.eigenvalues_id[src.x], g.eigenvalues_id[src.y], g.eigenvalues_id[src.z]),
-                                 vec3(axes[src.x], axes[src.y], axes[src.z]));
+  vs.signWeightsGC = uColorMode != kColorSign ? vec3(0.0)
+      : signWeights(vec3(g.eigenvalues_id[src.x], g.eigenvalues_id[src.y], g.eigenvalues_id[src.z]),
+                    vec3(axes[src.x], axes[src.y], axes[src.z]));
   vs.id = floatBitsToUint(g.eigenvalues_id.w);
 }

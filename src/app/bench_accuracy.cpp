@@ -110,16 +110,18 @@ void validate(Options& o) {
     if (!(e >= 1e-9 && e <= 0.5)) throw UsageError("--epsilon: each must be within 1e-9..0.5");
   if (o.frames < 1 || o.frames > 1000) throw UsageError("--frames must be within 1..1000");
   if (o.scale && !(*o.scale > 0.0)) throw UsageError("--scale must be positive");
-  if (o.backend != "osmesa" && o.backend != "egl" && o.backend != "glfw" && o.backend != "auto")
-    throw UsageError("--backend: unknown backend \"" + o.backend + "\"; choose osmesa, egl, glfw or auto");
+  checkBackend(o.backend);
 }
 
 struct Row {
   int iterations;
   double epsilon, frameMs;
   render::IterationStats stats;
-  double coveragePct, interiorPct;
   ref::ImageDiff diff;
+  // Percentages of the reference's glyph pixels.
+  double percent(std::size_t n) const { return 100.0 * double(n) / double(std::max<std::size_t>(diff.refCovered, 1)); }
+  double coveragePct() const { return percent(diff.coverageMismatch); }
+  double interiorPct() const { return percent(diff.interiorMismatch); }
 };
 
 void writeCsv(const std::vector<Row>& rows, const std::string& path) {
@@ -131,7 +133,7 @@ void writeCsv(const std::vector<Row>& rows, const std::string& path) {
     char line[512];
     for (const Row& r : rows) {
       std::snprintf(line, sizeof line, "%d,%g,%.3f,%.3f,%u,%.4f,%.4f,%.3g,%.3g,%.3g,%.3g,%.3g,%.3g\n", r.iterations,
-                    r.epsilon, r.frameMs, r.stats.mean, r.stats.max, r.coveragePct, r.interiorPct, r.diff.depth.median,
+                    r.epsilon, r.frameMs, r.stats.mean, r.stats.max, r.coveragePct(), r.interiorPct(), r.diff.depth.median,
                     r.diff.depth.p99, r.diff.depth.max, r.diff.normalDeg.median, r.diff.normalDeg.p99,
                     r.diff.normalDeg.max);
       f << line;
@@ -155,7 +157,7 @@ bool plot(const std::vector<Row>& rows, const std::vector<double>& epsilons, con
     PlotSeries c{label, palette[k % 6], {}}, d = c, n = c;
     for (const Row& r : rows)
       if (r.epsilon == epsilons[k]) {
-        c.points.push_back({r.frameMs, r.coveragePct});
+        c.points.push_back({r.frameMs, r.coveragePct()});
         d.points.push_back({r.frameMs, r.diff.depth.p99});
         n.points.push_back({r.frameMs, r.diff.normalDeg.p99});
       }
@@ -178,8 +180,7 @@ int benchAccuracy(int argc, const char** argv) {
   params.faMin = o.faMin.value_or(scene.preferredFaMin.value_or(0.0));
   params.glyph = render::GlyphKind::Superquadric;
   params.gamma = o.gamma;
-  const double pad = params.scale * glyphs.maxAbsEigenvalue;
-  const glm::dvec3 lo = glyphs.boundsMinWC - pad, hi = glyphs.boundsMaxWC + pad;
+  const auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale);
   const render::Camera cam = render::makeCamera(
       sceneCamera(scene, lo, hi, render::Projection::Perspective, 30.0, double(o.width) / o.height), o.width, o.height,
       lo, hi);
@@ -225,12 +226,9 @@ int benchAccuracy(int argc, const char** argv) {
       const render::FrameImage img = renderer.readback(cam, target, render::Channels::All);
       params.iterationStats = true;  // a separate frame: the counters cost time
       renderer.render(cam, params, target);
-      Row r{it, eps, times[times.size() / 2], renderer.iterationStats(), 0, 0, ref::diffImages(img, reference, cam, diffOpt)};
-      const double covered = double(std::max<std::size_t>(r.diff.refCovered, 1));
-      r.coveragePct = 100.0 * double(r.diff.coverageMismatch) / covered;
-      r.interiorPct = 100.0 * double(r.diff.interiorMismatch) / covered;
+      const Row r{it, eps, times[times.size() / 2], renderer.iterationStats(), ref::diffImages(img, reference, cam, diffOpt)};
       std::printf("%5d %8.0e %9.2f %6.2f %4u %9.4f %10.2e %10.2e %9.3f\n", it, eps, r.frameMs, r.stats.mean,
-                  r.stats.max, r.coveragePct, r.diff.depth.p99, r.diff.depth.max, r.diff.normalDeg.p99);
+                  r.stats.max, r.coveragePct(), r.diff.depth.p99, r.diff.depth.max, r.diff.normalDeg.p99);
       std::fflush(stdout);
       if (r.diff.nonFinite) std::fprintf(stderr, "bench accuracy: %zu non-finite GPU values\n", r.diff.nonFinite);
       rows.push_back(r);

@@ -30,15 +30,17 @@ glm::dvec3 parseVec3(std::string_view flag, std::span<const char* const> a) {
   return {parseDouble(flag, a[0]), parseDouble(flag, a[1]), parseDouble(flag, a[2])};
 }
 
+void checkBackend(std::string_view backend) {
+  if (backend != "osmesa" && backend != "egl" && backend != "glfw" && backend != "auto")
+    throw UsageError("--backend: unknown backend \"" + std::string(backend) + "\"; choose osmesa, egl, glfw or auto");
+}
+
 std::unique_ptr<gl::Context> createContext(std::string_view backend, int width, int height) {
-  if (backend == "osmesa") return gl::createOSMesaContext();
+  checkBackend(backend);
   if (backend == "egl") return gl::createEglContext({});
   if (backend == "glfw") return gl::createGlfwContext({width, height, false, "tensorglyph"});
-  if (backend == "auto") {
-    if (gl::eglHasHardwareDevice()) return gl::createEglContext({false});
-    return gl::createOSMesaContext();
-  }
-  throw UsageError("--backend: unknown backend \"" + std::string(backend) + "\"; choose osmesa, egl, glfw or auto");
+  if (backend == "auto" && gl::eglHasHardwareDevice()) return gl::createEglContext({false});
+  return gl::createOSMesaContext();  // "osmesa", or "auto" without a GPU
 }
 
 std::size_t peakRssBytes() {

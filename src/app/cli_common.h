@@ -24,6 +24,9 @@ long long parseInt(std::string_view flag, std::string_view text);
 glm::dvec3 parseVec3(std::string_view flag, std::span<const char* const> args);
 
 // "osmesa", "egl", "glfw" or "auto" (a GPU through EGL if present, else OSMesa).
+// checkBackend throws UsageError for any other name, so commands can reject
+// it before loading anything.
+void checkBackend(std::string_view backend);
 std::unique_ptr<gl::Context> createContext(std::string_view backend, int width, int height);
 
 // Peak resident memory of this process so far, in bytes.

@@ -103,8 +103,7 @@ void validate(const RenderOptions& o) {
       o.color != "sign")
     throw UsageError("--color: unknown mode \"" + o.color + "\"; choose dec, fa, md, cl, cp or sign");
   if (o.repeat < 0 || o.repeat > 10000) throw UsageError("--repeat must be within 0..10000");
-  if (o.backend != "osmesa" && o.backend != "egl" && o.backend != "glfw" && o.backend != "auto")
-    throw UsageError("--backend: unknown backend \"" + o.backend + "\"; choose osmesa, egl, glfw or auto");
+  checkBackend(o.backend);
   if (!OIIO::ImageOutput::create(o.output))
     throw UsageError("-o: no image format for \"" + o.output + "\"");
 }
@@ -160,8 +159,7 @@ int cmdRender(int argc, const char** argv) {
   params.iterationStats = o.stats;
   params.background = o.background;
 
-  const double pad = params.scale * glyphs.maxAbsEigenvalue;
-  const glm::dvec3 lo = glyphs.boundsMinWC - pad, hi = glyphs.boundsMaxWC + pad;
+  const auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale);
   const render::Camera cam = render::makeCamera(chooseCamera(o, scene, lo, hi), o.width, o.height, lo, hi);
 
   auto ctx = createContext(o.backend, o.width, o.height);

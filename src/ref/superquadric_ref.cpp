@@ -105,9 +105,10 @@ bool superquadricFirstHit(const SuperquadricShape& s, const glm::dvec3& o, const
       return true;
     }
     if (hPrev < hPrevPrev && hPrev < hu) {
-      const double m = goldenMinimum(h, prev - step, u);
+      // Not before t0: a root there lies before the near plane or the cube.
+      const double a = std::max(t0, prev - step), m = goldenMinimum(h, a, u);
       if (h(m) <= 0.0) {
-        t = bisect(h, prev - step, m);
+        t = bisect(h, a, m);
         return true;
       }
     }

@@ -29,7 +29,7 @@ struct Lighting {
 enum class GlyphKind { Ellipsoid, Superquadric };
 
 // Newton march settings; the defaults come from `tensorglyph bench accuracy`
-// (README, "Speed and accuracy").
+// (README, "Speed against accuracy of the superquadric march").
 struct MarchParams {
   int maxIterations = 10;
   double epsilon = 1e-4;  // in units of the glyph's size
@@ -45,7 +45,7 @@ struct FrameParams {
   double scale = 1.0;  // world units per eigenvalue unit
   double faMin = 0.0;
   GlyphKind glyph = GlyphKind::Ellipsoid;
-  double gamma = 3.0;  // superquadric sharpness; 0 draws ellipsoids
+  double gamma = 3.0;  // superquadric sharpness; 0 makes definite tensors ellipsoids
   MarchParams march;
   bool iterationStats = false;  // count Newton iterations (a shader variant; off costs nothing)
   ColorMode color = ColorMode::DEC;

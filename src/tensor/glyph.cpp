@@ -138,4 +138,9 @@ double defaultScale(const GlyphSet& set, double spacing) {
   return m[k] > 0.0 ? 0.5 * spacing / m[k] : 1.0;
 }
 
+BoxWC glyphBoxWC(const GlyphSet& set, double scale) {
+  const double pad = scale * set.maxAbsEigenvalue;
+  return {set.boundsMinWC - pad, set.boundsMaxWC + pad};
+}
+
 }  // namespace tg::tensor

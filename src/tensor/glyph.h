@@ -64,4 +64,11 @@ namespace tg::tensor {
 // rest) get a diameter of one sample spacing. 1 when undefined.
 double defaultScale(const GlyphSet& set, double sampleSpacing);
 
+// The box cameras frame: the glyph centres' bounds widened by the largest
+// semi-axis at `scale` (scale * max |eigenvalue|).
+struct BoxWC {
+  glm::dvec3 lo, hi;
+};
+BoxWC glyphBoxWC(const GlyphSet& set, double scale);
+
 }  // namespace tg::tensor

@@ -29,8 +29,8 @@ inline Comparison compare(const render::FrameImage& g, const ref::RefImage& r, c
 inline tensor::GlyphSet glyphsOf(const io::TensorField& f) { return tensor::buildGlyphs(f.positions, f.tensors, f.ids); }
 
 inline render::Camera cameraFor(const tensor::GlyphSet& s, double scale, render::CameraDesc d, int w, int h) {
-  const double pad = scale * s.maxAbsEigenvalue;
-  return render::makeCamera(d, w, h, s.boundsMinWC - pad, s.boundsMaxWC + pad);
+  const auto [lo, hi] = tensor::glyphBoxWC(s, scale);
+  return render::makeCamera(d, w, h, lo, hi);
 }
 
 inline render::CameraDesc oblique(const tensor::GlyphSet& s, double dist, render::Projection p) {

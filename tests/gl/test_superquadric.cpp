@@ -151,8 +151,7 @@ TEST_F(GlFixture, DefaultMarchMeetsIterationAndCoverageTargets) {
     const app::Scene s = app::defaultScene();
     auto set = glyphsOf(s.field);
     const double scale = tensor::defaultScale(set, s.field.sampleSpacing);
-    const double pad = scale * set.maxAbsEigenvalue;
-    const glm::dvec3 lo = set.boundsMinWC - pad, hi = set.boundsMaxWC + pad;
+    const auto [lo, hi] = tensor::glyphBoxWC(set, scale);
     const auto cam = render::makeCamera(
         app::sceneCamera(s, lo, hi, render::Projection::Perspective, 30.0, 4.0 / 3.0), 480, 360, lo, hi);
     cases.push_back({"helix", std::move(set), scale, *s.preferredFaMin, cam});
