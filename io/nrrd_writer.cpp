@@ -1,26 +1,13 @@
 #include <teem/biff.h>
 #include <teem/nrrd.h>
 
-#include <cstdlib>
 #include <stdexcept>
 
 #include "io/atomic_file.h"
+#include "io/teem_util.h"
 #include "io/writers.h"
 
 namespace tg::io {
-namespace {
-
-std::string teemError() {
-  char* e = biffGetDone(NRRD);
-  std::string s = e ? e : "unknown Teem error";
-  std::free(e);
-  while (!s.empty() && (s.back() == '\n' || s.back() == ' ')) s.pop_back();
-  for (char& c : s)
-    if (c == '\n') c = ' ';
-  return s;
-}
-
-}  // namespace
 
 void writeNrrd(const TensorField& f, const std::string& path, const double m[9]) {
   if (!f.grid) throw std::runtime_error("writeNrrd: " + path + ": field has no grid");
@@ -46,7 +33,7 @@ void writeNrrd(const TensorField& f, const std::string& path, const double m[9])
   if (nrrdWrap_nva(nrrd, data.data(), nrrdTypeFloat, 4, sizes) || nrrdSpaceSet(nrrd, nrrdSpaceRightAnteriorSuperior) ||
       nrrdSpaceOriginSet(nrrd, g.origin)) {
     done();
-    throw std::runtime_error("writeNrrd: " + path + ": " + teemError());
+    throw std::runtime_error("writeNrrd: " + path + ": " + teemNrrdError());
   }
   const int kinds[4] = {nrrdKind3DSymMatrix, nrrdKindSpace, nrrdKindSpace, nrrdKindSpace};
   nrrdAxisInfoSet_nva(nrrd, nrrdAxisInfoKind, kinds);
@@ -64,7 +51,7 @@ void writeNrrd(const TensorField& f, const std::string& path, const double m[9])
   nrrdIoStateNix(nio);
   if (err) {
     done();
-    throw std::runtime_error("writeNrrd: " + path + ": " + teemError());
+    throw std::runtime_error("writeNrrd: " + path + ": " + teemNrrdError());
   }
   done();
   out.commit();

@@ -12,12 +12,15 @@ TensorField readTensorField(const std::string& path, const ReadOptions& opt) {
   if (S_ISDIR(st.st_mode)) throw InputError("readTensorField: " + path + ": is a directory");
   if (!S_ISREG(st.st_mode)) throw InputError("readTensorField: " + path + ": not a regular file");
   if (st.st_size == 0) throw InputError("readTensorField: " + path + ": file is empty");
-  const auto dot = path.find_last_of('.');
-  std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  std::string lower = path;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  const auto dot = lower.find_last_of('.');
+  const std::string ext = dot == std::string::npos ? "" : lower.substr(dot + 1);
   if (ext == "vtk" || ext == "vti" || ext == "vtu" || ext == "vtp" || ext == "vts") return readVtk(path, opt);
+  if (ext == "nrrd" || ext == "nhdr") return readNrrd(path, opt);
+  if (ext == "nii" || lower.ends_with(".nii.gz")) return readNifti(path, opt);
   throw InputError("readTensorField: " + path + ": unknown extension \"" + (ext.empty() ? "" : "." + ext) +
-                   "\"; supported: .vtk .vti .vtu .vtp .vts");
+                   "\"; supported: .nrrd .nhdr .nii .nii.gz .vtk .vti .vtu .vtp .vts");
 }
 
 }  // namespace tg::io

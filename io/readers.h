@@ -3,16 +3,39 @@
 // throws InputError with a one-line message naming the file and the problem.
 #include <string>
 
+#include "io/selection.h"
 #include "io/tensor_field.h"
 
 namespace tg::io {
 
 struct ReadOptions {
-  std::string arrayName;  // empty: the active tensors, else the only 6/9-component array
+  std::string arrayName;  // VTK: empty: the active tensors, else the only 6/9-component array
+  // NIfTI component order: "" (auto: the SYMMATRIX intent means "nifti",
+  // else "fsl"), "fsl", "nifti", "mrtrix" or "vtk". See readNifti.
+  std::string layout;
+  Selection selection;
 };
 
 // Legacy .vtk and XML .vti/.vtu/.vtp/.vts through VTK's readers.
 TensorField readVtk(const std::string& path, const ReadOptions& opt);
+
+// .nrrd/.nhdr through Teem: kinds 3D-symmetric-matrix, 3D-masked-symmetric-
+// matrix and 3D-matrix on the first axis; space directions or old axis
+// mins/maxs/spacings; the measurement frame; LPS and LAS turned into RAS.
+TensorField readNrrd(const std::string& path, const ReadOptions& opt);
+
+// .nii/.nii.gz (NIfTI-1 and -2) through libnifti2: six volumes along the 4th
+// or 5th dimension. Placement from the sform, else the qform, else pixdim.
+// Tensor frame by layout: "fsl" tensors are in FSL's voxel frame (x mirrored
+// when the affine's determinant is positive), "nifti" and "vtk" in the voxel
+// frame; both are rotated into the world by the affine's orthogonal part.
+// "mrtrix" tensors are already in the world (scanner) frame.
+TensorField readNifti(const std::string& path, const ReadOptions& opt);
+
+// Scalar volumes, for masks.
+ScalarVolume readNrrdScalar(const std::string& path);
+ScalarVolume readNiftiScalar(const std::string& path);
+ScalarVolume readVtiScalar(const std::string& path);
 
 // Any supported file, by extension. Checks existence, type and emptiness first.
 TensorField readTensorField(const std::string& path, const ReadOptions& opt);

@@ -7,20 +7,27 @@
 namespace tg::io {
 
 void TensorField::addFull(std::uint32_t id, const double p[3], const double t[9]) {
-  ++totalPoints;
+  const double sym[6] = {t[0], 0.5 * (t[1] + t[3]), 0.5 * (t[2] + t[6]), t[4], 0.5 * (t[5] + t[7]), t[8]};
   for (int k = 0; k < 9; ++k)
     if (!std::isfinite(t[k])) {
+      ++totalPoints;
       ++skippedNonFinite;
       return;
     }
-  for (int k = 0; k < 3; ++k)
-    if (!std::isfinite(p[k])) {
-      ++skippedNonFinite;
-      return;
-    }
+  addSym(id, p, sym);
+}
+
+void TensorField::addSym(std::uint32_t id, const double p[3], const double s[6]) {
+  ++totalPoints;
+  bool finite = std::isfinite(float(p[0])) && std::isfinite(float(p[1])) && std::isfinite(float(p[2]));
+  // Checked in float too: a finite double beyond FLT_MAX would be stored as Inf.
+  for (int k = 0; k < 6; ++k) finite = finite && std::isfinite(float(s[k]));
+  if (!finite) {
+    ++skippedNonFinite;
+    return;
+  }
   for (int k = 0; k < 3; ++k) positions.push_back(float(p[k]));
-  const double sym[6] = {t[0], 0.5 * (t[1] + t[3]), 0.5 * (t[2] + t[6]), t[4], 0.5 * (t[5] + t[7]), t[8]};
-  for (double v : sym) tensors.push_back(float(v));
+  for (int k = 0; k < 6; ++k) tensors.push_back(float(s[k]));
   ids.push_back(id);
 }
 

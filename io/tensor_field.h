@@ -1,6 +1,7 @@
 #pragma once
 // A tensor field as loaded from any format: points in WC and tensors already
 // in the world frame.
+#include <array>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
@@ -27,11 +28,17 @@ struct TensorField {
   std::string path;
   std::string description;  // dataset type and size, for `info`
   std::string arrayName;
+  std::string space;        // world space of the positions, e.g. "RAS"; "" when the format has none
+  std::string layout;       // component order read from the file, for `info`
+  std::optional<std::array<double, 9>> measurementFrame;  // row-major, as applied (D_WC = M D Mᵀ)
+  std::vector<std::string> warnings;  // one line each, without the file name
   std::vector<float> positions;     // 3 per kept tensor, WC
   std::vector<float> tensors;       // 6 per kept tensor: xx xy xz yy yz zz, WC
   std::vector<std::uint32_t> ids;   // input index of each kept tensor
   std::size_t totalPoints = 0;
   std::size_t skippedNonFinite = 0;
+  std::size_t masked = 0;      // below the confidence or mask threshold
+  std::size_t unselected = 0;  // outside the slice, stride or region of interest
   std::optional<GridInfo> grid;
   double sampleSpacing = 0;  // grid spacing, or the median nearest-neighbour distance
 
@@ -39,6 +46,13 @@ struct TensorField {
   // Appends one tensor unless a component is NaN/Inf (then counts it skipped).
   // t9 is a full row-major 3x3; it is symmetrised.
   void addFull(std::uint32_t id, const double p[3], const double t9[9]);
+  // The same for a symmetric tensor given as xx xy xz yy yz zz.
+  void addSym(std::uint32_t id, const double p[3], const double s6[6]);
+  void reserve(std::size_t n) {
+    positions.reserve(3 * n);
+    tensors.reserve(6 * n);
+    ids.reserve(n);
+  }
   // Frees positions, tensors and ids once glyphs have been built from them;
   // the counts and grid stay.
   void releaseSamples() {

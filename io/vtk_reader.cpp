@@ -175,7 +175,9 @@ vtkDataArray* pickTensorArray(vtkDataSet* ds, const std::string& path, const Rea
 
 }  // namespace
 
-TensorField readVtk(const std::string& path, const ReadOptions& opt) {
+namespace {
+
+vtkSmartPointer<vtkDataSet> readDataSet(const std::string& path) {
   struct stat st {};
   if (stat(path.c_str(), &st) != 0) fail(path, "cannot open file");
   const std::uint64_t fileSize = std::uint64_t(st.st_size);
@@ -212,7 +214,28 @@ TensorField readVtk(const std::string& path, const ReadOptions& opt) {
   } else {
     fail(path, "unknown VTK extension \"." + ext + "\"");
   }
-  vtkSmartPointer<vtkDataSet> ds = runReader(reader, path, fileSize, xml);
+  return runReader(reader, path, fileSize, xml);
+}
+
+}  // namespace
+
+ScalarVolume readVtiScalar(const std::string& path) {
+  vtkSmartPointer<vtkDataSet> ds = readDataSet(path);
+  auto* img = vtkImageData::SafeDownCast(ds);
+  if (!img) fail(path, "a mask must be image data");
+  vtkDataArray* a = img->GetPointData()->GetScalars();
+  if (!a && img->GetPointData()->GetNumberOfArrays() > 0) a = img->GetPointData()->GetArray(0);
+  if (!a || a->GetNumberOfComponents() != 1) fail(path, "no one-component point array to use as a mask");
+  ScalarVolume v;
+  img->GetDimensions(v.dims);
+  const vtkIdType n = a->GetNumberOfTuples();
+  v.values.resize(std::size_t(n));
+  for (vtkIdType i = 0; i < n; ++i) v.values[std::size_t(i)] = float(a->GetComponent(i, 0));
+  return v;
+}
+
+TensorField readVtk(const std::string& path, const ReadOptions& opt) {
+  vtkSmartPointer<vtkDataSet> ds = readDataSet(path);
   const vtkIdType n = ds->GetNumberOfPoints();
   if (n <= 0) fail(path, "no points");
   if (n > vtkIdType(UINT32_MAX)) fail(path, "more than 2^32-1 points");
@@ -222,13 +245,22 @@ TensorField readVtk(const std::string& path, const ReadOptions& opt) {
   f.path = path;
   f.arrayName = arr->GetName() ? arr->GetName() : "";
   f.description = std::string(ds->GetClassName()) + ", " + std::to_string(n) + " points";
-  f.positions.reserve(3 * std::size_t(n));
-  f.tensors.reserve(6 * std::size_t(n));
-  f.ids.reserve(std::size_t(n));
+  f.layout = arr->GetNumberOfComponents() == 6 ? "6 values, VTK order (XX YY ZZ XY YZ XZ)" : "9 values (row-major 3x3)";
+  auto* image = vtkImageData::SafeDownCast(ds);
+  const Selector sel(opt.selection, path, image ? image->GetDimensions() : nullptr);
+  if (sel.selectsAll()) f.reserve(std::size_t(n));
   const bool six = arr->GetNumberOfComponents() == 6;
   double p[3], t[9], full[9];
   for (vtkIdType i = 0; i < n; ++i) {
     ds->GetPoint(i, p);
+    if (!sel.selectsAll()) {
+      const auto verdict = sel.judge(std::uint64_t(i), p);
+      if (verdict != Selector::Verdict::Keep) {
+        ++f.totalPoints;
+        ++(verdict == Selector::Verdict::Masked ? f.masked : f.unselected);
+        continue;
+      }
+    }
     arr->GetTuple(i, t);
     if (six) {  // VTK's symmetric order: XX YY ZZ XY YZ XZ
       const double m[9] = {t[0], t[3], t[5], t[3], t[1], t[4], t[5], t[4], t[2]};
@@ -238,7 +270,7 @@ TensorField readVtk(const std::string& path, const ReadOptions& opt) {
     }
     f.addFull(std::uint32_t(i), p, full);
   }
-  if (auto* img = vtkImageData::SafeDownCast(ds)) {
+  if (auto* img = image) {
     GridInfo g;
     img->GetDimensions(g.dims);
     img->GetSpacing(g.spacing);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "app/bench.h"
+#include "app/field_flags.h"
 #include "app/cli_common.h"
 #include "app/plot.h"
 #include "app/scene.h"
@@ -29,10 +30,11 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 struct Options {
-  std::string input, csv, plot, backend = "osmesa", array;
+  std::string input, csv, plot, backend = "osmesa";
+  FieldFlags field;
   int width = 640, height = 480, frames = 5;
   double gamma = 3.0;
-  std::optional<double> faMin, scale;
+  std::optional<double> faMin;
   std::vector<int> iterations{1, 2, 3, 4, 5, 6, 8, 10, 12, 15, 20, 30};
   std::vector<double> epsilons{1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
 };
@@ -82,11 +84,8 @@ Options parse(int argc, const char** argv) {
   ap.arg("--fa-min F").help("hide glyphs with FA below F").action([&](auto&, Args a) {
     o.faMin = parseDouble("--fa-min", a[1]);
   });
-  ap.arg("--scale S").help("world units per unit eigenvalue").action([&](auto&, Args a) {
-    o.scale = parseDouble("--scale", a[1]);
-  });
   ap.arg("--backend NAME").help("osmesa (default), egl, glfw or auto").action([&](auto&, Args a) { o.backend = a[1]; });
-  ap.arg("--array NAME").help("point array holding the tensors").action([&](auto&, Args a) { o.array = a[1]; });
+  o.field.addTo(ap, true);
   if (ap.parse_args(argc, argv) < 0) throw UsageError(ap.geterror());
   return o;
 }
@@ -109,7 +108,7 @@ void validate(Options& o) {
   for (double e : o.epsilons)
     if (!(e >= 1e-9 && e <= 0.5)) throw UsageError("--epsilon: each must be within 1e-9..0.5");
   if (o.frames < 1 || o.frames > 1000) throw UsageError("--frames must be within 1..1000");
-  if (o.scale && !(*o.scale > 0.0)) throw UsageError("--scale must be positive");
+  o.field.validate();
   checkBackend(o.backend);
 }
 
@@ -173,10 +172,12 @@ bool plot(const std::vector<Row>& rows, const std::vector<double>& epsilons, con
 int benchAccuracy(int argc, const char** argv) {
   Options o = parse(argc, argv);
   validate(o);
-  Scene scene = loadScene(o.input, o.array);
-  const tensor::GlyphSet glyphs = tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids);
+  Scene scene = loadScene(o.input, o.field.read);
+  reportLoad(scene.field, "bench accuracy");
+  const tensor::GlyphSet glyphs =
+      tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids, 0, o.field.glyph);
   render::FrameParams params;
-  params.scale = o.scale.value_or(tensor::defaultScale(glyphs, scene.field.sampleSpacing));
+  params.scale = o.field.scaleFor(glyphs, scene.field.sampleSpacing);
   params.faMin = o.faMin.value_or(scene.preferredFaMin.value_or(0.0));
   params.glyph = render::GlyphKind::Superquadric;
   params.gamma = o.gamma;

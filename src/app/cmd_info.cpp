@@ -7,26 +7,30 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/field_flags.h"
 #include "io/readers.h"
 #include "tensor/glyph.h"
 
 namespace tg::app {
 
 int cmdInfo(int argc, const char** argv) {
-  std::string input, array;
+  std::string input;
+  FieldFlags flags;
   OIIO::ArgParse ap;
-  ap.intro("tensorglyph info INPUT [--array NAME]").exit_on_error(false);
+  ap.intro("tensorglyph info INPUT [selection flags]").exit_on_error(false);
   using Args = OIIO::cspan<const char*>;
   ap.arg("filename").hidden().action([&](auto&, Args a) {
     if (!input.empty()) throw UsageError("more than one INPUT");
     input = a[0];
   });
-  ap.arg("--array NAME").help("point array holding the tensors").action([&](auto&, Args a) { array = a[1]; });
+  flags.addTo(ap, false);
   if (ap.parse_args(argc, argv) < 0) throw UsageError(ap.geterror());
   if (input.empty()) throw UsageError("INPUT is required");
+  flags.validate();
 
-  const io::TensorField f = io::readTensorField(input, {array});
-  const tensor::GlyphSet g = tensor::buildGlyphs(f.positions, f.tensors, f.ids);
+  const io::TensorField f = io::readTensorField(input, flags.read);
+  for (const std::string& w : f.warnings) std::fprintf(stderr, "tensorglyph info: %s: %s\n", f.path.c_str(), w.c_str());
+  const tensor::GlyphSet g = tensor::buildGlyphs(f.positions, f.tensors, f.ids, 0, flags.glyph);
   std::size_t negDef = 0, indefinite = 0, zero = 0;
   constexpr double inf = std::numeric_limits<double>::infinity();
   double lmin[3] = {inf, inf, inf}, lmax[3] = {-inf, -inf, -inf}, faMin = inf, faMax = -inf;
@@ -44,7 +48,16 @@ int cmdInfo(int argc, const char** argv) {
   }
   std::printf("file: %s\n", f.path.c_str());
   std::printf("dataset: %s\n", f.description.c_str());
-  std::printf("tensor array: %s\n", f.arrayName.empty() ? "(unnamed)" : f.arrayName.c_str());
+  if (!f.arrayName.empty()) std::printf("tensor array: %s\n", f.arrayName.c_str());
+  if (!f.layout.empty()) std::printf("components: %s\n", f.layout.c_str());
+  std::printf("space: %s\n", f.space.empty() ? "(none given)" : f.space.c_str());
+  if (f.measurementFrame) {
+    const auto& m = *f.measurementFrame;
+    std::printf("measurement frame (columns): (%g,%g,%g) (%g,%g,%g) (%g,%g,%g)\n", m[0], m[3], m[6], m[1], m[4], m[7],
+                m[2], m[5], m[8]);
+  } else {
+    std::printf("measurement frame: (none; tensors are in the world frame)\n");
+  }
   if (f.grid) {
     const io::GridInfo& gr = *f.grid;
     std::printf("grid: %d x %d x %d, spacing %g %g %g, origin %g %g %g\n", gr.dims[0], gr.dims[1], gr.dims[2],
@@ -54,9 +67,11 @@ int cmdInfo(int argc, const char** argv) {
                 gr.directions[5], gr.directions[8]);
   }
   std::printf("sample spacing: %g\n", f.sampleSpacing);
-  std::printf("tensors: %zu total, %zu drawn, %zu skipped (NaN/Inf)\n", f.totalPoints, f.size(), f.skippedNonFinite);
+  std::printf("tensors: %zu total, %zu masked, %zu outside the selection, %zu skipped (NaN/Inf), %zu below cl/cp, "
+              "%zu drawn\n",
+              f.totalPoints, f.masked, f.unselected, f.skippedNonFinite, g.droppedByShape, g.glyphs.size());
   std::printf("  positive semi-definite: %zu, indefinite: %zu, negative definite: %zu, zero: %zu\n",
-              f.size() - negDef - indefinite - zero, indefinite, negDef, zero);
+              g.glyphs.size() - negDef - indefinite - zero, indefinite, negDef, zero);
   if (!g.glyphs.empty()) {
     for (int k = 0; k < 3; ++k) std::printf("eigenvalue %d: [%g, %g]\n", k + 1, lmin[k], lmax[k]);
     std::printf("FA: [%g, %g]\nMD: [%g, %g]\n", faMin, faMax, g.mdMin, g.mdMax);

@@ -8,6 +8,7 @@
 
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/field_flags.h"
 #include "app/scene.h"
 #include "gl/shader_library.h"
 #include "io/image_writer.h"
@@ -21,10 +22,11 @@ using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
 struct RenderOptions {
-  std::string input, output, backend = "osmesa", glyph = "ellipsoid", color = "dec", array;
+  std::string input, output, backend = "osmesa", glyph = "ellipsoid", color = "dec";
+  FieldFlags field;
   int width = 1024, height = 768;
   double gamma = 3.0;
-  std::optional<double> faMin, scale, fov, ortho;
+  std::optional<double> faMin, fov, ortho;
   std::optional<glm::dvec3> eye, lookAt, up;
   glm::vec4 background{0.08f, 0.08f, 0.10f, 1.0f};
   int repeat = 0, maxIterations = render::MarchParams{}.maxIterations;
@@ -59,8 +61,6 @@ RenderOptions parse(int argc, const char** argv) {
     o.gamma = parseDouble("--gamma", a[1]);
   });
   ap.arg("--fa-min F").help("hide glyphs with FA below F").action([&](auto&, Args a) { o.faMin = parseDouble("--fa-min", a[1]); });
-  ap.arg("--scale S").help("world units per unit eigenvalue (default: largest glyphs one sample spacing wide)")
-      .action([&](auto&, Args a) { o.scale = parseDouble("--scale", a[1]); });
   ap.arg("--eye X Y Z").help("camera position (WC)").action([&](auto&, Args a) { o.eye = parseVec3("--eye", rest(a)); });
   ap.arg("--look-at X Y Z").help("point the camera looks at (WC)").action([&](auto&, Args a) {
     o.lookAt = parseVec3("--look-at", rest(a));
@@ -77,7 +77,7 @@ RenderOptions parse(int argc, const char** argv) {
     for (int k = 0; k < 4; ++k) o.background[k] = float(parseDouble("--background", a[1 + k]));
   });
   ap.arg("--backend NAME").help("osmesa (default), egl, glfw or auto").action([&](auto&, Args a) { o.backend = a[1]; });
-  ap.arg("--array NAME").help("point array holding the tensors").action([&](auto&, Args a) { o.array = a[1]; });
+  o.field.addTo(ap, true);
   ap.arg("--repeat N").help("render N more frames and report the median frame time").action([&](auto&, Args a) {
     o.repeat = int(parseInt("--repeat", a[1]));
   });
@@ -96,7 +96,7 @@ void validate(const RenderOptions& o) {
   if (!(o.gamma >= 0.0 && o.gamma <= 1e4)) throw UsageError("--gamma must be within 0..10000");
   if (o.maxIterations < 1 || o.maxIterations > 1000) throw UsageError("--iterations must be within 1..1000");
   if (!(o.epsilon >= 1e-9 && o.epsilon <= 0.5)) throw UsageError("--epsilon must be within 1e-9..0.5");
-  if (o.scale && !(*o.scale > 0.0)) throw UsageError("--scale must be positive");
+  o.field.validate();
   if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
   if ((o.lookAt || o.up) && !o.eye) throw UsageError("--look-at and --up need --eye");
   if (o.color != "dec" && o.color != "fa" && o.color != "md" && o.color != "cl" && o.color != "cp" &&
@@ -137,20 +137,19 @@ int cmdRender(int argc, const char** argv) {
   const RenderOptions o = parse(argc, argv);
   validate(o);
   const auto t0 = Clock::now();
-  Scene scene = loadScene(o.input, o.array);
+  Scene scene = loadScene(o.input, o.field.read);
   const double loadMs = msSince(t0);
-  if (scene.field.skippedNonFinite)
-    std::fprintf(stderr, "tensorglyph render: %s: skipped %zu tensors with NaN/Inf components\n",
-                 scene.field.path.c_str(), scene.field.skippedNonFinite);
+  reportLoad(scene.field, "render");
 
   const auto t1 = Clock::now();
-  tensor::GlyphSet glyphs = tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids);
+  tensor::GlyphSet glyphs =
+      tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids, 0, o.field.glyph);
   const double buildMs = msSince(t1);
   // Each stage frees what the next no longer needs, so that peak memory holds
   // at most two copies of the glyphs (here the records and the GL buffer).
   scene.field.releaseSamples();
   render::FrameParams params;
-  params.scale = o.scale.value_or(tensor::defaultScale(glyphs, scene.field.sampleSpacing));
+  params.scale = o.field.scaleFor(glyphs, scene.field.sampleSpacing);
   params.faMin = o.faMin.value_or(scene.preferredFaMin.value_or(0.0));
   params.color = colorMode(o.color);
   params.glyph = o.glyph == "superquadric" ? render::GlyphKind::Superquadric : render::GlyphKind::Ellipsoid;

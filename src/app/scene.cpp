@@ -32,10 +32,14 @@ Scene defaultScene() {
   return s;
 }
 
-Scene loadScene(const std::string& input, const std::string& array) {
-  if (input.empty()) return defaultScene();
+Scene loadScene(const std::string& input, const io::ReadOptions& opt) {
+  if (input.empty()) {
+    Scene s = defaultScene();
+    io::applySelection(s.field, opt.selection);
+    return s;
+  }
   Scene s;
-  s.field = io::readTensorField(input, {array});
+  s.field = io::readTensorField(input, opt);
   return s;
 }
 

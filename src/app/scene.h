@@ -3,7 +3,7 @@
 #include <optional>
 #include <string>
 
-#include "io/tensor_field.h"
+#include "io/readers.h"
 #include "render/camera.h"
 
 namespace tg::app {
@@ -18,9 +18,9 @@ struct Scene {
 // isotropic background hidden by an FA threshold.
 Scene defaultScene();
 
-// The built-in scene when `input` is empty, else the file (`array` names the
-// tensor array, "" for the first one that fits).
-Scene loadScene(const std::string& input, const std::string& array);
+// The built-in scene when `input` is empty, else the file; the selection in
+// `opt` applies to both.
+Scene loadScene(const std::string& input, const io::ReadOptions& opt);
 
 // The view used when no camera flag is given: the scene's preferred view if
 // it has one, else frameBox's default over the scene box.

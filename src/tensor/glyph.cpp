@@ -25,11 +25,14 @@ struct Partial {
 
 void buildRange(std::span<const float> pos, std::span<const float> ten,
                 std::span<const std::uint32_t> ids, std::size_t begin, std::size_t end,
-                GlyphRecord* out, Partial& p) {
+                GlyphRecord* out, Partial& p, const GlyphOptions& opt, char* dropped) {
   for (std::size_t i = begin; i < end; ++i) {
     const float* t = &ten[6 * i];
-    const Eigensystem es = eigensolve({t[0], t[1], t[2], t[3], t[4], t[5]});
+    Eigensystem es = eigensolve({t[0], t[1], t[2], t[3], t[4], t[5]});
     const Anisotropy an = anisotropy(es.values);
+    if (dropped && (an.cl < opt.clMin || an.cp < opt.cpMin)) dropped[i] = 1;
+    // Clamping keeps the descending order: max(., m) is monotonic.
+    if (opt.minEigenvalue) es.values = glm::max(es.values, glm::dvec3(*opt.minEigenvalue));
     GlyphRecord& g = out[i];
     for (int k = 0; k < 3; ++k) {
       g.posWC[k] = pos[3 * i + k];
@@ -43,6 +46,7 @@ void buildRange(std::span<const float> pos, std::span<const float> ten,
     g.frameWC[1] = static_cast<float>(q.y);
     g.frameWC[2] = static_cast<float>(q.z);
     g.frameWC[3] = static_cast<float>(q.w);
+    if (dropped && dropped[i]) continue;  // compacted away; not in the bounds
     const glm::dvec3 c(g.posWC[0], g.posWC[1], g.posWC[2]);
     p.lo = glm::min(p.lo, c);
     p.hi = glm::max(p.hi, c);
@@ -55,12 +59,14 @@ void buildRange(std::span<const float> pos, std::span<const float> ten,
 }  // namespace
 
 GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> tensors,
-                     std::span<const std::uint32_t> ids, unsigned threads) {
+                     std::span<const std::uint32_t> ids, unsigned threads, const GlyphOptions& opt) {
   const std::size_t n = positions.size() / 3;
   if (positions.size() != 3 * n || tensors.size() != 6 * n || (!ids.empty() && ids.size() != n))
     throw std::invalid_argument("buildGlyphs: positions, tensors and ids disagree in count");
   GlyphSet set;
   set.glyphs.resize(n);
+  const bool filtering = opt.clMin > 0 || opt.cpMin > 0;
+  std::vector<char> dropped(filtering ? n : 0);
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
   // Below ~64k tensors a thread costs more than it saves.
   const std::size_t chunks = std::clamp<std::size_t>(n / 65536, 1, threads);
@@ -68,11 +74,20 @@ GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> te
   std::vector<std::thread> pool;
   for (std::size_t c = 0; c < chunks; ++c) {
     const std::size_t b = n * c / chunks, e = n * (c + 1) / chunks;
-    auto job = [&, b, e, c] { buildRange(positions, tensors, ids, b, e, set.glyphs.data(), parts[c]); };
+    auto job = [&, b, e, c] {
+      buildRange(positions, tensors, ids, b, e, set.glyphs.data(), parts[c], opt, filtering ? dropped.data() : nullptr);
+    };
     if (c + 1 == chunks) job();
     else pool.emplace_back(job);
   }
   for (auto& t : pool) t.join();
+  if (filtering) {
+    std::size_t w = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      if (!dropped[i]) set.glyphs[w++] = set.glyphs[i];
+    set.droppedByShape = n - w;
+    set.glyphs.resize(w);
+  }
   if (n == 0) return set;
   Partial all = parts[0];
   for (const Partial& p : parts) {
@@ -136,6 +151,16 @@ double defaultScale(const GlyphSet& set, double spacing) {
   const std::size_t k = std::min(m.size() - 1, std::size_t(0.99 * double(m.size())));
   std::nth_element(m.begin(), m.begin() + std::ptrdiff_t(k), m.end());
   return m[k] > 0.0 ? 0.5 * spacing / m[k] : 1.0;
+}
+
+double resolveScale(ScaleMode mode, double factor, const GlyphSet& set, double spacing) {
+  switch (mode) {
+    case ScaleMode::Absolute: return factor;
+    case ScaleMode::Max:
+      return set.maxAbsEigenvalue > 0.0 && spacing > 0.0 ? factor * 0.5 * spacing / set.maxAbsEigenvalue : factor;
+    case ScaleMode::Spacing: return factor * defaultScale(set, spacing);
+  }
+  return factor;
 }
 
 BoxWC glyphBoxWC(const GlyphSet& set, double scale) {

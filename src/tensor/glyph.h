@@ -2,6 +2,7 @@
 // The one-vertex glyph record shared by CPU and GPU, and its construction.
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -30,13 +31,25 @@ struct GlyphSet {
   // definiteCount are definite (all positive or all negative); the rest have
   // eigenvalues of mixed sign or zero.
   std::size_t sphereCount = 0, definiteCount = 0;
+  std::size_t droppedByShape = 0;  // below GlyphOptions::clMin or cpMin
+};
+
+// Load-time choices that change which glyphs exist or their shape; the
+// interactive ones (scale, FA threshold, gamma) are uniforms instead.
+struct GlyphOptions {
+  double clMin = 0, cpMin = 0;  // drop glyphs below these Westin measures
+  // Eigenvalues below this are raised to it (Teem's tenGlyphParm clampEval,
+  // FURY's eigenvalue floor): it keeps planar and linear glyphs visible.
+  // FA, cl and cp are computed before the clamp, from the data.
+  std::optional<double> minEigenvalue;
 };
 
 // Input: N positions (x y z) and N tensors (xx xy xz yy yz zz), all finite;
 // ids[i] is the input index reported for glyph i (empty: 0..N-1).
 // Runs on up to `threads` threads (0: hardware concurrency).
 GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> tensors,
-                     std::span<const std::uint32_t> ids, unsigned threads = 0);
+                     std::span<const std::uint32_t> ids, unsigned threads = 0, const GlyphOptions& opt = {});
+
 
 // Rotation matrix columns from a record's quaternion (the eigenvectors).
 void frameAxes(const GlyphRecord& g, glm::dvec3 axes[3]);
@@ -63,6 +76,14 @@ namespace tg::tensor {
 // glyph's largest |eigenvalue|, so that a few outliers do not shrink the
 // rest) get a diameter of one sample spacing. 1 when undefined.
 double defaultScale(const GlyphSet& set, double sampleSpacing);
+
+// --scale-mode: how `factor` (--scale) becomes world units per eigenvalue unit.
+//   absolute: factor itself.
+//   max:      the field's largest |eigenvalue| gets a diameter of `factor`
+//             sample spacings (exact maximum: one outlier shrinks every glyph).
+//   spacing:  the 99th percentile does (defaultScale times factor).
+enum class ScaleMode { Absolute, Max, Spacing };
+double resolveScale(ScaleMode mode, double factor, const GlyphSet& set, double sampleSpacing);
 
 // The box cameras frame: the glyph centres' bounds widened by the largest
 // semi-axis at `scale` (scale * max |eigenvalue|).

@@ -1,0 +1,205 @@
+// NIfTI-1/-2 through libnifti2. The header is read alone and checked against
+// the file; the data is then streamed volume by volume through znz (which
+// also reads .nii.gz), into one float per kept component.
+#include <nifti/nifti2_io.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <memory>
+
+#include "io/readers.h"
+#include "io/volume_sink.h"
+
+namespace tg::io {
+namespace {
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+  throw InputError("readNifti: " + path + ": " + what);
+}
+
+constexpr std::uint64_t kMaxGzipRatio = 1032;  // deflate's limit
+constexpr std::size_t kChunkBytes = 1 << 22;
+
+using Image = std::unique_ptr<nifti_image, void (*)(nifti_image*)>;
+
+Image readHeader(const std::string& path) {
+  nifti_set_debug_level(0);  // errors are reported here, in one line
+  Image nim(nifti_image_read(path.c_str(), 0), nifti_image_free);
+  if (!nim) fail(path, "not a readable NIfTI-1/-2 header");
+  for (int k = 1; k <= nim->dim[0]; ++k)
+    if (nim->dim[k] < 1) fail(path, "dimension " + std::to_string(k) + " is " + std::to_string(nim->dim[k]));
+  if (!nim->iname) fail(path, "no image file named");
+  return nim;
+}
+
+double (*loader(const std::string& path, int datatype))(const char*) {
+  switch (datatype) {
+    case NIFTI_TYPE_UINT8: return [](const char* p) { return double(*reinterpret_cast<const std::uint8_t*>(p)); };
+    case NIFTI_TYPE_INT8: return [](const char* p) { return double(*reinterpret_cast<const std::int8_t*>(p)); };
+    case NIFTI_TYPE_INT16: return [](const char* p) { return double(*reinterpret_cast<const std::int16_t*>(p)); };
+    case NIFTI_TYPE_UINT16: return [](const char* p) { return double(*reinterpret_cast<const std::uint16_t*>(p)); };
+    case NIFTI_TYPE_INT32: return [](const char* p) { return double(*reinterpret_cast<const std::int32_t*>(p)); };
+    case NIFTI_TYPE_UINT32: return [](const char* p) { return double(*reinterpret_cast<const std::uint32_t*>(p)); };
+    case NIFTI_TYPE_INT64: return [](const char* p) { return double(*reinterpret_cast<const std::int64_t*>(p)); };
+    case NIFTI_TYPE_UINT64: return [](const char* p) { return double(*reinterpret_cast<const std::uint64_t*>(p)); };
+    case NIFTI_TYPE_FLOAT32: return [](const char* p) { return double(*reinterpret_cast<const float*>(p)); };
+    case NIFTI_TYPE_FLOAT64: return [](const char* p) { return *reinterpret_cast<const double*>(p); };
+    default: fail(path, std::string("data type ") + nifti_datatype_string(datatype) + " is not supported");
+  }
+}
+
+// Streams values [0, count) of the image file to consume(valueIndex, value).
+template <class Consume>
+void streamValues(const std::string& path, const nifti_image& nim, std::uint64_t count, Consume&& consume) {
+  const auto load = loader(path, nim.datatype);
+  const std::uint64_t tsize = std::uint64_t(nim.nbyper);
+  const std::uint64_t bytes = count * tsize;
+  const bool gz = nifti_is_gzfile(nim.iname);
+  const std::int64_t fileSize = nifti_get_filesize(nim.iname);
+  if (fileSize < 0) fail(path, std::string("cannot open image file ") + nim.iname);
+  const std::uint64_t avail = std::uint64_t(std::max<std::int64_t>(fileSize - (gz ? 0 : nim.iname_offset), 0));
+  if (gz ? bytes > avail * kMaxGzipRatio : bytes > avail)
+    fail(path, "data is truncated: the header describes " + std::to_string(bytes) + " bytes, the file has " +
+                   std::to_string(avail) + (gz ? " compressed" : ""));
+  znzFile f = znzopen(nim.iname, "rb", gz);
+  if (znz_isnull(f)) fail(path, std::string("cannot open image file ") + nim.iname);
+  std::unique_ptr<std::remove_pointer_t<znzFile>, void (*)(znzFile)> guard(f, [](znzFile z) { Xznzclose(&z); });
+  if (znzseek(f, nim.iname_offset, SEEK_SET) < 0) fail(path, "cannot seek to the image data");
+  const bool swap = nim.byteorder != nifti_short_order() && tsize > 1;
+  const double slope = nim.scl_slope, inter = nim.scl_inter;
+  const bool scaled = slope != 0.0 && std::isfinite(slope) && !(slope == 1.0 && inter == 0.0);
+  std::vector<char> buf(kChunkBytes);
+  for (std::uint64_t done = 0; done < count;) {
+    const std::size_t want = std::size_t(std::min<std::uint64_t>(kChunkBytes / tsize, count - done));
+    if (znzread(buf.data(), tsize, want, f) != want)
+      fail(path, "data is truncated: the image ends after value " + std::to_string(done));
+    if (swap) nifti_swap_Nbytes(std::int64_t(want), int(tsize), buf.data());
+    for (std::size_t i = 0; i < want; ++i) {
+      const double x = load(buf.data() + i * tsize);
+      consume(done + i, scaled ? slope * x + inter : x);
+    }
+    done += want;
+  }
+}
+
+// The affine in use: sform if coded, else qform, else pixdim (NIfTI's "method 1").
+void placement(const nifti_image& nim, VolumeGeometry& g, TensorField& f) {
+  const nifti_dmat44* m = nim.sform_code > 0 ? &nim.sto_xyz : nim.qform_code > 0 ? &nim.qto_xyz : nullptr;
+  if (m) {
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) g.axesWC[3 * r + c] = m->m[r][c];
+      g.originWC[r] = m->m[r][3];
+    }
+    f.space = nim.sform_code > 0 ? "RAS (sform)" : "RAS (qform)";
+  } else {
+    for (int k = 0; k < 3; ++k) g.axesWC[4 * k] = nim.pixdim[k + 1] > 0 ? nim.pixdim[k + 1] : 1.0;
+    f.space = "voxel grid (no sform or qform)";
+    f.warnings.push_back("no sform or qform; placed by pixdim alone");
+  }
+}
+
+std::uint64_t spatialVoxels(const nifti_image& nim, VolumeGeometry& g) {
+  for (int k = 0; k < 3; ++k) g.dims[k] = int(nim.dim[k + 1]);
+  return std::uint64_t(nim.nx) * std::uint64_t(nim.ny) * std::uint64_t(nim.nz);
+}
+
+}  // namespace
+
+TensorField readNifti(const std::string& path, const ReadOptions& opt) {
+  const Image nim = readHeader(path);
+  TensorField f;
+  f.path = path;
+  VolumeGeometry g;
+  const std::uint64_t voxels = spatialVoxels(*nim, g);
+  if (nim->nx > INT32_MAX || nim->ny > INT32_MAX || nim->nz > INT32_MAX || voxels > UINT32_MAX)
+    fail(path, "more than 2^32-1 voxels");
+  // Six components along dim 4 (FSL, MRtrix) or dim 5 (the SYMMATRIX intent).
+  const bool along5 = nim->nt == 1 && nim->nu == 6;
+  if (!(nim->nt == 6 && nim->nu == 1) && !along5)
+    fail(path, "dimensions " + std::to_string(nim->nx) + "x" + std::to_string(nim->ny) + "x" + std::to_string(nim->nz) +
+                   "x" + std::to_string(nim->nt) + "x" + std::to_string(nim->nu) +
+                   " hold no tensor; expected 6 volumes along dimension 4 or 5");
+  if (nim->nv > 1 || nim->nw > 1) fail(path, "dimensions 6 and 7 must be 1");
+  std::string layout = opt.layout;
+  if (layout.empty()) layout = nim->intent_code == NIFTI_INTENT_SYMMATRIX ? "nifti" : "fsl";
+  ComponentLayout cl;
+  if (layout == "fsl") cl.sym = {0, 1, 2, 3, 4, 5};         // xx xy xz yy yz zz
+  else if (layout == "nifti") cl.sym = {0, 1, 3, 2, 4, 5};  // lower triangle: xx xy yy xz yz zz
+  else if (layout == "mrtrix") cl.sym = {0, 3, 4, 1, 5, 2};  // xx yy zz xy xz yz
+  else if (layout == "vtk") cl.sym = {0, 3, 5, 1, 4, 2};     // xx yy zz xy yz xz
+  else fail(path, "unknown layout \"" + layout + "\"; choose fsl, nifti, mrtrix or vtk");
+  f.layout = layout + (opt.layout.empty() ? " (from the header; override with --layout)" : "");
+
+  placement(*nim, g, f);
+  double a[9];
+  std::copy(g.axesWC, g.axesWC + 9, a);
+  const double det = a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) +
+                     a[2] * (a[3] * a[7] - a[4] * a[6]);
+  if (!(std::abs(det) > 0) || !std::isfinite(det)) fail(path, "the affine is singular");
+  if (layout != "mrtrix") {
+    std::array<double, 9> t = orthogonalPart(a);
+    // FSL's voxel frame is radiological: x runs opposite to i when the
+    // affine keeps handedness (det > 0).
+    if (layout == "fsl" && det > 0)
+      for (int r = 0; r < 3; ++r) t[3 * r] = -t[3 * r];
+    g.tensorToWC = t;
+  }
+  f.description = std::string(nim->nifti_type >= 4 ? "NIfTI-2" : "NIfTI-1") + " volume, " + std::to_string(g.dims[0]) +
+                  "x" + std::to_string(g.dims[1]) + "x" + std::to_string(g.dims[2]) + ", " +
+                  nifti_datatype_string(nim->datatype);
+
+  // Which voxels to keep is known before any data: decide it first, then
+  // read the six volumes in file order into the kept voxels' slots only.
+  const Selector sel(opt.selection, path, g.dims);
+  std::vector<std::uint32_t> kept;
+  std::uint64_t keptCount = voxels;
+  if (!sel.selectsAll()) {
+    int ijk[3] = {0, 0, 0};
+    for (std::uint64_t v = 0; v < voxels; ++v) {
+      ijk[0] = int(v % g.dims[0]), ijk[1] = int(v / g.dims[0] % g.dims[1]), ijk[2] = int(v / (std::uint64_t(g.dims[0]) * g.dims[1]));
+      double p[3];
+      positionWC(g, ijk, p);
+      const auto verdict = sel.judge(v, p);
+      if (verdict == Selector::Verdict::Keep) kept.push_back(std::uint32_t(v));
+      else ++(verdict == Selector::Verdict::Masked ? f.masked : f.unselected);
+    }
+    f.totalPoints += voxels - kept.size();
+    keptCount = kept.size();
+  }
+  std::vector<float> comps(6 * std::size_t(keptCount));
+  std::size_t slot = 0;
+  streamValues(path, *nim, 6 * voxels, [&](std::uint64_t i, double x) {
+    const std::uint64_t c = i / voxels, v = i % voxels;
+    if (v == 0) slot = 0;
+    if (kept.empty() && sel.selectsAll()) {
+      comps[6 * v + c] = float(x);
+    } else if (slot < kept.size() && kept[slot] == v) {
+      comps[6 * slot + c] = float(x);
+      ++slot;
+    }
+  });
+  f.reserve(std::size_t(keptCount));
+  VolumeSink sink(f, g, cl, sel, 0.0);
+  double v6[6];
+  for (std::uint64_t r = 0; r < keptCount; ++r) {
+    std::copy(&comps[6 * r], &comps[6 * r] + 6, v6);
+    sink.pushSelected(kept.empty() ? r : kept[r], v6);
+  }
+  sink.finish();
+  return f;
+}
+
+ScalarVolume readNiftiScalar(const std::string& path) {
+  const Image nim = readHeader(path);
+  VolumeGeometry g;
+  const std::uint64_t voxels = spatialVoxels(*nim, g);
+  if (voxels > UINT32_MAX) fail(path, "more than 2^32-1 voxels");
+  if (std::uint64_t(nim->nvox) != voxels) fail(path, "a mask must be a single 3D volume");
+  ScalarVolume s;
+  std::copy(g.dims, g.dims + 3, s.dims);
+  streamValues(path, *nim, voxels, [&](std::uint64_t, double x) { s.values.push_back(float(x)); });
+  return s;
+}
+
+}  // namespace tg::io

@@ -1,0 +1,118 @@
+#include "io/selection.h"
+
+#include <algorithm>
+#include <charconv>
+#include <cstring>
+#include <stdexcept>
+
+#include "io/readers.h"
+
+namespace tg::io {
+
+SliceSpec parseSlice(const std::string& text) {
+  SliceSpec s;
+  const auto c1 = text.find(':');
+  if (c1 == std::string::npos) throw std::invalid_argument("expected axis:index[:thickness], got \"" + text + "\"");
+  const std::string axis = text.substr(0, c1);
+  if (axis == "x" || axis == "i" || axis == "0") s.axis = 0;
+  else if (axis == "y" || axis == "j" || axis == "1") s.axis = 1;
+  else if (axis == "z" || axis == "k" || axis == "2") s.axis = 2;
+  else throw std::invalid_argument("unknown axis \"" + axis + "\"; choose x, y or z (or 0, 1, 2)");
+  const auto c2 = text.find(':', c1 + 1);
+  auto number = [&](std::size_t b, std::size_t e, const char* what) {
+    long long v = 0;
+    const char* first = text.data() + b;
+    const char* last = text.data() + std::min(e, text.size());
+    const auto [end, ec] = std::from_chars(first, last, v);
+    if (ec != std::errc() || end != last || first == last)
+      throw std::invalid_argument(std::string(what) + " \"" + std::string(first, last) + "\" is not an integer");
+    return v;
+  };
+  s.index = number(c1 + 1, c2, "index");
+  if (c2 != std::string::npos) s.thickness = number(c2 + 1, text.size(), "thickness");
+  if (s.index < 0) throw std::invalid_argument("index must not be negative");
+  if (s.thickness < 1) throw std::invalid_argument("thickness must be at least 1");
+  return s;
+}
+
+ScalarVolume readScalarVolume(const std::string& path) {
+  const std::string lower = [&] {
+    std::string l = path;
+    std::transform(l.begin(), l.end(), l.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+    return l;
+  }();
+  auto ends = [&](const char* e) { return lower.size() >= std::strlen(e) && lower.ends_with(e); };
+  if (ends(".nrrd") || ends(".nhdr")) return readNrrdScalar(path);
+  if (ends(".nii") || ends(".nii.gz")) return readNiftiScalar(path);
+  if (ends(".vti")) return readVtiScalar(path);
+  throw InputError("readScalarVolume: " + path + ": unknown mask format; use .nrrd, .nhdr, .nii, .nii.gz or .vti");
+}
+
+Selector::Selector(const Selection& sel, const std::string& path, const int* dims) : sel_(sel) {
+  if (sel.stride < 1) throw InputError("Selector: " + path + ": stride must be at least 1");
+  all_ = !sel.slice && sel.stride == 1 && !sel.roiWC && sel.maskPath.empty();
+  if (!dims) {
+    if (sel.slice) throw InputError("Selector: " + path + ": --slice needs a grid; this file is a point set");
+    if (!sel.maskPath.empty()) throw InputError("Selector: " + path + ": --mask needs a grid; this file is a point set");
+    return;
+  }
+  grid_ = true;
+  std::copy(dims, dims + 3, dims_);
+  if (sel.slice) {
+    const SliceSpec& s = *sel.slice;
+    if (s.index >= dims_[s.axis])
+      throw InputError("Selector: " + path + ": slice index " + std::to_string(s.index) + " is beyond axis " +
+                       std::to_string(s.axis) + " of size " + std::to_string(dims_[s.axis]));
+    slabLo_ = s.index - (s.thickness - 1) / 2;
+    slabHi_ = s.index + s.thickness / 2;
+  }
+  if (!sel.maskPath.empty()) {
+    mask_ = readScalarVolume(sel.maskPath);
+    if (!std::equal(dims_, dims_ + 3, mask_.dims))
+      throw InputError("Selector: " + sel.maskPath + ": mask grid " + std::to_string(mask_.dims[0]) + "x" +
+                       std::to_string(mask_.dims[1]) + "x" + std::to_string(mask_.dims[2]) +
+                       " differs from the tensor grid " + std::to_string(dims_[0]) + "x" + std::to_string(dims_[1]) +
+                       "x" + std::to_string(dims_[2]) + " of " + path);
+  }
+}
+
+Selector::Verdict Selector::judge(std::uint64_t index, const double p[3]) const {
+  if (grid_) {
+    const std::uint64_t nx = std::uint64_t(dims_[0]), ny = std::uint64_t(dims_[1]);
+    const long long ijk[3] = {(long long)(index % nx), (long long)(index / nx % ny), (long long)(index / (nx * ny))};
+    if (sel_.slice && (ijk[sel_.slice->axis] < slabLo_ || ijk[sel_.slice->axis] > slabHi_)) return Verdict::Unselected;
+    if (sel_.stride > 1 && (ijk[0] % sel_.stride || ijk[1] % sel_.stride || ijk[2] % sel_.stride))
+      return Verdict::Unselected;
+  } else if (sel_.stride > 1 && index % std::uint64_t(sel_.stride)) {
+    return Verdict::Unselected;
+  }
+  if (sel_.roiWC) {
+    const auto& b = *sel_.roiWC;
+    for (int k = 0; k < 3; ++k)
+      if (!(p[k] >= std::min(b[k], b[k + 3]) && p[k] <= std::max(b[k], b[k + 3]))) return Verdict::Unselected;
+  }
+  if (!mask_.values.empty() && !(mask_.values[index] >= sel_.maskMin)) return Verdict::Masked;
+  return Verdict::Keep;
+}
+
+void applySelection(TensorField& f, const Selection& sel) {
+  const Selector selector(sel, f.path, f.grid ? f.grid->dims : nullptr);
+  if (selector.selectsAll()) return;
+  std::size_t w = 0;
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    const double p[3] = {f.positions[3 * i], f.positions[3 * i + 1], f.positions[3 * i + 2]};
+    const auto verdict = selector.judge(f.ids[i], p);
+    if (verdict != Selector::Verdict::Keep) {
+      ++(verdict == Selector::Verdict::Masked ? f.masked : f.unselected);
+      continue;
+    }
+    std::copy_n(&f.positions[3 * i], 3, &f.positions[3 * w]);
+    std::copy_n(&f.tensors[6 * i], 6, &f.tensors[6 * w]);
+    f.ids[w++] = f.ids[i];
+  }
+  f.positions.resize(3 * w);
+  f.tensors.resize(6 * w);
+  f.ids.resize(w);
+}
+
+}  // namespace tg::io

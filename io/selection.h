@@ -1,0 +1,68 @@
+#pragma once
+// Which samples of a field are loaded: slices and slabs, stride, a region of
+// interest and a scalar mask. Applied while reading, so that unselected
+// samples never take memory.
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "io/tensor_field.h"
+
+namespace tg::io {
+
+// --slice axis:index[:thickness]: the voxels whose index along `axis` (0, 1, 2
+// for i, j, k) lies in [index - (thickness-1)/2, index + thickness/2], a slab
+// centred on `index`.
+struct SliceSpec {
+  int axis = 2;
+  long long index = 0;
+  long long thickness = 1;
+};
+
+struct Selection {
+  std::optional<SliceSpec> slice;  // grids only
+  long long stride = 1;            // grids: every stride-th voxel along each axis; point sets: every stride-th point
+  std::optional<std::array<double, 6>> roiWC;  // x0 y0 z0 x1 y1 z1, inclusive
+  std::string maskPath;            // scalar volume on the same grid
+  double maskMin = 0.5;            // keep where mask >= maskMin
+  double confidenceMin = 0.5;      // 3D-masked-symmetric-matrix NRRD: keep where confidence >= this
+
+  bool needsGrid() const { return slice.has_value() || !maskPath.empty(); }
+};
+
+// "z:10", "2:10:3", "x:0". Throws std::invalid_argument with a one-line reason.
+SliceSpec parseSlice(const std::string& text);
+
+// A scalar volume, as a mask is given: NRRD, NIfTI or .vti, one value per voxel.
+struct ScalarVolume {
+  int dims[3] = {0, 0, 0};
+  std::vector<float> values;  // i fastest
+};
+ScalarVolume readScalarVolume(const std::string& path);
+
+// The per-sample decision, built once per read after the header is known.
+class Selector {
+ public:
+  enum class Verdict { Keep, Unselected, Masked };
+  // dims: the grid's, or null for a point set. Throws InputError naming
+  // `path` when the selection does not fit the data (a slice beyond the grid,
+  // a mask of another size, a slice of a point set).
+  Selector(const Selection& sel, const std::string& path, const int* dims);
+  Verdict judge(std::uint64_t index, const double pWC[3]) const;
+  bool selectsAll() const { return all_; }
+
+ private:
+  Selection sel_;
+  int dims_[3] = {0, 0, 0};
+  bool grid_ = false, all_ = true;
+  long long slabLo_ = 0, slabHi_ = -1;
+  ScalarVolume mask_;
+};
+
+// The selection applied after the fact, to a field already in memory (the
+// built-in scene). ids must be the samples' input indices.
+void applySelection(TensorField& f, const Selection& sel);
+
+}  // namespace tg::io

@@ -1,0 +1,119 @@
+#include "io/volume_sink.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace tg::io {
+
+void positionWC(const VolumeGeometry& g, const int ijk[3], double p[3]) {
+  for (int r = 0; r < 3; ++r)
+    p[r] = g.originWC[r] + g.axesWC[3 * r] * ijk[0] + g.axesWC[3 * r + 1] * ijk[1] + g.axesWC[3 * r + 2] * ijk[2];
+}
+
+VolumeSink::VolumeSink(TensorField& f, const VolumeGeometry& g, const ComponentLayout& layout, const Selector& sel,
+                       double confidenceMin)
+    : f_(f), g_(g), layout_(layout), sel_(sel), confidenceMin_(confidenceMin) {}
+
+void VolumeSink::push(const double* v) {
+  const std::uint64_t index = next_++;
+  const int ijk[3] = {ijk_[0], ijk_[1], ijk_[2]};
+  if (++ijk_[0] == g_.dims[0]) {
+    ijk_[0] = 0;
+    if (++ijk_[1] == g_.dims[1]) {
+      ijk_[1] = 0;
+      ++ijk_[2];
+    }
+  }
+  if (!sel_.selectsAll()) {
+    double p[3];
+    positionWC(g_, ijk, p);
+    const Selector::Verdict verdict = sel_.judge(index, p);
+    if (verdict != Selector::Verdict::Keep) {
+      ++f_.totalPoints;
+      ++(verdict == Selector::Verdict::Masked ? f_.masked : f_.unselected);
+      return;
+    }
+  }
+  emit(index, ijk, v);
+}
+
+void VolumeSink::pushSelected(std::uint64_t index, const double* v) {
+  const std::uint64_t nx = std::uint64_t(g_.dims[0]), ny = std::uint64_t(g_.dims[1]);
+  const int ijk[3] = {int(index % nx), int(index / nx % ny), int(index / (nx * ny))};
+  emit(index, ijk, v);
+}
+
+void VolumeSink::emit(std::uint64_t index, const int ijk[3], const double* v) {
+  // A NaN confidence is not >= the threshold either: masked.
+  if (layout_.confidence >= 0 && !(v[layout_.confidence] >= confidenceMin_)) {
+    ++f_.totalPoints;
+    ++f_.masked;
+    return;
+  }
+  double s[6];
+  if (layout_.full) {
+    s[0] = v[0], s[1] = 0.5 * (v[1] + v[3]), s[2] = 0.5 * (v[2] + v[6]);
+    s[3] = v[4], s[4] = 0.5 * (v[5] + v[7]), s[5] = v[8];
+    const double asym = std::max({std::abs(v[1] - v[3]), std::abs(v[2] - v[6]), std::abs(v[5] - v[7])});
+    const double norm = std::max({std::abs(v[0]), std::abs(v[4]), std::abs(v[8]), std::abs(s[1]), std::abs(s[2]),
+                                  std::abs(s[4])});
+    if (asym > 0 && norm > 0) maxAsym_ = std::max(maxAsym_, asym / norm);
+  } else {
+    for (int k = 0; k < 6; ++k) s[k] = v[layout_.sym[k]];
+  }
+  if (g_.tensorToWC) {
+    const double* t = g_.tensorToWC->data();
+    const double d[9] = {s[0], s[1], s[2], s[1], s[3], s[4], s[2], s[4], s[5]};
+    double td[9];  // T D
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) td[3 * r + c] = t[3 * r] * d[c] + t[3 * r + 1] * d[3 + c] + t[3 * r + 2] * d[6 + c];
+    auto tdt = [&](int r, int c) { return td[3 * r] * t[3 * c] + td[3 * r + 1] * t[3 * c + 1] + td[3 * r + 2] * t[3 * c + 2]; };
+    const double w[6] = {tdt(0, 0), tdt(0, 1), tdt(0, 2), tdt(1, 1), tdt(1, 2), tdt(2, 2)};
+    std::copy(w, w + 6, s);
+  }
+  double p[3];
+  positionWC(g_, ijk, p);
+  f_.addSym(std::uint32_t(index), p, s);
+}
+
+void VolumeSink::finish() {
+  GridInfo gi;
+  double minSpacing = INFINITY;
+  for (int k = 0; k < 3; ++k) {
+    gi.dims[k] = g_.dims[k];
+    gi.origin[k] = g_.originWC[k];
+    const double len = std::hypot(g_.axesWC[k], g_.axesWC[3 + k], g_.axesWC[6 + k]);
+    gi.spacing[k] = len;
+    for (int r = 0; r < 3; ++r) gi.directions[3 * r + k] = len > 0 ? g_.axesWC[3 * r + k] / len : (r == k);
+    if (g_.dims[k] > 1 && len > 0) minSpacing = std::min(minSpacing, len);
+  }
+  f_.grid = gi;
+  f_.sampleSpacing = std::isfinite(minSpacing) ? minSpacing : estimateSampleSpacing(f_.positions);
+}
+
+std::array<double, 9> orthogonalPart(const double m[9]) {
+  std::array<double, 9> q;
+  std::copy(m, m + 9, q.begin());
+  for (int iter = 0; iter < 100; ++iter) {
+    // Q <- (Q + Q^-T) / 2
+    const double* a = q.data();
+    const double det = a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) +
+                       a[2] * (a[3] * a[7] - a[4] * a[6]);
+    if (!(std::abs(det) > 0)) break;
+    // Inverse-transpose = cofactor matrix / det.
+    const double cof[9] = {a[4] * a[8] - a[5] * a[7], a[5] * a[6] - a[3] * a[8], a[3] * a[7] - a[4] * a[6],
+                           a[2] * a[7] - a[1] * a[8], a[0] * a[8] - a[2] * a[6], a[1] * a[6] - a[0] * a[7],
+                           a[1] * a[5] - a[2] * a[4], a[2] * a[3] - a[0] * a[5], a[0] * a[4] - a[1] * a[3]};
+    double change = 0;
+    std::array<double, 9> n;
+    for (int k = 0; k < 9; ++k) {
+      n[k] = 0.5 * (a[k] + cof[k] / det);
+      change = std::max(change, std::abs(n[k] - a[k]));
+    }
+    q = n;
+    if (change < 1e-15) break;
+  }
+  return q;
+}
+
+}  // namespace tg::io

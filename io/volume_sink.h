@@ -1,0 +1,62 @@
+#pragma once
+// The one place where voxels of any volume format become world-space
+// samples: index -> WC placement, the tensor frame (D_WC = T D Tᵀ), the
+// confidence threshold and the selection. NRRD and NIfTI readers decode
+// their data into it in file order (i fastest).
+#include <array>
+#include <optional>
+
+#include "io/selection.h"
+#include "io/tensor_field.h"
+
+namespace tg::io {
+
+struct VolumeGeometry {
+  int dims[3] = {1, 1, 1};
+  double originWC[3] = {0, 0, 0};
+  double axesWC[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};  // row-major; column k is one step along index k, in WC
+  std::optional<std::array<double, 9>> tensorToWC;  // row-major T; none: the identity
+};
+
+void positionWC(const VolumeGeometry& g, const int ijk[3], double pWC[3]);
+
+// Where the six unique components sit among a voxel's values.
+struct ComponentLayout {
+  int count = 6;            // values per voxel
+  int confidence = -1;      // index of the confidence value, -1: none
+  bool full = false;        // 9 values, row-major 3x3, symmetrised on load
+  std::array<int, 6> sym{0, 1, 2, 3, 4, 5};  // value index of xx xy xz yy yz zz
+};
+
+class VolumeSink {
+ public:
+  VolumeSink(TensorField& f, const VolumeGeometry& g, const ComponentLayout& layout, const Selector& sel,
+             double confidenceMin);
+  // The next voxel's `layout.count` values, in file order.
+  void push(const double* v);
+  // Voxel `index`'s values, for readers that decide the selection themselves
+  // (see Selector) and then deliver only the kept voxels.
+  void pushSelected(std::uint64_t index, const double* v);
+  // Fills f.grid and f.sampleSpacing from the geometry.
+  void finish();
+  // Asymmetric 3D-matrix input: the largest |D - Dᵀ| / |D| seen.
+  double maxAsymmetry() const { return maxAsym_; }
+
+ private:
+  void emit(std::uint64_t index, const int ijk[3], const double* v);
+  TensorField& f_;
+  VolumeGeometry g_;
+  ComponentLayout layout_;
+  const Selector& sel_;
+  double confidenceMin_;
+  std::uint64_t next_ = 0;
+  int ijk_[3] = {0, 0, 0};
+  double maxAsym_ = 0;
+};
+
+// Polar decomposition's rotation (or rotation-reflection, if det < 0) of a
+// row-major 3x3, which strips scaling and shear from an affine's linear part
+// (Higham's iteration, "Computing the polar decomposition", 1986).
+std::array<double, 9> orthogonalPart(const double m[9]);
+
+}  // namespace tg::io

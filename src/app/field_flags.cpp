@@ -1,0 +1,91 @@
+#include "app/field_flags.h"
+
+#include <cstdio>
+#include <stdexcept>
+
+#include "app/cli_common.h"
+
+namespace tg::app {
+
+void FieldFlags::addTo(OIIO::ArgParse& ap, bool scaling) {
+  using Args = OIIO::cspan<const char*>;
+  io::Selection& sel = read.selection;
+  ap.arg("--array NAME").help("VTK: the point array holding the tensors").action([&](auto&, Args a) {
+    read.arrayName = a[1];
+  });
+  ap.arg("--layout L").help("NIfTI component order: fsl (xx xy xz yy yz zz), nifti (SYMMATRIX: xx xy yy xz yz zz), "
+                            "mrtrix (xx yy zz xy xz yz, world frame) or vtk (xx yy zz xy yz xz)")
+      .action([&](auto&, Args a) { read.layout = a[1]; });
+  ap.arg("--mask FILE").help("scalar volume on the same grid (.nrrd .nhdr .nii .nii.gz .vti)").action([&](auto&, Args a) {
+    sel.maskPath = a[1];
+  });
+  ap.arg("--mask-min V").help("keep voxels whose mask value is >= V (default 0.5)").action([&](auto&, Args a) {
+    sel.maskMin = parseDouble("--mask-min", a[1]);
+  });
+  ap.arg("--confidence-min C").help("masked NRRD tensors: keep confidence >= C (default 0.5)")
+      .action([&](auto&, Args a) { sel.confidenceMin = parseDouble("--confidence-min", a[1]); });
+  ap.arg("--slice SPEC").help("axis:index[:thickness], e.g. z:40 or z:40:5 (a slab centred on 40)")
+      .action([&](auto&, Args a) {
+        try {
+          sel.slice = io::parseSlice(a[1]);
+        } catch (const std::invalid_argument& e) {
+          throw UsageError(std::string("--slice: ") + e.what());
+        }
+      });
+  ap.arg("--stride N").help("every N-th voxel along each axis (every N-th point of a point set)")
+      .action([&](auto&, Args a) { sel.stride = parseInt("--stride", a[1]); });
+  ap.arg("--roi X0 Y0 Z0 X1 Y1 Z1").help("keep samples inside this box (WC)").action([&](auto&, Args a) {
+    std::array<double, 6> b;
+    for (int k = 0; k < 6; ++k) b[k] = parseDouble("--roi", a[1 + k]);
+    sel.roiWC = b;
+  });
+  ap.arg("--cl-min V").help("hide glyphs with Westin's linear measure cl below V").action([&](auto&, Args a) {
+    glyph.clMin = parseDouble("--cl-min", a[1]);
+  });
+  ap.arg("--cp-min V").help("hide glyphs with Westin's planar measure cp below V").action([&](auto&, Args a) {
+    glyph.cpMin = parseDouble("--cp-min", a[1]);
+  });
+  ap.arg("--min-eigenvalue E").help("raise eigenvalues below E to E (shape only; FA is from the data)")
+      .action([&](auto&, Args a) { glyph.minEigenvalue = parseDouble("--min-eigenvalue", a[1]); });
+  if (!scaling) return;
+  ap.arg("--scale S").help("with --scale-mode absolute (the default when given alone): world units per eigenvalue "
+                           "unit; else a factor on the mode's size")
+      .action([&](auto&, Args a) { scale = parseDouble("--scale", a[1]); });
+  ap.arg("--scale-mode M").help("absolute, max (largest eigenvalue -> S sample spacings across) or spacing (default: "
+                                "99th percentile -> S sample spacings)")
+      .action([&](auto&, Args a) {
+        const std::string m = a[1];
+        if (m == "absolute") scaleMode = tensor::ScaleMode::Absolute;
+        else if (m == "max") scaleMode = tensor::ScaleMode::Max;
+        else if (m == "spacing") scaleMode = tensor::ScaleMode::Spacing;
+        else throw UsageError("--scale-mode: unknown mode \"" + m + "\"; choose absolute, max or spacing");
+      });
+}
+
+void FieldFlags::validate() const {
+  const io::Selection& sel = read.selection;
+  if (sel.stride < 1 || sel.stride > 1000000) throw UsageError("--stride must be within 1..1000000");
+  if (!read.layout.empty() && read.layout != "fsl" && read.layout != "nifti" && read.layout != "mrtrix" &&
+      read.layout != "vtk")
+    throw UsageError("--layout: unknown layout \"" + read.layout + "\"; choose fsl, nifti, mrtrix or vtk");
+  if (!(glyph.clMin >= 0 && glyph.clMin <= 1)) throw UsageError("--cl-min must be within 0..1");
+  if (!(glyph.cpMin >= 0 && glyph.cpMin <= 1)) throw UsageError("--cp-min must be within 0..1");
+  if (scale && !(*scale > 0.0)) throw UsageError("--scale must be positive");
+}
+
+double FieldFlags::scaleFor(const tensor::GlyphSet& set, double spacing) const {
+  const tensor::ScaleMode mode = scaleMode.value_or(scale ? tensor::ScaleMode::Absolute : tensor::ScaleMode::Spacing);
+  return tensor::resolveScale(mode, scale.value_or(1.0), set, spacing);
+}
+
+void reportLoad(const io::TensorField& f, const char* command) {
+  for (const std::string& w : f.warnings) std::fprintf(stderr, "tensorglyph %s: %s: %s\n", command, f.path.c_str(), w.c_str());
+  if (f.skippedNonFinite)
+    std::fprintf(stderr, "tensorglyph %s: %s: skipped %zu tensors with NaN/Inf components\n", command, f.path.c_str(),
+                 f.skippedNonFinite);
+  if (f.size() == 0)
+    std::fprintf(stderr, "tensorglyph %s: %s: no tensor is left to draw (%zu masked, %zu outside the selection)\n",
+                 command, f.path.c_str(), f.masked, f.unselected);
+}
+
+}  // namespace tg::app
