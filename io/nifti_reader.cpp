@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <cstring>
 #include <memory>
 
@@ -27,6 +28,7 @@ Image readHeader(const std::string& path) {
   nifti_set_debug_level(0);  // errors are reported here, in one line
   Image nim(nifti_image_read(path.c_str(), 0), nifti_image_free);
   if (!nim) fail(path, "not a readable NIfTI-1/-2 header");
+  if (nim->dim[0] < 1 || nim->dim[0] > 7) fail(path, "dim[0] is " + std::to_string(nim->dim[0]) + ", not 1..7");
   for (int k = 1; k <= nim->dim[0]; ++k)
     if (nim->dim[k] < 1) fail(path, "dimension " + std::to_string(k) + " is " + std::to_string(nim->dim[k]));
   if (!nim->iname) fail(path, "no image file named");
@@ -99,9 +101,27 @@ void placement(const nifti_image& nim, VolumeGeometry& g, TensorField& f) {
   }
 }
 
-std::uint64_t spatialVoxels(const nifti_image& nim, VolumeGeometry& g) {
-  for (int k = 0; k < 3; ++k) g.dims[k] = int(nim.dim[k + 1]);
-  return std::uint64_t(nim.nx) * std::uint64_t(nim.ny) * std::uint64_t(nim.nz);
+// libnifti2 3.0.1 reports nifti_type 1 for NIfTI-2 files too; the header
+// reader tells the versions apart.
+int niftiVersion(const std::string& path) {
+  int version = 0;
+  std::free(nifti_read_header(path.c_str(), &version, 0));
+  return version;
+}
+
+// dim[k], or 1 beyond dim[0] (writers leave those 0 or stale).
+std::int64_t dimOr1(const nifti_image& nim, int k) { return k <= nim.dim[0] ? nim.dim[k] : 1; }
+
+std::uint64_t spatialVoxels(const std::string& path, const nifti_image& nim, VolumeGeometry& g) {
+  std::uint64_t n = 1;
+  for (int k = 0; k < 3; ++k) {
+    const std::int64_t d = dimOr1(nim, k + 1);
+    if (d > INT32_MAX) fail(path, "dimension " + std::to_string(k + 1) + " is too large");
+    g.dims[k] = int(d);
+    n *= std::uint64_t(d);
+  }
+  if (n > UINT32_MAX) fail(path, "more than 2^32-1 voxels");
+  return n;
 }
 
 }  // namespace
@@ -111,16 +131,14 @@ TensorField readNifti(const std::string& path, const ReadOptions& opt) {
   TensorField f;
   f.path = path;
   VolumeGeometry g;
-  const std::uint64_t voxels = spatialVoxels(*nim, g);
-  if (nim->nx > INT32_MAX || nim->ny > INT32_MAX || nim->nz > INT32_MAX || voxels > UINT32_MAX)
-    fail(path, "more than 2^32-1 voxels");
+  const std::uint64_t voxels = spatialVoxels(path, *nim, g);
   // Six components along dim 4 (FSL, MRtrix) or dim 5 (the SYMMATRIX intent).
-  const bool along5 = nim->nt == 1 && nim->nu == 6;
-  if (!(nim->nt == 6 && nim->nu == 1) && !along5)
-    fail(path, "dimensions " + std::to_string(nim->nx) + "x" + std::to_string(nim->ny) + "x" + std::to_string(nim->nz) +
-                   "x" + std::to_string(nim->nt) + "x" + std::to_string(nim->nu) +
+  const std::int64_t nt = dimOr1(*nim, 4), nu = dimOr1(*nim, 5);
+  if (!(nt == 6 && nu == 1) && !(nt == 1 && nu == 6))
+    fail(path, "dimensions " + std::to_string(g.dims[0]) + "x" + std::to_string(g.dims[1]) + "x" +
+                   std::to_string(g.dims[2]) + "x" + std::to_string(nt) + "x" + std::to_string(nu) +
                    " hold no tensor; expected 6 volumes along dimension 4 or 5");
-  if (nim->nv > 1 || nim->nw > 1) fail(path, "dimensions 6 and 7 must be 1");
+  if (dimOr1(*nim, 6) != 1 || dimOr1(*nim, 7) != 1) fail(path, "dimensions 6 and 7 must be 1");
   std::string layout = opt.layout;
   if (layout.empty()) layout = nim->intent_code == NIFTI_INTENT_SYMMATRIX ? "nifti" : "fsl";
   ComponentLayout cl;
@@ -145,7 +163,7 @@ TensorField readNifti(const std::string& path, const ReadOptions& opt) {
       for (int r = 0; r < 3; ++r) t[3 * r] = -t[3 * r];
     g.tensorToWC = t;
   }
-  f.description = std::string(nim->nifti_type >= 4 ? "NIfTI-2" : "NIfTI-1") + " volume, " + std::to_string(g.dims[0]) +
+  f.description = "NIfTI-" + std::to_string(niftiVersion(path)) + " volume, " + std::to_string(g.dims[0]) +
                   "x" + std::to_string(g.dims[1]) + "x" + std::to_string(g.dims[2]) + ", " +
                   nifti_datatype_string(nim->datatype);
 
@@ -193,8 +211,7 @@ TensorField readNifti(const std::string& path, const ReadOptions& opt) {
 ScalarVolume readNiftiScalar(const std::string& path) {
   const Image nim = readHeader(path);
   VolumeGeometry g;
-  const std::uint64_t voxels = spatialVoxels(*nim, g);
-  if (voxels > UINT32_MAX) fail(path, "more than 2^32-1 voxels");
+  const std::uint64_t voxels = spatialVoxels(path, *nim, g);
   if (std::uint64_t(nim->nvox) != voxels) fail(path, "a mask must be a single 3D volume");
   ScalarVolume s;
   std::copy(g.dims, g.dims + 3, s.dims);

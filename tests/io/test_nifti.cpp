@@ -1,0 +1,235 @@
+// Tier 2: NIfTI-1/-2 input through libnifti2: layouts, placement, tensor
+// frames, and bad input. Fixtures are written with libnifti2 itself.
+#include <gtest/gtest.h>
+
+#include <nifti2_io.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "io/readers.h"
+
+using namespace tg;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path tmpDir() {
+  const fs::path d = fs::temp_directory_path() / ("tg_test_nifti_" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  return d;
+}
+
+struct Fixture {
+  int nx = 2, ny = 1, nz = 1;
+  bool symmatrix = false;  // 5D (x y z 1 6) with the SYMMATRIX intent, else 4D (x y z 6)
+  bool nifti2 = false;
+  double affine[3][4] = {{2, 0, 0, 10}, {0, 2, 0, 20}, {0, 0, 2, 30}};
+  std::vector<std::array<float, 6>> voxels;  // six values per voxel, in file order
+};
+
+void write(const fs::path& path, const Fixture& fx) {
+  const int64_t dims[8] = {fx.symmatrix ? 5 : 4, fx.nx, fx.ny, fx.nz, fx.symmatrix ? 1 : 6, fx.symmatrix ? 6 : 1, 1, 1};
+  nifti_image* nim = nifti_make_new_nim(dims, NIFTI_TYPE_FLOAT32, 1);
+  ASSERT_TRUE(nim);
+  const std::size_t n = std::size_t(fx.nx * fx.ny * fx.nz);
+  ASSERT_EQ(fx.voxels.size(), n);
+  auto* data = static_cast<float*>(nim->data);
+  for (std::size_t v = 0; v < n; ++v)
+    for (int c = 0; c < 6; ++c) data[c * n + v] = fx.voxels[v][c];
+  nim->sform_code = NIFTI_XFORM_SCANNER_ANAT;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) nim->sto_xyz.m[r][c] = r < 3 ? fx.affine[r][c] : (c == 3 ? 1 : 0);
+  if (fx.symmatrix) nim->intent_code = NIFTI_INTENT_SYMMATRIX;
+  if (fx.nifti2) {
+    // libnifti2 3.0.1's writer leaves the header out of a NIfTI-2 .nii, so
+    // the fixture is assembled from its converted header: 540 bytes, the
+    // 4-byte extension flag, then the data at offset 544.
+    nim->nifti_type = NIFTI_FTYPE_NIFTI2_1;  // sets the magic to n+2
+    nifti_2_header h{};
+    ASSERT_EQ(nifti_convert_nim2n2hdr(nim, &h), 0);
+    h.vox_offset = 544;
+    std::memcpy(h.magic, "n+2\0\r\n\032\n", 8);  // the converter leaves the last four bytes 0
+    std::ofstream out(path, std::ios::binary);
+    out.write(reinterpret_cast<const char*>(&h), sizeof h);
+    out.write("\0\0\0\0", 4);
+    out.write(static_cast<const char*>(nim->data), std::streamsize(4 * 6 * n));
+    nifti_image_free(nim);
+    return;
+  }
+  std::string prefix = path.string();
+  ASSERT_EQ(nifti_set_filenames(nim, prefix.c_str(), 0, 1), 0);
+  nifti_image_write(nim);
+  nifti_image_free(nim);
+  ASSERT_TRUE(fs::exists(path)) << path;
+}
+
+std::string errorOf(const fs::path& p, const io::ReadOptions& o = {}) {
+  try {
+    io::readTensorField(p.string(), o);
+  } catch (const io::InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(Nifti, FslLayoutPlacementAndBothFileKinds) {
+  Fixture fx;
+  fx.voxels = {{{1, 0.1f, 0.2f, 2, 0.3f, 3}}, {{4, 0, 0, 5, 0, 6}}};
+  fx.affine[0][0] = -2;  // radiological storage (det < 0): FSL's frame is the voxel frame mirrored... back to x
+  for (const char* name : {"fsl.nii", "fsl.nii.gz"}) {
+    for (bool v2 : {false, std::string(name) == "fsl.nii"}) {
+      fx.nifti2 = v2;
+      const fs::path p = tmpDir() / (std::string(v2 ? "n2-" : "n1-") + name);
+      write(p, fx);
+      const io::TensorField f = io::readTensorField(p.string(), {});
+      ASSERT_EQ(f.size(), 2u) << p;
+      EXPECT_EQ(f.positions, (std::vector<float>{10, 20, 30, 8, 20, 30})) << p;
+      // det < 0: the rotation part diag(-1, 1, 1) mirrors x, so xy and xz flip.
+      const float expect[6] = {1, -0.1f, -0.2f, 2, 0.3f, 3};
+      for (int k = 0; k < 6; ++k) EXPECT_FLOAT_EQ(f.tensors[k], expect[k]) << p << " component " << k;
+      EXPECT_NE(f.description.find(v2 ? "NIfTI-2" : "NIfTI-1"), std::string::npos) << f.description;
+    }
+  }
+}
+
+TEST(Nifti, FslTensorsMeanTheSameWorldTensorWhateverTheStorageHandedness) {
+  // FSL's voxel frame is radiological whatever the storage, so the same FSL
+  // tensor stored neurologically (det > 0) or radiologically (det < 0) is the
+  // same tensor in the world.
+  Fixture neuro, radio;
+  neuro.nx = radio.nx = 1;
+  neuro.voxels = radio.voxels = {{{1, 0.1f, 0.2f, 2, 0.3f, 3}}};
+  radio.affine[0][0] = -2;
+  write(tmpDir() / "neuro.nii", neuro);
+  write(tmpDir() / "radio.nii", radio);
+  const auto a = io::readTensorField((tmpDir() / "neuro.nii").string(), {});
+  const auto b = io::readTensorField((tmpDir() / "radio.nii").string(), {});
+  for (int k = 0; k < 6; ++k) EXPECT_FLOAT_EQ(a.tensors[k], b.tensors[k]) << k;
+  // Read as a plain voxel-frame layout, the two differ: the convention matters.
+  io::ReadOptions voxelFrame;
+  voxelFrame.layout = "vtk";
+  const auto c = io::readTensorField((tmpDir() / "neuro.nii").string(), voxelFrame);
+  const auto d = io::readTensorField((tmpDir() / "radio.nii").string(), voxelFrame);
+  EXPECT_NE(c.tensors, d.tensors);
+}
+
+TEST(Nifti, SymmatrixIntentIsLowerTriangleAlongDimensionFive) {
+  Fixture fx;
+  fx.nx = 1;
+  fx.symmatrix = true;
+  fx.voxels = {{{1, 0.1f, 2, 0.2f, 0.3f, 3}}};  // xx xy yy xz yz zz
+  write(tmpDir() / "sym.nii", fx);
+  const auto f = io::readTensorField((tmpDir() / "sym.nii").string(), {});
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_NE(f.layout.find("nifti"), std::string::npos);
+  const float expect[6] = {1, 0.1f, 0.2f, 2, 0.3f, 3};  // xx xy xz yy yz zz
+  for (int k = 0; k < 6; ++k) EXPECT_FLOAT_EQ(f.tensors[k], expect[k]) << k;
+}
+
+TEST(Nifti, RotatedAffineRotatesVoxelFrameTensorsButNotMrtrixOnes) {
+  // 90 degrees about z, with anisotropic spacing: the orthogonal part maps
+  // voxel x to world y, so a tensor long along voxel x is long along world y.
+  Fixture fx;
+  fx.nx = 1;
+  const double a[3][4] = {{0, -3, 0, 0}, {1.5, 0, 0, 0}, {0, 0, 2, 0}};
+  std::memcpy(fx.affine, a, sizeof a);
+  fx.voxels = {{{5, 0, 1, 0, 0, 1}}};  // diag(5, 1, 1) as xx xy yy xz yz zz
+  write(tmpDir() / "rot-nifti.nii", fx);
+  io::ReadOptions nifti;
+  nifti.layout = "nifti";
+  const auto r = io::readTensorField((tmpDir() / "rot-nifti.nii").string(), nifti);
+  EXPECT_NEAR(r.tensors[0], 1, 1e-6);
+  EXPECT_NEAR(r.tensors[3], 5, 1e-6);
+  EXPECT_NEAR(r.tensors[1], 0, 1e-6);
+  fx.voxels = {{{5, 1, 1, 0, 0, 0}}};  // diag(5, 1, 1) as xx yy zz xy xz yz
+  write(tmpDir() / "rot-mrtrix.nii", fx);
+  io::ReadOptions mrtrix;
+  mrtrix.layout = "mrtrix";
+  const auto m = io::readTensorField((tmpDir() / "rot-mrtrix.nii").string(), mrtrix);
+  EXPECT_FLOAT_EQ(m.tensors[0], 5);
+  EXPECT_FLOAT_EQ(m.tensors[3], 1);
+}
+
+TEST(Nifti, MrtrixOrder) {
+  Fixture fx;
+  fx.nx = 1;
+  fx.voxels = {{{1, 2, 3, 0.1f, 0.2f, 0.3f}}};  // xx yy zz xy xz yz
+  write(tmpDir() / "mrtrix.nii", fx);
+  io::ReadOptions o;
+  o.layout = "mrtrix";
+  const auto f = io::readTensorField((tmpDir() / "mrtrix.nii").string(), o);
+  const float expect[6] = {1, 0.1f, 0.2f, 2, 0.3f, 3};
+  for (int k = 0; k < 6; ++k) EXPECT_FLOAT_EQ(f.tensors[k], expect[k]) << k;
+}
+
+TEST(Nifti, MaskAndSliceSelectVoxelsBeforeTheDataIsRead) {
+  Fixture fx;
+  fx.nx = 4;
+  fx.ny = 3;
+  fx.nz = 2;
+  for (int v = 0; v < 24; ++v) fx.voxels.push_back({{float(v + 1), 0, 0, 1, 0, 1}});
+  write(tmpDir() / "grid.nii", fx);
+  // A mask keeping the voxels with even index.
+  const int64_t dims[8] = {3, 4, 3, 2, 1, 1, 1, 1};
+  nifti_image* mask = nifti_make_new_nim(dims, NIFTI_TYPE_UINT8, 1);
+  for (int v = 0; v < 24; ++v) static_cast<std::uint8_t*>(mask->data)[v] = v % 2 == 0;
+  const std::string maskPath = (tmpDir() / "mask.nii.gz").string();
+  nifti_set_filenames(mask, maskPath.c_str(), 0, 1);
+  nifti_image_write(mask);
+  nifti_image_free(mask);
+  io::ReadOptions o;
+  o.selection.maskPath = maskPath;
+  o.selection.slice = io::SliceSpec{2, 1, 1};
+  const auto f = io::readTensorField((tmpDir() / "grid.nii").string(), o);
+  EXPECT_EQ(f.size(), 6u);  // 12 voxels in slice k = 1, half of them even
+  EXPECT_EQ(f.unselected, 12u);
+  EXPECT_EQ(f.masked, 6u);
+  for (std::size_t i = 0; i < f.size(); ++i) {
+    EXPECT_EQ(f.ids[i] % 2, 0u);
+    EXPECT_GE(f.ids[i], 12u);
+    EXPECT_FLOAT_EQ(f.tensors[6 * i], float(f.ids[i] + 1));  // the data of that voxel, not its neighbour's
+  }
+}
+
+TEST(Nifti, BadInputGetsOneLineNamingFileAndProblem) {
+  Fixture fx;
+  fx.nx = 8;
+  fx.ny = 8;
+  fx.nz = 8;
+  fx.voxels.assign(512, {{1, 0, 0, 1, 0, 1}});
+  const fs::path good = tmpDir() / "good.nii";
+  write(good, fx);
+  std::string bytes;
+  {
+    std::ifstream in(good, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const fs::path d = tmpDir();
+  std::ofstream(d / "trunc.nii", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+  std::ofstream(d / "garbage.nii", std::ios::binary) << std::string(400, 'x');
+  std::string huge = bytes.substr(0, 352);
+  const int16_t big = 32767;
+  for (int k = 1; k <= 3; ++k) std::memcpy(&huge[40 + 2 * k], &big, 2);  // dim[1..3] of a NIfTI-1 header
+  std::ofstream(d / "huge.nii", std::ios::binary) << huge;
+  Fixture five = fx;
+  write(d / "five.nii", five);
+  struct Case {
+    const char* file;
+    const char* expect;
+  } cases[] = {{"trunc.nii", "truncated"}, {"garbage.nii", "NIfTI"}, {"huge.nii", "readNifti"}};
+  for (const Case& c : cases) {
+    const std::string e = errorOf(d / c.file);
+    EXPECT_NE(e.find(c.expect), std::string::npos) << c.file << ": " << e;
+    EXPECT_NE(e.find((d / c.file).string()), std::string::npos) << c.file << ": " << e;
+    EXPECT_EQ(e.find('\n'), std::string::npos) << c.file << ": " << e;
+  }
+  io::ReadOptions bad;
+  bad.layout = "upside-down";
+  EXPECT_NE(errorOf(good, bad).find("unknown layout"), std::string::npos);
+}
