@@ -23,6 +23,7 @@
 #include <vtkXMLUnstructuredGridReader.h>
 
 #include "io/readers.h"
+#include "io/tsv_trailer.h"
 
 namespace tg::io {
 namespace {
@@ -145,6 +146,19 @@ vtkSmartPointer<vtkDataSet> runReader(vtkAlgorithm* reader, const std::string& p
   return out;
 }
 
+bool isLegacy(const std::string& path) {
+  return path.size() > 4 && (path.ends_with(".vtk") || path.ends_with(".VTK"));
+}
+
+bool hasTensorArray(vtkDataSet* ds) {
+  vtkPointData* pd = ds->GetPointData();
+  if (pd->GetTensors()) return true;
+  for (int k = 0; k < pd->GetNumberOfArrays(); ++k)
+    if (vtkDataArray* a = pd->GetArray(k); a && (a->GetNumberOfComponents() == 9 || a->GetNumberOfComponents() == 6))
+      return true;
+  return false;
+}
+
 vtkDataArray* pickTensorArray(vtkDataSet* ds, const std::string& path, const ReadOptions& opt) {
   vtkPointData* pd = ds->GetPointData();
   vtkDataArray* arr = nullptr;
@@ -239,17 +253,24 @@ TensorField readVtk(const std::string& path, const ReadOptions& opt) {
   const vtkIdType n = ds->GetNumberOfPoints();
   if (n <= 0) fail(path, "no points");
   if (n > vtkIdType(UINT32_MAX)) fail(path, "more than 2^32-1 points");
-  vtkDataArray* arr = pickTensorArray(ds, path, opt);
+  // A legacy file without point tensors may carry 3D-TSV's stress trailer.
+  std::vector<double> trailer;
+  vtkDataArray* arr = nullptr;
+  if (!(isLegacy(path) && opt.arrayName.empty() && !hasTensorArray(ds) &&
+        readTsvStressTrailer(path, std::uint64_t(n), trailer)))
+    arr = pickTensorArray(ds, path, opt);
 
   TensorField f;
   f.path = path;
-  f.arrayName = arr->GetName() ? arr->GetName() : "";
+  f.arrayName = arr ? (arr->GetName() ? arr->GetName() : "") : "Cartesian Stress (3D-TSV trailer)";
   f.description = std::string(ds->GetClassName()) + ", " + std::to_string(n) + " points";
-  f.layout = arr->GetNumberOfComponents() == 6 ? "6 values, VTK order (XX YY ZZ XY YZ XZ)" : "9 values (row-major 3x3)";
+  f.layout = !arr ? "Sxx Syy Szz Syz Szx Sxy"
+            : arr->GetNumberOfComponents() == 6 ? "6 values, VTK order (XX YY ZZ XY YZ XZ)"
+                                                : "9 values (row-major 3x3)";
   auto* image = vtkImageData::SafeDownCast(ds);
   const Selector sel(opt.selection, path, image ? image->GetDimensions() : nullptr);
   if (sel.selectsAll()) f.reserve(std::size_t(n));
-  const bool six = arr->GetNumberOfComponents() == 6;
+  const bool six = arr && arr->GetNumberOfComponents() == 6;
   double p[3], t[9], full[9];
   for (vtkIdType i = 0; i < n; ++i) {
     ds->GetPoint(i, p);
@@ -260,6 +281,11 @@ TensorField readVtk(const std::string& path, const ReadOptions& opt) {
         ++(verdict == Selector::Verdict::Masked ? f.masked : f.unselected);
         continue;
       }
+    }
+    if (!arr) {
+      std::copy_n(&trailer[9 * std::size_t(i)], 9, full);
+      f.addFull(std::uint32_t(i), p, full);
+      continue;
     }
     arr->GetTuple(i, t);
     if (six) {  // VTK's symmetric order: XX YY ZZ XY YZ XZ

@@ -1,0 +1,178 @@
+// Tier 2: the published datasets and the selection and scaling flags,
+// through the real binary.
+#include <gtest/gtest.h>
+#include <OpenImageIO/imageio.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <string>
+
+#include "real_data.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct CmdResult {
+  int code;
+  std::string out, err;
+};
+
+fs::path dir() {
+  const fs::path d = fs::temp_directory_path() / ("tg_test_cli_data_" + std::to_string(::getpid()));
+  fs::create_directories(d);
+  return d;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+CmdResult run(const std::string& args) {
+  const fs::path out = dir() / "stdout.txt", err = dir() / "stderr.txt";
+  const std::string cmd = std::string(TG_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
+  const int status = std::system(cmd.c_str());
+  return {WEXITSTATUS(status), slurp(out), slurp(err)};
+}
+
+// The number after `label` in `text` (e.g. "12 drawn" with label " drawn").
+long long countBefore(const std::string& text, const std::string& label) {
+  const std::regex re("([0-9]+)" + label);
+  std::smatch m;
+  if (!std::regex_search(text, m, re)) return -1;
+  return std::stoll(m[1]);
+}
+
+// Pixels that differ from the background colour of the top-left corner.
+int glyphPixels(const fs::path& png) {
+  auto in = OIIO::ImageInput::open(png.string());
+  if (!in) return -1;
+  const int w = in->spec().width, h = in->spec().height;
+  std::vector<unsigned char> px(std::size_t(w) * h * 4);
+  in->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, px.data());
+  int n = 0;
+  for (std::size_t i = 0; i < px.size(); i += 4)
+    n += std::abs(px[i] - px[0]) + std::abs(px[i + 1] - px[1]) + std::abs(px[i + 2] - px[2]) > 24;
+  return n;
+}
+
+const std::string kHelix3x3 = "slicer-helix-dti-3dmatrix/helix-DTI.nhdr";  // 64x32x16, no mask
+
+}  // namespace
+
+TEST(CliData, EveryPublishedDatasetLoadsAndRenders) {
+  TG_REQUIRE_REAL_DATA();
+  const char* files[] = {"slicer-helix-dti-masked/helix-DTI.nhdr",
+                         "slicer-helix-dti-3dmatrix/helix-DTI.nhdr",
+                         "kindlmann-dt-helix/dt-helix.nhdr",
+                         "slicer-fiber-tensors/fiber_vtk.vtk",
+                         "slicer-fiber-tensors/tractography.vtk",
+                         "tsv-kitten-stress/kitten3D_HexMesh_stressField.vtk",
+                         "tsv-kitten-stress/kitten-stress.vtu"};
+  for (const char* f : files) {
+    for (const char* glyph : {"ellipsoid", "superquadric"}) {
+      const fs::path out = dir() / "real.png";
+      fs::remove(out);
+      const CmdResult r = run("render " + tg::test::realData(f) + " -o " + out.string() + " --size 200 150 --glyph " +
+                              glyph + " --fa-min 0.05");
+      ASSERT_EQ(r.code, 0) << f << ": " << r.err;
+      // Glyphs are visible. The bound is low because the fibre point sets
+      // (glyphs one fibre step wide) and the kitten (a few singular glyphs set
+      // the scale) draw 56-150 pixels at this size; a blank frame draws 0.
+      EXPECT_GT(glyphPixels(out), 40) << f << " " << glyph;
+    }
+  }
+}
+
+TEST(CliData, SliceStrideAndRoiSelectTheExpectedVoxels) {
+  TG_REQUIRE_REAL_DATA();
+  const std::string in = tg::test::realData(kHelix3x3.c_str());
+  struct Case {
+    std::string flags;
+    long long drawn, outside;
+  } cases[] = {{"", 32768, 0},
+               {"--slice z:8", 64 * 32, 32768 - 64 * 32},
+               {"--slice z:8:3", 3 * 64 * 32, 32768 - 3 * 64 * 32},
+               {"--slice x:0", 32 * 16, 32768 - 32 * 16},
+               {"--stride 2", 32 * 16 * 8, 32768 - 32 * 16 * 8},
+               {"--slice z:8 --stride 4", 0, 32768},  // z = 8 is a multiple of 4: 16 x 8 voxels
+               // The grid's x runs -98.4375 + 3.125 i: [-2, 7] holds i = 31, 32, 33.
+               {"--roi -2 -1000 -1000 7 1000 1000", 3 * 32 * 16, 32768 - 3 * 32 * 16}};
+  cases[5].drawn = 16 * 8;
+  cases[5].outside = 32768 - 16 * 8;
+  for (const Case& c : cases) {
+    const CmdResult r = run("info " + in + " " + c.flags);
+    ASSERT_EQ(r.code, 0) << c.flags << ": " << r.err;
+    EXPECT_EQ(countBefore(r.out, " drawn"), c.drawn) << c.flags << "\n" << r.out;
+    EXPECT_EQ(countBefore(r.out, " outside the selection"), c.outside) << c.flags;
+  }
+}
+
+TEST(CliData, ShapeThresholdsAndEigenvalueClamp) {
+  TG_REQUIRE_REAL_DATA();
+  const std::string in = tg::test::realData("kindlmann-dt-helix/dt-helix.nhdr");
+  const CmdResult all = run("info " + in);
+  const CmdResult linear = run("info " + in + " --cl-min 0.2");
+  ASSERT_EQ(all.code, 0) << all.err;
+  ASSERT_EQ(linear.code, 0) << linear.err;
+  const long long n = countBefore(all.out, " drawn"), nl = countBefore(linear.out, " drawn");
+  EXPECT_GT(nl, 0);
+  EXPECT_LT(nl, n);
+  EXPECT_EQ(countBefore(linear.out, " below cl/cp"), n - nl);
+  // The clamp raises the smallest eigenvalue range's floor to the clamp.
+  const CmdResult clamped = run("info " + in + " --min-eigenvalue 0.45");
+  ASSERT_EQ(clamped.code, 0) << clamped.err;
+  EXPECT_NE(clamped.out.find("eigenvalue 3: [0.45,"), std::string::npos) << clamped.out;
+}
+
+TEST(CliData, ScaleModes) {
+  TG_REQUIRE_REAL_DATA();
+  // Masked helix: spacing 3.125 mm, largest eigenvalue 0.00497547.
+  const std::string in = tg::test::realData("slicer-helix-dti-masked/helix-DTI.nhdr");
+  auto scaleOf = [&](const std::string& flags) {
+    const CmdResult r = run("render " + in + " -o " + (dir() / "s.png").string() + " --size 64 48 --verbose " + flags);
+    EXPECT_EQ(r.code, 0) << r.err;
+    std::smatch m;
+    const std::regex re("scale ([0-9.e+-]+)");
+    return std::regex_search(r.err, m, re) ? std::stod(m[1]) : -1.0;
+  };
+  EXPECT_DOUBLE_EQ(scaleOf("--scale 250"), 250.0);  // absolute when given alone
+  EXPECT_NEAR(scaleOf("--scale-mode max"), 0.5 * 3.125 / 0.00497547, 0.01);
+  EXPECT_NEAR(scaleOf("--scale-mode max --scale 2"), 3.125 / 0.00497547, 0.02);
+  const double spacing = scaleOf("--scale-mode spacing");
+  EXPECT_GT(spacing, scaleOf("--scale-mode max"));  // the 99th percentile is below the maximum
+  EXPECT_NEAR(scaleOf(""), spacing, 1e-3 * spacing);
+}
+
+TEST(CliData, BadSelectionFailsBeforeRendering) {
+  TG_REQUIRE_REAL_DATA();
+  const std::string in = tg::test::realData(kHelix3x3.c_str());
+  const fs::path out = dir() / "never.png";
+  const std::string faMap = tg::test::realData("slicer-helix-dti-masked/helix-DTI-FractionalAnisotropy.nhdr");
+  const std::string otherGrid = tg::test::realData("kindlmann-dt-helix/dt-helix.nhdr");
+  const std::pair<std::string, std::string> cases[] = {
+      {"render " + in + " -o " + out.string() + " --slice q:3", "--slice: unknown axis"},
+      {"render " + in + " -o " + out.string() + " --slice z:99", "beyond axis 2"},
+      {"render " + in + " -o " + out.string() + " --stride 0", "--stride"},
+      {"render " + in + " -o " + out.string() + " --scale-mode huge", "--scale-mode"},
+      {"render " + in + " -o " + out.string() + " --cl-min 2", "--cl-min"},
+      {"render " + in + " -o " + out.string() + " --layout zyx", "--layout"},
+      {"render " + otherGrid + " -o " + out.string() + " --mask " + faMap, "differs from the tensor grid"},
+      {"render " + in + " -o " + out.string() + " --mask " + otherGrid, "a mask must have 3 axes"},
+      {"render " + tg::test::realData("slicer-fiber-tensors/fiber_vtk.vtk") + " -o " + out.string() + " --slice z:1",
+       "needs a grid"}};
+  for (const auto& [args, what] : cases) {
+    fs::remove(out);
+    const CmdResult r = run(args);
+    EXPECT_NE(r.code, 0) << args;
+    EXPECT_NE(r.err.find(what), std::string::npos) << args << " -> " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << " -> " << r.err;
+    EXPECT_FALSE(fs::exists(out)) << args;
+  }
+}
