@@ -35,6 +35,51 @@ void rotate(double a[3][3], double v[3][3], int p, int q) {
   }
 }
 
+// The eigenvector of a (scaled, symmetric) for the simple eigenvalue l: the
+// largest cross product of two rows of a - l I, which is orthogonal to both.
+// Returns false when every cross product is tiny (l not simple enough).
+bool simpleVector(const double a[3][3], double l, glm::dvec3& v) {
+  const glm::dvec3 r0(a[0][0] - l, a[0][1], a[0][2]), r1(a[1][0], a[1][1] - l, a[1][2]),
+      r2(a[2][0], a[2][1], a[2][2] - l);
+  const glm::dvec3 c[3] = {glm::cross(r0, r1), glm::cross(r0, r2), glm::cross(r1, r2)};
+  int best = 0;
+  double n2[3];
+  for (int k = 0; k < 3; ++k) n2[k] = glm::dot(c[k], c[k]);
+  if (n2[1] > n2[best]) best = 1;
+  if (n2[2] > n2[best]) best = 2;
+  if (!(n2[best] > 1e-20)) return false;
+  v = c[best] / std::sqrt(n2[best]);
+  return true;
+}
+
+// Closed form (Smith 1961, "Eigenvalues of a symmetric 3x3 matrix", CACM
+// 4(4)): eigenvalues from the trigonometric solution of the characteristic
+// cubic of the deviator, eigenvectors of the two outer ones by cross products
+// (as Kopp's hybrid method, arXiv:physics/0610206). Used only when both
+// eigenvalue gaps exceed 1e-3 of the deviator's norm, where the vectors are
+// accurate to ~1e-13; otherwise returns false and Jacobi takes over.
+bool analytic(const double a[3][3], Eigensystem& out) {
+  const double q = (a[0][0] + a[1][1] + a[2][2]) / 3.0;
+  const double b00 = a[0][0] - q, b11 = a[1][1] - q, b22 = a[2][2] - q;
+  const double p2 = (b00 * b00 + b11 * b11 + b22 * b22 + 2.0 * (a[0][1] * a[0][1] + a[0][2] * a[0][2] + a[1][2] * a[1][2])) / 6.0;
+  if (!(p2 > 1e-12)) return false;
+  const double p = std::sqrt(p2);
+  const double det = b00 * (b11 * b22 - a[1][2] * a[1][2]) - a[0][1] * (a[0][1] * b22 - a[1][2] * a[0][2]) +
+                     a[0][2] * (a[0][1] * a[1][2] - b11 * a[0][2]);
+  const double r = std::clamp(det / (2.0 * p2 * p), -1.0, 1.0);
+  const double phi = std::acos(r) / 3.0;
+  const double l1 = q + 2.0 * p * std::cos(phi);
+  const double l3 = q + 2.0 * p * std::cos(phi + 2.0943951023931957);  // + 2 pi / 3
+  const double l2 = 3.0 * q - l1 - l3;
+  if (std::min(l1 - l2, l2 - l3) < 1e-3 * p) return false;
+  glm::dvec3 v1, v3;
+  if (!simpleVector(a, l1, v1) || !simpleVector(a, l3, v3)) return false;
+  v3 = glm::normalize(v3 - glm::dot(v3, v1) * v1);
+  out.values = glm::dvec3(l1, l2, l3);
+  out.vectors = {v1, glm::cross(v3, v1), v3};  // right-handed: v1 x v2 = v3
+  return true;
+}
+
 }  // namespace
 
 Eigensystem eigensolve(const SymTensor& t) {
@@ -47,6 +92,22 @@ Eigensystem eigensolve(const SymTensor& t) {
   double a[3][3] = {{t.xx * inv, t.xy * inv, t.xz * inv},
                     {t.xy * inv, t.yy * inv, t.yz * inv},
                     {t.xz * inv, t.yz * inv, t.zz * inv}};
+  if (a[0][1] == 0.0 && a[0][2] == 0.0 && a[1][2] == 0.0) {
+    // Diagonal: exact, and common (isotropic backgrounds, axis-aligned phantoms).
+    int order[3] = {0, 1, 2};
+    std::sort(order, order + 3, [&](int i, int j) { return a[i][i] > a[j][j]; });
+    for (int i = 0; i < 3; ++i) {
+      out.values[i] = a[order[i]][order[i]] * scale;
+      out.vectors[i] = glm::dvec3(0.0);
+      out.vectors[i][order[i]] = 1.0;
+    }
+    out.vectors[2] = glm::cross(out.vectors[0], out.vectors[1]);
+    return out;
+  }
+  if (analytic(a, out)) {
+    out.values *= scale;
+    return out;
+  }
   double v[3][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
   for (int sweep = 0; sweep < kMaxSweeps; ++sweep) {
     const double off = std::abs(a[0][1]) + std::abs(a[0][2]) + std::abs(a[1][2]);

@@ -15,11 +15,12 @@ struct Eigensystem {
   std::array<glm::dvec3, 3> vectors{};  // unit, orthonormal, right-handed; vectors[i] ↔ values[i]
 };
 
-// Cyclic Jacobi on the tensor scaled by its largest entry (Golub & Van Loan,
-// "Matrix Computations", §8.5). Chosen over the closed-form cubic because it is
-// exact for repeated eigenvalues, returns orthonormal vectors by construction,
-// and the scaling keeps tiny (1e-30) and huge (1e30) tensors out of
-// under/overflow. Precondition: all components finite.
+// On the tensor scaled by its largest entry, so that tiny (1e-30) and huge
+// (1e30) tensors stay out of under/overflow: the closed-form cubic (Smith
+// 1961) with cross-product eigenvectors where all three eigenvalues are well
+// separated (5-10x faster), else cyclic Jacobi (Golub & Van Loan, "Matrix
+// Computations", §8.5), which is exact for repeated eigenvalues and
+// orthonormal by construction. Precondition: all components finite.
 Eigensystem eigensolve(const SymTensor& t);
 
 }  // namespace tg::tensor
