@@ -1,7 +1,9 @@
 // NIfTI-1/-2 through libnifti2. The header is read alone and checked against
 // the file; the data is then streamed volume by volume through znz (which
 // also reads .nii.gz), into one float per kept component.
+#include <fcntl.h>
 #include <nifti/nifti2_io.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -24,9 +26,38 @@ constexpr std::size_t kChunkBytes = 1 << 22;
 
 using Image = std::unique_ptr<nifti_image, void (*)(nifti_image*)>;
 
+// libnifti2 prints some header errors ("** ERROR: ... bad datatype") to
+// stderr whatever its debug level; our message must be the only line, so
+// stderr is pointed at /dev/null for the duration of the header read.
+class SilenceStderr {
+ public:
+  SilenceStderr() : saved_(dup(2)) {
+    const int null = open("/dev/null", O_WRONLY);
+    if (null >= 0) {
+      dup2(null, 2);
+      close(null);
+    }
+  }
+  ~SilenceStderr() {
+    if (saved_ >= 0) {
+      dup2(saved_, 2);
+      close(saved_);
+    }
+  }
+  SilenceStderr(const SilenceStderr&) = delete;
+  SilenceStderr& operator=(const SilenceStderr&) = delete;
+
+ private:
+  int saved_;
+};
+
 Image readHeader(const std::string& path) {
-  nifti_set_debug_level(0);  // errors are reported here, in one line
-  Image nim(nifti_image_read(path.c_str(), 0), nifti_image_free);
+  nifti_set_debug_level(0);
+  Image nim(nullptr, nifti_image_free);
+  {
+    const SilenceStderr quiet;
+    nim.reset(nifti_image_read(path.c_str(), 0));
+  }
   if (!nim) fail(path, "not a readable NIfTI-1/-2 header");
   if (nim->dim[0] < 1 || nim->dim[0] > 7) fail(path, "dim[0] is " + std::to_string(nim->dim[0]) + ", not 1..7");
   for (int k = 1; k <= nim->dim[0]; ++k)
@@ -52,18 +83,28 @@ double (*loader(const std::string& path, int datatype))(const char*) {
 }
 
 // Streams values [0, count) of the image file to consume(valueIndex, value).
-template <class Consume>
-void streamValues(const std::string& path, const nifti_image& nim, std::uint64_t count, Consume&& consume) {
-  const auto load = loader(path, nim.datatype);
-  const std::uint64_t tsize = std::uint64_t(nim.nbyper);
-  const std::uint64_t bytes = count * tsize;
+// The data the header describes must fit in the image file (or, gzipped,
+// within deflate's ratio of it). Called before anything is sized by the header.
+void checkDataSize(const std::string& path, const nifti_image& nim, std::uint64_t count) {
+  loader(path, nim.datatype);
+  if (nim.nbyper < 1 || nim.nbyper > 8) fail(path, "bytes per value " + std::to_string(nim.nbyper) + " is not 1..8");
+  const std::uint64_t bytes = count * std::uint64_t(nim.nbyper);
   const bool gz = nifti_is_gzfile(nim.iname);
   const std::int64_t fileSize = nifti_get_filesize(nim.iname);
   if (fileSize < 0) fail(path, std::string("cannot open image file ") + nim.iname);
+  if (nim.iname_offset < 0) fail(path, "negative data offset");
   const std::uint64_t avail = std::uint64_t(std::max<std::int64_t>(fileSize - (gz ? 0 : nim.iname_offset), 0));
   if (gz ? bytes > avail * kMaxGzipRatio : bytes > avail)
     fail(path, "data is truncated: the header describes " + std::to_string(bytes) + " bytes, the file has " +
                    std::to_string(avail) + (gz ? " compressed" : ""));
+}
+
+template <class Consume>
+void streamValues(const std::string& path, const nifti_image& nim, std::uint64_t count, Consume&& consume) {
+  checkDataSize(path, nim, count);
+  const auto load = loader(path, nim.datatype);
+  const std::uint64_t tsize = std::uint64_t(nim.nbyper);
+  const bool gz = nifti_is_gzfile(nim.iname);
   znzFile f = znzopen(nim.iname, "rb", gz);
   if (znz_isnull(f)) fail(path, std::string("cannot open image file ") + nim.iname);
   std::unique_ptr<std::remove_pointer_t<znzFile>, void (*)(znzFile)> guard(f, [](znzFile z) { Xznzclose(&z); });
@@ -169,6 +210,7 @@ TensorField readNifti(const std::string& path, const ReadOptions& opt) {
 
   // Which voxels to keep is known before any data: decide it first, then
   // read the six volumes in file order into the kept voxels' slots only.
+  checkDataSize(path, *nim, 6 * voxels);
   const Selector sel(opt.selection, path, g.dims);
   std::vector<std::uint32_t> kept;
   std::uint64_t keptCount = voxels;

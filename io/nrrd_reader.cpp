@@ -48,7 +48,12 @@ std::unique_ptr<Header> readHeader(const std::string& path) {
   auto h = std::make_unique<Header>();
   h->nio->skipData = AIR_TRUE;
   h->nio->keepNrrdDataFileOpen = AIR_TRUE;
-  if (nrrdLoad(h->nrrd, path.c_str(), h->nio)) fail(path, teemNrrdError());
+  if (nrrdLoad(h->nrrd, path.c_str(), h->nio)) {
+    // On failure Teem may already have closed the file it left in dataFile
+    // (found by fuzz_nrrd: a double fclose); it is not ours to close then.
+    h->nio->dataFile = nullptr;
+    fail(path, teemNrrdError());
+  }
   if (h->nio->format != nrrdFormatNRRD) fail(path, "not a NRRD file");
   if (!h->nio->dataFile) fail(path, "multiple detached data files are not supported");
   if (h->nrrd->type == nrrdTypeBlock) fail(path, "type block holds no numbers");

@@ -18,6 +18,9 @@ struct ReadOptions {
 
 // Legacy .vtk and XML .vti/.vtu/.vtp/.vts through VTK's readers.
 TensorField readVtk(const std::string& path, const ReadOptions& opt);
+// The header path of a legacy .vtk alone: the count checks readVtk makes
+// before VTK allocates anything, and VTK's own header and dataset-type read.
+void checkVtkLegacyHeader(const std::string& path);
 
 // .nrrd/.nhdr through Teem: kinds 3D-symmetric-matrix, 3D-masked-symmetric-
 // matrix and 3D-matrix on the first axis; space directions or old axis
