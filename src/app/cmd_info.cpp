@@ -78,6 +78,9 @@ int cmdInfo(int argc, const char** argv) {
     std::printf("bounds: [%g %g %g] - [%g %g %g]\n", g.boundsMinWC.x, g.boundsMinWC.y, g.boundsMinWC.z,
                 g.boundsMaxWC.x, g.boundsMaxWC.y, g.boundsMaxWC.z);
   }
+  // Load and eigen-decomposition both done, both buffers alive: the
+  // streaming loader's peak (see README, "Memory").
+  std::printf("peak memory: %.1f MiB\n", double(peakRssBytes()) / (1024.0 * 1024.0));
   return 0;
 }
 
