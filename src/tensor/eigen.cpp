@@ -68,8 +68,9 @@ bool analytic(const double a[3][3], Eigensystem& out) {
                      a[0][2] * (a[0][1] * a[1][2] - b11 * a[0][2]);
   const double r = std::clamp(det / (2.0 * p2 * p), -1.0, 1.0);
   const double phi = std::acos(r) / 3.0;
-  const double l1 = q + 2.0 * p * std::cos(phi);
-  const double l3 = q + 2.0 * p * std::cos(phi + 2.0943951023931957);  // + 2 pi / 3
+  const double c = std::cos(phi), s = std::sin(phi);  // one sincos
+  const double l1 = q + 2.0 * p * c;
+  const double l3 = q + 2.0 * p * (-0.5 * c - 0.8660254037844386 * s);  // cos(phi + 2 pi / 3)
   const double l2 = 3.0 * q - l1 - l3;
   if (std::min(l1 - l2, l2 - l3) < 1e-3 * p) return false;
   glm::dvec3 v1, v3;

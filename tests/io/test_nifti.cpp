@@ -234,6 +234,22 @@ TEST(Nifti, BadInputGetsOneLineNamingFileAndProblem) {
     EXPECT_NE(e.find((d / c.file).string()), std::string::npos) << c.file << ": " << e;
     EXPECT_EQ(e.find('\n'), std::string::npos) << c.file << ": " << e;
   }
+  // NIfTI-2 dimensions are 64-bit: 2^40 cubed overflows past 2^63.
+  Fixture n2 = fx;
+  n2.nifti2 = true;
+  write(d / "n2.nii", n2);
+  std::string n2bytes;
+  {
+    std::ifstream in(d / "n2.nii", std::ios::binary);
+    n2bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  const int64_t side = int64_t(1) << 40;
+  for (int k = 1; k <= 3; ++k) std::memcpy(&n2bytes[16 + 8 * k], &side, 8);  // dim[1..3] of a NIfTI-2 header
+  std::ofstream(d / "n2-overflow.nii", std::ios::binary) << n2bytes;
+  const std::string overflow = errorOf(d / "n2-overflow.nii");
+  EXPECT_NE(overflow.find("n2-overflow.nii"), std::string::npos) << overflow;
+  EXPECT_EQ(overflow.find('\n'), std::string::npos) << overflow;
+
   io::ReadOptions bad;
   bad.layout = "upside-down";
   EXPECT_NE(errorOf(good, bad).find("unknown layout"), std::string::npos);
