@@ -115,3 +115,15 @@ TEST(Vtk, BadInputGetsOneLineNamingFileAndProblem) {
     EXPECT_NE(msg.find((d / name).string()), std::string::npos) << "message names the file: " << msg;
   }
 }
+
+TEST(Vtk, ACorruptBodyThatCrashesVtkIsReportedNotFatal) {
+  // Found by fuzz_vtk: VTK 9.1's legacy reader dereferences null on this
+  // binary body after every header check passes. The child-process guard
+  // must turn that into an InputError.
+  const fs::path p = tmpDir() / "body-crash.vtk";
+  fs::copy_file(fs::path(TG_SOURCE_DIR) / "tests/fuzz/vtk-body-crashes/binary-5.1-cells", p,
+                fs::copy_options::overwrite_existing);
+  const std::string e = errorOf(p);
+  EXPECT_NE(e.find("corrupt file"), std::string::npos) << e;
+  EXPECT_NE(e.find(p.string()), std::string::npos) << e;
+}
