@@ -73,6 +73,10 @@ bool analytic(const double a[3][3], Eigensystem& out) {
   const double l3 = q + 2.0 * p * (-0.5 * c - 0.8660254037844386 * s);  // cos(phi + 2 pi / 3)
   const double l2 = 3.0 * q - l1 - l3;
   if (std::min(l1 - l2, l2 - l3) < 1e-3 * p) return false;
+  // An eigenvalue near zero comes out of the cubic with an absolute error of
+  // ~1e-16 of the largest: enough to flip its sign, and the sign picks the
+  // glyph's shape family. Jacobi resolves such tensors exactly.
+  if (std::min({std::abs(l1), std::abs(l2), std::abs(l3)}) < 1e-9 * std::max(std::abs(l1), std::abs(l3))) return false;
   glm::dvec3 v1, v3;
   if (!simpleVector(a, l1, v1) || !simpleVector(a, l3, v3)) return false;
   v3 = glm::normalize(v3 - glm::dot(v3, v1) * v1);
