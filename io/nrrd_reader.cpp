@@ -60,6 +60,14 @@ std::unique_ptr<Header> readHeader(const std::string& path) {
   return h;
 }
 
+// Bytes of the data file from where the data begins.
+std::uint64_t bytesAfterHeader(const Header& h) {
+  struct stat st {};
+  fstat(fileno(h.nio->dataFile), &st);
+  const long pos = std::ftell(h.nio->dataFile);
+  return pos >= 0 && st.st_size >= pos ? std::uint64_t(st.st_size - pos) : 0;
+}
+
 // Streams `count` values into `consume(const double* values, size_t n)`.
 template <class Consume>
 void decode(const std::string& path, Header& h, std::uint64_t count, Consume&& consume) {
@@ -68,10 +76,8 @@ void decode(const std::string& path, Header& h, std::uint64_t count, Consume&& c
   const std::size_t tsize = nrrdTypeSize[n->type];
   const std::uint64_t bytes = count * tsize;
   FILE* file = nio->dataFile;
-  struct stat st {};
-  fstat(fileno(file), &st);
   const long pos = std::ftell(file);
-  const std::uint64_t avail = pos >= 0 && st.st_size >= pos ? std::uint64_t(st.st_size - pos) : 0;
+  const std::uint64_t avail = bytesAfterHeader(h);
   const bool swap = nio->encoding->endianMatters && tsize > 1 && nio->endian != airMyEndian();
   double (*load)(const void*) = nrrdDLoad[n->type];
   std::vector<char> buf(kChunkBytes);
@@ -304,7 +310,11 @@ TensorField readNrrd(const std::string& path, const ReadOptions& opt) {
                   " encoding";
   const Selector sel(opt.selection, path, g.dims);
   const std::uint64_t values = voxels * std::uint64_t(layout.count);
-  if (h->nio->encoding == nrrdEncodingRaw && sel.selectsAll()) f.reserve(std::size_t(voxels));
+  // Reserved up front only where the file has been seen to hold every voxel
+  // (found by fuzz_nrrd: a 300-byte header reserved 3.6 GB).
+  if (h->nio->encoding == nrrdEncodingRaw && sel.selectsAll() &&
+      values * nrrdTypeSize[n->type] <= bytesAfterHeader(*h))
+    f.reserve(std::size_t(voxels));
   VolumeSink sink(f, g, layout, sel, opt.selection.confidenceMin);
   std::vector<double> pending;  // a voxel split across two chunks
   decode(path, *h, values, [&](const double* v, std::size_t m) {

@@ -11,17 +11,14 @@
 #include <fstream>
 
 #include "io/readers.h"
+#include "io/io_test_util.h"
 
 using namespace tg;
 namespace fs = std::filesystem;
 
 namespace {
 
-fs::path tmpDir() {
-  const fs::path d = fs::temp_directory_path() / ("tg_test_nifti_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
-}
+fs::path tmpDir() { return test::scratchDir("nifti"); }
 
 struct Fixture {
   int nx = 2, ny = 1, nz = 1;
@@ -67,14 +64,7 @@ void write(const fs::path& path, const Fixture& fx) {
   ASSERT_TRUE(fs::exists(path)) << path;
 }
 
-std::string errorOf(const fs::path& p, const io::ReadOptions& o = {}) {
-  try {
-    io::readTensorField(p.string(), o);
-  } catch (const io::InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+std::string errorOf(const fs::path& p, const io::ReadOptions& o = {}) { return test::readError(p, o); }
 
 }  // namespace
 

@@ -12,6 +12,7 @@
 
 #include "data-synthetic/generators.h"
 #include "io/readers.h"
+#include "io/io_test_util.h"
 #include "io/writers.h"
 
 using namespace tg;
@@ -19,22 +20,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path tmpDir() {
-  const fs::path d = fs::temp_directory_path() / ("tg_test_nrrd_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
-}
+fs::path tmpDir() { return test::scratchDir("nrrd"); }
 
 void writeBytes(const fs::path& p, const std::string& s) { std::ofstream(p, std::ios::binary) << s; }
 
-std::string errorOf(const fs::path& p, const io::ReadOptions& o = {}) {
-  try {
-    io::readTensorField(p.string(), o);
-  } catch (const io::InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+std::string errorOf(const fs::path& p, const io::ReadOptions& o = {}) { return test::readError(p, o); }
 
 // A 2x3x2 grid of distinct symmetric tensors; value k of voxel v is 1 + v + k/8.
 std::vector<double> sample6(int voxels) {

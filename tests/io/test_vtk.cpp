@@ -8,6 +8,7 @@
 
 #include "data-synthetic/generators.h"
 #include "io/readers.h"
+#include "io/io_test_util.h"
 #include "io/writers.h"
 
 using namespace tg;
@@ -15,22 +16,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-fs::path tmpDir() {
-  const fs::path d = fs::temp_directory_path() / ("tg_test_vtk_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
-}
+fs::path tmpDir() { return test::scratchDir("vtk"); }
 
 void writeText(const fs::path& p, const std::string& s) { std::ofstream(p, std::ios::binary) << s; }
 
-std::string errorOf(const fs::path& p) {
-  try {
-    io::readTensorField(p.string(), {});
-  } catch (const io::InputError& e) {
-    return e.what();
-  }
-  return "";
-}
+std::string errorOf(const fs::path& p, const io::ReadOptions& o = {}) { return test::readError(p, o); }
 
 }  // namespace
 
