@@ -105,6 +105,7 @@ void checkLegacyCounts(const std::string& path, std::uint64_t fileSize) {
       tuples = std::uint64_t(std::max<long double>(a, 0));
     } else if ((key == "CELLS" || key == "VERTICES" || key == "LINES" || key == "POLYGONS" ||
                 key == "TRIANGLE_STRIPS") && (ls >> a >> b)) {
+      if (a < 0 || b < 0) fail(path, "negative count in \"" + key + "\"");
       impossible(key, a);
       impossible(key, b);
       // Legacy (< 5.0) lists "count id..." per cell, at least two values;
