@@ -82,7 +82,7 @@ double (*loader(const std::string& path, int datatype))(const char*) {
   }
 }
 
-// Streams values [0, count) of the image file to consume(valueIndex, value).
+// Streams values [0, count) of the image file, in order, to consume(value).
 // The data the header describes must fit in the image file (or, gzipped,
 // within deflate's ratio of it). Called before anything is sized by the header.
 void checkDataSize(const std::string& path, const nifti_image& nim, std::uint64_t count) {
@@ -120,7 +120,7 @@ void streamValues(const std::string& path, const nifti_image& nim, std::uint64_t
     if (swap) nifti_swap_Nbytes(std::int64_t(want), int(tsize), buf.data());
     for (std::size_t i = 0; i < want; ++i) {
       const double x = load(buf.data() + i * tsize);
-      consume(done + i, scaled ? slope * x + inter : x);
+      consume(scaled ? slope * x + inter : x);
     }
     done += want;
   }
@@ -187,14 +187,13 @@ TensorField readNifti(const std::string& path, const ReadOptions& opt) {
   else if (layout == "nifti") cl.sym = {0, 1, 3, 2, 4, 5};  // lower triangle: xx xy yy xz yz zz
   else if (layout == "mrtrix") cl.sym = {0, 3, 4, 1, 5, 2};  // xx yy zz xy xz yz
   else if (layout == "vtk") cl.sym = {0, 3, 5, 1, 4, 2};     // xx yy zz xy yz xz
-  else fail(path, "unknown layout \"" + layout + "\"; choose fsl, nifti, mrtrix or vtk");
+  else fail(path, "unknown layout \"" + layout + "\"; choose " + kNiftiLayoutChoices);
   f.layout = layout + (opt.layout.empty() ? " (from the header; override with --layout)" : "");
 
   placement(*nim, g, f);
   double a[9];
   std::copy(g.axesWC, g.axesWC + 9, a);
-  const double det = a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) +
-                     a[2] * (a[3] * a[7] - a[4] * a[6]);
+  const double det = determinant3(a);
   if (!(std::abs(det) > 0) || !std::isfinite(det)) fail(path, "the affine is singular");
   if (layout != "mrtrix") {
     std::array<double, 9> t = orthogonalPart(a);
@@ -212,42 +211,40 @@ TensorField readNifti(const std::string& path, const ReadOptions& opt) {
   // read the six volumes in file order into the kept voxels' slots only.
   checkDataSize(path, *nim, 6 * voxels);
   const Selector sel(opt.selection, path, g.dims);
-  std::vector<std::uint32_t> kept;
-  std::uint64_t keptCount = voxels;
-  if (!sel.selectsAll()) {
-    int ijk[3] = {0, 0, 0};
-    for (std::uint64_t v = 0; v < voxels; ++v) {
-      ijk[0] = int(v % g.dims[0]), ijk[1] = int(v / g.dims[0] % g.dims[1]), ijk[2] = int(v / (std::uint64_t(g.dims[0]) * g.dims[1]));
-      double p[3];
-      positionWC(g, ijk, p);
-      const auto verdict = sel.judge(v, p);
-      if (verdict == Selector::Verdict::Keep) kept.push_back(std::uint32_t(v));
-      else ++(verdict == Selector::Verdict::Masked ? f.masked : f.unselected);
-    }
-    f.totalPoints += voxels - kept.size();
-    keptCount = kept.size();
-  }
+  VolumeSink sink(f, g, cl, sel, 0.0);
+  std::vector<std::uint32_t> kept;  // empty: every voxel is kept
+  if (!sel.selectsAll())
+    for (std::uint64_t v = 0; v < voxels; ++v)
+      if (sink.accept(v)) kept.push_back(std::uint32_t(v));
+  const std::uint64_t keptCount = sel.selectsAll() ? voxels : kept.size();
   std::vector<float> comps(6 * std::size_t(keptCount));
+  // Values arrive volume by volume: component c of voxels 0..voxels-1, then c + 1.
+  std::uint64_t v = 0, c = 0;
   std::size_t slot = 0;
-  streamValues(path, *nim, 6 * voxels, [&](std::uint64_t i, double x) {
-    const std::uint64_t c = i / voxels, v = i % voxels;
-    if (v == 0) slot = 0;
-    if (kept.empty() && sel.selectsAll()) {
+  streamValues(path, *nim, 6 * voxels, [&](double x) {
+    if (kept.empty()) {
       comps[6 * v + c] = float(x);
     } else if (slot < kept.size() && kept[slot] == v) {
-      comps[6 * slot + c] = float(x);
-      ++slot;
+      comps[6 * slot++ + c] = float(x);
+    }
+    if (++v == voxels) {
+      v = 0;
+      slot = 0;
+      ++c;
     }
   });
   f.reserve(std::size_t(keptCount));
-  VolumeSink sink(f, g, cl, sel, 0.0);
   double v6[6];
   for (std::uint64_t r = 0; r < keptCount; ++r) {
     std::copy(&comps[6 * r], &comps[6 * r] + 6, v6);
-    sink.pushSelected(kept.empty() ? r : kept[r], v6);
+    sink.pushAccepted(kept.empty() ? r : kept[r], v6);
   }
   sink.finish();
   return f;
+}
+
+bool isNiftiLayout(const std::string& name) {
+  return name == "fsl" || name == "nifti" || name == "mrtrix" || name == "vtk";
 }
 
 ScalarVolume readNiftiScalar(const std::string& path) {
@@ -257,7 +254,7 @@ ScalarVolume readNiftiScalar(const std::string& path) {
   if (std::uint64_t(nim->nvox) != voxels) fail(path, "a mask must be a single 3D volume");
   ScalarVolume s;
   std::copy(g.dims, g.dims + 3, s.dims);
-  streamValues(path, *nim, voxels, [&](std::uint64_t, double x) { s.values.push_back(float(x)); });
+  streamValues(path, *nim, voxels, [&](double x) { s.values.push_back(float(x)); });
   return s;
 }
 

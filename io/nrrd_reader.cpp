@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <functional>
 #include <memory>
 
 #include "io/readers.h"
@@ -68,9 +69,26 @@ std::uint64_t bytesAfterHeader(const Header& h) {
   return pos >= 0 && st.st_size >= pos ? std::uint64_t(st.st_size - pos) : 0;
 }
 
-// Streams `count` values into `consume(const double* values, size_t n)`.
+// A compressed stream's reader: the next `want` bytes into `dst`, fewer only
+// where the stream ends. Throws on corrupt data.
+using ByteReader = std::function<std::size_t(char* dst, std::size_t want)>;
+
+struct GzCloser {
+  void operator()(gzFile gz) const { gzclose(gz); }
+};
+struct BzStream {
+  BZFILE* bz = nullptr;
+  int err = BZ_OK;  // libbz2's status of the last call
+  ~BzStream() {
+    int closeErr;
+    if (bz) BZ2_bzReadClose(&closeErr, bz);
+  }
+};
+
+// Streams `count` values, `record` at a time (a voxel's values never straddle
+// two calls), into `consume(const double* values, size_t n)`.
 template <class Consume>
-void decode(const std::string& path, Header& h, std::uint64_t count, Consume&& consume) {
+void decode(const std::string& path, Header& h, std::uint64_t count, std::size_t record, Consume&& consume) {
   Nrrd* n = h.nrrd;
   NrrdIoState* nio = h.nio;
   const std::size_t tsize = nrrdTypeSize[n->type];
@@ -78,104 +96,16 @@ void decode(const std::string& path, Header& h, std::uint64_t count, Consume&& c
   FILE* file = nio->dataFile;
   const long pos = std::ftell(file);
   const std::uint64_t avail = bytesAfterHeader(h);
-  const bool swap = nio->encoding->endianMatters && tsize > 1 && nio->endian != airMyEndian();
   double (*load)(const void*) = nrrdDLoad[n->type];
-  std::vector<char> buf(kChunkBytes);
-  std::vector<double> vals(kChunkBytes / tsize);
-  auto convert = [&](std::size_t got) {
-    const std::size_t m = got / tsize;
-    for (std::size_t i = 0; i < m; ++i) {
-      char* p = buf.data() + i * tsize;
-      if (swap) std::reverse(p, p + tsize);
-      vals[i] = load(p);
-    }
-    consume(vals.data(), m);
-  };
+  const std::size_t chunkValues = std::max<std::size_t>(1, kChunkBytes / (tsize * record)) * record;
+  std::vector<char> buf(chunkValues * tsize);
+  std::vector<double> vals(chunkValues);
   auto truncated = [&](std::uint64_t done) {
     fail(path, "data is truncated: the header describes " + std::to_string(bytes) + " bytes, the data ends after " +
                    std::to_string(done));
   };
 
-  if (nio->encoding == nrrdEncodingRaw) {
-    if (bytes > avail) truncated(avail);
-    for (std::uint64_t done = 0; done < bytes;) {
-      const std::size_t want = std::size_t(std::min<std::uint64_t>(kChunkBytes, bytes - done));
-      if (std::fread(buf.data(), 1, want, file) != want) truncated(done);
-      convert(want);
-      done += want;
-    }
-  } else if (nio->encoding == nrrdEncodingGzip) {
-    if (bytes > avail * kMaxGzipRatio) fail(path, "header describes more data than the gzip stream can hold");
-    // zlib reads the descriptor from its own offset, so hand it a duplicate
-    // positioned where stdio's buffered position says the data begins.
-    const int fd = dup(fileno(file));
-    if (fd < 0 || lseek(fd, pos, SEEK_SET) != pos) fail(path, "cannot reopen the data file");
-    gzFile gz = gzdopen(fd, "rb");
-    if (!gz) {
-      close(fd);
-      fail(path, "cannot open the gzip stream");
-    }
-    std::unique_ptr<gzFile_s, int (*)(gzFile)> guard(gz, gzclose);
-    gzbuffer(gz, 1 << 18);
-    // zlib passes non-gzip bytes through unchanged; the header said gzip.
-    if (gzdirect(gz)) fail(path, "gzip data is corrupt: no gzip stream where the data begins");
-    for (long skip = nio->byteSkip; skip > 0;) {
-      const int got = gzread(gz, buf.data(), unsigned(std::min<long>(skip, long(buf.size()))));
-      if (got <= 0) fail(path, "gzip data ends inside the byte skip");
-      skip -= got;
-    }
-    for (std::uint64_t done = 0; done < bytes;) {
-      const std::size_t want = std::size_t(std::min<std::uint64_t>(kChunkBytes, bytes - done));
-      const int got = gzread(gz, buf.data(), unsigned(want));
-      if (got < 0) {
-        int code = 0;
-        fail(path, std::string("gzip data is corrupt: ") + gzerror(gz, &code));
-      }
-      if (std::size_t(got) != want) truncated(done + std::uint64_t(got));
-      convert(want);
-      done += want;
-    }
-  } else if (nio->encoding == nrrdEncodingBzip2) {
-    int err = BZ_OK;
-    BZFILE* bz = BZ2_bzReadOpen(&err, file, 0, 0, nullptr, 0);
-    if (err != BZ_OK) fail(path, "cannot open the bzip2 stream");
-    auto closeBz = [&] {
-      int e2;
-      BZ2_bzReadClose(&e2, bz);
-    };
-    auto readBz = [&](char* dst, std::size_t want) {
-      const int got = BZ2_bzRead(&err, bz, dst, int(want));
-      if (err != BZ_OK && err != BZ_STREAM_END) {
-        closeBz();
-        fail(path, "bzip2 data is corrupt (libbz2 error " + std::to_string(err) + ")");
-      }
-      return std::size_t(std::max(got, 0));
-    };
-    for (long skip = nio->byteSkip; skip > 0;) {
-      const std::size_t got = readBz(buf.data(), std::size_t(std::min<long>(skip, long(buf.size()))));
-      if (got == 0) {
-        closeBz();
-        fail(path, "bzip2 data ends inside the byte skip");
-      }
-      skip -= long(got);
-    }
-    for (std::uint64_t done = 0; done < bytes;) {
-      const std::size_t want = std::size_t(std::min<std::uint64_t>(kChunkBytes, bytes - done));
-      std::size_t got = 0;
-      while (got < want) {
-        const std::size_t g = readBz(buf.data() + got, want - got);
-        if (g == 0) break;
-        got += g;
-      }
-      if (got != want) {
-        closeBz();
-        truncated(done + got);
-      }
-      convert(want);
-      done += want;
-    }
-    closeBz();
-  } else if (nio->encoding == nrrdEncodingAscii || nio->encoding == nrrdEncodingHex) {
+  if (nio->encoding == nrrdEncodingAscii || nio->encoding == nrrdEncodingHex) {
     // Text holds at least one byte per value (two per byte in hex).
     const std::uint64_t need = nio->encoding == nrrdEncodingHex ? 2 * bytes : count;
     if (need > avail) truncated(avail);
@@ -190,7 +120,6 @@ void decode(const std::string& path, Header& h, std::uint64_t count, Consume&& c
       std::clearerr(file);
       std::fseek(file, pos, SEEK_SET);
     }
-    const std::size_t chunkValues = kChunkBytes / tsize;
     for (std::uint64_t done = 0; done < count;) {
       const std::size_t want = std::size_t(std::min<std::uint64_t>(chunkValues, count - done));
       if (nio->encoding->read(file, buf.data(), want, n, nio)) fail(path, teemNrrdError());
@@ -198,16 +127,92 @@ void decode(const std::string& path, Header& h, std::uint64_t count, Consume&& c
       consume(vals.data(), want);
       done += want;
     }
+    return;
+  }
+
+  // Binary encodings: one reader per encoding, one chunk loop for all.
+  ByteReader read;
+  std::unique_ptr<gzFile_s, GzCloser> gz;
+  BzStream bz;
+  if (nio->encoding == nrrdEncodingRaw) {
+    if (bytes > avail) truncated(avail);  // byte skip was applied by Teem
+    read = [&](char* dst, std::size_t want) { return std::fread(dst, 1, want, file); };
+  } else if (nio->encoding == nrrdEncodingGzip) {
+    if (bytes > avail * kMaxGzipRatio) fail(path, "header describes more data than the gzip stream can hold");
+    // zlib reads the descriptor from its own offset, so hand it a duplicate
+    // positioned where stdio's buffered position says the data begins.
+    const int fd = dup(fileno(file));
+    if (fd < 0 || lseek(fd, pos, SEEK_SET) != pos) fail(path, "cannot reopen the data file");
+    gz.reset(gzdopen(fd, "rb"));
+    if (!gz) {
+      close(fd);
+      fail(path, "cannot open the gzip stream");
+    }
+    gzbuffer(gz.get(), 1 << 18);
+    // zlib passes non-gzip bytes through unchanged; the header said gzip.
+    if (gzdirect(gz.get())) fail(path, "gzip data is corrupt: no gzip stream where the data begins");
+    read = [&](char* dst, std::size_t want) {
+      const int got = gzread(gz.get(), dst, unsigned(want));
+      int code = 0;
+      if (got < 0) fail(path, std::string("gzip data is corrupt: ") + gzerror(gz.get(), &code));
+      return std::size_t(got);
+    };
+  } else if (nio->encoding == nrrdEncodingBzip2) {
+    bz.bz = BZ2_bzReadOpen(&bz.err, file, 0, 0, nullptr, 0);
+    if (bz.err != BZ_OK) fail(path, "cannot open the bzip2 stream");
+    read = [&](char* dst, std::size_t want) {
+      std::size_t got = 0;
+      while (got < want && bz.err != BZ_STREAM_END) {  // bzip2 returns short reads mid-stream
+        const int g = BZ2_bzRead(&bz.err, bz.bz, dst + got, int(want - got));
+        if (bz.err != BZ_OK && bz.err != BZ_STREAM_END)
+          fail(path, "bzip2 data is corrupt (libbz2 error " + std::to_string(bz.err) + ")");
+        got += std::size_t(std::max(g, 0));
+      }
+      return got;
+    };
   } else {
     fail(path, std::string("encoding ") + nio->encoding->name + " is not supported");
   }
+  // Compressed encodings skip bytes inside the decompressed stream.
+  for (long skip = nio->encoding->isCompression ? nio->byteSkip : 0; skip > 0;) {
+    const std::size_t got = read(buf.data(), std::size_t(std::min<long>(skip, long(buf.size()))));
+    if (got == 0) fail(path, "data ends inside the byte skip");
+    skip -= long(got);
+  }
+  const bool swap = nio->encoding->endianMatters && tsize > 1 && nio->endian != airMyEndian();
+  for (std::uint64_t done = 0; done < bytes;) {
+    const std::size_t want = std::size_t(std::min<std::uint64_t>(buf.size(), bytes - done));
+    const std::size_t got = read(buf.data(), want);
+    if (got != want) truncated(done + got);
+    const std::size_t m = want / tsize;
+    for (std::size_t i = 0; i < m; ++i) {
+      char* p = buf.data() + i * tsize;
+      if (swap) std::reverse(p, p + tsize);
+      vals[i] = load(p);
+    }
+    consume(vals.data(), m);
+    done += want;
+  }
+}
+
+// The three spatial axes' sizes from axis `first` on (1 beyond the last axis).
+std::uint64_t gridDims(const std::string& path, const Nrrd* n, unsigned first, int dims[3]) {
+  std::uint64_t voxels = 1;
+  for (unsigned k = 0; k < 3; ++k) {
+    const std::size_t size = first + k < n->dim ? n->axis[first + k].size : 1;
+    if (size > std::size_t(INT32_MAX)) fail(path, "axis " + std::to_string(first + k) + " is too long");
+    dims[k] = int(size);
+    voxels *= size;
+  }
+  if (voxels > UINT32_MAX) fail(path, "more than 2^32-1 voxels");
+  return voxels;
 }
 
 // Index -> WC from space directions, or for old headers from axis
 // spacings or mins/maxs (Teem's nrrdAxisInfoPos honours the centering).
 VolumeGeometry geometry(const std::string& path, const Nrrd* n, unsigned first, TensorField& f) {
   VolumeGeometry g;
-  for (unsigned k = 0; k < 3; ++k) g.dims[k] = first + k < n->dim ? int(n->axis[first + k].size) : 1;
+  gridDims(path, n, first, g.dims);
   if (n->spaceDim == 3) {
     for (unsigned k = 0; k < 3 && first + k < n->dim; ++k) {
       const double* d = n->axis[first + k].spaceDirection;
@@ -276,7 +281,6 @@ TensorField readNrrd(const std::string& path, const ReadOptions& opt) {
   const ComponentLayout layout = layoutOf(path, n, f);
   VolumeGeometry g = geometry(path, n, 1, f);
   const std::uint64_t voxels = std::uint64_t(g.dims[0]) * std::uint64_t(g.dims[1]) * std::uint64_t(g.dims[2]);
-  if (voxels > UINT32_MAX) fail(path, "more than 2^32-1 voxels");
 
   // World space: RAS, with LPS and LAS turned into it; others as given.
   double flip[3] = {1, 1, 1};
@@ -316,17 +320,8 @@ TensorField readNrrd(const std::string& path, const ReadOptions& opt) {
       values * nrrdTypeSize[n->type] <= bytesAfterHeader(*h))
     f.reserve(std::size_t(voxels));
   VolumeSink sink(f, g, layout, sel, opt.selection.confidenceMin);
-  std::vector<double> pending;  // a voxel split across two chunks
-  decode(path, *h, values, [&](const double* v, std::size_t m) {
-    std::size_t i = 0;
-    if (!pending.empty()) {
-      while (pending.size() < std::size_t(layout.count) && i < m) pending.push_back(v[i++]);
-      if (pending.size() < std::size_t(layout.count)) return;
-      sink.push(pending.data());
-      pending.clear();
-    }
-    for (; i + layout.count <= m; i += layout.count) sink.push(v + i);
-    pending.assign(v + i, v + m);
+  decode(path, *h, values, std::size_t(layout.count), [&](const double* v, std::size_t m) {
+    for (std::size_t i = 0; i < m; i += std::size_t(layout.count)) sink.push(v + i);
   });
   sink.finish();
   if (layout.full && sink.maxAsymmetry() > 1e-3)
@@ -340,13 +335,8 @@ ScalarVolume readNrrdScalar(const std::string& path) {
   Nrrd* n = h->nrrd;
   if (n->dim != 3) fail(path, "a mask must have 3 axes, this has " + std::to_string(n->dim));
   ScalarVolume v;
-  std::uint64_t voxels = 1;
-  for (int k = 0; k < 3; ++k) {
-    v.dims[k] = int(n->axis[k].size);
-    voxels *= n->axis[k].size;
-  }
-  if (voxels > UINT32_MAX) fail(path, "more than 2^32-1 voxels");
-  decode(path, *h, voxels, [&](const double* x, std::size_t m) {
+  const std::uint64_t voxels = gridDims(path, n, 0, v.dims);
+  decode(path, *h, voxels, 1, [&](const double* x, std::size_t m) {
     for (std::size_t i = 0; i < m; ++i) v.values.push_back(float(x[i]));
   });
   return v;

@@ -15,16 +15,13 @@ void writeNrrd(const TensorField& f, const std::string& path, const double m[9])
   const std::size_t n = std::size_t(g.dims[0]) * g.dims[1] * g.dims[2];
   if (n != f.size()) throw std::runtime_error("writeNrrd: " + path + ": grid is incomplete");
   // Into the measurement frame: D_stored = Mᵀ D_world M.
+  const double mt[9] = {m[0], m[3], m[6], m[1], m[4], m[7], m[2], m[5], m[8]};
   std::vector<float> data(6 * n);
   for (std::size_t i = 0; i < n; ++i) {
-    const float* t = &f.tensors[6 * i];
-    const double d[3][3] = {{t[0], t[1], t[2]}, {t[1], t[3], t[4]}, {t[2], t[4], t[5]}};
-    double s[3][3] = {};
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c)
-        for (int a = 0; a < 3; ++a)
-          for (int b = 0; b < 3; ++b) s[r][c] += m[a * 3 + r] * d[a][b] * m[b * 3 + c];
-    const double out[6] = {s[0][0], s[0][1], s[0][2], s[1][1], s[1][2], s[2][2]};
+    const double d[6] = {f.tensors[6 * i], f.tensors[6 * i + 1], f.tensors[6 * i + 2],
+                         f.tensors[6 * i + 3], f.tensors[6 * i + 4], f.tensors[6 * i + 5]};
+    double out[6];
+    congruence(mt, d, out);
     for (int k = 0; k < 6; ++k) data[6 * i + k] = float(out[k]);
   }
   Nrrd* nrrd = nrrdNew();

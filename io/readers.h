@@ -34,6 +34,9 @@ TensorField readNrrd(const std::string& path, const ReadOptions& opt);
 // frame; both are rotated into the world by the affine's orthogonal part.
 // "mrtrix" tensors are already in the world (scanner) frame.
 TensorField readNifti(const std::string& path, const ReadOptions& opt);
+// The --layout names readNifti knows, for checking a command line early.
+bool isNiftiLayout(const std::string& name);
+inline constexpr const char* kNiftiLayoutChoices = "fsl, nifti, mrtrix or vtk";
 
 // Scalar volumes, for masks.
 ScalarVolume readNrrdScalar(const std::string& path);

@@ -95,12 +95,21 @@ Selector::Verdict Selector::judge(std::uint64_t index, const double p[3]) const 
   return Verdict::Keep;
 }
 
+bool Selector::admitJudged(std::uint64_t index, const double p[3], TensorField& f) const {
+  const Verdict verdict = judge(index, p);
+  if (verdict == Verdict::Keep) return true;
+  ++f.totalPoints;
+  ++(verdict == Verdict::Masked ? f.masked : f.unselected);
+  return false;
+}
+
 void applySelection(TensorField& f, const Selection& sel) {
   const Selector selector(sel, f.path, f.grid ? f.grid->dims : nullptr);
   if (selector.selectsAll()) return;
   std::size_t w = 0;
   for (std::size_t i = 0; i < f.size(); ++i) {
     const double p[3] = {f.positions[3 * i], f.positions[3 * i + 1], f.positions[3 * i + 2]};
+    // Already counted in totalPoints when it was added; only the reason is new.
     const auto verdict = selector.judge(f.ids[i], p);
     if (verdict != Selector::Verdict::Keep) {
       ++(verdict == Selector::Verdict::Masked ? f.masked : f.unselected);

@@ -51,9 +51,16 @@ class Selector {
   // a mask of another size, a slice of a point set).
   Selector(const Selection& sel, const std::string& path, const int* dims);
   Verdict judge(std::uint64_t index, const double pWC[3]) const;
+  // judge() for a reader: true to keep the sample; otherwise counts it in
+  // f (total and masked or unselected) and returns false.
+  // Inline for the per-voxel common case, selecting everything.
+  bool admit(std::uint64_t index, const double pWC[3], TensorField& f) const {
+    return all_ || admitJudged(index, pWC, f);
+  }
   bool selectsAll() const { return all_; }
 
  private:
+  bool admitJudged(std::uint64_t index, const double pWC[3], TensorField& f) const;
   Selection sel_;
   int dims_[3] = {0, 0, 0};
   bool grid_ = false, all_ = true;

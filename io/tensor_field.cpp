@@ -7,7 +7,8 @@
 namespace tg::io {
 
 void TensorField::addFull(std::uint32_t id, const double p[3], const double t[9]) {
-  const double sym[6] = {t[0], 0.5 * (t[1] + t[3]), 0.5 * (t[2] + t[6]), t[4], 0.5 * (t[5] + t[7]), t[8]};
+  double sym[6];
+  symmetricPart(t, sym);
   for (int k = 0; k < 9; ++k)
     if (!std::isfinite(t[k])) {
       ++totalPoints;
@@ -29,6 +30,21 @@ void TensorField::addSym(std::uint32_t id, const double p[3], const double s[6])
   for (int k = 0; k < 3; ++k) positions.push_back(float(p[k]));
   for (int k = 0; k < 6; ++k) tensors.push_back(float(s[k]));
   ids.push_back(id);
+}
+
+void symmetricPart(const double t[9], double s[6]) {
+  s[0] = t[0], s[1] = 0.5 * (t[1] + t[3]), s[2] = 0.5 * (t[2] + t[6]);
+  s[3] = t[4], s[4] = 0.5 * (t[5] + t[7]), s[5] = t[8];
+}
+
+void congruence(const double t[9], const double s[6], double out[6]) {
+  const double d[9] = {s[0], s[1], s[2], s[1], s[3], s[4], s[2], s[4], s[5]};
+  double td[9];  // T D
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) td[3 * r + c] = t[3 * r] * d[c] + t[3 * r + 1] * d[3 + c] + t[3 * r + 2] * d[6 + c];
+  auto tdt = [&](int r, int c) { return td[3 * r] * t[3 * c] + td[3 * r + 1] * t[3 * c + 1] + td[3 * r + 2] * t[3 * c + 2]; };
+  const double w[6] = {tdt(0, 0), tdt(0, 1), tdt(0, 2), tdt(1, 1), tdt(1, 2), tdt(2, 2)};
+  std::copy(w, w + 6, out);
 }
 
 double estimateSampleSpacing(const std::vector<float>& pos) {

@@ -62,6 +62,12 @@ struct TensorField {
   }
 };
 
+// (D + Dᵀ)/2 of a row-major 3x3 as xx xy xz yy yz zz.
+void symmetricPart(const double t9[9], double s6[6]);
+// T S Tᵀ for a symmetric S (xx xy xz yy yz zz) and a row-major 3x3 T: a
+// tensor carried from one frame into another.
+void congruence(const double t[9], const double s6[6], double out6[6]);
+
 // Median nearest-neighbour distance over a sample of up to 512 points.
 double estimateSampleSpacing(const std::vector<float>& positions);
 

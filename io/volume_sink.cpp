@@ -16,7 +16,8 @@ VolumeSink::VolumeSink(TensorField& f, const VolumeGeometry& g, const ComponentL
 
 void VolumeSink::push(const double* v) {
   const std::uint64_t index = next_++;
-  const int ijk[3] = {ijk_[0], ijk_[1], ijk_[2]};
+  double p[3];
+  positionWC(g_, ijk_, p);
   if (++ijk_[0] == g_.dims[0]) {
     ijk_[0] = 0;
     if (++ijk_[1] == g_.dims[1]) {
@@ -24,26 +25,29 @@ void VolumeSink::push(const double* v) {
       ++ijk_[2];
     }
   }
-  if (!sel_.selectsAll()) {
-    double p[3];
-    positionWC(g_, ijk, p);
-    const Selector::Verdict verdict = sel_.judge(index, p);
-    if (verdict != Selector::Verdict::Keep) {
-      ++f_.totalPoints;
-      ++(verdict == Selector::Verdict::Masked ? f_.masked : f_.unselected);
-      return;
-    }
-  }
-  emit(index, ijk, v);
+  if (sel_.admit(index, p, f_)) emit(index, p, v);
 }
 
-void VolumeSink::pushSelected(std::uint64_t index, const double* v) {
+void VolumeSink::positionOf(std::uint64_t index, double p[3]) const {
   const std::uint64_t nx = std::uint64_t(g_.dims[0]), ny = std::uint64_t(g_.dims[1]);
   const int ijk[3] = {int(index % nx), int(index / nx % ny), int(index / (nx * ny))};
-  emit(index, ijk, v);
+  positionWC(g_, ijk, p);
 }
 
-void VolumeSink::emit(std::uint64_t index, const int ijk[3], const double* v) {
+bool VolumeSink::accept(std::uint64_t index) {
+  if (sel_.selectsAll()) return true;
+  double p[3];
+  positionOf(index, p);
+  return sel_.admit(index, p, f_);
+}
+
+void VolumeSink::pushAccepted(std::uint64_t index, const double* v) {
+  double p[3];
+  positionOf(index, p);
+  emit(index, p, v);
+}
+
+void VolumeSink::emit(std::uint64_t index, const double p[3], const double* v) {
   // A NaN confidence is not >= the threshold either: masked.
   if (layout_.confidence >= 0 && !(v[layout_.confidence] >= confidenceMin_)) {
     ++f_.totalPoints;
@@ -52,27 +56,15 @@ void VolumeSink::emit(std::uint64_t index, const int ijk[3], const double* v) {
   }
   double s[6];
   if (layout_.full) {
-    s[0] = v[0], s[1] = 0.5 * (v[1] + v[3]), s[2] = 0.5 * (v[2] + v[6]);
-    s[3] = v[4], s[4] = 0.5 * (v[5] + v[7]), s[5] = v[8];
+    symmetricPart(v, s);
     const double asym = std::max({std::abs(v[1] - v[3]), std::abs(v[2] - v[6]), std::abs(v[5] - v[7])});
-    const double norm = std::max({std::abs(v[0]), std::abs(v[4]), std::abs(v[8]), std::abs(s[1]), std::abs(s[2]),
-                                  std::abs(s[4])});
+    const double norm = std::max({std::abs(s[0]), std::abs(s[1]), std::abs(s[2]), std::abs(s[3]), std::abs(s[4]),
+                                  std::abs(s[5])});
     if (asym > 0 && norm > 0) maxAsym_ = std::max(maxAsym_, asym / norm);
   } else {
     for (int k = 0; k < 6; ++k) s[k] = v[layout_.sym[k]];
   }
-  if (g_.tensorToWC) {
-    const double* t = g_.tensorToWC->data();
-    const double d[9] = {s[0], s[1], s[2], s[1], s[3], s[4], s[2], s[4], s[5]};
-    double td[9];  // T D
-    for (int r = 0; r < 3; ++r)
-      for (int c = 0; c < 3; ++c) td[3 * r + c] = t[3 * r] * d[c] + t[3 * r + 1] * d[3 + c] + t[3 * r + 2] * d[6 + c];
-    auto tdt = [&](int r, int c) { return td[3 * r] * t[3 * c] + td[3 * r + 1] * t[3 * c + 1] + td[3 * r + 2] * t[3 * c + 2]; };
-    const double w[6] = {tdt(0, 0), tdt(0, 1), tdt(0, 2), tdt(1, 1), tdt(1, 2), tdt(2, 2)};
-    std::copy(w, w + 6, s);
-  }
-  double p[3];
-  positionWC(g_, ijk, p);
+  if (g_.tensorToWC) congruence(g_.tensorToWC->data(), s, s);
   f_.addSym(std::uint32_t(index), p, s);
 }
 
@@ -91,14 +83,17 @@ void VolumeSink::finish() {
   f_.sampleSpacing = std::isfinite(minSpacing) ? minSpacing : estimateSampleSpacing(f_.positions);
 }
 
+double determinant3(const double a[9]) {
+  return a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) + a[2] * (a[3] * a[7] - a[4] * a[6]);
+}
+
 std::array<double, 9> orthogonalPart(const double m[9]) {
   std::array<double, 9> q;
   std::copy(m, m + 9, q.begin());
   for (int iter = 0; iter < 100; ++iter) {
     // Q <- (Q + Q^-T) / 2
     const double* a = q.data();
-    const double det = a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) +
-                       a[2] * (a[3] * a[7] - a[4] * a[6]);
+    const double det = determinant3(a);
     if (!(std::abs(det) > 0)) break;
     // Inverse-transpose = cofactor matrix / det.
     const double cof[9] = {a[4] * a[8] - a[5] * a[7], a[5] * a[6] - a[3] * a[8], a[3] * a[7] - a[4] * a[6],

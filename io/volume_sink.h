@@ -34,16 +34,20 @@ class VolumeSink {
              double confidenceMin);
   // The next voxel's `layout.count` values, in file order.
   void push(const double* v);
-  // Voxel `index`'s values, for readers that decide the selection themselves
-  // (see Selector) and then deliver only the kept voxels.
-  void pushSelected(std::uint64_t index, const double* v);
+  // For readers that learn a voxel's values out of order (NIfTI stores one
+  // volume per component): accept() decides, before any data, whether voxel
+  // `index` is kept, counting it if not; pushAccepted() then delivers a kept
+  // voxel's values.
+  bool accept(std::uint64_t index);
+  void pushAccepted(std::uint64_t index, const double* v);
   // Fills f.grid and f.sampleSpacing from the geometry.
   void finish();
   // Asymmetric 3D-matrix input: the largest |D - Dᵀ| / |D| seen.
   double maxAsymmetry() const { return maxAsym_; }
 
  private:
-  void emit(std::uint64_t index, const int ijk[3], const double* v);
+  void positionOf(std::uint64_t index, double pWC[3]) const;
+  void emit(std::uint64_t index, const double pWC[3], const double* v);
   TensorField& f_;
   VolumeGeometry g_;
   ComponentLayout layout_;
@@ -53,6 +57,8 @@ class VolumeSink {
   int ijk_[3] = {0, 0, 0};
   double maxAsym_ = 0;
 };
+
+double determinant3(const double m[9]);  // row-major
 
 // Polar decomposition's rotation (or rotation-reflection, if det < 0) of a
 // row-major 3x3, which strips scaling and shear from an affine's linear part

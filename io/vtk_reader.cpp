@@ -37,16 +37,30 @@ namespace {
 }
 
 // Collects the first error a VTK algorithm raises instead of letting VTK print it.
-struct ErrorSink {
-  std::string first;
+// Collects the first error an algorithm raises instead of letting VTK print
+// it; attached for as long as the sink lives.
+class ErrorSink {
+ public:
+  explicit ErrorSink(vtkAlgorithm* algorithm) {
+    cb_->SetCallback(&ErrorSink::onEvent);
+    cb_->SetClientData(this);
+    algorithm->AddObserver(vtkCommand::ErrorEvent, cb_);
+  }
+  ErrorSink(const ErrorSink&) = delete;
+  ErrorSink& operator=(const ErrorSink&) = delete;
+  const std::string& first() const { return first_; }
+
+ private:
   static void onEvent(vtkObject*, unsigned long, void* self, void* callData) {
     auto* sink = static_cast<ErrorSink*>(self);
-    if (sink->first.empty() && callData) {
+    if (sink->first_.empty() && callData) {
       std::string msg(static_cast<const char*>(callData));
       msg.erase(std::remove(msg.begin(), msg.end(), '\n'), msg.end());
-      sink->first = msg;
+      sink->first_ = msg;
     }
   }
+  std::string first_;
+  vtkNew<vtkCallbackCommand> cb_;
 };
 
 // VTK's own objects below the reader report through the global output window;
@@ -141,15 +155,11 @@ void checkLegacyCounts(const std::string& path, std::uint64_t fileSize) {
 
 vtkSmartPointer<vtkDataSet> runReader(vtkAlgorithm* reader, const std::string& path, std::uint64_t fileSize,
                                       bool xml) {
-  ErrorSink sink;
-  vtkNew<vtkCallbackCommand> cb;
-  cb->SetCallback(&ErrorSink::onEvent);
-  cb->SetClientData(&sink);
-  reader->AddObserver(vtkCommand::ErrorEvent, cb);
+  const ErrorSink sink(reader);
   QuietVtk quiet;
   if (xml) {
     reader->UpdateInformation();
-    if (!sink.first.empty() || reader->GetErrorCode()) fail(path, sink.first.empty() ? "unreadable XML header" : sink.first);
+    if (!sink.first().empty() || reader->GetErrorCode()) fail(path, sink.first().empty() ? "unreadable XML header" : sink.first());
     vtkInformation* info = reader->GetOutputInformation(0);
     std::uint64_t points = 0;
     if (info && info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT())) {
@@ -164,7 +174,7 @@ vtkSmartPointer<vtkDataSet> runReader(vtkAlgorithm* reader, const std::string& p
     if (points > fileSize * 1032) fail(path, "header claims " + std::to_string(points) + " points, more than the file can hold");
   }
   reader->Update();
-  if (!sink.first.empty() || reader->GetErrorCode()) fail(path, sink.first.empty() ? "VTK reader failed" : sink.first);
+  if (!sink.first().empty() || reader->GetErrorCode()) fail(path, sink.first().empty() ? "VTK reader failed" : sink.first());
   auto* out = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
   if (!out) fail(path, "no dataset in file");
   return out;
@@ -286,16 +296,12 @@ void checkVtkLegacyHeader(const std::string& path) {
   struct stat st {};
   if (stat(path.c_str(), &st) != 0) fail(path, "cannot open file");
   checkLegacyCounts(path, std::uint64_t(st.st_size));
-  ErrorSink sink;
-  vtkNew<vtkCallbackCommand> cb;
-  cb->SetCallback(&ErrorSink::onEvent);
-  cb->SetClientData(&sink);
   vtkNew<vtkDataSetReader> r;
-  r->AddObserver(vtkCommand::ErrorEvent, cb);
+  const ErrorSink sink(r);
   QuietVtk quiet;
   r->SetFileName(path.c_str());
-  if (r->ReadOutputType() < 0 || !sink.first.empty())
-    fail(path, sink.first.empty() ? "not a legacy VTK dataset" : sink.first);
+  if (r->ReadOutputType() < 0 || !sink.first().empty())
+    fail(path, sink.first().empty() ? "not a legacy VTK dataset" : sink.first());
 }
 
 ScalarVolume readVtiScalar(const std::string& path) {
@@ -336,30 +342,18 @@ TensorField readVtk(const std::string& path, const ReadOptions& opt) {
   const Selector sel(opt.selection, path, image ? image->GetDimensions() : nullptr);
   if (sel.selectsAll()) f.reserve(std::size_t(n));
   const bool six = arr && arr->GetNumberOfComponents() == 6;
-  double p[3], t[9], full[9];
+  double p[3], t[9];
   for (vtkIdType i = 0; i < n; ++i) {
     ds->GetPoint(i, p);
-    if (!sel.selectsAll()) {
-      const auto verdict = sel.judge(std::uint64_t(i), p);
-      if (verdict != Selector::Verdict::Keep) {
-        ++f.totalPoints;
-        ++(verdict == Selector::Verdict::Masked ? f.masked : f.unselected);
-        continue;
-      }
-    }
+    if (!sel.admit(std::uint64_t(i), p, f)) continue;
     if (!arr) {
-      std::copy_n(&trailer[9 * std::size_t(i)], 9, full);
+      f.addFull(std::uint32_t(i), p, &trailer[9 * std::size_t(i)]);
+    } else if (arr->GetTuple(i, t); six) {  // VTK's symmetric order: XX YY ZZ XY YZ XZ
+      const double full[9] = {t[0], t[3], t[5], t[3], t[1], t[4], t[5], t[4], t[2]};
       f.addFull(std::uint32_t(i), p, full);
-      continue;
-    }
-    arr->GetTuple(i, t);
-    if (six) {  // VTK's symmetric order: XX YY ZZ XY YZ XZ
-      const double m[9] = {t[0], t[3], t[5], t[3], t[1], t[4], t[5], t[4], t[2]};
-      std::copy(m, m + 9, full);
     } else {
-      std::copy(t, t + 9, full);
+      f.addFull(std::uint32_t(i), p, t);
     }
-    f.addFull(std::uint32_t(i), p, full);
   }
   if (auto* img = image) {
     GridInfo g;

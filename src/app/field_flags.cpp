@@ -65,9 +65,8 @@ void FieldFlags::addTo(OIIO::ArgParse& ap, bool scaling) {
 void FieldFlags::validate() const {
   const io::Selection& sel = read.selection;
   if (sel.stride < 1 || sel.stride > 1000000) throw UsageError("--stride must be within 1..1000000");
-  if (!read.layout.empty() && read.layout != "fsl" && read.layout != "nifti" && read.layout != "mrtrix" &&
-      read.layout != "vtk")
-    throw UsageError("--layout: unknown layout \"" + read.layout + "\"; choose fsl, nifti, mrtrix or vtk");
+  if (!read.layout.empty() && !io::isNiftiLayout(read.layout))
+    throw UsageError("--layout: unknown layout \"" + read.layout + "\"; choose " + io::kNiftiLayoutChoices);
   if (!(glyph.clMin >= 0 && glyph.clMin <= 1)) throw UsageError("--cl-min must be within 0..1");
   if (!(glyph.cpMin >= 0 && glyph.cpMin <= 1)) throw UsageError("--cp-min must be within 0..1");
   if (scale && !(*scale > 0.0)) throw UsageError("--scale must be positive");

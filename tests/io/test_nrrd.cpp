@@ -228,3 +228,15 @@ TEST(Nrrd, NonFiniteTensorsAreSkippedAndCounted) {
   EXPECT_EQ(f.skippedNonFinite, 2u);
   EXPECT_EQ(f.totalPoints, 3u);
 }
+
+TEST(Nrrd, DataSpanningManyChunksReadsBackExactly) {
+  // 400k tensors of 6 floats are 9.6 MB: several 4 MiB decode chunks, whose
+  // boundaries must never split or drop a voxel.
+  constexpr std::size_t n = 400000;
+  const fs::path p = tmpDir() / "many.nhdr";
+  synth::writeRandomNrrdStreaming(p.string(), n, 3);
+  const io::TensorField f = io::readTensorField(p.string(), {});
+  const io::TensorField expect = synth::randomField(n, 3);
+  ASSERT_EQ(f.size(), expect.size());
+  EXPECT_EQ(f.tensors, expect.tensors);
+}
