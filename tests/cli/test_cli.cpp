@@ -11,32 +11,18 @@
 #include <sstream>
 #include <string>
 
+#include "cli/cli_run.h"
 #include "real_data.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CmdResult {
-  int code;
-  std::string err;
-};
+using tg::test::CmdResult;
 
-fs::path dir() {
-  const fs::path d = fs::temp_directory_path() / ("tg_test_cli_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
-}
+fs::path dir() { return tg::test::cliDir("cli"); }
 
-CmdResult run(const std::string& args) {
-  const fs::path errFile = dir() / "stderr.txt";
-  const std::string cmd = std::string(TG_BINARY) + " " + args + " 2>" + errFile.string() + " >/dev/null";
-  const int status = std::system(cmd.c_str());
-  std::ifstream in(errFile);
-  std::string err((std::istreambuf_iterator<char>(in)), {});
-  return {WEXITSTATUS(status), err};
-}
-
+CmdResult run(const std::string& args) { return tg::test::runBinary(args, dir()); }
 
 }  // namespace
 
@@ -140,14 +126,7 @@ TEST(Cli, BadInputFailsWithOneLineAndNoOutput) {
       {"render", "-o OUT"},
       {"info", "INPUT"},
       {"frobnicate", "unknown command"}};
-  for (const auto& [args, what] : cases) {
-    fs::remove(out);
-    const CmdResult r = run(args);
-    EXPECT_NE(r.code, 0) << args;
-    EXPECT_NE(r.err.find(what), std::string::npos) << args << " -> " << r.err;
-    EXPECT_LE(std::count(r.err.begin(), r.err.end(), '\n'), 4) << args << " -> " << r.err;
-    EXPECT_FALSE(fs::exists(out)) << args;
-  }
+  for (const auto& [args, what] : cases) tg::test::expectFailsCleanly(args, what, out, dir(), 4);
   // No temporary files left behind either.
   for (const auto& e : fs::directory_iterator(d)) EXPECT_EQ(e.path().filename().string().find(".tmp"), std::string::npos) << e.path();
 }

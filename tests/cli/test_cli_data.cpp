@@ -12,34 +12,18 @@
 #include <regex>
 #include <string>
 
+#include "cli/cli_run.h"
 #include "real_data.h"
 
 namespace fs = std::filesystem;
 
 namespace {
 
-struct CmdResult {
-  int code;
-  std::string out, err;
-};
+using tg::test::CmdResult;
 
-fs::path dir() {
-  const fs::path d = fs::temp_directory_path() / ("tg_test_cli_data_" + std::to_string(::getpid()));
-  fs::create_directories(d);
-  return d;
-}
+fs::path dir() { return tg::test::cliDir("cli_data"); }
 
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p);
-  return {std::istreambuf_iterator<char>(in), {}};
-}
-
-CmdResult run(const std::string& args) {
-  const fs::path out = dir() / "stdout.txt", err = dir() / "stderr.txt";
-  const std::string cmd = std::string(TG_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
-  const int status = std::system(cmd.c_str());
-  return {WEXITSTATUS(status), slurp(out), slurp(err)};
-}
+CmdResult run(const std::string& args) { return tg::test::runBinary(args, dir()); }
 
 // The number after `label` in `text` (e.g. "12 drawn" with label " drawn").
 long long countBefore(const std::string& text, const std::string& label) {
@@ -167,14 +151,7 @@ TEST(CliData, BadSelectionFailsBeforeRendering) {
       {"render " + in + " -o " + out.string() + " --mask " + otherGrid, "a mask must have 3 axes"},
       {"render " + tg::test::realData("slicer-fiber-tensors/fiber_vtk.vtk") + " -o " + out.string() + " --slice z:1",
        "needs a grid"}};
-  for (const auto& [args, what] : cases) {
-    fs::remove(out);
-    const CmdResult r = run(args);
-    EXPECT_NE(r.code, 0) << args;
-    EXPECT_NE(r.err.find(what), std::string::npos) << args << " -> " << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << " -> " << r.err;
-    EXPECT_FALSE(fs::exists(out)) << args;
-  }
+  for (const auto& [args, what] : cases) tg::test::expectFailsCleanly(args, what, out, dir(), 1);
 }
 
 TEST(CliData, LoadingStreamsWithinTwiceTheGlyphBuffer) {
