@@ -9,6 +9,8 @@
 #include <string>
 #include <vector>
 
+#include "util/huge_pages.h"
+
 namespace tg::io {
 
 // Bad input. what() is one line: "function: file: problem".
@@ -49,9 +51,9 @@ struct TensorField {
   // The same for a symmetric tensor given as xx xy xz yy yz zz.
   void addSym(std::uint32_t id, const double p[3], const double s6[6]);
   void reserve(std::size_t n) {
-    positions.reserve(3 * n);
-    tensors.reserve(6 * n);
-    ids.reserve(n);
+    util::reserveHuge(positions, 3 * n);
+    util::reserveHuge(tensors, 6 * n);
+    util::reserveHuge(ids, n);
   }
   // Frees positions, tensors and ids once glyphs have been built from them;
   // the counts and grid stay.

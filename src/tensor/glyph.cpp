@@ -11,6 +11,8 @@
 
 #include "tensor/anisotropy.h"
 #include "tensor/eigen.h"
+#include "tensor/lanes.h"
+#include "util/huge_pages.h"
 
 namespace tg::tensor {
 namespace {
@@ -23,36 +25,92 @@ struct Partial {
   double mdMax = -std::numeric_limits<double>::infinity();
 };
 
+// The unit quaternion (x, y, z, w) of the rotation whose columns are the
+// eigenvectors v[0..2]: Shepperd's method (J. Guidance 1(3), 1978), from the
+// largest of 4w², 4x², 4y², 4z² as glm::quat_cast picks it, with blends
+// instead of a switch so that it runs on lanes (lanes.h).
+template <class T>
+[[gnu::always_inline]] inline void frameQuaternion(const V3<T> v[3], T q[4]) {
+  const T fw = v[0].x + v[1].y + v[2].z, fx = v[0].x - v[1].y - v[2].z;
+  const T fy = v[1].y - v[0].x - v[2].z, fz = v[2].z - v[0].x - v[1].y;
+  const auto sx = fx > fw;
+  const T f1 = lmax(fw, fx);
+  const auto sy = fy > f1;
+  const T f2 = lmax(f1, fy);
+  const auto sz = fz > f2;
+  const T f = lmax(f2, fz);
+  // The last comparison that won picks the case, as glm's sequence of ifs.
+  const auto isZ = sz, isY = sy && !sz, isX = sx && !sy && !sz;
+  const T b = 0.5 * lsqrt(f + 1.0), mult = 0.25 / b;
+  const T wx = (v[1].z - v[2].y) * mult, wy = (v[2].x - v[0].z) * mult, wz = (v[0].y - v[1].x) * mult;
+  const T xy = (v[0].y + v[1].x) * mult, xz = (v[2].x + v[0].z) * mult, yz = (v[1].z + v[2].y) * mult;
+  const T x = isZ ? xz : isY ? xy : isX ? b : wx;
+  const T y = isZ ? yz : isY ? b : isX ? xy : wy;
+  const T z = isZ ? b : isY ? yz : isX ? xz : wz;
+  const T w = isZ ? wz : isY ? wy : isX ? wx : b;
+  const T inv = 1.0 / lsqrt(x * x + y * y + z * z + w * w);
+  q[0] = x * inv;
+  q[1] = y * inv;
+  q[2] = z * inv;
+  q[3] = w * inv;
+}
+
+// Records for tensors [begin, end), a block of kEigenBlock at a time: the
+// eigensystems and the per-glyph scalars run on SIMD lanes, then the
+// records are written one by one.
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
+__attribute__((target_clones("arch=x86-64-v3", "default")))
+#endif
 void buildRange(std::span<const float> pos, std::span<const float> ten,
                 std::span<const std::uint32_t> ids, std::size_t begin, std::size_t end,
                 GlyphRecord* out, Partial& p, const GlyphOptions& opt, char* dropped) {
-  for (std::size_t i = begin; i < end; ++i) {
-    const float* t = &ten[6 * i];
-    Eigensystem es = eigensolve({t[0], t[1], t[2], t[3], t[4], t[5]});
-    const Anisotropy an = anisotropy(es.values);
-    if (dropped && (an.cl < opt.clMin || an.cp < opt.cpMin)) dropped[i] = 1;
-    // Clamping keeps the descending order: max(., m) is monotonic.
-    if (opt.minEigenvalue) es.values = glm::max(es.values, glm::dvec3(*opt.minEigenvalue));
-    GlyphRecord& g = out[i];
-    for (int k = 0; k < 3; ++k) {
-      g.posWC[k] = pos[3 * i + k];
-      g.eigenvalues[k] = static_cast<float>(es.values[k]);
+  constexpr std::size_t B = kEigenBlock;
+  EigenBlock eb;
+  alignas(64) double md[B], fa[B], quat[4][B];
+  bool drop[B];
+  const Lanes4 clamp = splat<Lanes4>(opt.minEigenvalue ? *opt.minEigenvalue : -std::numeric_limits<double>::infinity());
+  for (std::size_t b = begin; b < end; b += B) {
+    const std::size_t n = std::min(B, end - b);
+    eigensolveBlock(&ten[6 * b], n, eb);
+    for (std::size_t k = 0; k < B; k += kLanes) {
+      Lanes4 l[3];
+      V3<Lanes4> v[3];
+      for (int i = 0; i < 3; ++i) {
+        l[i] = load4(&eb.values[i][k]);
+        v[i] = {load4(&eb.vectors[i][0][k]), load4(&eb.vectors[i][1][k]), load4(&eb.vectors[i][2][k])};
+      }
+      const AnisotropyOf<Lanes4> an = anisotropy(l[0], l[1], l[2]);
+      store4(&md[k], an.md);
+      store4(&fa[k], an.fa);
+      const auto dr = an.cl < opt.clMin || an.cp < opt.cpMin;
+      for (std::size_t j = 0; j < kLanes; ++j) drop[k + j] = dr[j] != 0;
+      // Clamping keeps the descending order: max(., m) is monotonic.
+      for (int i = 0; i < 3; ++i) store4(&eb.values[i][k], lmax(l[i], clamp));
+      Lanes4 q[4];
+      frameQuaternion(v, q);
+      for (int c = 0; c < 4; ++c) store4(&quat[c][k], q[c]);
     }
-    g.fa = static_cast<float>(an.fa);
-    g.id = ids.empty() ? static_cast<std::uint32_t>(i) : ids[i];
-    const glm::dmat3 r(es.vectors[0], es.vectors[1], es.vectors[2]);
-    const glm::dquat q = glm::normalize(glm::quat_cast(r));
-    g.frameWC[0] = static_cast<float>(q.x);
-    g.frameWC[1] = static_cast<float>(q.y);
-    g.frameWC[2] = static_cast<float>(q.z);
-    g.frameWC[3] = static_cast<float>(q.w);
-    if (dropped && dropped[i]) continue;  // compacted away; not in the bounds
-    const glm::dvec3 c(g.posWC[0], g.posWC[1], g.posWC[2]);
-    p.lo = glm::min(p.lo, c);
-    p.hi = glm::max(p.hi, c);
-    p.maxAbs = std::max({p.maxAbs, std::abs(es.values.x), std::abs(es.values.z)});
-    p.mdMin = std::min(p.mdMin, an.md);
-    p.mdMax = std::max(p.mdMax, an.md);
+    for (std::size_t k = 0; k < n; ++k) {
+      const std::size_t i = b + k;
+      GlyphRecord& g = out[i];
+      for (int c = 0; c < 3; ++c) {
+        g.posWC[c] = pos[3 * i + std::size_t(c)];
+        g.eigenvalues[c] = static_cast<float>(eb.values[c][k]);
+      }
+      g.fa = static_cast<float>(fa[k]);
+      g.id = ids.empty() ? static_cast<std::uint32_t>(i) : ids[i];
+      for (int c = 0; c < 4; ++c) g.frameWC[c] = static_cast<float>(quat[c][k]);
+      if (dropped) {
+        dropped[i] = drop[k];
+        if (drop[k]) continue;  // compacted away; not in the bounds
+      }
+      const glm::dvec3 c(g.posWC[0], g.posWC[1], g.posWC[2]);
+      p.lo = glm::min(p.lo, c);
+      p.hi = glm::max(p.hi, c);
+      p.maxAbs = std::max({p.maxAbs, std::abs(eb.values[0][k]), std::abs(eb.values[2][k])});
+      p.mdMin = std::min(p.mdMin, md[k]);
+      p.mdMax = std::max(p.mdMax, md[k]);
+    }
   }
 }
 
@@ -64,6 +122,7 @@ GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> te
   if (positions.size() != 3 * n || tensors.size() != 6 * n || (!ids.empty() && ids.size() != n))
     throw std::invalid_argument("buildGlyphs: positions, tensors and ids disagree in count");
   GlyphSet set;
+  util::reserveHuge(set.glyphs, n);
   set.glyphs.resize(n);
   const bool filtering = opt.clMin > 0 || opt.cpMin > 0;
   std::vector<char> dropped(filtering ? n : 0);

@@ -3,8 +3,10 @@
 #include <gtest/gtest.h>
 #include <teem/ell.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
@@ -112,4 +114,57 @@ TEST(Eigen, DiagonalIsUntouched) {
   EXPECT_EQ(es.values[1], 2.0);
   EXPECT_EQ(es.values[2], -1.0);
   expectValid(t, es);
+}
+
+// The lane kernel's root finder across the whole range of r = cos(3φ): the
+// middle eigenvalue sweeps from next to the smallest to next to the largest,
+// so r runs from -1 to 1 and both branches of the deflation are taken.
+TEST(Eigen, ClosedFormAcrossTheCubicsRange) {
+  for (int k = 0; k <= 400; ++k) {
+    const double mid = -0.99 + 2.98 * k / 400.0;  // in (-1, 2)
+    const glm::dvec3 l{2.0, mid, -1.0};
+    const SymTensor t = fromEigen(l, 0.3 + k, 0.9, -0.4 * k);
+    const Eigensystem es = eigensolve(t);
+    expectValid(t, es, 1e-12);
+    double sorted[3] = {l.x, l.y, l.z};
+    std::sort(sorted, sorted + 3, std::greater<>());
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(es.values[i], sorted[i], 1e-13) << "mid " << mid;
+  }
+}
+
+// eigensolveBlock must give eigensolve()'s results lane by lane, bit for bit
+// (one kernel text, no FMA contraction: CMakeLists.txt), whichever path each
+// lane takes (closed form, diagonal, Jacobi), for any count.
+TEST(Eigen, BlockAgreesWithScalarOnEveryPath) {
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<SymTensor> cases;
+  for (int k = 0; k < 120; ++k) cases.push_back({u(rng), u(rng), u(rng), u(rng), u(rng), u(rng)});
+  cases.push_back({});                                          // zero
+  cases.push_back({3, 0, 0, -1, 0, 2});                         // diagonal
+  cases.push_back({5, 0, 0, 5, 0, 5});                          // isotropic
+  cases.push_back(fromEigen({2, 1, 1}, 0.3, 1.1, -0.7));        // double eigenvalue
+  cases.push_back(fromEigen({1, 1e-12, -0.5}, 0.2, 0.4, 0.6));  // near-zero eigenvalue
+  cases.push_back(fromEigen({1e-30, 5e-31, 1e-31}, 1, 2, 3));   // tiny
+  cases.push_back(fromEigen({1e30, -5e29, 1e29}, 3, 2, 1));     // huge
+  for (int k = 0; k < 20; ++k) cases.push_back(cases[std::size_t(k) * 7 % cases.size()]);
+  std::vector<float> flat;
+  for (const SymTensor& t : cases)
+    for (double c : {t.xx, t.xy, t.xz, t.yy, t.yz, t.zz}) flat.push_back(float(c));
+  const std::size_t total = cases.size();
+  tg::tensor::EigenBlock block;
+  for (std::size_t count : {std::size_t(1), std::size_t(3), std::size_t(37), tg::tensor::kEigenBlock}) {
+    for (std::size_t b = 0; b < total; b += count) {
+      const std::size_t n = std::min(count, total - b);
+      tg::tensor::eigensolveBlock(&flat[6 * b], n, block);
+      for (std::size_t k = 0; k < n; ++k) {
+        const float* f = &flat[6 * (b + k)];
+        const Eigensystem es = eigensolve({f[0], f[1], f[2], f[3], f[4], f[5]});
+        for (int i = 0; i < 3; ++i) {
+          EXPECT_EQ(block.values[i][k], es.values[i]) << "tensor " << b + k;
+          for (int c = 0; c < 3; ++c) EXPECT_EQ(block.vectors[i][c][k], es.vectors[i][c]) << "tensor " << b + k;
+        }
+      }
+    }
+  }
 }
