@@ -193,9 +193,9 @@ int cmdRender(int argc, const char** argv) {
   if (o.verbose || o.repeat > 0) {
     std::sort(times.begin(), times.end());
     std::fprintf(stderr,
-                 "tensorglyph render: %zu glyphs (%zu drawn), %dx%d, %s (%s)\n"
+                 "tensorglyph render: %zu glyphs, %dx%d, %s (%s)\n"
                  "  load %.1f ms, eigen %.1f ms, upload %.1f ms, first frame %.1f ms",
-                 glyphCount, renderer.drawnGlyphs(params), o.width, o.height, ctx->backendName(), ctx->describe().c_str(), loadMs,
+                 glyphCount, o.width, o.height, ctx->backendName(), ctx->describe().c_str(), loadMs,
                  buildMs, uploadMs, frameMs);
     if (!times.empty()) std::fprintf(stderr, ", median of %zu frames %.2f ms", times.size(), times[times.size() / 2]);
     std::fprintf(stderr, "\n  scale %.6g, fa-min %.3g, peak RSS %.1f MiB\n", params.scale, params.faMin,

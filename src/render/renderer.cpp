@@ -37,20 +37,14 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   if (buffer_) gl_.DeleteBuffers(1, &buffer_);
   buffer_ = 0;
   count_ = GLsizei(set.glyphs.size());
-  order_ = {};
+  sphereCount_ = GLsizei(set.sphereCount);
+  definiteCount_ = GLsizei(set.definiteCount);
   mdMin_ = float(set.mdMin);
   mdMax_ = float(set.mdMax);
   if (count_ == 0) return;
-  const auto bytes = GLsizeiptr(set.glyphs.size() * sizeof(tensor::GlyphRecord));
   gl_.CreateBuffers(1, &buffer_);
-  gl_.NamedBufferStorage(buffer_, bytes, nullptr, GL_MAP_WRITE_BIT);
-  // The FA ordering scatters straight into the buffer: the copy an upload
-  // makes anyway, with no second record array.
-  auto* mapped = static_cast<tensor::GlyphRecord*>(
-      gl_.MapNamedBufferRange(buffer_, 0, bytes, GL_MAP_WRITE_BIT | GL_MAP_INVALIDATE_BUFFER_BIT));
-  if (!mapped) throw std::runtime_error("GlyphRenderer::upload: the glyph buffer could not be mapped");
-  order_ = orderByFa(set, std::span(mapped, set.glyphs.size()));
-  if (!gl_.UnmapNamedBuffer(buffer_)) throw std::runtime_error("GlyphRenderer::upload: the glyph buffer was lost while mapped");
+  gl_.NamedBufferStorage(buffer_, GLsizeiptr(set.glyphs.size() * sizeof(tensor::GlyphRecord)),
+                         set.glyphs.data(), 0);
   gl::checkError(gl_, "GlyphRenderer::upload");
 }
 
@@ -67,19 +61,6 @@ void GlyphRenderer::setCamera(const gl::Program& prog, const Camera& cam) const 
   prog.set("uFarVC", ortho ? float(cam.farVC) : std::numeric_limits<float>::max());
 }
 
-int GlyphRenderer::ellipsoidGroups(const FrameParams& p) const {
-  // Groups: spheres, definite, mixed-sign. At gamma 0 only mixed-sign glyphs
-  // are not ellipsoids; at gamma > 0 only spheres are.
-  if (p.glyph != GlyphKind::Superquadric) return FaOrder::kGroups;
-  return p.gamma > 0.0 ? 1 : 2;
-}
-
-std::size_t GlyphRenderer::drawnGlyphs(const FrameParams& p) const {
-  std::size_t n = 0;
-  for (int g = 0; g < FaOrder::kGroups; ++g) n += order_.drawCount(g, float(p.faMin));
-  return n;
-}
-
 void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffer& target) const {
   gl_.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   target.beginGeometry();
@@ -92,14 +73,12 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
       const GLuint zero[3] = {0, 0, 0};
       gl_.NamedBufferSubData(stats_, 0, sizeof(zero), zero);
     }
-    const int k = ellipsoidGroups(p);
-    const auto faMin = float(p.faMin);
-    // One draw per group, of its FA prefix: culled glyphs cost nothing.
-    auto drawGroups = [&](int from, int to) {
-      for (int g = from; g < to; ++g)
-        if (const std::size_t n = order_.drawCount(g, faMin); n > 0)
-          sprites_.draw(GLint(order_.groupStart[std::size_t(g)]), GLsizei(n));
-    };
+    // Dispatch (README, "How glyphs are dispatched") over the groups made at
+    // upload: spheres, definite, mixed-sign. At gamma 0 only mixed-sign
+    // glyphs are not ellipsoids; at gamma > 0 only spheres are.
+    const bool sq = p.glyph == GlyphKind::Superquadric;
+    const GLsizei ellipsoids = !sq ? count_ : p.gamma > 0.0 ? sphereCount_ : sphereCount_ + definiteCount_;
+    const bool superquadrics = count_ > ellipsoids;
     auto common = [&](const gl::Program& prog) {
       setCamera(prog, cam);
       prog.set("uScale", float(p.scale));
@@ -108,18 +87,18 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
       prog.set("uMdRange", glm::vec2(mdMin_, mdMax_));
       gl_.UseProgram(prog.id());
     };
-    if (k > 0) {
+    if (ellipsoids > 0) {
       common(ellipsoid_);
-      drawGroups(0, k);
+      sprites_.draw(0, ellipsoids);
     }
-    if (k < FaOrder::kGroups) {
+    if (superquadrics) {
       const gl::Program& prog = p.iterationStats ? superquadricStats_ : superquadric_;
       prog.set("uGamma", float(p.gamma));
       prog.set("uMaxIterations", p.march.maxIterations);
       prog.set("uEpsilon", float(p.march.epsilon));
       if (p.iterationStats) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, stats_);
       common(prog);
-      drawGroups(k, FaOrder::kGroups);
+      sprites_.draw(ellipsoids, count_ - ellipsoids);
     }
   }
   gl_.Disable(GL_DEPTH_TEST);

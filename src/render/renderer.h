@@ -9,7 +9,6 @@
 
 #include "gl/program.h"
 #include "render/camera.h"
-#include "render/fa_order.h"
 #include "render/frame_image.h"
 #include "render/gbuffer.h"
 #include "render/quad_sprites.h"
@@ -61,22 +60,15 @@ class GlyphRenderer {
   GlyphRenderer(const GlyphRenderer&) = delete;
   GlyphRenderer& operator=(const GlyphRenderer&) = delete;
 
-  // Uploads the records once, in FA order (render/fa_order.h); later frames
-  // change uniforms and draw counts only.
+  // Uploads the records once; later frames change uniforms only.
   void upload(const tensor::GlyphSet& set);
   void render(const Camera& cam, const FrameParams& p, const GBuffer& target) const;
   FrameImage readback(const Camera& cam, const GBuffer& target, Channels channels = Channels::All) const;
   // Of the last frame rendered with iterationStats on.
   IterationStats iterationStats() const;
-  // Sprites a frame with these parameters draws: the glyphs at or above the
-  // FA threshold, plus at most those sharing its FA bin.
-  std::size_t drawnGlyphs(const FrameParams& p) const;
 
  private:
   void setCamera(const gl::Program& prog, const Camera& cam) const;
-  // Groups [0, k) draw as ellipsoids, [k, 3) as superquadrics (README, "How
-  // glyphs are dispatched").
-  int ellipsoidGroups(const FrameParams& p) const;
   const gl::Api& gl_;
   gl::Program ellipsoid_;
   gl::Program superquadric_;
@@ -84,8 +76,7 @@ class GlyphRenderer {
   gl::Program lighting_;
   QuadSprites sprites_;
   GLuint vao_ = 0, buffer_ = 0, stats_ = 0;
-  GLsizei count_ = 0;
-  FaOrder order_;
+  GLsizei count_ = 0, sphereCount_ = 0, definiteCount_ = 0;
   float mdMin_ = 0, mdMax_ = 0;
 };
 

@@ -2,7 +2,6 @@
 // on coverage, id, depth and normal.
 #include "render_fixture.h"
 
-#include <algorithm>
 #include <random>
 
 #include "data-synthetic/generators.h"
@@ -105,57 +104,6 @@ TEST_F(GlFixture, FaThresholdHidesGlyphsLikeTheReference) {
   p.faMin = 0.0;
   EXPECT_GT(test::compare(draw(set, cam, p), ref::renderEllipsoids(cam, set.glyphs, {scale, 0.0}), cam).refCovered,
             c.refCovered);
-}
-
-// The FA threshold as a draw-count prefix (render/fa_order.h): it draws
-// fewer sprites, and the picture is the one of the glyphs above the
-// threshold alone, pixel for pixel, with both glyph kinds.
-TEST_F(GlFixture, FaThresholdDrawsOnlyThePrefixAndChangesNoPixel) {
-  const auto set = glyphsOf(synth::helixPhantom(10, 10, 6).field);
-  const double scale = 300;
-  const float faMin = 0.45f;
-  std::size_t above = 0;
-  for (const auto& g : set.glyphs)
-    if (g.fa >= faMin) ++above;
-  const auto cam = cameraFor(set, scale, oblique(set, 30.0, render::Projection::Perspective), 160, 120);
-  ctx_->makeCurrent();
-  for (const auto kind : {render::GlyphKind::Ellipsoid, render::GlyphKind::Superquadric}) {
-    render::FrameParams p;
-    p.scale = scale;
-    p.glyph = kind;
-    p.faMin = faMin;
-    render::GlyphRenderer r(ctx_->api(), *lib_);
-    render::GBuffer target(ctx_->api(), cam.width, cam.height);
-    r.upload(set);
-    const std::size_t drawn = r.drawnGlyphs(p);
-    EXPECT_GE(drawn, above);
-    EXPECT_LT(drawn, set.glyphs.size());
-    // Only glyphs in the threshold's own FA bin (1/255 wide) may be extra.
-    EXPECT_LE(drawn, above + set.glyphs.size() / 20);
-    r.render(cam, p, target);
-    const auto culled = r.readback(cam, target);
-
-    // The reference: a set holding only the glyphs above the threshold.
-    tensor::GlyphSet only = set;
-    only.glyphs.clear();
-    for (const auto& g : set.glyphs)
-      if (g.fa >= faMin) only.glyphs.push_back(g);
-    only.sphereCount = 0;
-    only.definiteCount = std::size_t(std::count_if(only.glyphs.begin(), only.glyphs.end(), [](const auto& g) {
-      return g.eigenvalues[2] > 0.0f || g.eigenvalues[0] < 0.0f;
-    }));
-    ASSERT_EQ(only.definiteCount, only.glyphs.size());  // the helix is positive definite
-    p.faMin = 0.0;
-    const auto ref = draw(only, cam, p);
-    ASSERT_EQ(ref.id.size(), culled.id.size());
-    std::size_t covered = 0;
-    for (std::size_t i = 0; i < ref.id.size(); ++i) {
-      ASSERT_EQ(culled.id[i], ref.id[i]) << "pixel " << i;
-      covered += ref.id[i] != ref::kNoGlyph;
-      for (int c = 0; c < 4; ++c) ASSERT_EQ(culled.rgba[4 * i + std::size_t(c)], ref.rgba[4 * i + std::size_t(c)]);
-    }
-    EXPECT_GT(covered, 100u);
-  }
 }
 
 TEST_F(GlFixture, EmptyAndCulledScenesGiveBackground) {
