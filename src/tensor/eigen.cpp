@@ -116,9 +116,11 @@ template <class T>
   return m;
 }
 
-}  // namespace
-
-namespace {
+// Off-diagonal entries all zero: such tensors take the exact diagonal path.
+template <class T>
+[[gnu::always_inline]] inline auto isDiagonal(const T a[6]) {
+  return a[1] == 0.0 && a[2] == 0.0 && a[4] == 0.0;
+}
 
 // Cyclic Jacobi on the scaled tensor, for what the closed form declines.
 Eigensystem jacobi(const double s[6], double scale) {
@@ -164,10 +166,7 @@ Eigensystem diagonal(const double a[6], double scale) {
 }
 
 // Every path but the closed form: what a block lane falls back to.
-Eigensystem slowPath(const double a[6], double scale) {
-  if (a[1] == 0.0 && a[2] == 0.0 && a[4] == 0.0) return diagonal(a, scale);
-  return jacobi(a, scale);
-}
+Eigensystem slowPath(const double a[6], double scale) { return isDiagonal(a) ? diagonal(a, scale) : jacobi(a, scale); }
 
 }  // namespace
 
@@ -175,10 +174,9 @@ Eigensystem eigensolve(const SymTensor& t) {
   const double in[6] = {t.xx, t.xy, t.xz, t.yy, t.yz, t.zz};
   double a[6];
   const double scale = scaled(in, a);
-  if (a[1] == 0.0 && a[2] == 0.0 && a[4] == 0.0) return diagonal(a, scale);
   double l[3];
   V3<double> v[3];
-  if (!analytic(a, l, v)) return jacobi(a, scale);
+  if (isDiagonal(a) || !analytic(a, l, v)) return slowPath(a, scale);
   Eigensystem out;
   for (int i = 0; i < 3; ++i) {
     out.values[i] = l[i] * scale;
@@ -187,12 +185,7 @@ Eigensystem eigensolve(const SymTensor& t) {
   return out;
 }
 
-// GCC builds an AVX2 clone (4 doubles a lane-step) next to the baseline one
-// and picks at load time, so the binary still runs on any x86-64.
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
-__attribute__((target_clones("arch=x86-64-v3", "default")))
-#endif
-void eigensolveBlock(const float* t, std::size_t n, EigenBlock& out) {
+TG_LANE_CLONES void eigensolveBlock(const float* t, std::size_t n, EigenBlock& out) {
   n = std::min(n, kEigenBlock);
   alignas(64) double in[6][kEigenBlock] = {};  // lanes >= n stay zero: diagonal, no work
   for (std::size_t k = 0; k < n; ++k)
@@ -205,7 +198,7 @@ void eigensolveBlock(const float* t, std::size_t n, EigenBlock& out) {
     Lanes4 l[3];
     V3<Lanes4> v[3];
     // Diagonal tensors take the exact path, as in eigensolve().
-    const auto good = analytic(a, l, v) && !(a[1] == 0.0 && a[2] == 0.0 && a[4] == 0.0);
+    const auto good = analytic(a, l, v) && !isDiagonal(a);
     for (std::size_t j = 0; j < kLanes; ++j) ok[k + j] = good[j] != 0;
     for (int i = 0; i < 3; ++i) {
       store4(&out.values[i][k], l[i] * m);

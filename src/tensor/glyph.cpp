@@ -58,10 +58,7 @@ template <class T>
 // Records for tensors [begin, end), a block of kEigenBlock at a time: the
 // eigensystems and the per-glyph scalars run on SIMD lanes, then the
 // records are written one by one.
-#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
-__attribute__((target_clones("arch=x86-64-v3", "default")))
-#endif
-void buildRange(std::span<const float> pos, std::span<const float> ten,
+TG_LANE_CLONES void buildRange(std::span<const float> pos, std::span<const float> ten,
                 std::span<const std::uint32_t> ids, std::size_t begin, std::size_t end,
                 GlyphRecord* out, Partial& p, const GlyphOptions& opt, char* dropped) {
   constexpr std::size_t B = kEigenBlock;

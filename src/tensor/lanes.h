@@ -12,6 +12,16 @@
 namespace tg::tensor {
 
 using Lanes4 = double __attribute__((vector_size(32)));
+
+// On a function that runs lane kernels: GCC builds an AVX2 clone (a Lanes4
+// op is one instruction) next to the baseline x86-64 one and picks at load
+// time, so the binary still runs on any x86-64. Elsewhere Lanes4 is lowered
+// to what the target has.
+#if defined(__GNUC__) && defined(__x86_64__) && !defined(__clang__)
+#define TG_LANE_CLONES __attribute__((target_clones("arch=x86-64-v3", "default")))
+#else
+#define TG_LANE_CLONES
+#endif
 inline constexpr std::size_t kLanes = 4;
 
 template <class T>

@@ -4,6 +4,7 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "io/readers.h"
@@ -14,6 +15,11 @@ inline std::filesystem::path scratchDir(const std::string& name) {
   const auto d = std::filesystem::temp_directory_path() / ("tg_test_" + name + "_" + std::to_string(::getpid()));
   std::filesystem::create_directories(d);
   return d;
+}
+
+// Writes `bytes` to `p` as they are (binary mode: no newline translation).
+inline void writeFile(const std::filesystem::path& p, const std::string& bytes) {
+  std::ofstream(p, std::ios::binary) << bytes;
 }
 
 // The InputError message of reading `p`, or "" when it reads.

@@ -8,7 +8,6 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
 
 #include "data-synthetic/generators.h"
 #include "io/readers.h"
@@ -21,8 +20,6 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path tmpDir() { return test::scratchDir("nrrd"); }
-
-void writeBytes(const fs::path& p, const std::string& s) { std::ofstream(p, std::ios::binary) << s; }
 
 std::string errorOf(const fs::path& p, const io::ReadOptions& o = {}) { return test::readError(p, o); }
 
@@ -105,10 +102,10 @@ TEST(Nrrd, BigEndianAndLittleEndianAgree) {
   std::vector<float> v;
   for (double x : sample6(2)) v.push_back(float(x));
   const fs::path le = tmpDir() / "le.nrrd", be = tmpDir() / "be.nrrd";
-  writeBytes(le, header("6 2 1 1", "kinds: 3D-symmetric-matrix domain domain domain") + floats(v));
+  test::writeFile(le, header("6 2 1 1", "kinds: 3D-symmetric-matrix domain domain domain") + floats(v));
   std::string h = header("6 2 1 1", "kinds: 3D-symmetric-matrix domain domain domain");
   h.replace(h.find("little"), 6, "big");
-  writeBytes(be, h + floats(v, true));
+  test::writeFile(be, h + floats(v, true));
   const auto a = io::readTensorField(le.string(), {}), b = io::readTensorField(be.string(), {});
   ASSERT_EQ(a.size(), 2u);
   EXPECT_EQ(a.tensors, b.tensors);
@@ -137,7 +134,7 @@ TEST(Nrrd, LpsIsTurnedIntoRas) {
   // xz and yz change sign.
   const std::vector<float> t = {1, 0.5f, 0.25f, 2, 0.125f, 3};
   const fs::path p = tmpDir() / "lps.nrrd";
-  writeBytes(p, header("6 1 1 1", "kinds: 3D-symmetric-matrix space space space\nspace: LPS\n"
+  test::writeFile(p, header("6 1 1 1", "kinds: 3D-symmetric-matrix space space space\nspace: LPS\n"
                                   "space directions: none (1,0,0) (0,1,0) (0,0,1)\nspace origin: (1,2,3)") +
                     floats(t));
   const auto f = io::readTensorField(p.string(), {});
@@ -155,7 +152,7 @@ TEST(Nrrd, OldHeadersPlaceByAxisMinsAndMaxs) {
   std::vector<float> v(7 * 4, 0.1f);
   for (int i = 0; i < 4; ++i) v[7 * i] = 1;  // confidence
   const fs::path p = tmpDir() / "old.nrrd";
-  writeBytes(p, "NRRD0001\ntype: float\ndimension: 4\nsizes: 7 4 1 1\nencoding: raw\nendian: little\n"
+  test::writeFile(p, "NRRD0001\ntype: float\ndimension: 4\nsizes: 7 4 1 1\nencoding: raw\nendian: little\n"
                 "axis mins: NaN -2 0 0\naxis maxs: NaN 2 1 1\n\n" +
                     floats(v));
   const auto f = io::readTensorField(p.string(), {});
@@ -168,7 +165,7 @@ TEST(Nrrd, MaskedKindHonoursTheConfidenceThreshold) {
   const float conf[4] = {0.0f, 0.49f, 0.5f, 1.0f};
   for (float c : conf) v.insert(v.end(), {c, 1, 0, 0, 1, 0, 1});
   const fs::path p = tmpDir() / "masked.nrrd";
-  writeBytes(p, header("7 4 1 1", "kinds: 3D-masked-symmetric-matrix domain domain domain") + floats(v));
+  test::writeFile(p, header("7 4 1 1", "kinds: 3D-masked-symmetric-matrix domain domain domain") + floats(v));
   const auto f = io::readTensorField(p.string(), {});
   EXPECT_EQ(f.size(), 2u);
   EXPECT_EQ(f.masked, 2u);
@@ -181,7 +178,7 @@ TEST(Nrrd, MaskedKindHonoursTheConfidenceThreshold) {
 TEST(Nrrd, AsymmetricMatricesAreSymmetrisedWithAWarning) {
   const std::vector<float> v = {1, 0.2f, 0, 0.4f, 2, 0, 0, 0, 3};
   const fs::path p = tmpDir() / "asym.nrrd";
-  writeBytes(p, header("9 1 1 1", "kinds: 3D-matrix domain domain domain") + floats(v));
+  test::writeFile(p, header("9 1 1 1", "kinds: 3D-matrix domain domain domain") + floats(v));
   const auto f = io::readTensorField(p.string(), {});
   ASSERT_EQ(f.size(), 1u);
   EXPECT_FLOAT_EQ(f.tensors[1], 0.3f);
@@ -211,7 +208,7 @@ TEST(Nrrd, BadInputGetsOneLineNamingFileAndProblem) {
        "NRRD0005\ntype: float\ndimension: 4\nsizes: 6 1 1 1\nencoding: ascii\n\n" + std::string(5000, '7'), "token"},
   };
   for (const Case& c : cases) {
-    writeBytes(d / c.file, c.bytes);
+    test::writeFile(d / c.file, c.bytes);
     const std::string e = errorOf(d / c.file);
     EXPECT_NE(e.find(c.expect), std::string::npos) << c.file << ": " << e;
     EXPECT_NE(e.find((d / c.file).string()), std::string::npos) << c.file << ": " << e;
@@ -222,7 +219,7 @@ TEST(Nrrd, BadInputGetsOneLineNamingFileAndProblem) {
 TEST(Nrrd, NonFiniteTensorsAreSkippedAndCounted) {
   std::vector<float> v = {1, 0, 0, 1, 0, 1, NAN, 0, 0, 1, 0, 1, 1, 0, 0, INFINITY, 0, 1};
   const fs::path p = tmpDir() / "nan.nrrd";
-  writeBytes(p, header("6 3 1 1", "kinds: 3D-symmetric-matrix domain domain domain") + floats(v));
+  test::writeFile(p, header("6 3 1 1", "kinds: 3D-symmetric-matrix domain domain domain") + floats(v));
   const auto f = io::readTensorField(p.string(), {});
   EXPECT_EQ(f.size(), 1u);
   EXPECT_EQ(f.skippedNonFinite, 2u);

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <limits>
 #include <filesystem>
-#include <fstream>
 
 #include "data-synthetic/generators.h"
 #include "io/readers.h"
@@ -17,8 +16,6 @@ namespace fs = std::filesystem;
 namespace {
 
 fs::path tmpDir() { return test::scratchDir("vtk"); }
-
-void writeText(const fs::path& p, const std::string& s) { std::ofstream(p, std::ios::binary) << s; }
 
 std::string errorOf(const fs::path& p, const io::ReadOptions& o = {}) { return test::readError(p, o); }
 
@@ -57,7 +54,7 @@ TEST(Vtk, NaNTensorsAreSkippedAndCounted) {
 
 TEST(Vtk, SixComponentsInVtkOrder) {
   const fs::path p = tmpDir() / "six.vtk";
-  writeText(p,
+  test::writeFile(p,
             "# vtk DataFile Version 3.0\nsix\nASCII\nDATASET POLYDATA\nPOINTS 2 float\n0 0 0 1 0 0\n"
             "POINT_DATA 2\nFIELD f 1\nsym 6 2 float\n1 2 3 4 5 6\n1 1 1 0 0 0\n");
   const io::TensorField f = io::readTensorField(p.string(), {});
@@ -69,7 +66,7 @@ TEST(Vtk, SixComponentsInVtkOrder) {
 
 TEST(Vtk, FullTensorsAreSymmetrised) {
   const fs::path p = tmpDir() / "full.vtk";
-  writeText(p, "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 1 float\n0 0 0\n"
+  test::writeFile(p, "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 1 float\n0 0 0\n"
                "POINT_DATA 1\nTENSORS t float\n1 2 0\n4 1 0\n0 0 1\n");
   const io::TensorField f = io::readTensorField(p.string(), {});
   ASSERT_EQ(f.size(), 1u);
@@ -78,15 +75,15 @@ TEST(Vtk, FullTensorsAreSymmetrised) {
 
 TEST(Vtk, BadInputGetsOneLineNamingFileAndProblem) {
   const fs::path d = tmpDir();
-  writeText(d / "empty.vtk", "");
-  writeText(d / "garbage.vtk", "this is not a vtk file at all\n");
-  writeText(d / "fourcomp.vtk", "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 1 float\n0 0 0\n"
+  test::writeFile(d / "empty.vtk", "");
+  test::writeFile(d / "garbage.vtk", "this is not a vtk file at all\n");
+  test::writeFile(d / "fourcomp.vtk", "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 1 float\n0 0 0\n"
                                 "POINT_DATA 1\nFIELD f 1\nq 4 1 float\n1 2 3 4\n");
-  writeText(d / "huge.vtk", "# vtk DataFile Version 3.0\nx\nBINARY\nDATASET POLYDATA\nPOINTS 99999999999 float\n");
-  writeText(d / "hugexml.vtu",
+  test::writeFile(d / "huge.vtk", "# vtk DataFile Version 3.0\nx\nBINARY\nDATASET POLYDATA\nPOINTS 99999999999 float\n");
+  test::writeFile(d / "hugexml.vtu",
             "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n<UnstructuredGrid>\n"
             "<Piece NumberOfPoints=\"999999999999\" NumberOfCells=\"0\">\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
-  writeText(d / "data.xyz", "1 2 3\n");
+  test::writeFile(d / "data.xyz", "1 2 3\n");
   // A valid binary file cut in half.
   io::writeVtk(synth::helixPhantom(6, 6, 6).field, (d / "whole.vtk").string());
   {
