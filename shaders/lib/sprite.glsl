@@ -7,7 +7,15 @@
 // viewport; a geometry shader expanding one point per glyph made llvmpipe
 // buffer every output vertex of the draw (about 0.7 kB per glyph, measured).
 
-uint spriteGlyphIndex() { return uint(gl_VertexID) >> 2u; }
+// Under an FA threshold the draw walks the compacted list instead
+// (compact_fa.comp): slot -> record. Off, the slot is the record.
+layout(std430, binding = 2) readonly buffer KeptIndex { uint keptIndex[]; };
+uniform int uCompacted;
+
+uint spriteGlyphIndex() {
+  uint slot = uint(gl_VertexID) >> 2u;
+  return uCompacted != 0 ? keptIndex[slot] : slot;
+}
 
 // Outside the clip volume: both triangles of a culled glyph are dropped
 // before rasterisation.

@@ -187,6 +187,7 @@ int cmdRender(int argc, const char** argv) {
     std::fprintf(stderr, "tensorglyph render: Newton iterations: mean %.2f, max %u over %llu pixels\n", st.mean,
                  st.max, static_cast<unsigned long long>(st.pixels));
   }
+  const std::uint64_t drawn = renderer.drawnGlyphs();
   const render::FrameImage img = renderer.readback(
       cam, target, io::writesGeometryChannels(o.output) ? render::Channels::All : render::Channels::Color);
   io::writeImage(img, o.output);
@@ -198,7 +199,8 @@ int cmdRender(int argc, const char** argv) {
                  glyphCount, o.width, o.height, ctx->backendName(), ctx->describe().c_str(), loadMs,
                  buildMs, uploadMs, frameMs);
     if (!times.empty()) std::fprintf(stderr, ", median of %zu frames %.2f ms", times.size(), times[times.size() / 2]);
-    std::fprintf(stderr, "\n  scale %.6g, fa-min %.3g, peak RSS %.1f MiB\n", params.scale, params.faMin,
+    std::fprintf(stderr, "\n  %llu glyphs drawn (after FA and frustum culling), scale %.6g, fa-min %.3g, peak RSS %.1f MiB\n",
+                 static_cast<unsigned long long>(drawn), params.scale, params.faMin,
                  double(peakRssBytes()) / (1024.0 * 1024.0));
   }
   return 0;

@@ -87,6 +87,9 @@ void Program::set(const char* n, const glm::vec3& v) const {
 void Program::set(const char* n, const glm::vec4& v) const {
   gl_->ProgramUniform4f(id_, gl_->GetUniformLocation(id_, n), v.x, v.y, v.z, v.w);
 }
+void Program::set(const char* n, std::span<const glm::vec4> v) const {
+  gl_->ProgramUniform4fv(id_, gl_->GetUniformLocation(id_, n), GLsizei(v.size()), glm::value_ptr(v[0]));
+}
 void Program::set(const char* n, const glm::mat3& v) const {
   gl_->ProgramUniformMatrix3fv(id_, gl_->GetUniformLocation(id_, n), 1, GL_FALSE, glm::value_ptr(v));
 }

@@ -1,6 +1,7 @@
 #pragma once
 // A linked GLSL program composed from the shader library.
 #include <initializer_list>
+#include <span>
 #include <string_view>
 #include <utility>
 
@@ -34,6 +35,7 @@ class Program {
   void set(const char* name, const glm::vec2& v) const;
   void set(const char* name, const glm::vec3& v) const;
   void set(const char* name, const glm::vec4& v) const;
+  void set(const char* name, std::span<const glm::vec4> v) const;
   void set(const char* name, const glm::mat3& v) const;
   void set(const char* name, const glm::mat4& v) const;
 

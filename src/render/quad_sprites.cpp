@@ -27,23 +27,35 @@ QuadSprites::~QuadSprites() {
   gl_.DeleteBuffers(1, &indices_);
 }
 
-void QuadSprites::draw(GLint first, GLsizei count) const {
-  if (count <= 0) return;
-  // gl_VertexID = 4 * glyph + corner, so the vertex index range must fit a GLint.
-  if (first < 0 || std::int64_t(first) + count > std::int64_t(INT32_MAX) / 4)
-    throw std::runtime_error("QuadSprites::draw: glyph range beyond 2^29");
+void QuadSprites::draw(std::span<const GlyphRun> runs) const {
   std::vector<GLsizei> counts;
   std::vector<const void*> offsets;
   std::vector<GLint> baseVertices;
-  for (GLsizei done = 0; done < count; done += kQuadsPerBatch) {
-    const GLsizei n = std::min(kQuadsPerBatch, count - done);
-    counts.push_back(6 * n);
-    offsets.push_back(nullptr);
-    baseVertices.push_back(4 * (first + done));
+  for (const GlyphRun& r : runs) {
+    // gl_VertexID = 4 * glyph + corner, so the vertex index range must fit a GLint.
+    if (std::int64_t(r.first) + r.count > std::int64_t(INT32_MAX) / 4)
+      throw std::runtime_error("QuadSprites::draw: glyph range beyond 2^29");
+    for (std::uint32_t done = 0; done < r.count; done += kQuadsPerBatch) {
+      const GLsizei n = std::min(kQuadsPerBatch, GLsizei(r.count - done));
+      counts.push_back(6 * n);
+      offsets.push_back(nullptr);
+      baseVertices.push_back(GLint(4 * (r.first + done)));
+    }
   }
+  if (counts.empty()) return;
   gl_.BindVertexArray(vao_);
   gl_.MultiDrawElementsBaseVertex(GL_TRIANGLES, counts.data(), GL_UNSIGNED_SHORT, offsets.data(),
                                   GLsizei(counts.size()), baseVertices.data());
+}
+
+void QuadSprites::drawIndirect(GLuint commands, GLsizei first, GLsizei count) const {
+  if (count <= 0) return;
+  constexpr std::size_t kCommandBytes = 5 * sizeof(GLuint);
+  gl_.BindVertexArray(vao_);
+  gl_.BindBuffer(GL_DRAW_INDIRECT_BUFFER, commands);
+  gl_.MultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_SHORT,
+                                reinterpret_cast<const void*>(std::size_t(first) * kCommandBytes), count, 0);
+  gl_.BindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
 }
 
 }  // namespace tg::render

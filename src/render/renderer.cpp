@@ -16,7 +16,8 @@ GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib)
       superquadricStats_(gl, lib, {{GL_VERTEX_SHADER, "superquadric.vert"}, {GL_FRAGMENT_SHADER, "superquadric.frag"}},
                          {"TG_ITERATION_STATS"}),
       lighting_(gl, lib, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "lighting.frag"}}),
-      sprites_(gl) {
+      sprites_(gl),
+      culling_(gl, lib) {
   // The lighting pass's core-profile draw needs a vertex array object even
   // with no attributes.
   gl.CreateVertexArrays(1, &vao_);
@@ -37,14 +38,14 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   if (buffer_) gl_.DeleteBuffers(1, &buffer_);
   buffer_ = 0;
   count_ = GLsizei(set.glyphs.size());
-  sphereCount_ = GLsizei(set.sphereCount);
-  definiteCount_ = GLsizei(set.definiteCount);
   mdMin_ = float(set.mdMin);
   mdMax_ = float(set.mdMax);
-  if (count_ == 0) return;
-  gl_.CreateBuffers(1, &buffer_);
-  gl_.NamedBufferStorage(buffer_, GLsizeiptr(set.glyphs.size() * sizeof(tensor::GlyphRecord)),
-                         set.glyphs.data(), 0);
+  if (count_ > 0) {
+    gl_.CreateBuffers(1, &buffer_);
+    gl_.NamedBufferStorage(buffer_, GLsizeiptr(set.glyphs.size() * sizeof(tensor::GlyphRecord)),
+                           set.glyphs.data(), 0);
+  }
+  culling_.upload(set, buffer_);
   gl::checkError(gl_, "GlyphRenderer::upload");
 }
 
@@ -61,8 +62,9 @@ void GlyphRenderer::setCamera(const gl::Program& prog, const Camera& cam) const 
   prog.set("uFarVC", ortho ? float(cam.farVC) : std::numeric_limits<float>::max());
 }
 
-void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffer& target) const {
+void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffer& target) {
   gl_.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  culling_.prepare(cam, p.scale, p.faMin, p.frustumCulling);
   target.beginGeometry();
   if (count_ > 0) {
     gl_.Enable(GL_DEPTH_TEST);
@@ -73,32 +75,31 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
       const GLuint zero[3] = {0, 0, 0};
       gl_.NamedBufferSubData(stats_, 0, sizeof(zero), zero);
     }
-    // Dispatch (README, "How glyphs are dispatched") over the groups made at
-    // upload: spheres, definite, mixed-sign. At gamma 0 only mixed-sign
-    // glyphs are not ellipsoids; at gamma > 0 only spheres are.
+    // Dispatch (README, "How glyphs are dispatched") over the groups
+    // (tensor::GlyphGroup): the ellipsoid program draws groups [0, split),
+    // the superquadric program the rest. At gamma 0 only mixed-sign glyphs
+    // are not ellipsoids; at gamma > 0 only spheres are.
     const bool sq = p.glyph == GlyphKind::Superquadric;
-    const GLsizei ellipsoids = !sq ? count_ : p.gamma > 0.0 ? sphereCount_ : sphereCount_ + definiteCount_;
-    const bool superquadrics = count_ > ellipsoids;
+    const int split = !sq ? 3 : p.gamma > 0.0 ? 1 : 2;
     auto common = [&](const gl::Program& prog) {
       setCamera(prog, cam);
       prog.set("uScale", float(p.scale));
       prog.set("uFaMin", float(p.faMin));
       prog.set("uColorMode", int(p.color));
       prog.set("uMdRange", glm::vec2(mdMin_, mdMax_));
+      prog.set("uCompacted", culling_.compacted() ? 1 : 0);
       gl_.UseProgram(prog.id());
     };
-    if (ellipsoids > 0) {
-      common(ellipsoid_);
-      sprites_.draw(0, ellipsoids);
-    }
-    if (superquadrics) {
+    common(ellipsoid_);
+    culling_.draw(sprites_, 0, split);
+    if (split < 3) {
       const gl::Program& prog = p.iterationStats ? superquadricStats_ : superquadric_;
       prog.set("uGamma", float(p.gamma));
       prog.set("uMaxIterations", p.march.maxIterations);
       prog.set("uEpsilon", float(p.march.epsilon));
       if (p.iterationStats) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, stats_);
       common(prog);
-      sprites_.draw(ellipsoids, count_ - ellipsoids);
+      culling_.draw(sprites_, split, 3);
     }
   }
   gl_.Disable(GL_DEPTH_TEST);

@@ -11,6 +11,7 @@
 #include "render/camera.h"
 #include "render/frame_image.h"
 #include "render/gbuffer.h"
+#include "render/glyph_culling.h"
 #include "render/quad_sprites.h"
 #include "tensor/glyph.h"
 
@@ -48,6 +49,7 @@ struct FrameParams {
   double gamma = 3.0;  // superquadric sharpness; 0 makes definite tensors ellipsoids
   MarchParams march;
   bool iterationStats = false;  // count Newton iterations (a shader variant; off costs nothing)
+  bool frustumCulling = true;  // off only to measure what it saves
   ColorMode color = ColorMode::DEC;
   glm::vec4 background{0.08f, 0.08f, 0.10f, 1.0f};
   Lighting light;
@@ -62,10 +64,14 @@ class GlyphRenderer {
 
   // Uploads the records once; later frames change uniforms only.
   void upload(const tensor::GlyphSet& set);
-  void render(const Camera& cam, const FrameParams& p, const GBuffer& target) const;
+  // Not const: culling caches its compaction between frames.
+  void render(const Camera& cam, const FrameParams& p, const GBuffer& target);
   FrameImage readback(const Camera& cam, const GBuffer& target, Channels channels = Channels::All) const;
   // Of the last frame rendered with iterationStats on.
   IterationStats iterationStats() const;
+  // Glyphs the last frame sent to the vertex stage (GlyphCulling::drawnGlyphs).
+  std::uint64_t drawnGlyphs() const { return culling_.drawnGlyphs(); }
+  const GlyphCulling& culling() const { return culling_; }
 
  private:
   void setCamera(const gl::Program& prog, const Camera& cam) const;
@@ -75,8 +81,9 @@ class GlyphRenderer {
   gl::Program superquadricStats_;
   gl::Program lighting_;
   QuadSprites sprites_;
+  GlyphCulling culling_;
   GLuint vao_ = 0, buffer_ = 0, stats_ = 0;
-  GLsizei count_ = 0, sphereCount_ = 0, definiteCount_ = 0;
+  GLsizei count_ = 0;
   float mdMin_ = 0, mdMax_ = 0;
 };
 

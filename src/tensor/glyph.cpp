@@ -111,7 +111,52 @@ TG_LANE_CLONES void buildRange(std::span<const float> pos, std::span<const float
   }
 }
 
+// Orders one tile stably by group: a counting scatter through a stack copy,
+// skipped when the tile is already in order (the usual case for a volume of
+// one kind of tensor).
+GlyphTile groupTile(GlyphRecord* g, std::size_t n) {
+  std::uint8_t group[kTileGlyphs];
+  std::size_t count[3] = {0, 0, 0};
+  bool ordered = true;
+  for (std::size_t i = 0; i < n; ++i) {
+    group[i] = static_cast<std::uint8_t>(glyphGroup(g[i]));
+    ordered = ordered && (i == 0 || group[i] >= group[i - 1]);
+    ++count[group[i]];
+  }
+  if (!ordered) {
+    GlyphRecord copy[kTileGlyphs];
+    std::copy(g, g + n, copy);
+    std::size_t next[3] = {0, count[0], count[0] + count[1]};
+    for (std::size_t i = 0; i < n; ++i) g[next[group[i]]++] = copy[i];
+  }
+  return {static_cast<std::uint16_t>(count[0]), static_cast<std::uint16_t>(count[0] + count[1])};
+}
+
+void groupTiles(GlyphSet& set, std::size_t threads) {
+  const std::size_t n = set.glyphs.size(), tiles = (n + kTileGlyphs - 1) / kTileGlyphs;
+  set.tiles.resize(tiles);
+  auto job = [&](std::size_t b, std::size_t e) {
+    for (std::size_t t = b; t < e; ++t) {
+      const std::size_t first = t * kTileGlyphs;
+      set.tiles[t] = groupTile(&set.glyphs[first], std::min(kTileGlyphs, n - first));
+    }
+  };
+  std::vector<std::thread> pool;
+  for (std::size_t c = 0; c + 1 < threads; ++c) pool.emplace_back(job, tiles * c / threads, tiles * (c + 1) / threads);
+  job(tiles * (threads - 1) / threads, tiles);
+  for (auto& t : pool) t.join();
+  for (const GlyphTile& t : set.tiles) {
+    set.sphereCount += t.sphereEnd;
+    set.definiteCount += std::size_t(t.definiteEnd - t.sphereEnd);
+  }
+}
+
 }  // namespace
+
+GlyphGroup glyphGroup(const GlyphRecord& g) {
+  if (g.eigenvalues[0] == g.eigenvalues[2]) return GlyphGroup::Sphere;
+  return g.eigenvalues[2] > 0.0f || g.eigenvalues[0] < 0.0f ? GlyphGroup::Definite : GlyphGroup::Mixed;
+}
 
 GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> tensors,
                      std::span<const std::uint32_t> ids, unsigned threads, const GlyphOptions& opt) {
@@ -158,18 +203,7 @@ GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> te
   set.maxAbsEigenvalue = all.maxAbs;
   set.mdMin = all.mdMin;
   set.mdMax = all.mdMax;
-  // Grouped by what a glyph needs, so that dispatch is a pair of draw ranges:
-  // spheres (equal eigenvalues, the zero tensor included) are ellipsoids at
-  // every gamma; definite tensors are ellipsoids at gamma 0; mixed signs take
-  // Schultz-Kindlmann shapes, which do not depend on gamma.
-  const auto firstOther = std::partition(set.glyphs.begin(), set.glyphs.end(), [](const GlyphRecord& g) {
-    return g.eigenvalues[0] == g.eigenvalues[2];
-  });
-  const auto firstMixed = std::partition(firstOther, set.glyphs.end(), [](const GlyphRecord& g) {
-    return g.eigenvalues[2] > 0.0f || g.eigenvalues[0] < 0.0f;
-  });
-  set.sphereCount = std::size_t(firstOther - set.glyphs.begin());
-  set.definiteCount = std::size_t(firstMixed - firstOther);
+  groupTiles(set, chunks);
   return set;
 }
 

@@ -22,14 +22,31 @@ struct GlyphRecord {
 };
 static_assert(sizeof(GlyphRecord) == 48);
 
+// What a glyph needs from the dispatch: spheres (equal eigenvalues, the zero
+// tensor included) are ellipsoids at every gamma; definite tensors are
+// ellipsoids at gamma 0; mixed signs take Schultz-Kindlmann shapes, which do
+// not depend on gamma.
+enum class GlyphGroup : std::uint8_t { Sphere = 0, Definite = 1, Mixed = 2 };
+GlyphGroup glyphGroup(const GlyphRecord& g);
+
+// Glyphs [kTileGlyphs t, kTileGlyphs (t + 1)) form tile t. Tiles keep the
+// input order, so that a tile of a volume is a compact block of space (what
+// frustum culling tests); within a tile the glyphs are stably ordered
+// spheres, then definite, then mixed. 256 is the culling granularity and the
+// compaction workgroup (shaders/compact_fa.comp).
+inline constexpr std::size_t kTileGlyphs = 256;
+struct GlyphTile {
+  std::uint16_t sphereEnd, definiteEnd;  // offsets within the tile
+};
+
 struct GlyphSet {
   std::vector<GlyphRecord> glyphs;
+  std::vector<GlyphTile> tiles;  // ceil(glyphs / kTileGlyphs)
   glm::dvec3 boundsMinWC{0.0}, boundsMaxWC{0.0};  // of glyph centres
   double maxAbsEigenvalue = 0;
   double mdMin = 0, mdMax = 0;
-  // glyphs[0, sphereCount) have three equal eigenvalues; the next
-  // definiteCount are definite (all positive or all negative); the rest have
-  // eigenvalues of mixed sign or zero.
+  // Totals over the tiles: three equal eigenvalues; definite (all positive
+  // or all negative); the rest have eigenvalues of mixed sign or zero.
   std::size_t sphereCount = 0, definiteCount = 0;
   std::size_t droppedByShape = 0;  // below GlyphOptions::clMin or cpMin
 };

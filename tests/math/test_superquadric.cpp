@@ -4,6 +4,7 @@
 #include <teem/ell.h>
 #include <teem/ten.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -37,7 +38,7 @@ TEST(SuperquadricShape, GammaZeroAndIsotropicGiveEllipsoids) {
 // Kindlmann 2004 as tenGlyphGen computes it, with Teem's own cl1/cp1.
 // The renderer's dispatch is two draw ranges over these groups, so each group
 // must hold exactly the glyphs the shape rules put there.
-TEST(SuperquadricShape, GlyphsAreGroupedBySphereDefiniteAndMixed) {
+TEST(SuperquadricShape, GlyphsAreGroupedStablyWithinTiles) {
   std::mt19937_64 rng(7);
   std::uniform_real_distribution<float> u(-1.0f, 1.0f);
   std::vector<float> pos, ten;
@@ -52,28 +53,48 @@ TEST(SuperquadricShape, GlyphsAreGroupedBySphereDefiniteAndMixed) {
     pos.insert(pos.end(), {float(i), 0.0f, 0.0f});
   }
   const auto set = tensor::buildGlyphs(pos, ten, {}, 1);
-  ASSERT_LE(set.sphereCount + set.definiteCount, set.glyphs.size());
+  ASSERT_EQ(set.tiles.size(), 2u);  // 256 + 44
   std::size_t mixed = 0;
-  for (std::size_t i = 0; i < set.glyphs.size(); ++i) {
-    const auto& g = set.glyphs[i];
-    const glm::dvec3 l(g.eigenvalues[0], g.eigenvalues[1], g.eigenvalues[2]);
-    const bool sphere = l.x == l.z;
-    const auto shape0 = tensor::superquadricShape(l, 0.0), shape3 = tensor::superquadricShape(l, 3.0);
-    if (i < set.sphereCount) {
-      EXPECT_TRUE(sphere && tensor::isEllipsoid(shape3)) << i;
-    } else if (i < set.sphereCount + set.definiteCount) {
-      EXPECT_FALSE(sphere) << i;
-      EXPECT_TRUE(l.z > 0 || l.x < 0) << i;
-      EXPECT_TRUE(tensor::isEllipsoid(shape0)) << i;
-    } else {
-      ++mixed;
-      EXPECT_TRUE(!sphere && l.z <= 0 && l.x >= 0) << i;
-      EXPECT_FALSE(tensor::isEllipsoid(shape0)) << i;
+  for (std::size_t t = 0; t < set.tiles.size(); ++t) {
+    const std::size_t first = t * tensor::kTileGlyphs;
+    const std::size_t end = std::min(set.glyphs.size(), first + tensor::kTileGlyphs);
+    std::uint32_t lastId[3] = {0, 0, 0};
+    bool seen[3] = {false, false, false};
+    for (std::size_t i = first; i < end; ++i) {
+      const auto& g = set.glyphs[i];
+      const glm::dvec3 l(g.eigenvalues[0], g.eigenvalues[1], g.eigenvalues[2]);
+      const bool sphere = l.x == l.z;
+      const auto shape0 = tensor::superquadricShape(l, 0.0), shape3 = tensor::superquadricShape(l, 3.0);
+      // A tile holds the inputs of its own index range: tiles keep space coherent.
+      EXPECT_GE(g.id, first) << i;
+      EXPECT_LT(g.id, end) << i;
+      int group = 2;
+      if (i < first + set.tiles[t].sphereEnd) {
+        group = 0;
+        EXPECT_TRUE(sphere && tensor::isEllipsoid(shape3)) << i;
+      } else if (i < first + set.tiles[t].definiteEnd) {
+        group = 1;
+        EXPECT_FALSE(sphere) << i;
+        EXPECT_TRUE(l.z > 0 || l.x < 0) << i;
+        EXPECT_TRUE(tensor::isEllipsoid(shape0)) << i;
+      } else {
+        ++mixed;
+        EXPECT_TRUE(!sphere && l.z <= 0 && l.x >= 0) << i;
+        EXPECT_FALSE(tensor::isEllipsoid(shape0)) << i;
+      }
+      EXPECT_EQ(int(tensor::glyphGroup(g)), group) << i;
+      // Stable: input order is kept within each group.
+      if (seen[group]) {
+        EXPECT_GT(g.id, lastId[group]) << i;
+      }
+      seen[group] = true;
+      lastId[group] = g.id;
     }
   }
   EXPECT_EQ(set.sphereCount, 60u);
   EXPECT_GT(set.definiteCount, 10u);
   EXPECT_GT(mixed, 10u);
+  EXPECT_EQ(set.sphereCount + set.definiteCount + mixed, set.glyphs.size());
 }
 
 TEST(SuperquadricShape, PositiveTensorsFollowTeem) {

@@ -1,0 +1,43 @@
+#version 450 core
+// Per frame, when the frame needs it: one indirect draw command per range,
+// empty when the range's box (grown by its glyphs' extent) is outside the
+// view frustum, else drawing the range's glyphs (all, or the compacted ones).
+// The box test mirrors tg::render::boxOutside.
+#include "lib/glyph_ranges.glsl"
+
+layout(local_size_x = 64) in;
+
+struct DrawCommand {  // DrawElementsIndirectCommand
+  uint count;
+  uint instanceCount;
+  uint firstIndex;
+  int baseVertex;
+  uint baseInstance;
+};
+layout(std430, binding = 5) writeonly buffer Commands { DrawCommand commands[]; };
+layout(std430, binding = 6) buffer Visible { uint visibleGlyphs; };
+
+uniform vec4 uFrustumWC[6];
+uniform float uPadScale;  // sqrt(3) * scale
+uniform int uCompacted;
+uniform int uRangeCount;
+
+void main() {
+  uint k = linearWorkGroup() * 64u + gl_LocalInvocationID.x;
+  if (k >= uint(uRangeCount)) return;
+  GlyphRange r = ranges[k];
+  vec3 lo = r.loWC_maxAbsEigenvalue.xyz, hi = r.hiWC.xyz;
+  vec3 centre = 0.5 * (lo + hi);
+  // Grown by the glyphs' extent and a little more, so that float rounding of
+  // the planes never culls a glyph that the exact test would keep.
+  vec3 halfWC = 0.5 * (hi - lo) + uPadScale * r.loWC_maxAbsEigenvalue.w;
+  halfWC += 1e-5 * (abs(centre) + halfWC);
+  bool outside = false;
+  for (int p = 0; p < 6; ++p) {
+    vec4 pl = uFrustumWC[p];
+    outside = outside || dot(pl.xyz, centre) + dot(abs(pl.xyz), halfWC) + pl.w < 0.0;
+  }
+  uint n = outside ? 0u : uCompacted != 0 ? keptCount[k] : r.firstCount.y;
+  commands[k] = DrawCommand(6u * n, n > 0u ? 1u : 0u, 0u, int(4u * r.firstCount.x), 0u);
+  if (n > 0u) atomicAdd(visibleGlyphs, n);
+}

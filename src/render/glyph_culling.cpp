@@ -1,0 +1,139 @@
+#include "render/glyph_culling.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include "render/frustum.h"
+
+namespace tg::render {
+namespace {
+
+constexpr GLsizeiptr kCommandBytes = 5 * sizeof(GLuint);  // DrawElementsIndirectCommand
+
+void deleteBuffers(const gl::Api& gl, std::initializer_list<GLuint*> buffers) {
+  for (GLuint* b : buffers) {
+    if (*b) gl.DeleteBuffers(1, b);
+    *b = 0;
+  }
+}
+
+}  // namespace
+
+GlyphCulling::GlyphCulling(const gl::Api& gl, const gl::ShaderLibrary& lib)
+    : gl_(gl),
+      compact_(gl, lib, {{GL_COMPUTE_SHADER, "compact_fa.comp"}}),
+      cull_(gl, lib, {{GL_COMPUTE_SHADER, "cull_ranges.comp"}}) {
+  gl.CreateBuffers(1, &visible_);
+  gl.NamedBufferStorage(visible_, sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
+}
+
+GlyphCulling::~GlyphCulling() {
+  deleteBuffers(gl_, {&ranges_, &keptCount_, &keptIndex_, &commands_, &visible_});
+}
+
+void GlyphCulling::upload(const tensor::GlyphSet& set, GLuint glyphBuffer) {
+  deleteBuffers(gl_, {&ranges_, &keptCount_, &keptIndex_, &commands_});
+  glyphs_ = glyphBuffer;
+  glyphCount_ = set.glyphs.size();
+  table_ = buildRanges(set);
+  for (int g0 = 0; g0 < 3; ++g0)
+    for (int g1 = g0 + 1; g1 <= 3; ++g1) runs_[std::size_t(4 * g0 + g1)] = groupRuns(set, g0, g1);
+  centresLo_ = set.boundsMinWC;
+  centresHi_ = set.boundsMaxWC;
+  maxAbsEigenvalue_ = set.maxAbsEigenvalue;
+  compacted_ = indirect_ = false;
+  passes_ = {};
+  const std::size_t n = table_.ranges.size();
+  if (n == 0) return;
+  gl_.CreateBuffers(1, &ranges_);
+  gl_.NamedBufferStorage(ranges_, GLsizeiptr(n * sizeof(GlyphRange)), table_.ranges.data(), 0);
+  gl_.CreateBuffers(1, &keptCount_);
+  gl_.NamedBufferStorage(keptCount_, GLsizeiptr(n * sizeof(GLuint)), nullptr, 0);
+  gl_.CreateBuffers(1, &commands_);
+  gl_.NamedBufferStorage(commands_, GLsizeiptr(n) * kCommandBytes, nullptr, 0);
+  gl::checkError(gl_, "GlyphCulling::upload");
+}
+
+void GlyphCulling::dispatch(const gl::Program& prog, std::size_t workgroups) const {
+  // GL guarantees 65535 workgroups per dimension; 10^8 glyphs make more ranges.
+  const std::size_t x = std::min<std::size_t>(workgroups, 65535);
+  gl_.UseProgram(prog.id());
+  gl_.DispatchCompute(GLuint(x), GLuint((workgroups + x - 1) / x), 1);
+}
+
+void GlyphCulling::prepare(const Camera& cam, double scale, double faMin, bool frustum) {
+  const std::size_t n = table_.ranges.size();
+  compacted_ = indirect_ = false;
+  if (n == 0) return;
+  // Same float comparison as the shaders: a threshold at or below every
+  // glyph's FA hides nothing and costs nothing.
+  const auto faMinF = float(faMin);
+  if (faMinF > table_.minFa) {
+    compacted_ = true;
+    if (!(passes_.compactions > 0 && faMinF == compactedFor_)) {
+      if (!keptIndex_) {
+        gl_.CreateBuffers(1, &keptIndex_);
+        gl_.NamedBufferStorage(keptIndex_, GLsizeiptr(glyphCount_ * sizeof(GLuint)), nullptr, 0);
+      }
+      gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, glyphs_);
+      gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kRangesBinding, ranges_);
+      gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeptCountBinding, keptCount_);
+      gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeptIndexBinding, keptIndex_);
+      compact_.set("uFaMin", faMinF);
+      compact_.set("uRangeCount", int(n));
+      dispatch(compact_, n);
+      gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+      compactedFor_ = faMinF;
+      ++passes_.compactions;
+    }
+  }
+  const FrustumWC f = frustumPlanesWC(cam);
+  const double pad = std::sqrt(3.0) * scale * maxAbsEigenvalue_;
+  // Whether any range could fall outside, judged on the four side planes:
+  // cameras put the near plane at the scene's nearest point, so the grown box
+  // always crosses it, and a range wholly in front of it costs only the
+  // vertex stage's own rejection.
+  FrustumWC sides = f;
+  sides[4] = sides[5] = glm::dvec4(0, 0, 0, 1);
+  const bool cullRanges = frustum && !boxInside(sides, centresLo_ - pad, centresHi_ + pad);
+  indirect_ = compacted_ || cullRanges;
+  if (!indirect_) return;
+  std::array<glm::vec4, 6> planes;
+  for (std::size_t k = 0; k < 6; ++k) planes[k] = cullRanges ? glm::vec4(f[k]) : glm::vec4(0, 0, 0, 1);
+  const GLuint zero = 0;
+  gl_.NamedBufferSubData(visible_, 0, sizeof(zero), &zero);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kRangesBinding, ranges_);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeptCountBinding, keptCount_);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kCommandsBinding, commands_);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kVisibleBinding, visible_);
+  cull_.set("uFrustumWC", planes);
+  cull_.set("uPadScale", float(std::sqrt(3.0) * scale));
+  cull_.set("uCompacted", compacted_ ? 1 : 0);
+  cull_.set("uRangeCount", int(n));
+  dispatch(cull_, (n + 63) / 64);
+  gl_.MemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
+  ++passes_.commandPasses;
+  gl::checkError(gl_, "GlyphCulling::prepare");
+}
+
+void GlyphCulling::draw(const QuadSprites& sprites, int g0, int g1) const {
+  if (g0 >= g1 || table_.ranges.empty()) return;
+  if (!indirect_) {
+    sprites.draw(runs_[std::size_t(4 * g0 + g1)]);
+    return;
+  }
+  if (compacted_) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeptIndexBinding, keptIndex_);
+  const GLuint b = table_.groupStart[std::size_t(g0)], e = table_.groupStart[std::size_t(g1)];
+  sprites.drawIndirect(commands_, GLsizei(b), GLsizei(e - b));
+}
+
+std::uint64_t GlyphCulling::drawnGlyphs() const {
+  if (!indirect_) return glyphCount_;
+  GLuint v = 0;
+  gl_.GetNamedBufferSubData(visible_, 0, sizeof(v), &v);
+  gl::checkError(gl_, "GlyphCulling::drawnGlyphs");
+  return v;
+}
+
+}  // namespace tg::render

@@ -1,0 +1,70 @@
+#pragma once
+// Which glyphs a frame draws, decided on the GPU so that culled glyphs cost
+// nothing downstream (README, "Culling"):
+//  - an FA threshold compacts each range's kept glyphs once per threshold
+//    change (shaders/compact_fa.comp), order preserved;
+//  - per frame, ranges whose box is outside the view frustum get empty
+//    indirect draw commands (shaders/cull_ranges.comp).
+// When the threshold hides nothing and the whole scene is in view, neither
+// pass runs and the frame is the plain direct draw.
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "gl/program.h"
+#include "render/camera.h"
+#include "render/glyph_ranges.h"
+#include "render/quad_sprites.h"
+
+namespace tg::render {
+
+class GlyphCulling {
+ public:
+  // Binding points, mirrored by shaders/lib/glyph_ranges.glsl,
+  // lib/sprite.glsl and cull_ranges.comp (0 and 1: records and statistics).
+  static constexpr GLuint kKeptIndexBinding = 2, kRangesBinding = 3, kKeptCountBinding = 4,
+                          kCommandsBinding = 5, kVisibleBinding = 6;
+
+  GlyphCulling(const gl::Api& gl, const gl::ShaderLibrary& lib);
+  ~GlyphCulling();
+  GlyphCulling(const GlyphCulling&) = delete;
+  GlyphCulling& operator=(const GlyphCulling&) = delete;
+
+  // Builds the ranges of a set whose records are already in `glyphBuffer`.
+  void upload(const tensor::GlyphSet& set, GLuint glyphBuffer);
+  // Runs what this frame needs; `frustum` false keeps every range (to
+  // measure the culling).
+  void prepare(const Camera& cam, double scale, double faMin, bool frustum);
+  // Draws the glyphs of groups [g0, g1) (tensor::GlyphGroup) with the bound
+  // program, whose uCompacted must be compacted().
+  void draw(const QuadSprites& sprites, int g0, int g1) const;
+
+  bool compacted() const { return compacted_; }
+  bool indirect() const { return indirect_; }
+  // Glyphs the last prepared frame sent to the vertex stage: those passing
+  // the threshold in ranges that passed the frustum test. Waits for the GPU
+  // when that frame was culled.
+  std::uint64_t drawnGlyphs() const;
+  // How often each pass has run since upload, so tests can tell that a frame
+  // which needs no culling runs none.
+  struct Passes {
+    std::uint64_t compactions = 0, commandPasses = 0;
+  };
+  Passes passes() const { return passes_; }
+
+ private:
+  void dispatch(const gl::Program& prog, std::size_t workgroups) const;
+  const gl::Api& gl_;
+  gl::Program compact_, cull_;
+  RangeTable table_;
+  std::array<std::vector<GlyphRun>, 16> runs_;  // [4 * g0 + g1]: direct runs of groups [g0, g1)
+  glm::dvec3 centresLo_{0.0}, centresHi_{0.0};
+  double maxAbsEigenvalue_ = 0;
+  std::size_t glyphCount_ = 0;
+  GLuint glyphs_ = 0, ranges_ = 0, keptCount_ = 0, keptIndex_ = 0, commands_ = 0, visible_ = 0;
+  float compactedFor_ = 0;
+  bool compacted_ = false, indirect_ = false;
+  Passes passes_;
+};
+
+}  // namespace tg::render

@@ -1,0 +1,161 @@
+// Tier 3: culling (render/glyph_culling.h) changes what a frame costs, never
+// what it shows. Exact equality is the right bound here: culled and unculled
+// frames draw the same glyphs in the same order with the same shaders.
+#include "render_fixture.h"
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include "data-synthetic/generators.h"
+
+using namespace tg;
+using test::GlFixture;
+
+namespace {
+
+struct Frame {
+  render::FrameImage img;
+  std::uint64_t drawn;
+  render::GlyphCulling::Passes passes;
+  bool indirect;
+};
+
+// The glyphs of `f` whose FA is at least t, keeping their input ids.
+tensor::GlyphSet keptOnly(const io::TensorField& f, float t) {
+  const auto all = test::glyphsOf(f);
+  std::vector<bool> keep(f.ids.empty() ? all.glyphs.size() : f.ids.size(), false);
+  for (const auto& g : all.glyphs) keep[g.id] = g.fa >= t;
+  std::vector<float> pos, ten;
+  std::vector<std::uint32_t> ids;
+  for (std::size_t i = 0; i < keep.size(); ++i) {
+    if (!keep[i]) continue;
+    pos.insert(pos.end(), &f.positions[3 * i], &f.positions[3 * i] + 3);
+    ten.insert(ten.end(), &f.tensors[6 * i], &f.tensors[6 * i] + 6);
+    ids.push_back(std::uint32_t(i));
+  }
+  return tensor::buildGlyphs(pos, ten, ids);
+}
+
+// Every dispatch group on a 14^3 grid: each 7th tensor a sphere, each 3rd
+// shifted to be definite, the rest random with mixed signs.
+io::TensorField allGroups() {
+  io::TensorField f;
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (std::uint32_t i = 0; i < 14 * 14 * 14; ++i) {
+    const double shift = i % 3 == 0 ? 2.5 : 0.0, iso = u(rng);
+    double t[9] = {shift + u(rng), u(rng), u(rng), 0, shift + u(rng), u(rng), 0, 0, shift + u(rng)};
+    if (i % 7 == 0) t[0] = t[4] = t[8] = iso, t[1] = t[2] = t[5] = 0;
+    t[3] = t[1], t[6] = t[2], t[7] = t[5];
+    const double p[3] = {double(i % 14), double(i / 14 % 14), double(i / 196)};
+    f.addFull(i, p, t);
+  }
+  return f;
+}
+
+std::size_t differing(const render::FrameImage& a, const render::FrameImage& b) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < a.id.size(); ++i) n += a.id[i] != b.id[i] || a.rgba[4 * i] != b.rgba[4 * i];
+  return n;
+}
+
+class Culling : public GlFixture {
+ protected:
+  // Renders `frames` frames of one upload with `p`, the last one read back.
+  Frame frames(const tensor::GlyphSet& set, const render::Camera& cam, std::vector<render::FrameParams> ps) {
+    ctx_->makeCurrent();
+    render::GlyphRenderer r(ctx_->api(), *lib_);
+    render::GBuffer target(ctx_->api(), cam.width, cam.height);
+    r.upload(set);
+    for (const auto& p : ps) r.render(cam, p, target);
+    return {r.readback(cam, target), r.drawnGlyphs(), r.culling().passes(), r.culling().indirect()};
+  }
+};
+
+}  // namespace
+
+TEST_F(Culling, ThresholdDrawsExactlyTheKeptGlyphs) {
+  // All three dispatch groups, so that every split is tested.
+  const io::TensorField field = allGroups();
+  const auto set = test::glyphsOf(field);
+  ASSERT_GT(set.sphereCount, 0u);
+  ASSERT_GT(set.definiteCount, 0u);
+  ASSERT_GT(set.glyphs.size(), set.sphereCount + set.definiteCount);
+  std::vector<float> fa;
+  for (const auto& g : set.glyphs) fa.push_back(g.fa);
+  std::nth_element(fa.begin(), fa.begin() + std::ptrdiff_t(fa.size() / 2), fa.end());
+  const float t = fa[fa.size() / 2];
+  const auto kept = keptOnly(field, t);
+  ASSERT_GT(kept.glyphs.size(), 0u);
+  ASSERT_LT(kept.glyphs.size(), set.glyphs.size());
+
+  const double scale = 0.5 / set.maxAbsEigenvalue;
+  const auto cam = test::cameraFor(set, scale, test::oblique(set, 60.0, render::Projection::Perspective), 240, 180);
+  for (const auto& [kind, gamma] : {std::pair{render::GlyphKind::Ellipsoid, 3.0},
+                                    std::pair{render::GlyphKind::Superquadric, 3.0},
+                                    std::pair{render::GlyphKind::Superquadric, 0.0}}) {
+    SCOPED_TRACE(gamma);
+    render::FrameParams p;
+    p.scale = scale;
+    p.glyph = kind;
+    p.gamma = gamma;
+    const Frame whole = frames(kept, cam, {p});
+    p.faMin = t;
+    const Frame culled = frames(set, cam, {p});
+    EXPECT_EQ(culled.drawn, kept.glyphs.size());
+    EXPECT_EQ(whole.drawn, kept.glyphs.size());
+    EXPECT_TRUE(culled.indirect);
+    EXPECT_FALSE(whole.indirect);
+    EXPECT_EQ(differing(culled.img, whole.img), 0u);
+    std::size_t covered = 0;
+    for (auto id : culled.img.id) covered += id != ref::kNoGlyph;
+    EXPECT_GT(covered, 400u);
+  }
+}
+
+TEST_F(Culling, CompactionRunsOncePerThresholdChange) {
+  const auto set = test::glyphsOf(synth::randomField(3000, 4));
+  // Far enough that the scene's box, grown by the largest glyph, is in view.
+  const auto cam = test::cameraFor(set, 0.5, test::oblique(set, 90.0, render::Projection::Perspective), 64, 48);
+  render::FrameParams a, b, off;
+  a.scale = b.scale = off.scale = 0.5;
+  a.faMin = 0.4;
+  b.faMin = 0.5;
+  EXPECT_EQ(frames(set, cam, {a, a, a}).passes.compactions, 1u);
+  EXPECT_EQ(frames(set, cam, {a, b, b, a}).passes.compactions, 3u);
+  // A threshold that hides nothing, with the whole scene in view: no pass at all.
+  const Frame f = frames(set, cam, {a, off});
+  EXPECT_FALSE(f.indirect);
+  EXPECT_EQ(f.passes.commandPasses, 1u);  // only the first frame's
+  EXPECT_EQ(f.drawn, set.glyphs.size());
+}
+
+TEST_F(Culling, FrustumCullingChangesOnlyTheWork) {
+  const auto set = test::glyphsOf(synth::randomField(20000, 9));
+  const double scale = 0.5;
+  // Along y near the x = z = 0 edge of the 28^3 grid: a tile is about 9
+  // rows of one z slice, and the view meets only the lowest slices' tiles.
+  render::CameraDesc d;
+  d.eyeWC = {2, -10, 2};
+  d.lookAtWC = {2, 0, 2};
+  d.upWC = {0, 0, 1};
+  d.fovYDeg = 20;
+  const auto cam = test::cameraFor(set, scale, d, 160, 120);
+  for (double faMin : {0.0, 0.3}) {
+    SCOPED_TRACE(faMin);
+    render::FrameParams p;
+    p.scale = scale;
+    p.faMin = faMin;
+    const Frame culled = frames(set, cam, {p});
+    p.frustumCulling = false;
+    const Frame all = frames(set, cam, {p});
+    EXPECT_EQ(differing(culled.img, all.img), 0u);
+    EXPECT_TRUE(culled.indirect);
+    EXPECT_LT(culled.drawn * 2, all.drawn);  // most glyphs culled
+    EXPECT_GT(culled.drawn, 0u);
+    std::size_t covered = 0;
+    for (auto id : culled.img.id) covered += id != ref::kNoGlyph;
+    EXPECT_GT(covered, 3000u);
+  }
+}
