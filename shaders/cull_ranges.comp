@@ -1,7 +1,7 @@
 #version 450 core
 // Per frame, when the frame needs it: one indirect draw command per range,
 // empty when the range's box (grown by its glyphs' extent) is outside the
-// view frustum, else drawing the range's glyphs (all, or the compacted ones).
+// view frustum or the slab, else drawing the range's glyphs (all, or the compacted ones).
 // The box test mirrors tg::render::boxOutside.
 #include "lib/glyph_ranges.glsl"
 
@@ -17,7 +17,7 @@ struct DrawCommand {  // DrawElementsIndirectCommand
 layout(std430, binding = 5) writeonly buffer Commands { DrawCommand commands[]; };
 layout(std430, binding = 6) buffer Visible { uint visibleGlyphs; };
 
-uniform vec4 uFrustumWC[6];
+uniform vec4 uFrustumWC[8];  // six frustum planes, then two slab planes
 uniform float uPadScale;  // sqrt(3) * scale
 uniform int uCompacted;
 uniform int uRangeCount;
@@ -33,7 +33,7 @@ void main() {
   vec3 halfWC = 0.5 * (hi - lo) + uPadScale * r.loWC_maxAbsEigenvalue.w;
   halfWC += 1e-5 * (abs(centre) + halfWC);
   bool outside = false;
-  for (int p = 0; p < 6; ++p) {
+  for (int p = 0; p < 8; ++p) {
     vec4 pl = uFrustumWC[p];
     outside = outside || dot(pl.xyz, centre) + dot(abs(pl.xyz), halfWC) + pl.w < 0.0;
   }

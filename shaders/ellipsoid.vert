@@ -9,7 +9,6 @@
 #include "lib/sprite.glsl"
 
 uniform float uScale;
-uniform float uFaMin;
 uniform int uColorMode;
 uniform vec2 uMdRange;
 
@@ -24,7 +23,7 @@ out SpriteFS {
 void main() {
   gl_Position = kSpriteCulledCC;
   GlyphRecord g = glyphs[spriteGlyphIndex()];
-  if (!(g.posWC_fa.w >= uFaMin)) return;
+  if (!spriteSelected(g.posWC_fa)) return;
   vec3 axes = ellipsoidAxes(g.eigenvalues_id.xyz, uScale);
   float radius = max(axes.x, max(axes.y, axes.z));
   if (!(radius > 0.0)) return;

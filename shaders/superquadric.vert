@@ -11,7 +11,6 @@
 #include "lib/sprite.glsl"
 
 uniform float uScale;
-uniform float uFaMin;
 uniform int uColorMode;
 uniform vec2 uMdRange;
 uniform float uGamma;
@@ -28,7 +27,7 @@ out SuperquadricFS {
 void main() {
   gl_Position = kSpriteCulledCC;
   GlyphRecord g = glyphs[spriteGlyphIndex()];
-  if (!(g.posWC_fa.w >= uFaMin)) return;
+  if (!spriteSelected(g.posWC_fa)) return;
   vec3 axes = ellipsoidAxes(g.eigenvalues_id.xyz, uScale);
   if (!(max(axes.x, max(axes.y, axes.z)) > 0.0)) return;
   vec4 shape = superquadricShape(g.eigenvalues_id.xyz, uGamma);

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "render/frustum.h"
+#include "render/renderer.h"
 
 namespace tg::render {
 namespace {
@@ -62,7 +63,7 @@ void GlyphCulling::dispatch(const gl::Program& prog, std::size_t workgroups) con
   gl_.DispatchCompute(GLuint(x), GLuint((workgroups + x - 1) / x), 1);
 }
 
-void GlyphCulling::prepare(const Camera& cam, double scale, double faMin, bool frustum) {
+void GlyphCulling::prepare(const Camera& cam, double scale, double faMin, const Slab& slab, bool frustum) {
   const std::size_t n = table_.ranges.size();
   compacted_ = indirect_ = false;
   if (n == 0) return;
@@ -97,10 +98,20 @@ void GlyphCulling::prepare(const Camera& cam, double scale, double faMin, bool f
   FrustumWC sides = f;
   sides[4] = sides[5] = glm::dvec4(0, 0, 0, 1);
   const bool cullRanges = frustum && !boxInside(sides, centresLo_ - pad, centresHi_ + pad);
-  indirect_ = compacted_ || cullRanges;
+  const bool slabbed = slab.axis >= 0;
+  indirect_ = compacted_ || cullRanges || slabbed;
   if (!indirect_) return;
-  std::array<glm::vec4, 6> planes;
-  for (std::size_t k = 0; k < 6; ++k) planes[k] = cullRanges ? glm::vec4(f[k]) : glm::vec4(0, 0, 0, 1);
+  // The frustum's six planes, then the slab's two (on centres; the shader's
+  // growth of the box by the glyph extent only keeps more).
+  std::array<glm::vec4, 8> planes;
+  planes.fill(glm::vec4(0, 0, 0, 1));
+  for (std::size_t k = 0; k < 6 && cullRanges; ++k) planes[k] = glm::vec4(f[k]);
+  if (slabbed) {
+    planes[6][slab.axis] = 1.0f;
+    planes[6].w = -float(slab.lo);
+    planes[7][slab.axis] = -1.0f;
+    planes[7].w = float(slab.hi);
+  }
   const GLuint zero = 0;
   gl_.NamedBufferSubData(visible_, 0, sizeof(zero), &zero);
   gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kRangesBinding, ranges_);

@@ -18,6 +18,8 @@
 
 namespace tg::render {
 
+struct Slab;
+
 class GlyphCulling {
  public:
   // Binding points, mirrored by shaders/lib/glyph_ranges.glsl,
@@ -33,8 +35,8 @@ class GlyphCulling {
   // Builds the ranges of a set whose records are already in `glyphBuffer`.
   void upload(const tensor::GlyphSet& set, GLuint glyphBuffer);
   // Runs what this frame needs; `frustum` false keeps every range (to
-  // measure the culling).
-  void prepare(const Camera& cam, double scale, double faMin, bool frustum);
+  // measure the culling). A slab (axis >= 0) culls ranges wholly outside it.
+  void prepare(const Camera& cam, double scale, double faMin, const Slab& slab, bool frustum);
   // Draws the glyphs of groups [g0, g1) (tensor::GlyphGroup) with the bound
   // program, whose uCompacted must be compacted().
   void draw(const QuadSprites& sprites, int g0, int g1) const;

@@ -40,6 +40,7 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   count_ = GLsizei(set.glyphs.size());
   mdMin_ = float(set.mdMin);
   mdMax_ = float(set.mdMax);
+  params_.reset();  // uMdRange depends on the set
   if (count_ > 0) {
     gl_.CreateBuffers(1, &buffer_);
     gl_.NamedBufferStorage(buffer_, GLsizeiptr(set.glyphs.size() * sizeof(tensor::GlyphRecord)),
@@ -62,9 +63,31 @@ void GlyphRenderer::setCamera(const gl::Program& prog, const Camera& cam) const 
   prog.set("uFarVC", ortho ? float(cam.farVC) : std::numeric_limits<float>::max());
 }
 
+void GlyphRenderer::setParams(const FrameParams& p) {
+  for (const gl::Program* prog : {&ellipsoid_, &superquadric_, &superquadricStats_}) {
+    prog->set("uScale", float(p.scale));
+    prog->set("uFaMin", float(p.faMin));
+    prog->set("uSlabAxis", p.slab.axis);
+    prog->set("uSlabWC", glm::vec2(float(p.slab.lo), float(p.slab.hi)));
+    prog->set("uColorMode", int(p.color));
+    prog->set("uMdRange", glm::vec2(mdMin_, mdMax_));
+  }
+  for (const gl::Program* prog : {&superquadric_, &superquadricStats_}) {
+    prog->set("uGamma", float(p.gamma));
+    prog->set("uMaxIterations", p.march.maxIterations);
+    prog->set("uEpsilon", float(p.march.epsilon));
+  }
+  lighting_.set("uBackground", p.background);
+  lighting_.set("uKeyDirVC", p.light.keyDirVC);
+  lighting_.set("uLightMix", glm::vec4(p.light.ambient, p.light.head, p.light.key, p.light.specular));
+  lighting_.set("uShininess", p.light.shininess);
+  params_ = p;
+}
+
 void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffer& target) {
+  if (!params_ || !(*params_ == p)) setParams(p);
   gl_.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-  culling_.prepare(cam, p.scale, p.faMin, p.frustumCulling);
+  culling_.prepare(cam, p.scale, p.faMin, p.slab, p.frustumCulling);
   target.beginGeometry();
   if (count_ > 0) {
     gl_.Enable(GL_DEPTH_TEST);
@@ -81,34 +104,22 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
     // are not ellipsoids; at gamma > 0 only spheres are.
     const bool sq = p.glyph == GlyphKind::Superquadric;
     const int split = !sq ? 3 : p.gamma > 0.0 ? 1 : 2;
-    auto common = [&](const gl::Program& prog) {
+    auto use = [&](const gl::Program& prog) {
       setCamera(prog, cam);
-      prog.set("uScale", float(p.scale));
-      prog.set("uFaMin", float(p.faMin));
-      prog.set("uColorMode", int(p.color));
-      prog.set("uMdRange", glm::vec2(mdMin_, mdMax_));
       prog.set("uCompacted", culling_.compacted() ? 1 : 0);
       gl_.UseProgram(prog.id());
     };
-    common(ellipsoid_);
+    use(ellipsoid_);
     culling_.draw(sprites_, 0, split);
     if (split < 3) {
-      const gl::Program& prog = p.iterationStats ? superquadricStats_ : superquadric_;
-      prog.set("uGamma", float(p.gamma));
-      prog.set("uMaxIterations", p.march.maxIterations);
-      prog.set("uEpsilon", float(p.march.epsilon));
       if (p.iterationStats) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, stats_);
-      common(prog);
+      use(p.iterationStats ? superquadricStats_ : superquadric_);
       culling_.draw(sprites_, split, 3);
     }
   }
   gl_.Disable(GL_DEPTH_TEST);
   target.beginLighting();
   setCamera(lighting_, cam);
-  lighting_.set("uBackground", p.background);
-  lighting_.set("uKeyDirVC", p.light.keyDirVC);
-  lighting_.set("uLightMix", glm::vec4(p.light.ambient, p.light.head, p.light.key, p.light.specular));
-  lighting_.set("uShininess", p.light.shininess);
   gl_.UseProgram(lighting_.id());
   gl_.BindVertexArray(vao_);
   gl_.DrawArrays(GL_TRIANGLES, 0, 3);

@@ -3,6 +3,7 @@
 // deferred lighting pass per frame.
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -25,6 +26,15 @@ enum class ColorMode { DEC = 0, FA = 1, MD = 2, CL = 3, CP = 4, Sign = 5 };
 struct Lighting {
   glm::vec3 keyDirVC{-0.45f, 0.55f, 0.70f};  // upper left, in front
   float ambient = 0.22f, head = 0.55f, key = 0.40f, specular = 0.25f, shininess = 40.0f;
+  bool operator==(const Lighting&) const = default;
+};
+
+// Glyphs whose centre lies in [lo, hi] along a WC axis (ParaView's and
+// Slicer's slice of a glyph volume, as thick as asked).
+struct Slab {
+  int axis = -1;  // 0, 1, 2; -1: off
+  double lo = 0, hi = 0;
+  bool operator==(const Slab&) const = default;
 };
 
 enum class GlyphKind { Ellipsoid, Superquadric };
@@ -34,6 +44,7 @@ enum class GlyphKind { Ellipsoid, Superquadric };
 struct MarchParams {
   int maxIterations = 10;
   double epsilon = 1e-4;  // in units of the glyph's size
+  bool operator==(const MarchParams&) const = default;
 };
 
 struct IterationStats {
@@ -45,6 +56,7 @@ struct IterationStats {
 struct FrameParams {
   double scale = 1.0;  // world units per eigenvalue unit
   double faMin = 0.0;
+  Slab slab;
   GlyphKind glyph = GlyphKind::Ellipsoid;
   double gamma = 3.0;  // superquadric sharpness; 0 makes definite tensors ellipsoids
   MarchParams march;
@@ -53,6 +65,7 @@ struct FrameParams {
   ColorMode color = ColorMode::DEC;
   glm::vec4 background{0.08f, 0.08f, 0.10f, 1.0f};
   Lighting light;
+  bool operator==(const FrameParams&) const = default;
 };
 
 class GlyphRenderer {
@@ -64,6 +77,10 @@ class GlyphRenderer {
 
   // Uploads the records once; later frames change uniforms only.
   void upload(const tensor::GlyphSet& set);
+  // Sets the programs' parameter uniforms: all a change of gamma, threshold,
+  // scale, colour, slab or lighting costs on the CPU. render() calls it when
+  // `p` differs from the last parameters.
+  void setParams(const FrameParams& p);
   // Not const: culling caches its compaction between frames.
   void render(const Camera& cam, const FrameParams& p, const GBuffer& target);
   FrameImage readback(const Camera& cam, const GBuffer& target, Channels channels = Channels::All) const;
@@ -85,6 +102,7 @@ class GlyphRenderer {
   GLuint vao_ = 0, buffer_ = 0, stats_ = 0;
   GLsizei count_ = 0;
   float mdMin_ = 0, mdMax_ = 0;
+  std::optional<FrameParams> params_;  // as last set; reset by upload
 };
 
 }  // namespace tg::render
