@@ -9,6 +9,7 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/field_flags.h"
+#include "app/names.h"
 #include "app/scene.h"
 #include "gl/shader_library.h"
 #include "io/image_writer.h"
@@ -91,7 +92,7 @@ void validate(const RenderOptions& o) {
   if (o.output.empty()) throw UsageError("-o OUT is required");
   if (o.width < 1 || o.height < 1 || o.width > 16384 || o.height > 16384)
     throw UsageError("--size must be within 1..16384");
-  if (o.glyph != "ellipsoid" && o.glyph != "superquadric")
+  if (!glyphKindNamed(o.glyph))
     throw UsageError("--glyph: unknown kind \"" + o.glyph + "\"; choose ellipsoid or superquadric");
   if (!(o.gamma >= 0.0 && o.gamma <= 1e4)) throw UsageError("--gamma must be within 0..10000");
   if (o.maxIterations < 1 || o.maxIterations > 1000) throw UsageError("--iterations must be within 1..1000");
@@ -99,22 +100,12 @@ void validate(const RenderOptions& o) {
   o.field.validate();
   if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
   if ((o.lookAt || o.up) && !o.eye) throw UsageError("--look-at and --up need --eye");
-  if (o.color != "dec" && o.color != "fa" && o.color != "md" && o.color != "cl" && o.color != "cp" &&
-      o.color != "sign")
-    throw UsageError("--color: unknown mode \"" + o.color + "\"; choose dec, fa, md, cl, cp or sign");
+  if (!colorModeNamed(o.color))
+    throw UsageError("--color: unknown mode \"" + o.color + "\"; choose " + kColorModeNames);
   if (o.repeat < 0 || o.repeat > 10000) throw UsageError("--repeat must be within 0..10000");
   checkBackend(o.backend);
   if (!OIIO::ImageOutput::create(o.output))
     throw UsageError("-o: no image format for \"" + o.output + "\"");
-}
-
-render::ColorMode colorMode(const std::string& c) {
-  if (c == "fa") return render::ColorMode::FA;
-  if (c == "md") return render::ColorMode::MD;
-  if (c == "cl") return render::ColorMode::CL;
-  if (c == "cp") return render::ColorMode::CP;
-  if (c == "sign") return render::ColorMode::Sign;
-  return render::ColorMode::DEC;
 }
 
 render::CameraDesc chooseCamera(const RenderOptions& o, const Scene& s, const glm::dvec3& lo, const glm::dvec3& hi) {
@@ -151,8 +142,8 @@ int cmdRender(int argc, const char** argv) {
   render::FrameParams params;
   params.scale = o.field.scaleFor(glyphs, scene.field.sampleSpacing);
   params.faMin = o.faMin.value_or(scene.preferredFaMin.value_or(0.0));
-  params.color = colorMode(o.color);
-  params.glyph = o.glyph == "superquadric" ? render::GlyphKind::Superquadric : render::GlyphKind::Ellipsoid;
+  params.color = *colorModeNamed(o.color);
+  params.glyph = *glyphKindNamed(o.glyph);
   params.gamma = o.gamma;
   params.march = {o.maxIterations, o.epsilon};
   params.iterationStats = o.stats;

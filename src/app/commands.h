@@ -8,5 +8,6 @@ int cmdRender(int argc, const char** argv);
 int cmdInfo(int argc, const char** argv);
 int cmdSynth(int argc, const char** argv);
 int cmdBench(int argc, const char** argv);
+int cmdView(int argc, const char** argv);
 
 }  // namespace tg::app

@@ -13,6 +13,7 @@ namespace {
 constexpr const char* kUsage =
     "usage: tensorglyph <command> [options]\n"
     "  render [INPUT] -o OUT   render glyphs to an image (no INPUT: the built-in scene)\n"
+    "  view [INPUT]            interactive window (GLFW, Dear ImGui); --script FILE for demos and tests\n"
     "  info INPUT              grid, counts, eigenvalue ranges, skipped tensors\n"
     "  synth KIND -o OUT       write a synthetic field (helix, boussinesq, extremes, random, ...)\n"
     "  bench accuracy [INPUT]  superquadric march: error against the reference vs frame time\n"
@@ -28,6 +29,7 @@ int main(int argc, const char** argv) {
   const std::string cmd = argv[1];
   try {
     if (cmd == "render") return tg::app::cmdRender(argc - 1, argv + 1);
+    if (cmd == "view") return tg::app::cmdView(argc - 1, argv + 1);
     if (cmd == "info") return tg::app::cmdInfo(argc - 1, argv + 1);
     if (cmd == "synth") return tg::app::cmdSynth(argc - 1, argv + 1);
     if (cmd == "bench") return tg::app::cmdBench(argc - 1, argv + 1);

@@ -76,25 +76,33 @@ Program::~Program() {
   if (id_) gl_->DeleteProgram(id_);
 }
 
-void Program::set(const char* n, int v) const { gl_->ProgramUniform1i(id_, gl_->GetUniformLocation(id_, n), v); }
-void Program::set(const char* n, float v) const { gl_->ProgramUniform1f(id_, gl_->GetUniformLocation(id_, n), v); }
+GLint Program::location(const char* name) const {
+  for (const auto& [n, loc] : locations_)
+    if (n == name) return loc;
+  const GLint loc = gl_->GetUniformLocation(id_, name);
+  locations_.emplace_back(name, loc);
+  return loc;
+}
+
+void Program::set(const char* n, int v) const { gl_->ProgramUniform1i(id_, location(n), v); }
+void Program::set(const char* n, float v) const { gl_->ProgramUniform1f(id_, location(n), v); }
 void Program::set(const char* n, const glm::vec2& v) const {
-  gl_->ProgramUniform2f(id_, gl_->GetUniformLocation(id_, n), v.x, v.y);
+  gl_->ProgramUniform2f(id_, location(n), v.x, v.y);
 }
 void Program::set(const char* n, const glm::vec3& v) const {
-  gl_->ProgramUniform3f(id_, gl_->GetUniformLocation(id_, n), v.x, v.y, v.z);
+  gl_->ProgramUniform3f(id_, location(n), v.x, v.y, v.z);
 }
 void Program::set(const char* n, const glm::vec4& v) const {
-  gl_->ProgramUniform4f(id_, gl_->GetUniformLocation(id_, n), v.x, v.y, v.z, v.w);
+  gl_->ProgramUniform4f(id_, location(n), v.x, v.y, v.z, v.w);
 }
 void Program::set(const char* n, std::span<const glm::vec4> v) const {
-  gl_->ProgramUniform4fv(id_, gl_->GetUniformLocation(id_, n), GLsizei(v.size()), glm::value_ptr(v[0]));
+  gl_->ProgramUniform4fv(id_, location(n), GLsizei(v.size()), glm::value_ptr(v[0]));
 }
 void Program::set(const char* n, const glm::mat3& v) const {
-  gl_->ProgramUniformMatrix3fv(id_, gl_->GetUniformLocation(id_, n), 1, GL_FALSE, glm::value_ptr(v));
+  gl_->ProgramUniformMatrix3fv(id_, location(n), 1, GL_FALSE, glm::value_ptr(v));
 }
 void Program::set(const char* n, const glm::mat4& v) const {
-  gl_->ProgramUniformMatrix4fv(id_, gl_->GetUniformLocation(id_, n), 1, GL_FALSE, glm::value_ptr(v));
+  gl_->ProgramUniformMatrix4fv(id_, location(n), 1, GL_FALSE, glm::value_ptr(v));
 }
 
 }  // namespace tg::gl

@@ -2,8 +2,10 @@
 // A linked GLSL program composed from the shader library.
 #include <initializer_list>
 #include <span>
+#include <string>
 #include <string_view>
 #include <utility>
+#include <vector>
 
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
@@ -25,7 +27,8 @@ class Program {
   Program(const Api& gl, const ShaderLibrary& lib, std::initializer_list<StageSource> stages,
           std::initializer_list<std::string_view> enable = {});
   ~Program();
-  Program(Program&& o) noexcept : gl_(o.gl_), id_(std::exchange(o.id_, 0)) {}
+  Program(Program&& o) noexcept
+      : gl_(o.gl_), id_(std::exchange(o.id_, 0)), locations_(std::move(o.locations_)) {}
   Program& operator=(Program&&) = delete;
   Program(const Program&) = delete;
 
@@ -40,8 +43,13 @@ class Program {
   void set(const char* name, const glm::mat4& v) const;
 
  private:
+  // Uniform locations as first asked for: glGetUniformLocation parses and
+  // hashes the name on every call, which was most of a parameter change's
+  // CPU time. A cache, so const.
+  GLint location(const char* name) const;
   const Api* gl_;
   GLuint id_ = 0;
+  mutable std::vector<std::pair<std::string, GLint>> locations_;
 };
 
 }  // namespace tg::gl

@@ -40,7 +40,8 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   count_ = GLsizei(set.glyphs.size());
   mdMin_ = float(set.mdMin);
   mdMax_ = float(set.mdMax);
-  params_.reset();  // uMdRange depends on the set
+  for (const gl::Program* prog : {&ellipsoid_, &superquadric_, &superquadricStats_})
+    prog->set("uMdRange", glm::vec2(mdMin_, mdMax_));
   if (count_ > 0) {
     gl_.CreateBuffers(1, &buffer_);
     gl_.NamedBufferStorage(buffer_, GLsizeiptr(set.glyphs.size() * sizeof(tensor::GlyphRecord)),
@@ -64,23 +65,33 @@ void GlyphRenderer::setCamera(const gl::Program& prog, const Camera& cam) const 
 }
 
 void GlyphRenderer::setParams(const FrameParams& p) {
-  for (const gl::Program* prog : {&ellipsoid_, &superquadric_, &superquadricStats_}) {
-    prog->set("uScale", float(p.scale));
-    prog->set("uFaMin", float(p.faMin));
-    prog->set("uSlabAxis", p.slab.axis);
-    prog->set("uSlabWC", glm::vec2(float(p.slab.lo), float(p.slab.hi)));
-    prog->set("uColorMode", int(p.color));
-    prog->set("uMdRange", glm::vec2(mdMin_, mdMax_));
+  // Only what changed: a slider moves one value, and each uniform update
+  // costs a driver call (the viewer reports the total per change).
+  const FrameParams* old = params_ ? &*params_ : nullptr;
+  auto changed = [&](auto member) { return !old || !(old->*member == p.*member); };
+  const gl::Program* glyphPrograms[] = {&ellipsoid_, &superquadric_, &superquadricStats_};
+  for (const gl::Program* prog : glyphPrograms) {
+    if (changed(&FrameParams::scale)) prog->set("uScale", float(p.scale));
+    if (changed(&FrameParams::faMin)) prog->set("uFaMin", float(p.faMin));
+    if (changed(&FrameParams::slab)) {
+      prog->set("uSlabAxis", p.slab.axis);
+      prog->set("uSlabWC", glm::vec2(float(p.slab.lo), float(p.slab.hi)));
+    }
+    if (changed(&FrameParams::color)) prog->set("uColorMode", int(p.color));
   }
   for (const gl::Program* prog : {&superquadric_, &superquadricStats_}) {
-    prog->set("uGamma", float(p.gamma));
-    prog->set("uMaxIterations", p.march.maxIterations);
-    prog->set("uEpsilon", float(p.march.epsilon));
+    if (changed(&FrameParams::gamma)) prog->set("uGamma", float(p.gamma));
+    if (changed(&FrameParams::march)) {
+      prog->set("uMaxIterations", p.march.maxIterations);
+      prog->set("uEpsilon", float(p.march.epsilon));
+    }
   }
-  lighting_.set("uBackground", p.background);
-  lighting_.set("uKeyDirVC", p.light.keyDirVC);
-  lighting_.set("uLightMix", glm::vec4(p.light.ambient, p.light.head, p.light.key, p.light.specular));
-  lighting_.set("uShininess", p.light.shininess);
+  if (changed(&FrameParams::background)) lighting_.set("uBackground", p.background);
+  if (changed(&FrameParams::light)) {
+    lighting_.set("uKeyDirVC", p.light.keyDirVC);
+    lighting_.set("uLightMix", glm::vec4(p.light.ambient, p.light.head, p.light.key, p.light.specular));
+    lighting_.set("uShininess", p.light.shininess);
+  }
   params_ = p;
 }
 

@@ -102,7 +102,7 @@ class GlyphRenderer {
   GLuint vao_ = 0, buffer_ = 0, stats_ = 0;
   GLsizei count_ = 0;
   float mdMin_ = 0, mdMax_ = 0;
-  std::optional<FrameParams> params_;  // as last set; reset by upload
+  std::optional<FrameParams> params_;  // as last set
 };
 
 }  // namespace tg::render

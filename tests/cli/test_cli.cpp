@@ -202,3 +202,25 @@ TEST(Cli, BenchAccuracyRejectsBadSettingsBeforeWriting) {
   }
   EXPECT_EQ(run("bench nonsense").code, 2);
 }
+
+TEST(Cli, ViewRejectsABadScriptBeforeOpeningAWindow) {
+  const auto dir = tg::test::cliDir("view_bad");
+  const auto script = dir / "bad.txt";
+  const auto shot = dir / "never.png";
+  const std::pair<const char*, const char*> cases[] = {
+      {"zoom 2\nspin 30\n", ":2: unknown command \"spin\""},
+      {"gamma -1\n", ":1: gamma: must be within 0..10000"},
+      {"orbit 10\n", ":1: orbit: wrong number of arguments"},
+      {"slab w 1 2\n", ":1: slab: axis must be x, y or z"},
+      {"color rainbow\n", ":1: color: unknown mode"},
+      {"fa-min nan\n", ":1: fa-min"},
+  };
+  for (const auto& [text, what] : cases) {
+    std::ofstream(script) << text << "screenshot " << shot.string() << "\n";
+    // Checked before any window: this passes without a display (plain ctest).
+    tg::test::expectFailsCleanly("view --script " + script.string(), what, shot, dir, 1);
+  }
+  tg::test::expectFailsCleanly("view --script " + (dir / "missing.txt").string(), "cannot open the script", shot,
+                               dir, 1);
+  std::filesystem::remove_all(dir);
+}

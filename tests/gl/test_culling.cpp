@@ -189,3 +189,32 @@ TEST_F(Culling, SlabShowsExactlyTheGlyphsWhoseCentresItHolds) {
     EXPECT_GT(covered, 400u);
   }
 }
+
+// setParams updates only the uniforms that changed: a frame after a chain of
+// single changes must equal a fresh renderer's frame of the final parameters.
+TEST_F(Culling, ChangesOneAtATimeEndWhereAFreshStartDoes) {
+  const auto set = test::glyphsOf(allGroups());
+  const double scale = 0.5 / set.maxAbsEigenvalue;
+  const auto cam = test::cameraFor(set, scale, test::oblique(set, 60.0, render::Projection::Perspective), 160, 120);
+  std::vector<render::FrameParams> chain(1);
+  chain[0].scale = scale;
+  auto next = [&](auto edit) {
+    chain.push_back(chain.back());
+    edit(chain.back());
+  };
+  next([](auto& p) { p.glyph = render::GlyphKind::Superquadric; });
+  next([](auto& p) { p.gamma = 1.5; });
+  next([](auto& p) { p.faMin = 0.2; });
+  next([](auto& p) { p.scale *= 1.3; });
+  next([](auto& p) { p.color = render::ColorMode::FA; });
+  next([](auto& p) { p.slab = {2, 3.0, 9.0}; });
+  next([](auto& p) { p.march.maxIterations = 6; });
+  next([](auto& p) { p.light.ambient = 0.5f; });
+  next([](auto& p) { p.background = {0.2f, 0.1f, 0.0f, 1.0f}; });
+  const Frame chained = frames(set, cam, chain);
+  const Frame fresh = frames(set, cam, {chain.back()});
+  EXPECT_EQ(differing(chained.img, fresh.img), 0u);
+  // and each step mattered: the first frame differs from the last.
+  const Frame first = frames(set, cam, {chain.front()});
+  EXPECT_GT(differing(first.img, fresh.img), 1000u);
+}

@@ -1,0 +1,212 @@
+// tensorglyph view: a GLFW window with a Dear ImGui panel over the same
+// renderer as `render`. Every control is a uniform (GlyphRenderer::setParams);
+// nothing is re-uploaded or recomputed on the CPU after the first frame.
+#define GLFW_INCLUDE_NONE
+#include <GLFW/glfw3.h>
+#include <OpenImageIO/argparse.h>
+#include <imgui.h>
+#include <backends/imgui_impl_glfw.h>
+#include <backends/imgui_impl_opengl3.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "app/cli_common.h"
+#include "app/commands.h"
+#include "app/field_flags.h"
+#include "app/names.h"
+#include "app/scene.h"
+#include "app/view_panel.h"
+#include "app/view_script.h"
+#include "gl/context_glfw.h"
+#include "gl/shader_library.h"
+#include "io/image_writer.h"
+
+namespace tg::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double usSince(Clock::time_point t) { return std::chrono::duration<double, std::micro>(Clock::now() - t).count(); }
+
+struct ViewOptions {
+  std::string input, script, glyph = "ellipsoid", color = "dec", shotPrefix = "tensorglyph-view-";
+  FieldFlags field;
+  int width = 1280, height = 800;
+  double gamma = 3.0;
+  std::optional<double> faMin;
+};
+
+ViewOptions parse(int argc, const char** argv) {
+  ViewOptions o;
+  OIIO::ArgParse ap;
+  ap.intro("tensorglyph view [INPUT] [options]\n"
+           "  mouse: left drag orbits, right or middle drag pans, wheel zooms\n"
+           "  keys: R resets the view, S saves a screenshot, Q or Esc quits")
+      .exit_on_error(false);
+  using Args = OIIO::cspan<const char*>;
+  ap.arg("filename").hidden().action([&](auto&, Args a) {
+    if (!o.input.empty()) throw UsageError("more than one INPUT: \"" + o.input + "\" and \"" + a[0] + "\"");
+    o.input = a[0];
+  });
+  ap.arg("--size W H").help("window size (default 1280 800)").action([&](auto&, Args a) {
+    o.width = int(parseInt("--size", a[1]));
+    o.height = int(parseInt("--size", a[2]));
+  });
+  ap.arg("--glyph KIND").help("ellipsoid (default) or superquadric").action([&](auto&, Args a) { o.glyph = a[1]; });
+  ap.arg("--gamma G").help("superquadric sharpness, >= 0 (default 3)").action([&](auto&, Args a) {
+    o.gamma = parseDouble("--gamma", a[1]);
+  });
+  ap.arg("--fa-min F").help("hide glyphs with FA below F").action([&](auto&, Args a) { o.faMin = parseDouble("--fa-min", a[1]); });
+  ap.arg("--color MODE").help(std::string(kColorModeNames)).action([&](auto&, Args a) { o.color = a[1]; });
+  ap.arg("--script FILE").help("run the commands in FILE (see README, \"Viewer\"), then exit")
+      .action([&](auto&, Args a) { o.script = a[1]; });
+  ap.arg("--screenshot-prefix P").help("key S saves P0000.png, P0001.png, ... (default tensorglyph-view-)")
+      .action([&](auto&, Args a) { o.shotPrefix = a[1]; });
+  o.field.addTo(ap, true);
+  if (ap.parse_args(argc, argv) < 0) throw UsageError(ap.geterror());
+  return o;
+}
+
+void validate(const ViewOptions& o) {
+  if (o.width < 64 || o.height < 64 || o.width > 16384 || o.height > 16384)
+    throw UsageError("--size must be within 64..16384");
+  if (!glyphKindNamed(o.glyph)) throw UsageError("--glyph: unknown kind \"" + o.glyph + "\"; choose ellipsoid or superquadric");
+  if (!colorModeNamed(o.color)) throw UsageError("--color: unknown mode \"" + o.color + "\"; choose " + kColorModeNames);
+  if (!(o.gamma >= 0.0 && o.gamma <= 1e4)) throw UsageError("--gamma must be within 0..10000");
+  o.field.validate();
+}
+
+// The median of a sample, 0 for none.
+double median(std::vector<double> v) {
+  if (v.empty()) return 0.0;
+  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+  return v[v.size() / 2];
+}
+
+void saveScreenshot(render::GlyphRenderer& r, const render::Camera& cam, const render::GBuffer& t,
+                    const std::string& path) {
+  io::writeImage(r.readback(cam, t, render::Channels::Color), path);
+  std::fprintf(stderr, "tensorglyph view: saved %s\n", path.c_str());
+}
+
+}  // namespace
+
+int cmdView(int argc, const char** argv) {
+  const ViewOptions o = parse(argc, argv);
+  validate(o);
+  // The script is checked whole before anything is loaded or opened.
+  const std::vector<ScriptStep> script = o.script.empty() ? std::vector<ScriptStep>{} : parseScript(o.script);
+  Scene scene = loadScene(o.input, o.field.read);
+  reportLoad(scene.field, "view");
+  tensor::GlyphSet glyphs =
+      tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids, 0, o.field.glyph);
+  scene.field.releaseSamples();
+
+  ViewState v{{}, OrbitCamera(render::CameraDesc{}), 1.0, 1.0};
+  v.baseScale = o.field.scaleFor(glyphs, scene.field.sampleSpacing);
+  render::FrameParams& p = v.params;
+  p.scale = v.baseScale;
+  p.faMin = o.faMin.value_or(scene.preferredFaMin.value_or(0.0));
+  p.color = *colorModeNamed(o.color);
+  p.glyph = *glyphKindNamed(o.glyph);
+  p.gamma = o.gamma;
+  {
+    const auto [lo, hi] = tensor::glyphBoxWC(glyphs, p.scale);
+    v.camera = OrbitCamera(sceneCamera(scene, lo, hi, render::Projection::Perspective, 30.0,
+                                       double(o.width) / o.height));
+  }
+
+  auto ctx = gl::createGlfwContext({o.width, o.height, true, "tensorglyph"});
+  GLFWwindow* window = gl::glfwWindowOf(*ctx);
+  glfwSwapInterval(script.empty() ? 1 : 0);  // a script runs as fast as it can
+  const gl::Api& api = ctx->api();
+  const gl::ShaderLibrary lib;
+  render::GlyphRenderer renderer(api, lib);
+  renderer.upload(glyphs);
+  const std::size_t glyphCount = glyphs.glyphs.size();
+  glyphs.glyphs = {};  // the box and counts stay for the camera
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // no imgui.ini left in the user's directory
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window, true);
+  ImGui_ImplOpenGL3_Init("#version 450");
+
+  std::unique_ptr<render::GBuffer> target;
+  std::optional<render::FrameParams> applied;
+  std::vector<double> changeUs, frameMs;
+  PanelStatus status;
+  std::size_t step = 0;
+  int framesLeft = 0, shots = 0;
+  while (!glfwWindowShouldClose(window)) {
+    glfwPollEvents();
+    ImGui_ImplOpenGL3_NewFrame();
+    ImGui_ImplGlfw_NewFrame();
+    ImGui::NewFrame();
+    std::optional<std::string> shot;
+    if (!o.script.empty()) {
+      if (framesLeft > 0) {
+        --framesLeft;
+      } else if (step < script.size()) {
+        const ScriptStep& s = script[step++];
+        if (s.verb == "screenshot") shot = s.args[0];
+        else if (s.verb == "frames") framesLeft = int(parseInt("frames", s.args[0])) - 1;
+        else applyStep(s, v);
+      } else {
+        glfwSetWindowShouldClose(window, GLFW_TRUE);
+      }
+    }
+    const PanelActions act = drawPanel(v, status, glyphs);
+    if (act.quit) glfwSetWindowShouldClose(window, GLFW_TRUE);
+    if (act.screenshot) shot = o.shotPrefix + std::to_string(10000 + shots++).substr(1) + ".png";
+
+    int w = 0, h = 0;
+    glfwGetFramebufferSize(window, &w, &h);
+    if (w > 0 && h > 0) {
+      if (!target || target->width() != w || target->height() != h)
+        target = std::make_unique<render::GBuffer>(api, w, h);
+      if (!applied || !(*applied == p)) {
+        // The whole CPU cost of a parameter change: uniform updates.
+        const auto t = Clock::now();
+        renderer.setParams(p);
+        const double us = usSince(t);
+        if (applied) changeUs.push_back(us);
+        status.lastChangeUs = us;
+        applied = p;
+      }
+      const auto [lo, hi] = tensor::glyphBoxWC(glyphs, p.scale);
+      const render::Camera cam = render::makeCamera(v.camera.desc(), w, h, lo, hi);
+      const auto t0 = Clock::now();
+      renderer.render(cam, p, *target);
+      status.drawn = renderer.drawnGlyphs();  // waits for the frame: the status shows this frame's count
+      frameMs.push_back(usSince(t0) / 1000.0);
+      status.total = glyphCount;
+      if (p.iterationStats) status.newton = renderer.iterationStats();
+      status.fps = ImGui::GetIO().Framerate;
+      if (shot) saveScreenshot(renderer, cam, *target, *shot);
+      api.BlitNamedFramebuffer(target->colorFramebuffer(), 0, 0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT,
+                               GL_NEAREST);
+      api.BindFramebuffer(GL_FRAMEBUFFER, 0);
+      api.Viewport(0, 0, w, h);
+    }
+    ImGui::Render();
+    ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+    glfwSwapBuffers(window);
+  }
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  std::fprintf(stderr,
+               "tensorglyph view: %zu frames, median %.2f ms; %zu parameter changes, CPU time per change "
+               "median %.2f us, max %.2f us\n",
+               frameMs.size(), median(frameMs), changeUs.size(), median(changeUs),
+               changeUs.empty() ? 0.0 : *std::max_element(changeUs.begin(), changeUs.end()));
+  return 0;
+}
+
+}  // namespace tg::app

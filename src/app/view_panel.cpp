@@ -1,0 +1,104 @@
+#define GLFW_INCLUDE_NONE
+#include "app/view_panel.h"
+
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace tg::app {
+namespace {
+
+void controls(ViewState& v, const tensor::GlyphSet& meta) {
+  render::FrameParams& p = v.params;
+  int kind = int(p.glyph);
+  if (ImGui::Combo("glyph", &kind, "ellipsoid\0superquadric\0")) p.glyph = render::GlyphKind(kind);
+  auto gamma = float(p.gamma);
+  if (ImGui::SliderFloat("gamma", &gamma, 0.0f, 10.0f, "%.2f")) p.gamma = gamma;
+  auto fa = float(p.faMin);
+  if (ImGui::SliderFloat("FA min", &fa, 0.0f, 1.0f, "%.3f")) p.faMin = fa;
+  auto factor = float(v.scaleFactor);
+  if (ImGui::SliderFloat("scale", &factor, 0.05f, 20.0f, "x %.2f", ImGuiSliderFlags_Logarithmic)) {
+    v.scaleFactor = factor;
+    p.scale = v.baseScale * factor;
+  }
+  int color = int(p.color);
+  if (ImGui::Combo("colour", &color, "DEC (principal direction)\0FA\0mean diffusivity\0cl\0cp\0sign\0"))
+    p.color = render::ColorMode(color);
+
+  int axis = p.slab.axis + 1;
+  if (ImGui::Combo("slab", &axis, "off\0x\0y\0z\0")) {
+    p.slab.axis = axis - 1;
+    if (p.slab.axis >= 0) {
+      // Start as one sample thick, at the middle of the centres' range.
+      const double lo = meta.boundsMinWC[p.slab.axis], hi = meta.boundsMaxWC[p.slab.axis];
+      const double mid = 0.5 * (lo + hi), half = std::max(0.5, 0.01 * (hi - lo));
+      p.slab.lo = mid - half;
+      p.slab.hi = mid + half;
+    }
+  }
+  if (p.slab.axis >= 0) {
+    const auto lo = float(meta.boundsMinWC[p.slab.axis]), hi = float(meta.boundsMaxWC[p.slab.axis]);
+    float range[2] = {float(p.slab.lo), float(p.slab.hi)};
+    if (ImGui::DragFloat2("slab range", range, std::max(1e-3f, 0.002f * (hi - lo)), lo, hi)) {
+      p.slab.lo = std::min(range[0], range[1]);
+      p.slab.hi = std::max(range[0], range[1]);
+    }
+  }
+  if (ImGui::CollapsingHeader("lighting")) {
+    ImGui::SliderFloat("ambient", &p.light.ambient, 0.0f, 1.0f);
+    ImGui::SliderFloat("headlight", &p.light.head, 0.0f, 1.0f);
+    ImGui::SliderFloat("key light", &p.light.key, 0.0f, 1.0f);
+    ImGui::SliderFloat("specular", &p.light.specular, 0.0f, 1.0f);
+    ImGui::SliderFloat("shininess", &p.light.shininess, 1.0f, 200.0f, "%.0f", ImGuiSliderFlags_Logarithmic);
+  }
+  if (ImGui::CollapsingHeader("superquadric march")) {
+    ImGui::SliderInt("iterations", &p.march.maxIterations, 1, 50);
+    auto eps = float(p.march.epsilon);
+    if (ImGui::SliderFloat("epsilon", &eps, 1e-7f, 1e-2f, "%.1e", ImGuiSliderFlags_Logarithmic)) p.march.epsilon = eps;
+    ImGui::Checkbox("Newton statistics", &p.iterationStats);
+  }
+}
+
+// Mouse and keys reach the view only when the panel does not want them.
+void navigate(ViewState& v, PanelActions& act) {
+  const ImGuiIO& io = ImGui::GetIO();
+  if (!io.WantCaptureMouse) {
+    const float height = std::max(1.0f, io.DisplaySize.y);
+    const bool panning = io.MouseDown[1] || io.MouseDown[2] || (io.MouseDown[0] && io.KeyShift);
+    if (panning) v.camera.pan(io.MouseDelta.x / height, -io.MouseDelta.y / height);
+    else if (io.MouseDown[0]) v.camera.orbit(0.3 * io.MouseDelta.x, 0.3 * io.MouseDelta.y);
+    if (io.MouseWheel != 0.0f) v.camera.zoom(std::pow(1.1, double(io.MouseWheel)));
+  }
+  if (!io.WantCaptureKeyboard) {
+    if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) v.camera.reset();
+    if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) act.screenshot = true;
+    if (ImGui::IsKeyPressed(GLFW_KEY_Q, false) || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) act.quit = true;
+  }
+}
+
+}  // namespace
+
+PanelActions drawPanel(ViewState& v, const PanelStatus& s, const tensor::GlyphSet& meta) {
+  PanelActions act;
+  ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
+  ImGui::Begin("tensorglyph");
+  controls(v, meta);
+  if (ImGui::Button("reset view (R)")) v.camera.reset();
+  ImGui::SameLine();
+  if (ImGui::Button("screenshot (S)")) act.screenshot = true;
+  ImGui::Separator();
+  ImGui::Text("%.1f fps | %llu of %llu glyphs drawn", s.fps, static_cast<unsigned long long>(s.drawn),
+              static_cast<unsigned long long>(s.total));
+  if (v.params.iterationStats)
+    ImGui::Text("Newton: mean %.2f, max %u over %llu pixels", s.newton.mean, s.newton.max,
+                static_cast<unsigned long long>(s.newton.pixels));
+  ImGui::Text("last change: %.1f us CPU", s.lastChangeUs);
+  ImGui::End();
+  navigate(v, act);
+  return act;
+}
+
+}  // namespace tg::app

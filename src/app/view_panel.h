@@ -1,0 +1,25 @@
+#pragma once
+// The viewer's Dear ImGui panel and mouse/keyboard handling, between
+// ImGui::NewFrame and ImGui::Render. Changes go to the ViewState only; the
+// viewer turns them into uniforms.
+#include <cstdint>
+
+#include "app/view_script.h"
+#include "tensor/glyph.h"
+
+namespace tg::app {
+
+struct PanelStatus {
+  double fps = 0, lastChangeUs = 0;
+  std::uint64_t drawn = 0, total = 0;
+  render::IterationStats newton;
+};
+
+struct PanelActions {
+  bool screenshot = false, quit = false;
+};
+
+// `meta`: the glyph set's bounds and ranges (its records may be freed).
+PanelActions drawPanel(ViewState& v, const PanelStatus& status, const tensor::GlyphSet& meta);
+
+}  // namespace tg::app

@@ -1,0 +1,118 @@
+#include "app/view_script.h"
+
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include "app/cli_common.h"
+#include "app/names.h"
+#include "io/tensor_field.h"
+
+namespace tg::app {
+namespace {
+
+// Argument counts; -1 for slab, which takes one or three.
+const std::map<std::string, int, std::less<>> kArity = {
+    {"orbit", 2},  {"pan", 2},    {"zoom", 1},       {"reset", 0},   {"glyph", 1},  {"gamma", 1},
+    {"fa-min", 1}, {"scale", 1},  {"color", 1},      {"slab", -1},   {"light", 2},  {"iterations", 1},
+    {"epsilon", 1}, {"stats", 1}, {"frames", 1},     {"screenshot", 1}};
+
+double number(const ScriptStep& s, std::size_t k) { return parseDouble(s.verb, s.args[k]); }
+
+int axisNamed(const std::string& a) { return a == "x" ? 0 : a == "y" ? 1 : a == "z" ? 2 : -1; }
+
+// Every value check, so that applyStep cannot fail.
+void check(const ScriptStep& s) {
+  const auto it = kArity.find(s.verb);
+  if (it == kArity.end()) throw UsageError("unknown command \"" + s.verb + "\"");
+  const std::size_t n = s.args.size();
+  if (it->second >= 0 ? n != std::size_t(it->second) : (n != 1 && n != 3))
+    throw UsageError(s.verb + ": wrong number of arguments");
+  const std::string& v = s.verb;
+  auto positive = [&](std::size_t k) {
+    if (!(number(s, k) > 0.0)) throw UsageError(v + ": must be positive");
+  };
+  if (v == "orbit" || v == "pan") number(s, 0), number(s, 1);
+  if (v == "zoom" || v == "scale") positive(0);
+  if (v == "gamma" && !(number(s, 0) >= 0.0 && number(s, 0) <= 1e4)) throw UsageError("gamma: must be within 0..10000");
+  if (v == "fa-min") number(s, 0);
+  if (v == "glyph" && !glyphKindNamed(s.args[0]))
+    throw UsageError("glyph: unknown kind \"" + s.args[0] + "\"; choose ellipsoid or superquadric");
+  if (v == "color" && !colorModeNamed(s.args[0]))
+    throw UsageError("color: unknown mode \"" + s.args[0] + "\"; choose " + kColorModeNames);
+  if (v == "slab") {
+    if (n == 1 && s.args[0] != "off") throw UsageError("slab: give x|y|z LO HI, or off");
+    if (n == 3 && axisNamed(s.args[0]) < 0) throw UsageError("slab: axis must be x, y or z");
+    if (n == 3 && !(number(s, 1) <= number(s, 2))) throw UsageError("slab: LO must not exceed HI");
+  }
+  if (v == "light") {
+    const std::string& w = s.args[0];
+    if (w != "ambient" && w != "head" && w != "key" && w != "specular" && w != "shininess")
+      throw UsageError("light: unknown term \"" + w + "\"; choose ambient, head, key, specular or shininess");
+    if (!(number(s, 1) >= 0.0)) throw UsageError("light: must be >= 0");
+  }
+  if (v == "iterations" && !(number(s, 0) >= 1 && number(s, 0) <= 1000 && parseInt(v, s.args[0]) > 0))
+    throw UsageError("iterations: must be within 1..1000");
+  if (v == "epsilon" && !(number(s, 0) >= 1e-9 && number(s, 0) <= 0.5))
+    throw UsageError("epsilon: must be within 1e-9..0.5");
+  if (v == "stats" && s.args[0] != "on" && s.args[0] != "off") throw UsageError("stats: on or off");
+  if (v == "frames" && !(parseInt(v, s.args[0]) >= 1 && parseInt(v, s.args[0]) <= 100000))
+    throw UsageError("frames: must be within 1..100000");
+}
+
+}  // namespace
+
+std::vector<ScriptStep> parseScript(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw io::InputError(path + ": cannot open the script");
+  std::vector<ScriptStep> steps;
+  std::string line;
+  int number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    if (number > 100000) throw io::InputError(path + ": more than 100000 lines");
+    line = line.substr(0, line.find('#'));
+    std::istringstream words(line);
+    ScriptStep s;
+    s.line = number;
+    if (!(words >> s.verb)) continue;
+    for (std::string w; words >> w;) s.args.push_back(w);
+    try {
+      check(s);
+    } catch (const UsageError& e) {
+      throw io::InputError(path + ":" + std::to_string(number) + ": " + e.what());
+    }
+    steps.push_back(std::move(s));
+  }
+  if (in.bad()) throw io::InputError(path + ": read error");
+  return steps;
+}
+
+void applyStep(const ScriptStep& s, ViewState& v) {
+  const std::string& w = s.verb;
+  render::FrameParams& p = v.params;
+  if (w == "orbit") v.camera.orbit(number(s, 0), number(s, 1));
+  else if (w == "pan") v.camera.pan(number(s, 0), number(s, 1));
+  else if (w == "zoom") v.camera.zoom(number(s, 0));
+  else if (w == "reset") v.camera.reset();
+  else if (w == "glyph") p.glyph = *glyphKindNamed(s.args[0]);
+  else if (w == "gamma") p.gamma = number(s, 0);
+  else if (w == "fa-min") p.faMin = number(s, 0);
+  else if (w == "color") p.color = *colorModeNamed(s.args[0]);
+  else if (w == "iterations") p.march.maxIterations = int(parseInt(w, s.args[0]));
+  else if (w == "epsilon") p.march.epsilon = number(s, 0);
+  else if (w == "stats") p.iterationStats = s.args[0] == "on";
+  else if (w == "scale") {
+    v.scaleFactor = number(s, 0);
+    p.scale = v.baseScale * v.scaleFactor;
+  } else if (w == "slab") {
+    p.slab = s.args.size() == 1 ? render::Slab{} : render::Slab{axisNamed(s.args[0]), number(s, 1), number(s, 2)};
+  } else if (w == "light") {
+    const auto value = float(number(s, 1));
+    const std::string& t = s.args[0];
+    (t == "ambient" ? p.light.ambient : t == "head" ? p.light.head : t == "key" ? p.light.key
+                                        : t == "specular" ? p.light.specular : p.light.shininess) = value;
+  }
+}
+
+}  // namespace tg::app

@@ -1,0 +1,52 @@
+#pragma once
+// The viewer's state and its script language (`tensorglyph view --script`):
+// one command per line, '#' starts a comment. A script is parsed and checked
+// whole before the window opens, so a mistake on line 40 costs no run.
+//
+//   orbit YAW PITCH        degrees (turntable about the world up axis)
+//   pan DX DY              move the scene by view heights, right and up
+//   zoom F                 F times closer
+//   reset                  the initial view
+//   glyph ellipsoid|superquadric
+//   gamma G                superquadric sharpness, >= 0
+//   fa-min F               hide glyphs with FA below F
+//   scale F                glyph size, F times the initial scale
+//   color dec|fa|md|cl|cp|sign
+//   slab x|y|z LO HI       only glyphs with centres in [LO, HI] along the axis (WC)
+//   slab off
+//   light ambient|head|key|specular|shininess V
+//   iterations N           superquadric Newton iterations at most
+//   epsilon E              superquadric hit tolerance
+//   stats on|off           count Newton iterations (status line)
+//   frames N               render N frames unchanged (for timing)
+//   screenshot FILE        save the rendered view (without the panel)
+#include <string>
+#include <vector>
+
+#include "app/orbit_camera.h"
+#include "render/renderer.h"
+
+namespace tg::app {
+
+struct ViewState {
+  render::FrameParams params;
+  OrbitCamera camera;
+  double baseScale = 1.0;  // params.scale = baseScale * scaleFactor
+  double scaleFactor = 1.0;
+};
+
+struct ScriptStep {
+  int line = 0;
+  std::string verb;
+  std::vector<std::string> args;
+};
+
+// Throws io::InputError "PATH:LINE: ..." for an unreadable file, an unknown
+// command, a wrong argument count or a value out of range.
+std::vector<ScriptStep> parseScript(const std::string& path);
+
+// Applies a parsed step to the state. `frames` and `screenshot` change
+// nothing here; the viewer acts on them.
+void applyStep(const ScriptStep& s, ViewState& v);
+
+}  // namespace tg::app

@@ -1,0 +1,90 @@
+// Tier 2 (GL-free): the viewer's camera and script state.
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <glm/geometric.hpp>
+#include <glm/trigonometric.hpp>
+
+#include "app/view_script.h"
+#include "io/tensor_field.h"
+
+using namespace tg;
+
+namespace {
+
+render::CameraDesc start() {
+  render::CameraDesc d;
+  d.eyeWC = {4, -3, 2};
+  d.lookAtWC = {1, 1, 0};
+  d.upWC = {0, 0, 1};
+  return d;
+}
+
+}  // namespace
+
+TEST(OrbitCamera, TurnsAboutTheTargetAndStopsShortOfThePole) {
+  app::OrbitCamera c(start());
+  const double r = glm::length(start().eyeWC - start().lookAtWC);
+  for (int k = 0; k < 8; ++k) c.orbit(45, 0);
+  EXPECT_LT(glm::length(c.desc().eyeWC - start().eyeWC), 1e-9 * r) << "eight 45-degree turns are one turn";
+  c.orbit(30, 10);
+  EXPECT_NEAR(glm::length(c.desc().eyeWC - c.desc().lookAtWC), r, 1e-9 * r);
+  EXPECT_NE(glm::length(c.desc().eyeWC - start().eyeWC), 0.0);
+  c.orbit(0, 1000);  // past the pole: clamped, and the view keeps an up vector
+  EXPECT_STREQ(render::validateCamera(c.desc()), "");
+  const glm::dvec3 dir = glm::normalize(c.desc().eyeWC - c.desc().lookAtWC);
+  EXPECT_NEAR(glm::degrees(std::acos(dir.z)), 1.0, 1e-6);
+  c.reset();
+  EXPECT_EQ(c.desc().eyeWC, start().eyeWC);
+}
+
+TEST(OrbitCamera, PanKeepsTheViewDirectionAndZoomTheDirection) {
+  app::OrbitCamera c(start());
+  const glm::dvec3 v0 = start().lookAtWC - start().eyeWC;
+  c.pan(0.25, -0.1);
+  const glm::dvec3 shift = c.desc().lookAtWC - start().lookAtWC;
+  EXPECT_LT(glm::length(c.desc().lookAtWC - c.desc().eyeWC - v0), 1e-12);
+  EXPECT_NEAR(glm::dot(shift, v0), 0.0, 1e-9);
+  EXPECT_GT(glm::length(shift), 0.0);
+  c.reset();
+  c.zoom(2.0);
+  EXPECT_NEAR(glm::length(c.desc().lookAtWC - c.desc().eyeWC), 0.5 * glm::length(v0), 1e-12);
+  EXPECT_LT(glm::length(glm::normalize(c.desc().lookAtWC - c.desc().eyeWC) - glm::normalize(v0)), 1e-12);
+}
+
+TEST(ViewScript, ParsesAppliesAndNamesTheLineOfAMistake) {
+  const auto dir = std::filesystem::temp_directory_path() / ("tg_view_state_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto path = (dir / "s.txt").string();
+  std::ofstream(path) << "# comment\n\nscale 2   # twice\nslab y -1 3\nlight key 0.7\nglyph superquadric\n"
+                         "stats on\nfa-min 0.4\nslab off\n";
+  const auto steps = app::parseScript(path);
+  ASSERT_EQ(steps.size(), 7u);
+  EXPECT_EQ(steps[0].line, 3);
+  app::ViewState v{{}, app::OrbitCamera(start()), 0.5, 1.0};
+  for (std::size_t k = 0; k < 6; ++k) app::applyStep(steps[k], v);
+  EXPECT_DOUBLE_EQ(v.params.scale, 1.0);
+  EXPECT_EQ(v.params.slab.axis, 1);
+  EXPECT_EQ(v.params.slab.lo, -1.0);
+  EXPECT_EQ(v.params.slab.hi, 3.0);
+  EXPECT_FLOAT_EQ(v.params.light.key, 0.7f);
+  EXPECT_EQ(v.params.glyph, render::GlyphKind::Superquadric);
+  EXPECT_TRUE(v.params.iterationStats);
+  EXPECT_DOUBLE_EQ(v.params.faMin, 0.4);
+  app::applyStep(steps[6], v);
+  EXPECT_EQ(v.params.slab.axis, -1);
+
+  std::ofstream(path) << "zoom 2\n\nslab z 3 1\n";
+  try {
+    app::parseScript(path);
+    FAIL() << "no error";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(std::string(e.what()), path + ":3: slab: LO must not exceed HI");
+  }
+  std::filesystem::remove_all(dir);
+}

@@ -1,0 +1,97 @@
+// The viewer (`tensorglyph view`), driven by a script. Needs an X display:
+// ctest runs the View.* tests under Xvfb with Mesa (tests/CMakeLists.txt);
+// without a display they skip, unless TG_REQUIRE_DISPLAY makes that a failure.
+#include <OpenImageIO/imageio.h>
+
+#include <cstdlib>
+#include <fstream>
+#include <vector>
+
+#include "cli/cli_run.h"
+
+namespace {
+
+using tg::test::runBinary;
+
+std::vector<unsigned char> readRgba(const std::filesystem::path& p, int& w, int& h) {
+  auto in = OIIO::ImageInput::open(p.string());
+  if (!in) return {};
+  w = in->spec().width;
+  h = in->spec().height;
+  std::vector<unsigned char> px(std::size_t(w) * h * 4);
+  in->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, px.data());
+  return px;
+}
+
+// Pixels that are not the background (the first pixel, a corner no glyph reaches).
+std::size_t covered(const std::vector<unsigned char>& px) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < px.size(); i += 4)
+    n += px[i] != px[0] || px[i + 1] != px[1] || px[i + 2] != px[2];
+  return n;
+}
+
+std::size_t differing(const std::vector<unsigned char>& a, const std::vector<unsigned char>& b) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i + 3 < a.size() && i + 3 < b.size(); i += 4)
+    n += a[i] != b[i] || a[i + 1] != b[i + 1] || a[i + 2] != b[i + 2];
+  return n + (a.size() != b.size() ? 1 : 0);
+}
+
+bool haveDisplay() {
+  if (std::getenv("DISPLAY")) return true;
+  if (std::getenv("TG_REQUIRE_DISPLAY")) ADD_FAILURE() << "TG_REQUIRE_DISPLAY is set but DISPLAY is not";
+  return false;
+}
+
+}  // namespace
+
+TEST(View, ScriptedScreenshotsMatchTheHeadlessRenderer) {
+  if (!haveDisplay()) GTEST_SKIP() << "no X display";
+  const auto dir = tg::test::cliDir("view");
+  const auto shot = [&](int k) {
+    std::string name = std::to_string(k);  // not "s" + ...: GCC 12 warns falsely (-Wrestrict)
+    name.insert(0, 1, 's');
+    return dir / (name + ".png");
+  };
+  {
+    std::ofstream s(dir / "script.txt");
+    s << "# the built-in scene at 320x240\n"
+      << "screenshot " << shot(0).string() << "\n"
+      << "fa-min 0.5\nglyph superquadric\ngamma 0\ncolor fa\n"
+      << "screenshot " << shot(1).string() << "\n"
+      << "orbit 90 20\nzoom 1.3\n"
+      << "screenshot " << shot(2).string() << "\n"
+      << "reset\nfa-min 0.25\nglyph ellipsoid\ngamma 3\ncolor dec  # back to the start\n"
+      << "screenshot " << shot(3).string() << "\n"
+      << "slab z 2 4\n"
+      << "screenshot " << shot(4).string() << "\n";
+  }
+  const auto r = runBinary("view --size 320 240 --script " + (dir / "script.txt").string(), dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("parameter changes, CPU time per change"), std::string::npos) << r.err;
+  ASSERT_EQ(runBinary("render --size 320 240 -o " + (dir / "r0.png").string(), dir).code, 0);
+  ASSERT_EQ(runBinary("render --size 320 240 --fa-min 0.5 --glyph superquadric --gamma 0 --color fa -o " +
+                          (dir / "r1.png").string(), dir).code, 0);
+  int w = 0, h = 0;
+  std::vector<std::vector<unsigned char>> s;
+  for (int k = 0; k < 5; ++k) {
+    s.push_back(readRgba(shot(k), w, h));
+    ASSERT_EQ(w, 320) << k;
+    ASSERT_EQ(h, 240) << k;
+  }
+  const auto r0 = readRgba(dir / "r0.png", w, h), r1 = readRgba(dir / "r1.png", w, h);
+  // Exact: the screenshot is read from the same offscreen target that
+  // `render` reads, drawn by the same driver (Mesa llvmpipe); the window
+  // only displays a copy.
+  EXPECT_EQ(differing(s[0], r0), 0u);
+  EXPECT_EQ(differing(s[1], r1), 0u);
+  EXPECT_EQ(differing(s[3], s[0]), 0u) << "reset and the restored parameters give the first view back";
+  const std::size_t c0 = covered(s[0]);
+  EXPECT_GT(c0, 3000u);
+  EXPECT_GT(differing(s[2], s[0]), c0 / 2) << "orbit and zoom move the view";
+  EXPECT_GT(covered(s[2]), c0 / 2);
+  EXPECT_LT(covered(s[4]), c0 / 2) << "the slab hides most glyphs";
+  EXPECT_GT(covered(s[4]), 50u);
+  std::filesystem::remove_all(dir);
+}
