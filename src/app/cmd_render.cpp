@@ -30,7 +30,7 @@ struct RenderOptions {
   std::optional<double> faMin, fov, ortho;
   std::optional<glm::dvec3> eye, lookAt, up;
   glm::vec4 background{0.08f, 0.08f, 0.10f, 1.0f};
-  int repeat = 0, maxIterations = render::MarchParams{}.maxIterations;
+  int repeat = 0, tessellate = 0, maxIterations = render::MarchParams{}.maxIterations;
   double epsilon = render::MarchParams{}.epsilon;
   bool verbose = false, stats = false;
 };
@@ -57,6 +57,9 @@ RenderOptions parse(int argc, const char** argv) {
   });
   ap.arg("--epsilon E").help("superquadric hit tolerance, relative to glyph size (default 1e-4)")
       .action([&](auto&, Args a) { o.epsilon = parseDouble("--epsilon", a[1]); });
+  ap.arg("--tessellate R").help("draw the tessellated baseline instead: an R x R superquadric mesh per glyph, "
+                                 "as VTK's vtkTensorGlyph (4..64; needs --glyph superquadric)")
+      .action([&](auto&, Args a) { o.tessellate = int(parseInt("--tessellate", a[1])); });
   ap.arg("--stats").help("report Newton iteration statistics on stderr").action([&](auto&, Args) { o.stats = true; });
   ap.arg("--gamma G").help("superquadric sharpness (Kindlmann 2004), >= 0").action([&](auto&, Args a) {
     o.gamma = parseDouble("--gamma", a[1]);
@@ -95,6 +98,11 @@ void validate(const RenderOptions& o) {
   if (!glyphKindNamed(o.glyph))
     throw UsageError("--glyph: unknown kind \"" + o.glyph + "\"; choose ellipsoid or superquadric");
   if (!(o.gamma >= 0.0 && o.gamma <= 1e4)) throw UsageError("--gamma must be within 0..10000");
+  if (o.tessellate != 0 && (o.tessellate < render::TessellatedGlyphs::kMinResolution ||
+                            o.tessellate > render::TessellatedGlyphs::kMaxResolution))
+    throw UsageError("--tessellate must be within 4..64");
+  if (o.tessellate != 0 && o.glyph != "superquadric") throw UsageError("--tessellate needs --glyph superquadric");
+  if (o.tessellate != 0 && o.stats) throw UsageError("--stats counts the ray march; --tessellate has none");
   if (o.maxIterations < 1 || o.maxIterations > 1000) throw UsageError("--iterations must be within 1..1000");
   if (!(o.epsilon >= 1e-9 && o.epsilon <= 0.5)) throw UsageError("--epsilon must be within 1e-9..0.5");
   o.field.validate();
@@ -147,6 +155,7 @@ int cmdRender(int argc, const char** argv) {
   params.gamma = o.gamma;
   params.march = {o.maxIterations, o.epsilon};
   params.iterationStats = o.stats;
+  params.tessellation = o.tessellate;
   params.background = o.background;
 
   const auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale);

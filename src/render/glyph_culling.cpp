@@ -139,6 +139,12 @@ void GlyphCulling::draw(const QuadSprites& sprites, int g0, int g1) const {
   sprites.drawIndirect(commands_, GLsizei(b), GLsizei(e - b));
 }
 
+std::size_t GlyphCulling::gpuBytes() const {
+  const std::size_t n = table_.ranges.size();
+  return n * (sizeof(GlyphRange) + sizeof(GLuint) + std::size_t(kCommandBytes)) + sizeof(GLuint) +
+         (keptIndex_ ? glyphCount_ * sizeof(GLuint) : 0);
+}
+
 std::uint64_t GlyphCulling::drawnGlyphs() const {
   if (!indirect_) return glyphCount_;
   GLuint v = 0;

@@ -53,6 +53,9 @@ class GlyphCulling {
     std::uint64_t compactions = 0, commandPasses = 0;
   };
   Passes passes() const { return passes_; }
+  // Bytes of GPU memory culling holds: ranges, kept counts and commands,
+  // and the compacted indices once a threshold has needed them.
+  std::size_t gpuBytes() const;
 
  private:
   void dispatch(const gl::Program& prog, std::size_t workgroups) const;

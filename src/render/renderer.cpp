@@ -17,7 +17,8 @@ GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib)
                          {"TG_ITERATION_STATS"}),
       lighting_(gl, lib, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "lighting.frag"}}),
       sprites_(gl),
-      culling_(gl, lib) {
+      culling_(gl, lib),
+      tessellated_(gl, lib) {
   // The lighting pass's core-profile draw needs a vertex array object even
   // with no attributes.
   gl.CreateVertexArrays(1, &vao_);
@@ -40,7 +41,7 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   count_ = GLsizei(set.glyphs.size());
   mdMin_ = float(set.mdMin);
   mdMax_ = float(set.mdMax);
-  for (const gl::Program* prog : {&ellipsoid_, &superquadric_, &superquadricStats_})
+  for (const gl::Program* prog : std::initializer_list<const gl::Program*>{&ellipsoid_, &superquadric_, &superquadricStats_, &tessellated_.program()})
     prog->set("uMdRange", glm::vec2(mdMin_, mdMax_));
   if (count_ > 0) {
     gl_.CreateBuffers(1, &buffer_);
@@ -69,7 +70,7 @@ void GlyphRenderer::setParams(const FrameParams& p) {
   // costs a driver call (the viewer reports the total per change).
   const FrameParams* old = params_ ? &*params_ : nullptr;
   auto changed = [&](auto member) { return !old || !(old->*member == p.*member); };
-  const gl::Program* glyphPrograms[] = {&ellipsoid_, &superquadric_, &superquadricStats_};
+  const gl::Program* glyphPrograms[] = {&ellipsoid_, &superquadric_, &superquadricStats_, &tessellated_.program()};
   for (const gl::Program* prog : glyphPrograms) {
     if (changed(&FrameParams::scale)) prog->set("uScale", float(p.scale));
     if (changed(&FrameParams::faMin)) prog->set("uFaMin", float(p.faMin));
@@ -79,7 +80,7 @@ void GlyphRenderer::setParams(const FrameParams& p) {
     }
     if (changed(&FrameParams::color)) prog->set("uColorMode", int(p.color));
   }
-  for (const gl::Program* prog : {&superquadric_, &superquadricStats_}) {
+  for (const gl::Program* prog : std::initializer_list<const gl::Program*>{&superquadric_, &superquadricStats_, &tessellated_.program()}) {
     if (changed(&FrameParams::gamma)) prog->set("uGamma", float(p.gamma));
     if (changed(&FrameParams::march)) {
       prog->set("uMaxIterations", p.march.maxIterations);
@@ -98,9 +99,17 @@ void GlyphRenderer::setParams(const FrameParams& p) {
 void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffer& target) {
   if (!params_ || !(*params_ == p)) setParams(p);
   gl_.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
-  culling_.prepare(cam, p.scale, p.faMin, p.slab, p.frustumCulling);
+  const bool tessellated = p.tessellation > 0;
+  if (!tessellated) culling_.prepare(cam, p.scale, p.faMin, p.slab, p.frustumCulling);
   target.beginGeometry();
-  if (count_ > 0) {
+  if (count_ > 0 && tessellated) {
+    gl_.Enable(GL_DEPTH_TEST);
+    gl_.DepthFunc(GL_GREATER);
+    gl_.DepthMask(GL_TRUE);
+    gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer_);
+    setCamera(tessellated_.program(), cam);
+    tessellated_.draw(p.tessellation, std::size_t(count_));
+  } else if (count_ > 0) {
     gl_.Enable(GL_DEPTH_TEST);
     gl_.DepthFunc(GL_GREATER);  // reversed Z
     gl_.DepthMask(GL_TRUE);
@@ -149,6 +158,10 @@ void flipRows(std::vector<T>& v, int width, int height, int channels) {
 }
 
 }  // namespace
+
+std::size_t GlyphRenderer::gpuBytes() const {
+  return std::size_t(count_) * sizeof(tensor::GlyphRecord) + culling_.gpuBytes() + tessellated_.meshBytes();
+}
 
 IterationStats GlyphRenderer::iterationStats() const {
   GLuint v[3] = {0, 0, 0};

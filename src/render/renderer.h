@@ -14,6 +14,7 @@
 #include "render/gbuffer.h"
 #include "render/glyph_culling.h"
 #include "render/quad_sprites.h"
+#include "render/tessellated.h"
 #include "tensor/glyph.h"
 
 namespace tg::render {
@@ -62,6 +63,9 @@ struct FrameParams {
   MarchParams march;
   bool iterationStats = false;  // count Newton iterations (a shader variant; off costs nothing)
   bool frustumCulling = true;  // off only to measure what it saves
+  // > 0: draw the tessellated baseline at this resolution instead of ray
+  // casting (superquadrics at `gamma`; render/tessellated.h).
+  int tessellation = 0;
   ColorMode color = ColorMode::DEC;
   glm::vec4 background{0.08f, 0.08f, 0.10f, 1.0f};
   Lighting light;
@@ -89,6 +93,10 @@ class GlyphRenderer {
   // Glyphs the last frame sent to the vertex stage (GlyphCulling::drawnGlyphs).
   std::uint64_t drawnGlyphs() const { return culling_.drawnGlyphs(); }
   const GlyphCulling& culling() const { return culling_; }
+  // GPU memory held for the uploaded glyphs: records, culling's ranges and
+  // commands, the compacted indices once a threshold needed them, and the
+  // tessellated mesh once drawn.
+  std::size_t gpuBytes() const;
 
  private:
   void setCamera(const gl::Program& prog, const Camera& cam) const;
@@ -99,6 +107,7 @@ class GlyphRenderer {
   gl::Program lighting_;
   QuadSprites sprites_;
   GlyphCulling culling_;
+  TessellatedGlyphs tessellated_;
   GLuint vao_ = 0, buffer_ = 0, stats_ = 0;
   GLsizei count_ = 0;
   float mdMin_ = 0, mdMax_ = 0;
