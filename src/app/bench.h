@@ -4,5 +4,6 @@
 namespace tg::app {
 
 int benchAccuracy(int argc, const char** argv);
+int benchScale(int argc, const char** argv);
 
 }  // namespace tg::app

@@ -39,17 +39,6 @@ struct Options {
   std::vector<double> epsilons{1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
 };
 
-template <class T, class Parse>
-std::vector<T> parseList(std::string_view flag, std::string_view text, Parse parse) {
-  std::vector<T> out;
-  for (std::size_t start = 0;;) {
-    const std::size_t comma = text.find(',', start);
-    out.push_back(T(parse(flag, text.substr(start, comma - start))));
-    if (comma == std::string_view::npos) return out;
-    start = comma + 1;
-  }
-}
-
 Options parse(int argc, const char** argv) {
   Options o;
   OIIO::ArgParse ap;

@@ -5,6 +5,7 @@
 #include <span>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include <glm/vec3.hpp>
 
@@ -22,6 +23,18 @@ class UsageError : public std::runtime_error {
 double parseDouble(std::string_view flag, std::string_view text);
 long long parseInt(std::string_view flag, std::string_view text);
 glm::dvec3 parseVec3(std::string_view flag, std::span<const char* const> args);
+
+// A comma-separated list, each item through `parse` (parseInt, parseDouble).
+template <class T, class Parse>
+std::vector<T> parseList(std::string_view flag, std::string_view text, Parse parse) {
+  std::vector<T> out;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = text.find(',', start);
+    out.push_back(T(parse(flag, text.substr(start, comma - start))));
+    if (comma == std::string_view::npos) return out;
+    start = comma + 1;
+  }
+}
 
 // "osmesa", "egl", "glfw" or "auto" (a GPU through EGL if present, else OSMesa).
 // checkBackend throws UsageError for any other name, so commands can reject

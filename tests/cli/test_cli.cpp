@@ -8,6 +8,8 @@
 #include <filesystem>
 #include <algorithm>
 #include <fstream>
+#include <map>
+#include <vector>
 #include <sstream>
 #include <string>
 
@@ -222,5 +224,36 @@ TEST(Cli, ViewRejectsABadScriptBeforeOpeningAWindow) {
   }
   tg::test::expectFailsCleanly("view --script " + (dir / "missing.txt").string(), "cannot open the script", shot,
                                dir, 1);
+  std::filesystem::remove_all(dir);
+}
+
+TEST(Cli, BenchScaleWritesOneRowPerMethodAndCount) {
+  const auto dir = tg::test::cliDir("bench_scale");
+  const auto csv = dir / "scale.csv";
+  const auto r = tg::test::runBinary(
+      "bench scale --n 300,1000 --size 96 64 --resolutions 4,16 --frames 1 -o " + csv.string(), dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::istringstream in(tg::test::slurp(csv));
+  std::string line;
+  std::getline(in, line);
+  EXPECT_EQ(line.rfind("method,resolution,n,", 0), 0u);
+  std::map<std::string, double> coverage;
+  int rows = 0;
+  while (std::getline(in, line)) {
+    ++rows;
+    std::vector<std::string> c;
+    std::stringstream ss(line);
+    for (std::string v; std::getline(ss, v, ',');) c.push_back(v);
+    ASSERT_GE(c.size(), 10u) << line;
+    EXPECT_GT(std::stod(c[5]), 0.0) << line;                 // frame_ms
+    EXPECT_LE(std::stod(c[7]), 64.0) << line;                // GPU bytes per glyph
+    coverage[c[0]] = std::stod(c[9]);
+  }
+  EXPECT_EQ(rows, 8);  // 4 methods x 2 counts
+  // The exact ray casts beat the coarse mesh, which the finer mesh improves on.
+  EXPECT_LT(coverage["raycast-superquadric"], coverage["tessellated-4"]);
+  EXPECT_LT(coverage["tessellated-16"], coverage["tessellated-4"]);
+  tg::test::expectFailsCleanly("bench scale --n 0 -o " + csv.string(), "--n", csv, dir, 1);
+  tg::test::expectFailsCleanly("bench scale --resolutions 2 -o " + csv.string(), "--resolutions", csv, dir, 1);
   std::filesystem::remove_all(dir);
 }
