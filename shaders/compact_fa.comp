@@ -21,7 +21,7 @@ void main() {
   if (k >= uint(uRangeCount)) return;  // uniform per workgroup, so barrier() below is safe
   uint i = gl_LocalInvocationID.x;
   uvec4 fc = ranges[k].firstCount;
-  // The vertex stages' test, so both agree on every glyph.
+  // The FA half of lib/selection.glsl's test, so both agree on every glyph.
   bool keep = i < fc.y && glyphs[fc.x + i].posWC_fa.w >= uFaMin;
   sums[i] = keep ? 1u : 0u;
   barrier();

@@ -6,6 +6,7 @@
 #include "lib/glyph_record.glsl"
 #include "lib/ellipsoid.glsl"
 #include "lib/color.glsl"
+#include "lib/selection.glsl"
 #include "lib/sprite.glsl"
 
 uniform float uScale;
@@ -23,7 +24,7 @@ out SpriteFS {
 void main() {
   gl_Position = kSpriteCulledCC;
   GlyphRecord g = glyphs[spriteGlyphIndex()];
-  if (!spriteSelected(g.posWC_fa)) return;
+  if (!glyphSelected(g.posWC_fa)) return;
   vec3 axes = ellipsoidAxes(g.eigenvalues_id.xyz, uScale);
   float radius = max(axes.x, max(axes.y, axes.z));
   if (!(radius > 0.0)) return;

@@ -8,6 +8,7 @@
 #include "lib/ellipsoid.glsl"
 #include "lib/superquadric.glsl"
 #include "lib/color.glsl"
+#include "lib/selection.glsl"
 #include "lib/sprite.glsl"
 
 uniform float uScale;
@@ -27,7 +28,7 @@ out SuperquadricFS {
 void main() {
   gl_Position = kSpriteCulledCC;
   GlyphRecord g = glyphs[spriteGlyphIndex()];
-  if (!spriteSelected(g.posWC_fa)) return;
+  if (!glyphSelected(g.posWC_fa)) return;
   vec3 axes = ellipsoidAxes(g.eigenvalues_id.xyz, uScale);
   if (!(max(axes.x, max(axes.y, axes.z)) > 0.0)) return;
   vec4 shape = superquadricShape(g.eigenvalues_id.xyz, uGamma);

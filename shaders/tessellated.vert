@@ -10,11 +10,9 @@
 #include "lib/ellipsoid.glsl"
 #include "lib/superquadric.glsl"
 #include "lib/color.glsl"
+#include "lib/selection.glsl"
 
 uniform float uScale;
-uniform float uFaMin;
-uniform int uSlabAxis;
-uniform vec2 uSlabWC;
 uniform int uColorMode;
 uniform vec2 uMdRange;
 uniform float uGamma;
@@ -32,8 +30,7 @@ void main() {
   gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // culled: outside the clip volume
   GlyphRecord g = glyphs[gl_InstanceID];
   vec4 pf = g.posWC_fa;
-  if (!(pf.w >= uFaMin)) return;
-  if (uSlabAxis >= 0 && !(pf[uSlabAxis] >= uSlabWC.x && pf[uSlabAxis] <= uSlabWC.y)) return;
+  if (!glyphSelected(pf)) return;
   vec3 axes = ellipsoidAxes(g.eigenvalues_id.xyz, uScale);
   if (!(max(axes.x, max(axes.y, axes.z)) > 0.0)) return;
   vec4 shape = superquadricShape(g.eigenvalues_id.xyz, uGamma);

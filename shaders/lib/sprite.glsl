@@ -17,17 +17,6 @@ uint spriteGlyphIndex() {
   return uCompacted != 0 ? keptIndex[slot] : slot;
 }
 
-// The user's selection, tested on the glyph centre before any shape work:
-// the FA threshold and an optional slab of centres along a WC axis.
-uniform float uFaMin;
-uniform int uSlabAxis;  // -1: no slab
-uniform vec2 uSlabWC;   // kept: uSlabWC.x <= centre[uSlabAxis] <= uSlabWC.y
-
-bool spriteSelected(vec4 posWC_fa) {
-  if (!(posWC_fa.w >= uFaMin)) return false;
-  return uSlabAxis < 0 || (posWC_fa[uSlabAxis] >= uSlabWC.x && posWC_fa[uSlabAxis] <= uSlabWC.y);
-}
-
 // Outside the clip volume: both triangles of a culled glyph are dropped
 // before rasterisation.
 const vec4 kSpriteCulledCC = vec4(2.0, 2.0, 2.0, 1.0);

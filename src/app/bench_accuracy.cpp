@@ -27,7 +27,6 @@
 namespace tg::app {
 namespace {
 
-using Clock = std::chrono::steady_clock;
 
 struct Options {
   std::string input, csv, plot, backend = "osmesa";
@@ -177,7 +176,7 @@ int benchAccuracy(int argc, const char** argv) {
 
   const auto tr = Clock::now();
   const ref::RefImage reference = ref::renderSuperquadrics(cam, glyphs.glyphs, {params.scale, params.faMin}, o.gamma);
-  const double refMs = std::chrono::duration<double, std::milli>(Clock::now() - tr).count();
+  const double refMs = msSince(tr);
   // Depth errors in units of each glyph's largest semi-axis, the unit of epsilon.
   std::unordered_map<std::uint32_t, double> size;
   for (const auto& g : glyphs.glyphs)
@@ -210,7 +209,7 @@ int benchAccuracy(int argc, const char** argv) {
         const auto t0 = Clock::now();
         renderer.render(cam, params, target);
         ctx->api().Finish();
-        times.push_back(std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+        times.push_back(msSince(t0));
       }
       std::sort(times.begin(), times.end());
       const render::FrameImage img = renderer.readback(cam, target, render::Channels::All);

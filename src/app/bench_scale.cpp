@@ -23,8 +23,6 @@
 namespace tg::app {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-
 struct Options {
   std::string csv, backend = "osmesa";
   std::vector<double> counts{1e4, 1e5, 1e6};
@@ -91,7 +89,7 @@ double frameMs(const gl::Api& gl, render::GlyphRenderer& r, const render::Camera
     const auto t0 = Clock::now();
     r.render(cam, p, t);
     gl.Finish();
-    return std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+    return msSince(t0);
   };
   const double warm = once();
   if (warmMs) *warmMs = warm;

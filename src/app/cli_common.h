@@ -1,5 +1,6 @@
 #pragma once
 // Shared pieces of the subcommands: strict value parsing and context creation.
+#include <chrono>
 #include <memory>
 #include <optional>
 #include <span>
@@ -41,6 +42,12 @@ std::vector<T> parseList(std::string_view flag, std::string_view text, Parse par
 // it before loading anything.
 void checkBackend(std::string_view backend);
 std::unique_ptr<gl::Context> createContext(std::string_view backend, int width, int height);
+
+// Wall time since t, for the commands' timings.
+using Clock = std::chrono::steady_clock;
+inline double msSince(Clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
 
 // Peak resident memory of this process so far, in bytes.
 std::size_t peakRssBytes();

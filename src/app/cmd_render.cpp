@@ -19,8 +19,6 @@
 namespace tg::app {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
 struct RenderOptions {
   std::string input, output, backend = "osmesa", glyph = "ellipsoid", color = "dec";

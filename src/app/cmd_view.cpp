@@ -29,9 +29,6 @@
 namespace tg::app {
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double usSince(Clock::time_point t) { return std::chrono::duration<double, std::micro>(Clock::now() - t).count(); }
-
 struct ViewOptions {
   std::string input, script, glyph = "ellipsoid", color = "dec", shotPrefix = "tensorglyph-view-";
   FieldFlags field;
@@ -174,7 +171,7 @@ int cmdView(int argc, const char** argv) {
         // The whole CPU cost of a parameter change: uniform updates.
         const auto t = Clock::now();
         renderer.setParams(p);
-        const double us = usSince(t);
+        const double us = 1000.0 * msSince(t);
         if (applied) changeUs.push_back(us);
         status.lastChangeUs = us;
         applied = p;
@@ -184,7 +181,7 @@ int cmdView(int argc, const char** argv) {
       const auto t0 = Clock::now();
       renderer.render(cam, p, *target);
       status.drawn = renderer.drawnGlyphs();  // waits for the frame: the status shows this frame's count
-      frameMs.push_back(usSince(t0) / 1000.0);
+      frameMs.push_back(msSince(t0));
       status.total = glyphCount;
       if (p.iterationStats) status.newton = renderer.iterationStats();
       status.fps = ImGui::GetIO().Framerate;

@@ -51,7 +51,7 @@ void check(const ScriptStep& s) {
       throw UsageError("light: unknown term \"" + w + "\"; choose ambient, head, key, specular or shininess");
     if (!(number(s, 1) >= 0.0)) throw UsageError("light: must be >= 0");
   }
-  if (v == "iterations" && !(number(s, 0) >= 1 && number(s, 0) <= 1000 && parseInt(v, s.args[0]) > 0))
+  if (v == "iterations" && !(parseInt(v, s.args[0]) >= 1 && parseInt(v, s.args[0]) <= 1000))
     throw UsageError("iterations: must be within 1..1000");
   if (v == "epsilon" && !(number(s, 0) >= 1e-9 && number(s, 0) <= 0.5))
     throw UsageError("epsilon: must be within 1e-9..0.5");

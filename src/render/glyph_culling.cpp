@@ -5,12 +5,9 @@
 #include <stdexcept>
 
 #include "render/frustum.h"
-#include "render/renderer.h"
 
 namespace tg::render {
 namespace {
-
-constexpr GLsizeiptr kCommandBytes = 5 * sizeof(GLuint);  // DrawElementsIndirectCommand
 
 void deleteBuffers(const gl::Api& gl, std::initializer_list<GLuint*> buffers) {
   for (GLuint* b : buffers) {
@@ -52,7 +49,7 @@ void GlyphCulling::upload(const tensor::GlyphSet& set, GLuint glyphBuffer) {
   gl_.CreateBuffers(1, &keptCount_);
   gl_.NamedBufferStorage(keptCount_, GLsizeiptr(n * sizeof(GLuint)), nullptr, 0);
   gl_.CreateBuffers(1, &commands_);
-  gl_.NamedBufferStorage(commands_, GLsizeiptr(n) * kCommandBytes, nullptr, 0);
+  gl_.NamedBufferStorage(commands_, GLsizeiptr(n) * QuadSprites::kIndirectCommandBytes, nullptr, 0);
   gl::checkError(gl_, "GlyphCulling::upload");
 }
 
@@ -141,7 +138,7 @@ void GlyphCulling::draw(const QuadSprites& sprites, int g0, int g1) const {
 
 std::size_t GlyphCulling::gpuBytes() const {
   const std::size_t n = table_.ranges.size();
-  return n * (sizeof(GlyphRange) + sizeof(GLuint) + std::size_t(kCommandBytes)) + sizeof(GLuint) +
+  return n * (sizeof(GlyphRange) + sizeof(GLuint) + std::size_t(QuadSprites::kIndirectCommandBytes)) + sizeof(GLuint) +
          (keptIndex_ ? glyphCount_ * sizeof(GLuint) : 0);
 }
 

@@ -18,7 +18,13 @@
 
 namespace tg::render {
 
-struct Slab;
+// Glyphs whose centre lies in [lo, hi] along a WC axis (ParaView's and
+// Slicer's slice of a glyph volume, as thick as asked).
+struct Slab {
+  int axis = -1;  // 0, 1, 2; -1: off
+  double lo = 0, hi = 0;
+  bool operator==(const Slab&) const = default;
+};
 
 class GlyphCulling {
  public:
@@ -40,6 +46,8 @@ class GlyphCulling {
   // Draws the glyphs of groups [g0, g1) (tensor::GlyphGroup) with the bound
   // program, whose uCompacted must be compacted().
   void draw(const QuadSprites& sprites, int g0, int g1) const;
+  // A frame drawn by other means (the tessellated baseline) draws every glyph.
+  void bypass() { compacted_ = indirect_ = false; }
 
   bool compacted() const { return compacted_; }
   bool indirect() const { return indirect_; }

@@ -50,11 +50,10 @@ void QuadSprites::draw(std::span<const GlyphRun> runs) const {
 
 void QuadSprites::drawIndirect(GLuint commands, GLsizei first, GLsizei count) const {
   if (count <= 0) return;
-  constexpr std::size_t kCommandBytes = 5 * sizeof(GLuint);
   gl_.BindVertexArray(vao_);
   gl_.BindBuffer(GL_DRAW_INDIRECT_BUFFER, commands);
   gl_.MultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_SHORT,
-                                reinterpret_cast<const void*>(std::size_t(first) * kCommandBytes), count, 0);
+                                reinterpret_cast<const void*>(std::size_t(first) * std::size_t(kIndirectCommandBytes)), count, 0);
   gl_.BindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
 }
 

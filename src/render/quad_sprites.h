@@ -12,6 +12,7 @@ namespace tg::render {
 class QuadSprites {
  public:
   static constexpr GLsizei kQuadsPerBatch = 16384;  // 4 vertices each: the largest 16-bit batch
+  static constexpr GLsizeiptr kIndirectCommandBytes = 5 * sizeof(GLuint);  // DrawElementsIndirectCommand
 
   explicit QuadSprites(const gl::Api& gl);
   ~QuadSprites();

@@ -41,8 +41,7 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   count_ = GLsizei(set.glyphs.size());
   mdMin_ = float(set.mdMin);
   mdMax_ = float(set.mdMax);
-  for (const gl::Program* prog : std::initializer_list<const gl::Program*>{&ellipsoid_, &superquadric_, &superquadricStats_, &tessellated_.program()})
-    prog->set("uMdRange", glm::vec2(mdMin_, mdMax_));
+  for (const gl::Program* prog : glyphPrograms()) prog->set("uMdRange", glm::vec2(mdMin_, mdMax_));
   if (count_ > 0) {
     gl_.CreateBuffers(1, &buffer_);
     gl_.NamedBufferStorage(buffer_, GLsizeiptr(set.glyphs.size() * sizeof(tensor::GlyphRecord)),
@@ -65,13 +64,20 @@ void GlyphRenderer::setCamera(const gl::Program& prog, const Camera& cam) const 
   prog.set("uFarVC", ortho ? float(cam.farVC) : std::numeric_limits<float>::max());
 }
 
+std::array<const gl::Program*, 4> GlyphRenderer::glyphPrograms() const {
+  return {&ellipsoid_, &superquadric_, &superquadricStats_, &tessellated_.program()};
+}
+
+std::array<const gl::Program*, 3> GlyphRenderer::shapePrograms() const {
+  return {&superquadric_, &superquadricStats_, &tessellated_.program()};
+}
+
 void GlyphRenderer::setParams(const FrameParams& p) {
   // Only what changed: a slider moves one value, and each uniform update
   // costs a driver call (the viewer reports the total per change).
   const FrameParams* old = params_ ? &*params_ : nullptr;
   auto changed = [&](auto member) { return !old || !(old->*member == p.*member); };
-  const gl::Program* glyphPrograms[] = {&ellipsoid_, &superquadric_, &superquadricStats_, &tessellated_.program()};
-  for (const gl::Program* prog : glyphPrograms) {
+  for (const gl::Program* prog : glyphPrograms()) {
     if (changed(&FrameParams::scale)) prog->set("uScale", float(p.scale));
     if (changed(&FrameParams::faMin)) prog->set("uFaMin", float(p.faMin));
     if (changed(&FrameParams::slab)) {
@@ -80,7 +86,7 @@ void GlyphRenderer::setParams(const FrameParams& p) {
     }
     if (changed(&FrameParams::color)) prog->set("uColorMode", int(p.color));
   }
-  for (const gl::Program* prog : std::initializer_list<const gl::Program*>{&superquadric_, &superquadricStats_, &tessellated_.program()}) {
+  for (const gl::Program* prog : shapePrograms()) {
     if (changed(&FrameParams::gamma)) prog->set("uGamma", float(p.gamma));
     if (changed(&FrameParams::march)) {
       prog->set("uMaxIterations", p.march.maxIterations);
@@ -100,20 +106,19 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   if (!params_ || !(*params_ == p)) setParams(p);
   gl_.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   const bool tessellated = p.tessellation > 0;
-  if (!tessellated) culling_.prepare(cam, p.scale, p.faMin, p.slab, p.frustumCulling);
+  if (tessellated) culling_.bypass();
+  else culling_.prepare(cam, p.scale, p.faMin, p.slab, p.frustumCulling);
   target.beginGeometry();
-  if (count_ > 0 && tessellated) {
-    gl_.Enable(GL_DEPTH_TEST);
-    gl_.DepthFunc(GL_GREATER);
-    gl_.DepthMask(GL_TRUE);
-    gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer_);
-    setCamera(tessellated_.program(), cam);
-    tessellated_.draw(p.tessellation, std::size_t(count_));
-  } else if (count_ > 0) {
+  if (count_ > 0) {
     gl_.Enable(GL_DEPTH_TEST);
     gl_.DepthFunc(GL_GREATER);  // reversed Z
     gl_.DepthMask(GL_TRUE);
     gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer_);
+  }
+  if (count_ > 0 && tessellated) {
+    setCamera(tessellated_.program(), cam);
+    tessellated_.draw(p.tessellation, std::size_t(count_));
+  } else if (count_ > 0) {
     if (p.iterationStats) {
       const GLuint zero[3] = {0, 0, 0};
       gl_.NamedBufferSubData(stats_, 0, sizeof(zero), zero);

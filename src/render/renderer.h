@@ -1,6 +1,7 @@
 #pragma once
 // The glyph renderer: one upload, then a geometry pass into the G-buffer and a
 // deferred lighting pass per frame.
+#include <array>
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -28,14 +29,6 @@ struct Lighting {
   glm::vec3 keyDirVC{-0.45f, 0.55f, 0.70f};  // upper left, in front
   float ambient = 0.22f, head = 0.55f, key = 0.40f, specular = 0.25f, shininess = 40.0f;
   bool operator==(const Lighting&) const = default;
-};
-
-// Glyphs whose centre lies in [lo, hi] along a WC axis (ParaView's and
-// Slicer's slice of a glyph volume, as thick as asked).
-struct Slab {
-  int axis = -1;  // 0, 1, 2; -1: off
-  double lo = 0, hi = 0;
-  bool operator==(const Slab&) const = default;
 };
 
 enum class GlyphKind { Ellipsoid, Superquadric };
@@ -100,6 +93,9 @@ class GlyphRenderer {
 
  private:
   void setCamera(const gl::Program& prog, const Camera& cam) const;
+  // Programs that draw glyphs, and those of them that take the superquadric shape uniforms.
+  std::array<const gl::Program*, 4> glyphPrograms() const;
+  std::array<const gl::Program*, 3> shapePrograms() const;
   const gl::Api& gl_;
   gl::Program ellipsoid_;
   gl::Program superquadric_;

@@ -130,6 +130,13 @@ TEST_F(Culling, CompactionRunsOncePerThresholdChange) {
   EXPECT_FALSE(f.indirect);
   EXPECT_EQ(f.passes.commandPasses, 1u);  // only the first frame's
   EXPECT_EQ(f.drawn, set.glyphs.size());
+  // A tessellated frame after a culled one draws, and reports, every glyph.
+  render::FrameParams mesh = off;
+  mesh.glyph = render::GlyphKind::Superquadric;
+  mesh.tessellation = 4;
+  const Frame t = frames(set, cam, {a, mesh});
+  EXPECT_FALSE(t.indirect);
+  EXPECT_EQ(t.drawn, set.glyphs.size());
 }
 
 TEST_F(Culling, FrustumCullingChangesOnlyTheWork) {
