@@ -19,7 +19,6 @@
 namespace tg::app {
 namespace {
 
-
 struct RenderOptions {
   std::string input, output, backend = "osmesa", glyph = "ellipsoid", color = "dec";
   FieldFlags field;
