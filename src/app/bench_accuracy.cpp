@@ -2,7 +2,6 @@
 // Sweeps maximum iterations x epsilon on one scene and measures, per setting,
 // the frame time, the Newton iteration statistics and the error against the
 // double-precision reference (src/ref/superquadric_ref).
-#include <OpenImageIO/argparse.h>
 
 #include <algorithm>
 #include <chrono>
@@ -13,6 +12,7 @@
 #include <unordered_map>
 #include <vector>
 
+#include "app/arg_parse.h"
 #include "app/bench.h"
 #include "app/field_flags.h"
 #include "app/cli_common.h"
@@ -74,7 +74,7 @@ Options parse(int argc, const char** argv) {
   });
   ap.arg("--backend NAME").help("osmesa (default), egl, glfw or auto").action([&](auto&, Args a) { o.backend = a[1]; });
   o.field.addTo(ap, true);
-  if (ap.parse_args(argc, argv) < 0) throw UsageError(ap.geterror());
+  parseArgs(ap, argc, argv);
   return o;
 }
 

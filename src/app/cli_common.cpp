@@ -2,33 +2,9 @@
 
 #include <sys/resource.h>
 
-#include <charconv>
-#include <cmath>
-
 #include "gl/backends.h"
 
 namespace tg::app {
-
-double parseDouble(std::string_view flag, std::string_view text) {
-  double v = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (ec != std::errc() || end != text.data() + text.size() || text.empty() || !std::isfinite(v))
-    throw UsageError(std::string(flag) + ": \"" + std::string(text) + "\" is not a finite number");
-  return v;
-}
-
-long long parseInt(std::string_view flag, std::string_view text) {
-  long long v = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (ec != std::errc() || end != text.data() + text.size() || text.empty())
-    throw UsageError(std::string(flag) + ": \"" + std::string(text) + "\" is not an integer");
-  return v;
-}
-
-glm::dvec3 parseVec3(std::string_view flag, std::span<const char* const> a) {
-  if (a.size() != 3) throw UsageError(std::string(flag) + " needs 3 numbers");
-  return {parseDouble(flag, a[0]), parseDouble(flag, a[1]), parseDouble(flag, a[2])};
-}
 
 void checkBackend(std::string_view backend) {
   if (backend != "osmesa" && backend != "egl" && backend != "glfw" && backend != "auto")

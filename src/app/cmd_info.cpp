@@ -1,10 +1,10 @@
-#include <OpenImageIO/argparse.h>
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 
+#include "app/arg_parse.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/field_flags.h"
@@ -24,7 +24,7 @@ int cmdInfo(int argc, const char** argv) {
     input = a[0];
   });
   flags.addTo(ap, false);
-  if (ap.parse_args(argc, argv) < 0) throw UsageError(ap.geterror());
+  parseArgs(ap, argc, argv);
   if (input.empty()) throw UsageError("INPUT is required");
   flags.validate();
 

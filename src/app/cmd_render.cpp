@@ -1,4 +1,3 @@
-#include <OpenImageIO/argparse.h>
 #include <OpenImageIO/imageio.h>
 
 #include <chrono>
@@ -6,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "app/arg_parse.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/field_flags.h"
@@ -83,7 +83,7 @@ RenderOptions parse(int argc, const char** argv) {
     o.repeat = int(parseInt("--repeat", a[1]));
   });
   ap.arg("--verbose").help("report timings and memory on stderr").action([&](auto&, Args) { o.verbose = true; });
-  if (ap.parse_args(argc, argv) < 0) throw UsageError(ap.geterror());
+  parseArgs(ap, argc, argv);
   return o;
 }
 

@@ -1,8 +1,8 @@
-#include <OpenImageIO/argparse.h>
 
 #include <cstdio>
 #include <string>
 
+#include "app/arg_parse.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "data-synthetic/generators.h"
@@ -46,7 +46,7 @@ int cmdSynth(int argc, const char** argv) {
     n = parseInt("--n", a[1]);
   });
   ap.arg("--seed S").help("random seed").action([&](auto&, Args a) { seed = parseInt("--seed", a[1]); });
-  if (ap.parse_args(argc, argv) < 0) throw UsageError(ap.geterror());
+  parseArgs(ap, argc, argv);
   if (kind.empty() || out.empty()) throw UsageError(std::string("KIND and -o OUT are required; KIND is one of ") + kKinds);
   if (n < 0 || n > 4000000000LL) throw UsageError("--n must be within 0..4e9");
 

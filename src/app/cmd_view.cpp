@@ -3,7 +3,6 @@
 // nothing is re-uploaded or recomputed on the CPU after the first frame.
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
-#include <OpenImageIO/argparse.h>
 #include <imgui.h>
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_opengl3.h>
@@ -15,6 +14,7 @@
 #include <optional>
 #include <string>
 
+#include "app/arg_parse.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/field_flags.h"
@@ -64,7 +64,7 @@ ViewOptions parse(int argc, const char** argv) {
   ap.arg("--screenshot-prefix P").help("key S saves P0000.png, P0001.png, ... (default tensorglyph-view-)")
       .action([&](auto&, Args a) { o.shotPrefix = a[1]; });
   o.field.addTo(ap, true);
-  if (ap.parse_args(argc, argv) < 0) throw UsageError(ap.geterror());
+  parseArgs(ap, argc, argv);
   return o;
 }
 

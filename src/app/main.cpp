@@ -17,6 +17,7 @@ constexpr const char* kUsage =
     "  info INPUT              grid, counts, eigenvalue ranges, skipped tensors\n"
     "  synth KIND -o OUT       write a synthetic field (helix, boussinesq, extremes, random, ...)\n"
     "  bench accuracy [INPUT]  superquadric march: error against the reference vs frame time\n"
+    "  bench scale             frame time against glyph count, ray casting vs a tessellated mesh\n"
     "Run 'tensorglyph <command> --help' for a command's options.\n";
 
 }  // namespace
@@ -35,6 +36,8 @@ int main(int argc, const char** argv) {
     if (cmd == "bench") return tg::app::cmdBench(argc - 1, argv + 1);
     std::fprintf(stderr, "tensorglyph: unknown command \"%s\"; run 'tensorglyph --help'\n", cmd.c_str());
     return 2;
+  } catch (const tg::app::HelpShown&) {
+    return 0;
   } catch (const tg::app::UsageError& e) {
     std::fprintf(stderr, "tensorglyph %s: %s\n", cmd.c_str(), e.what());
     return 2;

@@ -63,7 +63,10 @@ class EglBackend final : public Context {
       eglTerminate(d);
     }
     if (dpy_ == EGL_NO_DISPLAY)
-      throw std::runtime_error("createEglContext: no EGL display offers a GL 4.5 core context");
+      throw std::runtime_error(opt.allowSoftware
+                                   ? "createEglContext: no EGL display offers a GL 4.5 core context"
+                                   : "createEglContext: no GPU EGL device offers a GL 4.5 core context "
+                                     "(software renderers refused)");
     makeCurrent();
     loadEntryPoints();
   }

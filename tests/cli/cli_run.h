@@ -28,10 +28,12 @@ inline std::string slurp(const std::filesystem::path& p) {
   return {std::istreambuf_iterator<char>(in), {}};
 }
 
-// `tensorglyph ARGS`, with stdout and stderr kept in `scratch`.
-inline CmdResult runBinary(const std::string& args, const std::filesystem::path& scratch) {
+// `tensorglyph ARGS` (or another of the project's executables), with stdout
+// and stderr kept in `scratch`.
+inline CmdResult runBinary(const std::string& args, const std::filesystem::path& scratch,
+                           const std::string& binary = TG_BINARY) {
   const auto out = scratch / "stdout.txt", err = scratch / "stderr.txt";
-  const std::string cmd = std::string(TG_BINARY) + " " + args + " >" + out.string() + " 2>" + err.string();
+  const std::string cmd = binary + " " + args + " >" + out.string() + " 2>" + err.string();
   const int status = std::system(cmd.c_str());
   return {WEXITSTATUS(status), slurp(out), slurp(err)};
 }
@@ -40,9 +42,10 @@ inline CmdResult runBinary(const std::string& args, const std::filesystem::path&
 // non-zero exit, a message holding `what` in at most `maxLines` lines, and
 // no output file.
 inline void expectFailsCleanly(const std::string& args, const std::string& what, const std::filesystem::path& out,
-                               const std::filesystem::path& scratch, long maxLines) {
+                               const std::filesystem::path& scratch, long maxLines,
+                               const std::string& binary = TG_BINARY) {
   std::filesystem::remove(out);
-  const CmdResult r = runBinary(args, scratch);
+  const CmdResult r = runBinary(args, scratch, binary);
   EXPECT_NE(r.code, 0) << args;
   EXPECT_NE(r.err.find(what), std::string::npos) << args << " -> " << r.err;
   EXPECT_LE(std::count(r.err.begin(), r.err.end(), '\n'), maxLines) << args << " -> " << r.err;

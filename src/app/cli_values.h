@@ -1,0 +1,47 @@
+#pragma once
+// Strict parsing of command-line values, shared by the subcommands and the
+// EGL-only benchmark executable (so it depends on nothing but the C++ library).
+#include <chrono>
+#include <span>
+#include <stdexcept>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace tg::app {
+
+// A command-line error: main prints "tensorglyph: <what>" and exits 2.
+class UsageError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// Thrown once a command has printed its --help: main exits with status 0.
+struct HelpShown {};
+
+// Whole-string numbers only ("1.5x" and "" are errors), finite.
+double parseDouble(std::string_view flag, std::string_view text);
+long long parseInt(std::string_view flag, std::string_view text);
+glm::dvec3 parseVec3(std::string_view flag, std::span<const char* const> args);
+
+// A comma-separated list, each item through `parse` (parseInt, parseDouble).
+template <class T, class Parse>
+std::vector<T> parseList(std::string_view flag, std::string_view text, Parse parse) {
+  std::vector<T> out;
+  for (std::size_t start = 0;;) {
+    const std::size_t comma = text.find(',', start);
+    out.push_back(T(parse(flag, text.substr(start, comma - start))));
+    if (comma == std::string_view::npos) return out;
+    start = comma + 1;
+  }
+}
+
+// Wall time since t, for the commands' timings.
+using Clock = std::chrono::steady_clock;
+inline double msSince(Clock::time_point t) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
+}  // namespace tg::app

@@ -1,0 +1,265 @@
+#include "app/scale_sweep.h"
+
+#include <getopt.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <limits>
+
+#include "app/cli_values.h"
+#include "data-synthetic/generators.h"
+#include "gl/shader_library.h"
+#include "io/atomic_file.h"
+#include "ref/image_diff.h"
+#include "ref/superquadric_ref.h"
+#include "render/renderer.h"
+
+namespace tg::app {
+
+ScaleOptions parseScaleOptions(int argc, const char** argv, ScaleOptions o) {
+  enum Opt { kN = 256, kResolutions, kSize, kFrames, kBudget, kGamma, kBackend, kRequireGpu, kHelp };
+  const option longOpts[] = {{"n", required_argument, nullptr, kN},
+                             {"resolutions", required_argument, nullptr, kResolutions},
+                             {"size", required_argument, nullptr, kSize},
+                             {"frames", required_argument, nullptr, kFrames},
+                             {"budget", required_argument, nullptr, kBudget},
+                             {"gamma", required_argument, nullptr, kGamma},
+                             {"backend", required_argument, nullptr, kBackend},
+                             {"require-gpu", no_argument, nullptr, kRequireGpu},
+                             {"help", no_argument, nullptr, kHelp},
+                             {nullptr, 0, nullptr, 0}};
+  // getopt keeps its cursor in libc's globals: reset it (0 re-initialises
+  // GNU getopt) and report errors ourselves, in one line.
+  optind = 0;
+  opterr = 0;
+  // "+": stop at the first non-option and never permute argv, so the cast
+  // away from const is never written through.
+  char** av = const_cast<char**>(argv);
+  for (int c; (c = getopt_long(argc, av, "+:o:", longOpts, nullptr)) != -1;) {
+    const std::string arg = optarg ? optarg : "";
+    switch (c) {
+      case 'o': o.csv = arg; break;
+      case kN: o.counts = parseList<double>("--n", arg, parseDouble); break;
+      case kResolutions: o.resolutions = parseList<int>("--resolutions", arg, parseInt); break;
+      case kSize:
+        if (optind >= argc) throw UsageError("--size needs W H");
+        o.width = int(parseInt("--size", arg));
+        o.height = int(parseInt("--size", argv[optind++]));
+        break;
+      case kFrames: o.frames = int(parseInt("--frames", arg)); break;
+      case kBudget: o.budgetS = parseDouble("--budget", arg); break;
+      case kGamma: o.gamma = parseDouble("--gamma", arg); break;
+      case kBackend: o.backend = arg; break;
+      case kRequireGpu: o.requireGpu = true; break;
+      case kHelp: o.help = true; break;
+      case ':': throw UsageError(std::string(argv[optind - 1]) + " needs a value");
+      default: throw UsageError("unknown option " + std::string(argv[optind - 1]));
+    }
+  }
+  if (optind < argc) throw UsageError("unexpected argument \"" + std::string(argv[optind]) + "\"");
+  return o;
+}
+
+void checkScaleOptions(const ScaleOptions& o) {
+  if (o.csv.empty()) throw UsageError("-o CSV is required");
+  for (double n : o.counts)
+    if (!(n >= 1 && n <= 2e8 && n == double(std::size_t(n)))) throw UsageError("--n: each must be a whole number within 1..2e8");
+  for (int r : o.resolutions)
+    if (r < render::TessellatedGlyphs::kMinResolution || r > render::TessellatedGlyphs::kMaxResolution)
+      throw UsageError("--resolutions: each must be within 4..64");
+  if (o.width < 16 || o.height < 16 || o.width > 8192 || o.height > 8192) throw UsageError("--size must be within 16..8192");
+  if (o.frames < 1 || o.frames > 1000) throw UsageError("--frames must be within 1..1000");
+  if (!(o.budgetS > 0.0)) throw UsageError("--budget must be positive");
+  if (!(o.gamma >= 0.0 && o.gamma <= 100.0)) throw UsageError("--gamma must be within 0..100");
+  if (o.requireGpu && o.backend != "egl") throw UsageError("--require-gpu needs --backend egl");
+}
+
+std::string scaleUsage(const std::string& command) {
+  return command +
+         " -o CSV [options]\n"
+         "Frame time against glyph count (random tensors on a cubic grid, all in view): ray-cast ellipsoids\n"
+         "and superquadrics, sub-pixel sprites (the per-glyph cost without fragment work), and a tessellated\n"
+         "superquadric mesh per glyph as VTK's vtkTensorGlyph draws it.\n"
+         "  -o CSV              results, one row per method and count\n"
+         "  --n LIST            glyph counts, comma-separated (default 1e4,1e5,1e6; at most 2e8)\n"
+         "  --resolutions LIST  tessellation resolutions, 4..64 (default 8,16,32,64)\n"
+         "  --size W H          image size (default 1920 1080)\n"
+         "  --frames N          timed frames per row after one warm-up; medians are reported (default 3)\n"
+         "  --budget S          a method whose warm-up frame took over S seconds skips larger counts (default 20)\n"
+         "  --gamma G           superquadric sharpness (default 3)\n"
+         "  --backend NAME      osmesa, egl, glfw or auto\n"
+         "  --require-gpu       with egl: fail rather than fall back to Mesa's software renderer\n";
+}
+
+namespace {
+
+struct Method {
+  std::string name;
+  render::GlyphKind glyph;
+  int tessellation = 0;
+  double scaleFactor = 1.0;  // of the sweep's glyph scale
+  double coveragePct = std::numeric_limits<double>::quiet_NaN();
+  bool skipped = false;  // a smaller count exceeded the budget
+};
+
+struct FrameTime {
+  double wallMs = 0, gpuMs = 0, warmMs = 0;
+};
+
+// Medians of `frames` frames after one warm-up, each finished: wall time as
+// the caller sees it, and GPU time between two timestamps around the frame.
+FrameTime timeFrames(const gl::Api& gl, render::GlyphRenderer& r, const render::Camera& cam,
+                     const render::FrameParams& p, const render::GBuffer& t, int frames) {
+  GLuint q[2];
+  gl.CreateQueries(GL_TIMESTAMP, 2, q);
+  auto once = [&](double& gpuMs) {
+    const auto t0 = Clock::now();
+    gl.QueryCounter(q[0], GL_TIMESTAMP);
+    r.render(cam, p, t);
+    gl.QueryCounter(q[1], GL_TIMESTAMP);
+    gl.Finish();
+    const double wall = msSince(t0);
+    GLuint64 ns[2] = {0, 0};
+    gl.GetQueryObjectui64v(q[0], GL_QUERY_RESULT, &ns[0]);
+    gl.GetQueryObjectui64v(q[1], GL_QUERY_RESULT, &ns[1]);
+    gpuMs = double(ns[1] - ns[0]) * 1e-6;
+    return wall;
+  };
+  FrameTime ft;
+  double gpu = 0;
+  ft.warmMs = once(gpu);
+  std::vector<double> wall, gpuV;
+  for (int k = 0; k < frames; ++k) {
+    wall.push_back(once(gpu));
+    gpuV.push_back(gpu);
+  }
+  gl.DeleteQueries(2, q);
+  std::sort(wall.begin(), wall.end());
+  std::sort(gpuV.begin(), gpuV.end());
+  ft.wallMs = wall[wall.size() / 2];
+  ft.gpuMs = gpuV[gpuV.size() / 2];
+  return ft;
+}
+
+render::Camera framing(const tensor::GlyphSet& set, double scale, int w, int h) {
+  const auto [lo, hi] = tensor::glyphBoxWC(set, scale);
+  render::CameraDesc d = render::frameBox(lo, hi, render::Projection::Perspective, 30.0, double(w) / h);
+  d.eyeWC = d.lookAtWC + glm::length(d.eyeWC - d.lookAtWC) * glm::normalize(glm::dvec3(0.5, -0.7, 1.0));
+  d.upWC = {0, 1, 0};
+  return render::makeCamera(d, w, h, lo, hi);
+}
+
+render::FrameParams paramsFor(const Method& m, double scale, double gamma) {
+  render::FrameParams p;
+  p.scale = scale * m.scaleFactor;
+  p.glyph = m.glyph;
+  p.gamma = gamma;
+  p.tessellation = m.tessellation;
+  return p;
+}
+
+// Coverage error against the double-precision reference on a small scene
+// where glyphs span many pixels, so that it measures the shape, not aliasing.
+double coverageErrorPct(const gl::Api& gl, const gl::ShaderLibrary& lib, const Method& m, double gamma) {
+  const auto f = synth::randomField(64, 3);
+  const auto set = tensor::buildGlyphs(f.positions, f.tensors, f.ids);
+  const double scale = 0.6;
+  const render::Camera cam = framing(set, scale, 480, 360);
+  render::GlyphRenderer r(gl, lib);
+  render::GBuffer t(gl, cam.width, cam.height);
+  r.upload(set);
+  r.render(cam, paramsFor(m, scale, gamma), t);
+  const ref::RefImage reference = m.glyph == render::GlyphKind::Ellipsoid
+                                      ? ref::renderEllipsoids(cam, set.glyphs, {scale, 0.0})
+                                      : ref::renderSuperquadrics(cam, set.glyphs, {scale, 0.0}, gamma);
+  const ref::ImageDiff d = ref::diffImages(r.readback(cam, t), reference, cam);
+  return 100.0 * double(d.coverageMismatch) / double(std::max<std::size_t>(d.refCovered, 1));
+}
+
+double coveredPct(const render::FrameImage& img) {
+  const auto covered = std::count_if(img.id.begin(), img.id.end(), [](std::uint32_t id) { return id != 0xFFFFFFFFu; });
+  return 100.0 * double(covered) / double(std::max<std::size_t>(img.id.size(), 1));
+}
+
+// "" where a column does not apply, so that a CSV reader sees a missing value.
+std::string field(double v, const char* fmt) {
+  if (v != v) return "";
+  char b[64];
+  std::snprintf(b, sizeof b, fmt, v);
+  return b;
+}
+
+}  // namespace
+
+void runScaleSweep(gl::Context& ctx, const ScaleOptions& o) {
+  const gl::Api& gl = ctx.api();
+  const gl::ShaderLibrary lib;
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<Method> methods{{"raycast-ellipsoid", render::GlyphKind::Ellipsoid},
+                              {"raycast-superquadric", render::GlyphKind::Superquadric},
+                              // 1/64 of the size: under a pixel, so almost no fragment runs.
+                              {"sprites-subpixel", render::GlyphKind::Superquadric, 0, 1.0 / 64.0}};
+  for (int r : o.resolutions)
+    methods.push_back({"tessellated-" + std::to_string(r), render::GlyphKind::Superquadric, r});
+  for (Method& m : methods)
+    if (m.scaleFactor == 1.0) m.coveragePct = coverageErrorPct(gl, lib, m, o.gamma);
+
+  io::AtomicOutput out(o.csv);
+  std::ofstream f(out.tempPath());
+  f << "method,resolution,n,width,height,frame_ms,gpu_ms,empty_frame_ms,covered_pct,newton_mean,"
+       "gpu_bytes_per_glyph,vtk_mesh_bytes_per_glyph,coverage_error_pct,device\n";
+  std::fprintf(stderr, "scale sweep: %s (%s), %dx%d\n", ctx.backendName(), ctx.describe().c_str(), o.width, o.height);
+  for (double nd : o.counts) {
+    const auto n = std::size_t(nd);
+    const auto t0 = Clock::now();
+    tensor::GlyphSet set;
+    {
+      const auto randomTensors = synth::randomField(n, 1);
+      set = tensor::buildGlyphs(randomTensors.positions, randomTensors.tensors, randomTensors.ids);
+    }
+    const double scale = 0.5;  // the largest eigenvalue 1 gives a diameter of one grid spacing
+    const render::Camera cam = framing(set, scale, o.width, o.height);
+    render::GlyphRenderer r(gl, lib);
+    render::GBuffer target(gl, o.width, o.height);
+    r.upload(set);
+    set.glyphs = {};
+    std::fprintf(stderr, "  n %zu: generated, decomposed and uploaded in %.0f ms\n", n, msSince(t0));
+    // The frame's fixed part: clears and the deferred lighting pass, with
+    // every glyph hidden by the threshold (compacted away in the warm-up).
+    render::FrameParams empty;
+    empty.scale = scale;
+    empty.faMin = 10.0;
+    const FrameTime emptyT = timeFrames(gl, r, cam, empty, target, o.frames);
+    for (Method& m : methods) {
+      if (m.skipped) continue;
+      const render::FrameParams p = paramsFor(m, scale, o.gamma);
+      // A tessellated frame of a million glyphs or more is long; one timed frame says enough.
+      const int frames = m.tessellation > 0 && n >= 1000000 ? 1 : o.frames;
+      const FrameTime ft = timeFrames(gl, r, cam, p, target, frames);
+      m.skipped = ft.warmMs > 1000.0 * o.budgetS;
+      const double covered = coveredPct(r.readback(cam, target));
+      double newton = nan;
+      if (m.glyph == render::GlyphKind::Superquadric && m.tessellation == 0) {
+        render::FrameParams s = p;
+        s.iterationStats = true;
+        r.render(cam, s, target);
+        newton = r.iterationStats().mean;
+      }
+      const double bytes = double(r.gpuBytes()) / double(n);
+      const double vtk = m.tessellation > 0 ? double(render::TessellatedGlyphs::perGlyphMeshBytes(m.tessellation)) : nan;
+      f << m.name << ',' << m.tessellation << ',' << n << ',' << o.width << ',' << o.height << ','
+        << field(ft.wallMs, "%.3f") << ',' << field(ft.gpuMs, "%.3f") << ',' << field(emptyT.wallMs, "%.3f") << ','
+        << field(covered, "%.2f") << ',' << field(newton, "%.3f") << ',' << field(bytes, "%.2f") << ','
+        << field(vtk, "%.0f") << ',' << field(m.coveragePct, "%.4f") << ",\"" << ctx.describe() << "\"\n";
+      std::fprintf(stderr, "  %-22s n %-10zu %10.2f ms (GPU %.2f, empty %.2f), %.1f%% covered, %.1f B/glyph%s\n",
+                   m.name.c_str(), n, ft.wallMs, ft.gpuMs, emptyT.wallMs, covered, bytes,
+                   m.skipped ? "; larger counts skipped" : "");
+    }
+  }
+  f.close();
+  if (!f) throw std::runtime_error("runScaleSweep: " + o.csv + ": write failed");
+  out.commit();
+}
+
+}  // namespace tg::app

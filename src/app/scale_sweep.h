@@ -1,0 +1,39 @@
+#pragma once
+// The scale benchmark behind `tensorglyph bench scale` and the EGL-only
+// executable tensorglyph-gpubench: frame time against glyph count for the
+// ray-cast ellipsoids and superquadrics and the tessellated baseline
+// (render/tessellated.h), with the GPU memory per glyph and each method's
+// coverage error against the exact reference. It needs only the render core,
+// so that the GPU machine, which has no VTK or OpenImageIO, can run it.
+#include <string>
+#include <vector>
+
+#include "gl/context.h"
+
+namespace tg::app {
+
+struct ScaleOptions {
+  std::string csv;
+  std::string backend = "osmesa";
+  bool requireGpu = false;  // refuse a software renderer (a GPU run must not time llvmpipe)
+  bool help = false;
+  std::vector<double> counts{1e4, 1e5, 1e6};
+  std::vector<int> resolutions{8, 16, 32, 64};
+  int width = 1920, height = 1080, frames = 3;
+  double budgetS = 20.0;
+  double gamma = 3.0;
+};
+
+// Parses the options after the command name (argv[0] is the command), over
+// `defaults`; getopt_long, as the executable may not link OpenImageIO.
+// Throws UsageError. Checks nothing beyond syntax: see checkScaleOptions.
+ScaleOptions parseScaleOptions(int argc, const char** argv, ScaleOptions defaults);
+// Teem's habit: every parameter checked before anything is generated.
+void checkScaleOptions(const ScaleOptions& o);
+std::string scaleUsage(const std::string& command);
+
+// Runs the sweep on `ctx` (current) and writes the CSV through a temporary
+// file, renamed into place only when every row is written.
+void runScaleSweep(gl::Context& ctx, const ScaleOptions& o);
+
+}  // namespace tg::app
