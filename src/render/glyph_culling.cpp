@@ -21,7 +21,8 @@ void deleteBuffers(const gl::Api& gl, std::initializer_list<GLuint*> buffers) {
 GlyphCulling::GlyphCulling(const gl::Api& gl, const gl::ShaderLibrary& lib)
     : gl_(gl),
       compact_(gl, lib, {{GL_COMPUTE_SHADER, "compact_fa.comp"}}),
-      cull_(gl, lib, {{GL_COMPUTE_SHADER, "cull_ranges.comp"}}) {
+      cull_(gl, lib, {{GL_COMPUTE_SHADER, "cull_ranges.comp"}}),
+      drawnCounter_(gl) {
   gl.CreateBuffers(1, &visible_);
   gl.NamedBufferStorage(visible_, sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
 }
@@ -148,6 +149,13 @@ std::uint64_t GlyphCulling::drawnGlyphs() const {
   gl_.GetNamedBufferSubData(visible_, 0, sizeof(v), &v);
   gl::checkError(gl_, "GlyphCulling::drawnGlyphs");
   return v;
+}
+
+void GlyphCulling::requestDrawnCount() {
+  if (indirect_)
+    drawnCounter_.request(visible_);
+  else
+    drawnCounter_.requestKnown(glyphCount_);
 }
 
 }  // namespace tg::render

@@ -9,8 +9,10 @@
 // pass runs and the frame is the plain direct draw.
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
+#include "gl/async_counter.h"
 #include "gl/program.h"
 #include "render/camera.h"
 #include "render/glyph_ranges.h"
@@ -55,6 +57,10 @@ class GlyphCulling {
   // the threshold in ranges that passed the frustum test. Waits for the GPU
   // when that frame was culled.
   std::uint64_t drawnGlyphs() const;
+  // The same count without waiting for the GPU: request it after a frame,
+  // then read the newest finished one (a frame or two behind).
+  void requestDrawnCount();
+  std::optional<std::uint64_t> latestDrawnCount() { return drawnCounter_.latest(); }
   // How often each pass has run since upload, so tests can tell that a frame
   // which needs no culling runs none.
   struct Passes {
@@ -75,6 +81,7 @@ class GlyphCulling {
   double maxAbsEigenvalue_ = 0;
   std::size_t glyphCount_ = 0;
   GLuint glyphs_ = 0, ranges_ = 0, keptCount_ = 0, keptIndex_ = 0, commands_ = 0, visible_ = 0;
+  gl::AsyncCounter drawnCounter_;
   float compactedFor_ = 0;
   bool compacted_ = false, indirect_ = false;
   Passes passes_;

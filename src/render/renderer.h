@@ -85,6 +85,9 @@ class GlyphRenderer {
   IterationStats iterationStats() const;
   // Glyphs the last frame sent to the vertex stage (GlyphCulling::drawnGlyphs).
   std::uint64_t drawnGlyphs() const { return culling_.drawnGlyphs(); }
+  // The same without waiting for the GPU (GlyphCulling::requestDrawnCount).
+  void requestDrawnCount() { culling_.requestDrawnCount(); }
+  std::optional<std::uint64_t> latestDrawnCount() { return culling_.latestDrawnCount(); }
   const GlyphCulling& culling() const { return culling_; }
   // GPU memory held for the uploaded glyphs: records, culling's ranges and
   // commands, the compacted indices once a threshold needed them, and the

@@ -225,3 +225,43 @@ TEST_F(Culling, ChangesOneAtATimeEndWhereAFreshStartDoes) {
   const Frame first = frames(set, cam, {chain.front()});
   EXPECT_GT(differing(first.img, fresh.img), 1000u);
 }
+
+// The viewer's status count never waits for the GPU, yet once a frame has
+// finished it reports exactly what the blocking count does, frame after frame
+// and in request order (culled frames through a fenced copy, direct frames
+// from the CPU).
+TEST_F(Culling, DrawnCountWithoutWaitingCatchesUpInOrder) {
+  const auto set = test::glyphsOf(synth::randomField(3000, 4));
+  const double scale = 0.5 / set.maxAbsEigenvalue;
+  const auto cam = test::cameraFor(set, scale, test::oblique(set, 60.0, render::Projection::Perspective), 160, 120);
+  ctx_->makeCurrent();
+  const gl::Api& gl = ctx_->api();
+  render::GlyphRenderer r(gl, *lib_);
+  render::GBuffer target(gl, cam.width, cam.height);
+  r.upload(set);
+  EXPECT_FALSE(r.latestDrawnCount().has_value());
+  std::vector<std::uint64_t> blocking;
+  for (double faMin : {0.0, 0.3, 0.6, 0.0, 0.8}) {
+    render::FrameParams p;
+    p.scale = scale;
+    p.faMin = faMin;
+    r.render(cam, p, target);
+    r.requestDrawnCount();
+    gl.Finish();
+    blocking.push_back(r.drawnGlyphs());
+    EXPECT_EQ(r.latestDrawnCount(), blocking.back()) << "fa " << faMin;
+  }
+  EXPECT_EQ(blocking[0], set.glyphs.size());
+  EXPECT_LT(blocking[4], blocking[2]);
+  EXPECT_LT(blocking[2], blocking[1]);
+  // Several frames in flight, then one finish: the newest wins, never an older one.
+  for (double faMin : {0.3, 0.6, 0.8}) {
+    render::FrameParams p;
+    p.scale = scale;
+    p.faMin = faMin;
+    r.render(cam, p, target);
+    r.requestDrawnCount();
+  }
+  gl.Finish();
+  EXPECT_EQ(r.latestDrawnCount(), blocking[4]);
+}
