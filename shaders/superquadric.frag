@@ -7,6 +7,7 @@
 #include "lib/ellipsoid.glsl"
 #include "lib/superquadric.glsl"
 #include "lib/color.glsl"
+#include "lib/occlusion.glsl"
 
 uniform int uMaxIterations;
 uniform float uEpsilon;
@@ -40,6 +41,9 @@ void main() {
   vec3 o = fin.gcFromVC * (originVC + tc * dirVC - fin.centreVC);
   vec3 d = fin.gcFromVC * dirVC;
   float dl = length(d);
+  // The box's entry is the nearest this glyph can be on the ray: behind the
+  // occluders it cannot win the depth test, so it skips the march.
+  if (pixelOccluded(ivec2(gl_FragCoord.xy), tc + unitCubeSpan(o, d / dl).x / dl, 4.0 * uEpsilon / dl)) discard;
   MarchResult m = superquadricMarch(fin.shape, o, d / dl, (uNearVC - tc) * dl, uMaxIterations, uEpsilon);
 #ifdef TG_ITERATION_STATS
   if (m.iterations > 0) {

@@ -10,11 +10,13 @@
 #include "lib/color.glsl"
 #include "lib/selection.glsl"
 #include "lib/sprite.glsl"
+#include "lib/occlusion.glsl"
 
 uniform float uScale;
 uniform int uColorMode;
 uniform vec2 uMdRange;
 uniform float uGamma;
+uniform float uEpsilon;
 
 out SuperquadricFS {
   flat vec3 centreVC;
@@ -59,6 +61,8 @@ void main() {
   vec2 px = 2.0 / uViewportDC;
   rect = clamp(rect + vec4(-px, px), -1.0, 1.0);
   if (rect.x >= rect.z || rect.y >= rect.w) return;
+  // Wholly behind the occluders: no fragment of it could win the depth test.
+  if (spriteOccluded(rect, nearest, 4.0 * uEpsilon * max(axes.x, max(axes.y, axes.z)))) return;
 
   gl_Position = spriteCornerCC(rect, windowDepthFromViewDepth(max(nearest, uNearVC)));
   vs.centreVC = centreVC;

@@ -89,13 +89,19 @@ struct MarchResult {
 // Newton steps. Seeded at the cube entry; the bracket [lo, hi] with
 // h(lo) > 0 >= h(hi) is kept, and a step that leaves it falls back to
 // regula falsi or bisection.
-MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, int maxIter, float eps) {
-  MarchResult res = MarchResult(false, 0.0, vec3(0.0), 0);
-  // Slabs of the cube [-1, 1]^3.
+// Entry and exit of the ray o + s dir through the cube [-1, 1]^3 that holds
+// every shape (slabs); empty where x > y.
+vec2 unitCubeSpan(vec3 o, vec3 dir) {
   vec3 inv = 1.0 / dir;
   vec3 ta = (-1.0 - o) * inv, tb = (1.0 - o) * inv;
-  float s0 = max(max(min(ta.x, tb.x), min(ta.y, tb.y)), min(ta.z, tb.z));
-  float s1 = min(min(max(ta.x, tb.x), max(ta.y, tb.y)), max(ta.z, tb.z));
+  return vec2(max(max(min(ta.x, tb.x), min(ta.y, tb.y)), min(ta.z, tb.z)),
+              min(min(max(ta.x, tb.x), max(ta.y, tb.y)), max(ta.z, tb.z)));
+}
+
+MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, int maxIter, float eps) {
+  MarchResult res = MarchResult(false, 0.0, vec3(0.0), 0);
+  vec2 span = unitCubeSpan(o, dir);
+  float s0 = span.x, s1 = span.y;
   bool fromNear = sNear > s0;
   s0 = max(s0, sNear);
   if (!(s0 <= s1)) return res;

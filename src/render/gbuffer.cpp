@@ -1,5 +1,6 @@
 #include "render/gbuffer.h"
 
+#include <algorithm>
 #include <stdexcept>
 #include <string>
 
@@ -11,22 +12,28 @@ GBuffer::GBuffer(const gl::Api& gl, int width, int height) : gl_(gl), width_(wid
   if (width < 1 || height < 1 || width > maxSize || height > maxSize)
     throw std::runtime_error("GBuffer: image size " + std::to_string(width) + "x" + std::to_string(height) +
                              " outside 1.." + std::to_string(maxSize));
-  const GLenum formats[5] = {GL_RGBA8, GL_RGBA16F, GL_R32UI, GL_DEPTH_COMPONENT32F, GL_RGBA32F};
-  gl.CreateTextures(GL_TEXTURE_2D, 5, tex_);
-  for (int k = 0; k < 5; ++k) {
+  const GLenum formats[6] = {GL_RGBA8, GL_RGBA16F, GL_R32UI, GL_DEPTH_COMPONENT32F, GL_RGBA32F,
+                             GL_DEPTH_COMPONENT32F};
+  gl.CreateTextures(GL_TEXTURE_2D, 6, tex_);
+  for (int k = 0; k < 6; ++k) {
     gl.TextureStorage2D(tex_[k], 1, formats[k], width, height);
     // Nearest: an integer texture with the default linear filter is
     // incomplete, and texelFetch from it silently returns zero.
     gl.TextureParameteri(tex_[k], GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     gl.TextureParameteri(tex_[k], GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   }
-  gl.CreateFramebuffers(2, fbo_);
+  gl.CreateTextures(GL_TEXTURE_2D, 1, &tex_[6]);
+  gl.TextureStorage2D(tex_[6], pyramidLevels(), GL_R32F, pyramidWidth(), pyramidHeight());
+  gl.CreateFramebuffers(3, fbo_);
   for (int k = 0; k < 3; ++k) gl.NamedFramebufferTexture(fbo_[0], GL_COLOR_ATTACHMENT0 + k, tex_[k], 0);
   gl.NamedFramebufferTexture(fbo_[0], GL_DEPTH_ATTACHMENT, tex_[3], 0);
   const GLenum draw[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
   gl.NamedFramebufferDrawBuffers(fbo_[0], 3, draw);
   gl.NamedFramebufferTexture(fbo_[1], GL_COLOR_ATTACHMENT0, tex_[4], 0);
   gl.NamedFramebufferDrawBuffers(fbo_[1], 1, draw);
+  const GLenum none = GL_NONE;
+  gl.NamedFramebufferTexture(fbo_[2], GL_DEPTH_ATTACHMENT, tex_[5], 0);
+  gl.NamedFramebufferDrawBuffers(fbo_[2], 1, &none);
   for (GLuint f : fbo_)
     if (gl.CheckNamedFramebufferStatus(f, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
       throw std::runtime_error("GBuffer: framebuffer incomplete");
@@ -34,8 +41,8 @@ GBuffer::GBuffer(const gl::Api& gl, int width, int height) : gl_(gl), width_(wid
 }
 
 GBuffer::~GBuffer() {
-  gl_.DeleteFramebuffers(2, fbo_);
-  gl_.DeleteTextures(5, tex_);
+  gl_.DeleteFramebuffers(3, fbo_);
+  gl_.DeleteTextures(7, tex_);
 }
 
 void GBuffer::beginGeometry() const {
@@ -48,6 +55,19 @@ void GBuffer::beginGeometry() const {
   gl_.ClearNamedFramebufferfv(fbo_[0], GL_COLOR, 1, zero);
   gl_.ClearNamedFramebufferuiv(fbo_[0], GL_COLOR, 2, noGlyph);
   gl_.ClearNamedFramebufferfv(fbo_[0], GL_DEPTH, 0, &farDepth);
+}
+
+int GBuffer::pyramidLevels() const {
+  int levels = 1;  // down to 1 x 1
+  while ((std::max(pyramidWidth(), pyramidHeight()) >> levels) > 0) ++levels;
+  return levels;
+}
+
+void GBuffer::beginOccluders() const {
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, fbo_[2]);
+  gl_.Viewport(0, 0, width_, height_);
+  const float farDepth = 0.0f;  // reversed Z
+  gl_.ClearNamedFramebufferfv(fbo_[2], GL_DEPTH, 0, &farDepth);
 }
 
 void GBuffer::beginLighting() const {

@@ -15,6 +15,9 @@ class GBuffer {
   int height() const { return height_; }
   // Clears every channel to "empty" and binds the geometry framebuffer.
   void beginGeometry() const;
+  // Clears and binds the occluder depth framebuffer (depth only): the
+  // superquadric pass's occlusion pre-pass (GlyphRenderer::render).
+  void beginOccluders() const;
   // Binds the G-buffer textures to units 0..2 and the colour framebuffer.
   void beginLighting() const;
 
@@ -23,13 +26,19 @@ class GBuffer {
   GLuint id() const { return tex_[2]; }        // R32UI
   GLuint depth() const { return tex_[3]; }     // DEPTH32F, reversed
   GLuint color() const { return tex_[4]; }     // RGBA32F, lit
+  GLuint occluderDepth() const { return tex_[5]; }  // DEPTH32F, reversed
+  // R32F, mip 0 at half size (render/occluder_pyramid.h).
+  GLuint occluderPyramid() const { return tex_[6]; }
+  int pyramidWidth() const { return (width_ + 1) / 2; }
+  int pyramidHeight() const { return (height_ + 1) / 2; }
+  int pyramidLevels() const;
   GLuint colorFramebuffer() const { return fbo_[1]; }
 
  private:
   const gl::Api& gl_;
   int width_, height_;
-  GLuint tex_[5] = {};
-  GLuint fbo_[2] = {};
+  GLuint tex_[7] = {};
+  GLuint fbo_[3] = {};
 };
 
 }  // namespace tg::render

@@ -18,6 +18,7 @@ GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib)
       lighting_(gl, lib, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "lighting.frag"}}),
       sprites_(gl),
       culling_(gl, lib),
+      pyramid_(gl, lib),
       tessellated_(gl, lib) {
   // The lighting pass's core-profile draw needs a vertex array object even
   // with no attributes.
@@ -88,6 +89,7 @@ void GlyphRenderer::setParams(const FrameParams& p) {
   }
   for (const gl::Program* prog : shapePrograms()) {
     if (changed(&FrameParams::gamma)) prog->set("uGamma", float(p.gamma));
+    if (changed(&FrameParams::occlusionPrepass)) prog->set("uOccluders", p.occlusionPrepass ? 1 : 0);
     if (changed(&FrameParams::march)) {
       prog->set("uMaxIterations", p.march.maxIterations);
       prog->set("uEpsilon", float(p.march.epsilon));
@@ -108,13 +110,36 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   const bool tessellated = p.tessellation > 0;
   if (tessellated) culling_.bypass();
   else culling_.prepare(cam, p.scale, p.faMin, p.slab, p.frustumCulling);
-  target.beginGeometry();
   if (count_ > 0) {
     gl_.Enable(GL_DEPTH_TEST);
     gl_.DepthFunc(GL_GREATER);  // reversed Z
     gl_.DepthMask(GL_TRUE);
     gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer_);
   }
+  // Dispatch (README, "How glyphs are dispatched") over the groups
+  // (tensor::GlyphGroup): the ellipsoid program draws groups [0, split),
+  // the superquadric program the rest. At gamma 0 only mixed-sign glyphs
+  // are not ellipsoids; at gamma > 0 only spheres are.
+  const bool sq = p.glyph == GlyphKind::Superquadric;
+  const int split = !sq ? 3 : p.gamma > 0.0 ? 1 : 2;
+  auto use = [&](const gl::Program& prog) {
+    setCamera(prog, cam);
+    prog.set("uCompacted", culling_.compacted() ? 1 : 0);
+    gl_.UseProgram(prog.id());
+  };
+  const bool marching = count_ > 0 && !tessellated && split < 3;
+  if (marching && p.occlusionPrepass) {
+    // Occlusion pre-pass: the exact ellipsoids of spheres and definite
+    // glyphs, depth only. Their superquadrics hold them, so no visible
+    // surface lies behind this depth: superquadrics wholly behind it are
+    // culled, and pixels whose box entry is behind it skip the march
+    // (shaders/lib/occlusion.glsl).
+    target.beginOccluders();
+    use(ellipsoid_);
+    culling_.draw(sprites_, 0, 2);
+    pyramid_.build(target);
+  }
+  target.beginGeometry();
   if (count_ > 0 && tessellated) {
     setCamera(tessellated_.program(), cam);
     tessellated_.draw(p.tessellation, std::size_t(count_));
@@ -123,20 +148,9 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
       const GLuint zero[3] = {0, 0, 0};
       gl_.NamedBufferSubData(stats_, 0, sizeof(zero), zero);
     }
-    // Dispatch (README, "How glyphs are dispatched") over the groups
-    // (tensor::GlyphGroup): the ellipsoid program draws groups [0, split),
-    // the superquadric program the rest. At gamma 0 only mixed-sign glyphs
-    // are not ellipsoids; at gamma > 0 only spheres are.
-    const bool sq = p.glyph == GlyphKind::Superquadric;
-    const int split = !sq ? 3 : p.gamma > 0.0 ? 1 : 2;
-    auto use = [&](const gl::Program& prog) {
-      setCamera(prog, cam);
-      prog.set("uCompacted", culling_.compacted() ? 1 : 0);
-      gl_.UseProgram(prog.id());
-    };
     use(ellipsoid_);
     culling_.draw(sprites_, 0, split);
-    if (split < 3) {
+    if (marching) {
       if (p.iterationStats) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, stats_);
       use(p.iterationStats ? superquadricStats_ : superquadric_);
       culling_.draw(sprites_, split, 3);

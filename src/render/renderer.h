@@ -13,6 +13,7 @@
 #include "render/camera.h"
 #include "render/frame_image.h"
 #include "render/gbuffer.h"
+#include "render/occluder_pyramid.h"
 #include "render/glyph_culling.h"
 #include "render/quad_sprites.h"
 #include "render/tessellated.h"
@@ -56,6 +57,9 @@ struct FrameParams {
   MarchParams march;
   bool iterationStats = false;  // count Newton iterations (a shader variant; off costs nothing)
   bool frustumCulling = true;  // off only to measure what it saves
+  // Superquadrics: an exact ellipsoid depth pass first, so that fragments of
+  // glyphs hidden behind it skip the march (off only to measure what it saves).
+  bool occlusionPrepass = true;
   // > 0: draw the tessellated baseline at this resolution instead of ray
   // casting (superquadrics at `gamma`; render/tessellated.h).
   int tessellation = 0;
@@ -106,6 +110,7 @@ class GlyphRenderer {
   gl::Program lighting_;
   QuadSprites sprites_;
   GlyphCulling culling_;
+  OccluderPyramid pyramid_;
   TessellatedGlyphs tessellated_;
   GLuint vao_ = 0, buffer_ = 0, stats_ = 0;
   GLsizei count_ = 0;

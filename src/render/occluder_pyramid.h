@@ -1,0 +1,27 @@
+#pragma once
+// The occluder depth pyramid: mip k of GBuffer::occluderPyramid() holds, per
+// texel, the farthest occluder depth over 2^(k+1) x 2^(k+1) pixels
+// (shaders/occluder_pyramid.comp), so that the superquadric vertex stage can
+// cull a glyph wholly behind the occluders with four fetches
+// (shaders/lib/occlusion.glsl; Greene et al. 1993, hierarchical Z).
+#include "gl/program.h"
+#include "render/gbuffer.h"
+
+namespace tg::render {
+
+class OccluderPyramid {
+ public:
+  OccluderPyramid(const gl::Api& gl, const gl::ShaderLibrary& lib);
+  // From target's occluder depth, every level; leaves the pyramid bound to
+  // texture unit kPyramidUnit and the depth to kDepthUnit.
+  void build(const GBuffer& target) const;
+
+  // Mirrored by shaders/lib/occlusion.glsl.
+  static constexpr GLuint kDepthUnit = 3, kPyramidUnit = 4;
+
+ private:
+  const gl::Api& gl_;
+  gl::Program build_;
+};
+
+}  // namespace tg::render

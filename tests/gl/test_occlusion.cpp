@@ -1,0 +1,142 @@
+// Tier 3: the superquadric pass's occlusion pre-pass (GlyphRenderer::render,
+// shaders/lib/occlusion.glsl) changes what a frame costs, never what it shows.
+// Exact equality is the bound: a skipped fragment is one that would have lost
+// the depth test.
+#include "render_fixture.h"
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+using namespace tg;
+using test::GlFixture;
+
+namespace {
+
+// A dense block of glyphs seen from close by, so that most lie behind others.
+io::TensorField denseBlock(int n, bool mixedSigns) {
+  io::TensorField f;
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::uint32_t id = 0;
+  for (int z = 0; z < n; ++z)
+    for (int y = 0; y < n; ++y)
+      for (int x = 0; x < n; ++x, ++id) {
+        const double shift = mixedSigns && id % 2 == 0 ? 0.0 : 2.2;
+        double t[9] = {shift + u(rng), 0.6 * u(rng), 0.6 * u(rng), 0, shift + u(rng), 0.6 * u(rng), 0, 0, shift + u(rng)};
+        t[3] = t[1], t[6] = t[2], t[7] = t[5];
+        const double p[3] = {double(x), double(y), double(z)};
+        f.addFull(id, p, t);
+      }
+  return f;
+}
+
+render::Camera closeCamera(const tensor::GlyphSet& set, double scale, int w, int h) {
+  render::CameraDesc d;
+  d.lookAtWC = 0.5 * (set.boundsMinWC + set.boundsMaxWC);
+  d.eyeWC = d.lookAtWC + glm::dvec3(0.3, -0.5, 1.0) * (0.9 * (set.boundsMaxWC.z - set.boundsMinWC.z));
+  d.upWC = {0, 1, 0};
+  d.fovYDeg = 50;
+  return test::cameraFor(set, scale, d, w, h);
+}
+
+class Occlusion : public GlFixture {
+ protected:
+  struct Frame {
+    render::FrameImage img;
+    render::IterationStats stats;
+  };
+  Frame frame(const tensor::GlyphSet& set, const render::Camera& cam, render::FrameParams p) {
+    ctx_->makeCurrent();
+    render::GlyphRenderer r(ctx_->api(), *lib_);
+    render::GBuffer target(ctx_->api(), cam.width, cam.height);
+    r.upload(set);
+    p.iterationStats = true;
+    r.render(cam, p, target);
+    return {r.readback(cam, target), r.iterationStats()};
+  }
+};
+
+std::size_t differing(const render::FrameImage& a, const render::FrameImage& b) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < a.id.size(); ++i)
+    n += a.id[i] != b.id[i] || a.rgba[4 * i] != b.rgba[4 * i] || a.depth[i] != b.depth[i];
+  return n;
+}
+
+}  // namespace
+
+// Every pyramid texel is the farthest (smallest reversed window depth)
+// occluder depth over exactly the pixels under it, odd sizes included.
+TEST_F(Occlusion, PyramidTexelsHoldTheFarthestDepthUnderThem) {
+  const auto set = test::glyphsOf(denseBlock(7, false));
+  const double scale = 0.5 / set.maxAbsEigenvalue;
+  for (const auto& [w, h] : {std::pair{97, 61}, std::pair{128, 64}}) {
+    SCOPED_TRACE(w);
+    const auto cam = closeCamera(set, scale, w, h);
+    ctx_->makeCurrent();
+    const gl::Api& gl = ctx_->api();
+    render::GlyphRenderer r(gl, *lib_);
+    render::GBuffer target(gl, w, h);
+    r.upload(set);
+    render::FrameParams p;
+    p.scale = scale;
+    p.glyph = render::GlyphKind::Superquadric;
+    r.render(cam, p, target);
+    std::vector<float> depth(std::size_t(w) * h);
+    gl.GetTextureImage(target.occluderDepth(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * 4), depth.data());
+    std::size_t covered = 0;
+    for (float z : depth) covered += z > 0.0f;
+    ASSERT_GT(covered, depth.size() / 2);
+    ASSERT_LT(covered, depth.size());
+    for (int m = 0; m < target.pyramidLevels(); ++m) {
+      const int mw = std::max(1, target.pyramidWidth() >> m), mh = std::max(1, target.pyramidHeight() >> m);
+      std::vector<float> level(std::size_t(mw) * mh);
+      gl.GetTextureImage(target.occluderPyramid(), m, GL_RED, GL_FLOAT, GLsizei(level.size() * 4), level.data());
+      const int k = m + 1;  // texel i of mip m covers pixels [i 2^k, (i + 1) 2^k), the last one to the edge
+      for (int j = 0; j < mh; ++j)
+        for (int i = 0; i < mw; ++i) {
+          float farthest = 1.0f;
+          const int x1 = i == mw - 1 ? w : std::min(w, (i + 1) << k), y1 = j == mh - 1 ? h : std::min(h, (j + 1) << k);
+          for (int y = j << k; y < y1; ++y)
+            for (int x = i << k; x < x1; ++x) farthest = std::min(farthest, depth[std::size_t(y) * w + x]);
+          ASSERT_EQ(level[std::size_t(j) * mw + i], farthest) << "mip " << m << " texel " << i << "," << j;
+        }
+    }
+    gl::checkError(gl, "PyramidTexelsHoldTheFarthestDepthUnderThem");
+  }
+}
+
+// The frame is the same with and without the pre-pass, for definite glyphs
+// (which occlude) and mixed signs (which are only occluded), at several gammas,
+// and the march runs on far fewer pixels with it.
+TEST_F(Occlusion, PrepassChangesTheWorkNotTheImage) {
+  for (const bool mixed : {false, true}) {
+    const auto set = test::glyphsOf(denseBlock(9, mixed));
+    const double scale = 0.5 / set.maxAbsEigenvalue;
+    const auto cam = closeCamera(set, scale, 200, 150);
+    for (const double gamma : {0.0, 1.0, 3.0, 8.0}) {
+      SCOPED_TRACE(::testing::Message() << "mixed " << mixed << " gamma " << gamma);
+      render::FrameParams p;
+      p.scale = scale;
+      p.glyph = render::GlyphKind::Superquadric;
+      p.gamma = gamma;
+      p.occlusionPrepass = false;
+      const Frame plain = frame(set, cam, p);
+      p.occlusionPrepass = true;
+      const Frame occluded = frame(set, cam, p);
+      EXPECT_EQ(differing(plain.img, occluded.img), 0u);
+      std::size_t covered = 0;
+      for (auto id : plain.img.id) covered += id != ref::kNoGlyph;
+      EXPECT_GT(covered, plain.img.id.size() / 2);
+      // Definite glyphs all occlude: most marches go. With mixed signs only
+      // half the glyphs occlude (and at gamma 0 only the mixed ones march).
+      if (!mixed && gamma > 0.0) {
+        EXPECT_LT(2 * occluded.stats.pixels, plain.stats.pixels);
+      }
+      if (mixed) {
+        EXPECT_LT(double(occluded.stats.pixels), 0.9 * double(plain.stats.pixels));
+      }
+    }
+  }
+}
