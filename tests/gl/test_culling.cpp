@@ -240,13 +240,16 @@ TEST_F(Culling, DrawnCountWithoutWaitingCatchesUpInOrder) {
   render::GBuffer target(gl, cam.width, cam.height);
   r.upload(set);
   EXPECT_FALSE(r.latestDrawnCount().has_value());
-  std::vector<std::uint64_t> blocking;
-  for (double faMin : {0.0, 0.3, 0.6, 0.0, 0.8}) {
+  auto renderAndRequest = [&](double faMin) {
     render::FrameParams p;
     p.scale = scale;
     p.faMin = faMin;
     r.render(cam, p, target);
     r.requestDrawnCount();
+  };
+  std::vector<std::uint64_t> blocking;
+  for (double faMin : {0.0, 0.3, 0.6, 0.0, 0.8}) {
+    renderAndRequest(faMin);
     gl.Finish();
     blocking.push_back(r.drawnGlyphs());
     EXPECT_EQ(r.latestDrawnCount(), blocking.back()) << "fa " << faMin;
@@ -255,13 +258,7 @@ TEST_F(Culling, DrawnCountWithoutWaitingCatchesUpInOrder) {
   EXPECT_LT(blocking[4], blocking[2]);
   EXPECT_LT(blocking[2], blocking[1]);
   // Several frames in flight, then one finish: the newest wins, never an older one.
-  for (double faMin : {0.3, 0.6, 0.8}) {
-    render::FrameParams p;
-    p.scale = scale;
-    p.faMin = faMin;
-    r.render(cam, p, target);
-    r.requestDrawnCount();
-  }
+  for (double faMin : {0.3, 0.6, 0.8}) renderAndRequest(faMin);
   gl.Finish();
   EXPECT_EQ(r.latestDrawnCount(), blocking[4]);
 }
