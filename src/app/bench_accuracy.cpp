@@ -46,10 +46,7 @@ Options parse(int argc, const char** argv) {
            "double-precision reference, over maximum iterations x epsilon.")
       .exit_on_error(false);
   using Args = OIIO::cspan<const char*>;
-  ap.arg("filename").hidden().action([&](auto&, Args a) {
-    if (!o.input.empty()) throw UsageError("more than one INPUT: \"" + o.input + "\" and \"" + a[0] + "\"");
-    o.input = a[0];
-  });
+  addInputArg(ap, o.input);
   ap.arg("-o CSV").help("one row per setting").action([&](auto&, Args a) { o.csv = a[1]; });
   ap.arg("--plot PNG").help("error against frame time (default: the CSV path with .png)").action([&](auto&, Args a) {
     o.plot = a[1];

@@ -18,11 +18,7 @@ int cmdInfo(int argc, const char** argv) {
   FieldFlags flags;
   OIIO::ArgParse ap;
   ap.intro("tensorglyph info INPUT [selection flags]").exit_on_error(false);
-  using Args = OIIO::cspan<const char*>;
-  ap.arg("filename").hidden().action([&](auto&, Args a) {
-    if (!input.empty()) throw UsageError("more than one INPUT");
-    input = a[0];
-  });
+  addInputArg(ap, input);
   flags.addTo(ap, false);
   parseArgs(ap, argc, argv);
   if (input.empty()) throw UsageError("INPUT is required");

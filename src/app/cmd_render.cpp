@@ -38,10 +38,7 @@ RenderOptions parse(int argc, const char** argv) {
   ap.intro("tensorglyph render [INPUT] -o OUT [options]").exit_on_error(false);
   using Args = OIIO::cspan<const char*>;
   auto rest = [](Args a) { return std::span<const char* const>(a.data() + 1, a.size() - 1); };
-  ap.arg("filename").hidden().action([&](auto&, Args a) {
-    if (!o.input.empty()) throw UsageError("more than one INPUT: \"" + o.input + "\" and \"" + a[0] + "\"");
-    o.input = a[0];
-  });
+  addInputArg(ap, o.input);
   ap.arg("-o OUT").help("output image: .png (8-bit RGBA), .exr (float RGBA Z N id), other OIIO formats")
       .action([&](auto&, Args a) { o.output = a[1]; });
   ap.arg("--size W H").help("image size in pixels (default 1024 768)").action([&](auto&, Args a) {

@@ -45,10 +45,7 @@ ViewOptions parse(int argc, const char** argv) {
            "  keys: R resets the view, S saves a screenshot, Q or Esc quits")
       .exit_on_error(false);
   using Args = OIIO::cspan<const char*>;
-  ap.arg("filename").hidden().action([&](auto&, Args a) {
-    if (!o.input.empty()) throw UsageError("more than one INPUT: \"" + o.input + "\" and \"" + a[0] + "\"");
-    o.input = a[0];
-  });
+  addInputArg(ap, o.input);
   ap.arg("--size W H").help("window size (default 1280 800)").action([&](auto&, Args a) {
     o.width = int(parseInt("--size", a[1]));
     o.height = int(parseInt("--size", a[2]));

@@ -3,6 +3,7 @@
 #include <getopt.h>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <limits>
@@ -184,7 +185,7 @@ double coveredPct(const render::FrameImage& img) {
 
 // "" where a column does not apply, so that a CSV reader sees a missing value.
 std::string field(double v, const char* fmt) {
-  if (v != v) return "";
+  if (std::isnan(v)) return "";
   char b[64];
   std::snprintf(b, sizeof b, fmt, v);
   return b;

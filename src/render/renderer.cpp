@@ -40,6 +40,7 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   if (buffer_) gl_.DeleteBuffers(1, &buffer_);
   buffer_ = 0;
   count_ = GLsizei(set.glyphs.size());
+  hasOccluders_ = set.sphereCount + set.definiteCount > 0;
   mdMin_ = float(set.mdMin);
   mdMax_ = float(set.mdMax);
   for (const gl::Program* prog : glyphPrograms()) prog->set("uMdRange", glm::vec2(mdMin_, mdMax_));
@@ -89,7 +90,6 @@ void GlyphRenderer::setParams(const FrameParams& p) {
   }
   for (const gl::Program* prog : shapePrograms()) {
     if (changed(&FrameParams::gamma)) prog->set("uGamma", float(p.gamma));
-    if (changed(&FrameParams::occlusionPrepass)) prog->set("uOccluders", p.occlusionPrepass ? 1 : 0);
     if (changed(&FrameParams::march)) {
       prog->set("uMaxIterations", p.march.maxIterations);
       prog->set("uEpsilon", float(p.march.epsilon));
@@ -128,7 +128,9 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
     gl_.UseProgram(prog.id());
   };
   const bool marching = count_ > 0 && !tessellated && split < 3;
-  if (marching && p.occlusionPrepass) {
+  // Only mixed-sign glyphs (a stress field) give no occluders: no pre-pass.
+  const bool occluders = marching && p.occlusionPrepass && hasOccluders_;
+  if (occluders) {
     // Occlusion pre-pass: the exact ellipsoids of spheres and definite
     // glyphs, depth only. Their superquadrics hold them, so no visible
     // surface lies behind this depth: superquadrics wholly behind it are
@@ -138,6 +140,7 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
     use(ellipsoid_);
     culling_.draw(sprites_, 0, 2);
     pyramid_.build(target);
+    ++occlusionPrepasses_;
   }
   target.beginGeometry();
   if (count_ > 0 && tessellated) {
@@ -152,7 +155,10 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
     culling_.draw(sprites_, 0, split);
     if (marching) {
       if (p.iterationStats) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, stats_);
-      use(p.iterationStats ? superquadricStats_ : superquadric_);
+      const gl::Program& prog = p.iterationStats ? superquadricStats_ : superquadric_;
+      // Per frame, from what ran: the shaders never read a stale pre-pass.
+      prog.set("uOccluders", occluders ? 1 : 0);
+      use(prog);
       culling_.draw(sprites_, split, 3);
     }
   }

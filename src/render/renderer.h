@@ -93,6 +93,8 @@ class GlyphRenderer {
   void requestDrawnCount() { culling_.requestDrawnCount(); }
   std::optional<std::uint64_t> latestDrawnCount() { return culling_.latestDrawnCount(); }
   const GlyphCulling& culling() const { return culling_; }
+  // Frames that ran the superquadric occlusion pre-pass since construction.
+  std::uint64_t occlusionPrepasses() const { return occlusionPrepasses_; }
   // GPU memory held for the uploaded glyphs: records, culling's ranges and
   // commands, the compacted indices once a threshold needed them, and the
   // tessellated mesh once drawn.
@@ -114,6 +116,8 @@ class GlyphRenderer {
   TessellatedGlyphs tessellated_;
   GLuint vao_ = 0, buffer_ = 0, stats_ = 0;
   GLsizei count_ = 0;
+  bool hasOccluders_ = false;  // spheres or definite glyphs uploaded
+  std::uint64_t occlusionPrepasses_ = 0;
   float mdMin_ = 0, mdMax_ = 0;
   std::optional<FrameParams> params_;  // as last set
 };

@@ -45,6 +45,7 @@ class Occlusion : public GlFixture {
   struct Frame {
     render::FrameImage img;
     render::IterationStats stats;
+    std::uint64_t prepasses;
   };
   Frame frame(const tensor::GlyphSet& set, const render::Camera& cam, render::FrameParams p) {
     ctx_->makeCurrent();
@@ -53,7 +54,7 @@ class Occlusion : public GlFixture {
     r.upload(set);
     p.iterationStats = true;
     r.render(cam, p, target);
-    return {r.readback(cam, target), r.iterationStats()};
+    return {r.readback(cam, target), r.iterationStats(), r.occlusionPrepasses()};
   }
 };
 
@@ -126,6 +127,8 @@ TEST_F(Occlusion, PrepassChangesTheWorkNotTheImage) {
       p.occlusionPrepass = true;
       const Frame occluded = frame(set, cam, p);
       EXPECT_EQ(differing(plain.img, occluded.img), 0u);
+      EXPECT_EQ(plain.prepasses, 0u);
+      EXPECT_EQ(occluded.prepasses, 1u);
       std::size_t covered = 0;
       for (auto id : plain.img.id) covered += id != ref::kNoGlyph;
       EXPECT_GT(covered, plain.img.id.size() / 2);
@@ -139,4 +142,30 @@ TEST_F(Occlusion, PrepassChangesTheWorkNotTheImage) {
       }
     }
   }
+}
+
+// Mixed-sign glyphs alone (a stress field) hold no ellipsoid, so nothing can
+// occlude: the pre-pass does not run, and the frame is unchanged.
+TEST_F(Occlusion, NoPrepassWithoutOccluders) {
+  io::TensorField f;
+  std::mt19937_64 rng(9);
+  std::uniform_real_distribution<double> u(0.3, 1.0);
+  for (std::uint32_t i = 0; i < 6 * 6 * 6; ++i) {
+    const double t[9] = {u(rng), 0, 0, 0, -u(rng), 0, 0, 0, 0.5 * u(rng)};
+    const double p[3] = {double(i % 6), double(i / 6 % 6), double(i / 36)};
+    f.addFull(i, p, t);
+  }
+  const auto set = test::glyphsOf(f);
+  ASSERT_EQ(set.sphereCount + set.definiteCount, 0u);
+  const double scale = 0.5 / set.maxAbsEigenvalue;
+  const auto cam = closeCamera(set, scale, 160, 120);
+  render::FrameParams p;
+  p.scale = scale;
+  p.glyph = render::GlyphKind::Superquadric;
+  const Frame on = frame(set, cam, p);
+  p.occlusionPrepass = false;
+  const Frame off = frame(set, cam, p);
+  EXPECT_EQ(on.prepasses, 0u);
+  EXPECT_EQ(differing(on.img, off.img), 0u);
+  EXPECT_GT(on.stats.pixels, 1000u);
 }
