@@ -12,7 +12,9 @@
 #include <memory>
 
 #include "io/readers.h"
+#include "io/selection.h"
 #include "io/volume_sink.h"
+#include "util/huge_pages.h"
 
 namespace tg::io {
 namespace {
@@ -82,11 +84,39 @@ double (*loader(const std::string& path, int datatype))(const char*) {
   }
 }
 
+// libnifti2 3.0.1 reports nifti_type 1 for NIfTI-2 files too; the header
+// reader tells the versions apart.
+int niftiVersion(const std::string& path) {
+  int version = 0;
+  std::free(nifti_read_header(path.c_str(), &version, 0));
+  return version;
+}
+
+// In a single .nii file the data starts at vox_offset, at least 352 (NIfTI-1)
+// or 544 (NIfTI-2) bytes in: the header and the extension flag come first.
+// libnifti2 quietly reads a smaller, zero, negative or NaN offset from byte
+// 348, which shifted every volume by one value.
+void checkDataOffset(const std::string& path, const nifti_image& nim) {
+  if (!nim.iname || !nim.fname || std::strcmp(nim.iname, nim.fname) != 0) return;  // .hdr/.img pair
+  int version = 0;
+  void* raw = nifti_read_header(path.c_str(), &version, 0);
+  if (!raw) fail(path, "not a readable NIfTI-1/-2 header");
+  const double offset = version == 2 ? double(static_cast<nifti_2_header*>(raw)->vox_offset)
+                                     : double(static_cast<nifti_1_header*>(raw)->vox_offset);
+  std::free(raw);
+  const double least = version == 2 ? 544 : 352;
+  if (!(offset >= least) || !(offset < 9.2e18))
+    fail(path, "vox_offset " + std::to_string(offset) + " is not a data offset: a .nii file's data starts at byte " +
+                   std::to_string(int(least)) + " or later");
+  if (double(nim.iname_offset) != std::floor(offset)) fail(path, "vox_offset disagrees with the offset libnifti2 uses");
+}
+
 // Streams values [0, count) of the image file, in order, to consume(value).
 // The data the header describes must fit in the image file (or, gzipped,
 // within deflate's ratio of it). Called before anything is sized by the header.
 void checkDataSize(const std::string& path, const nifti_image& nim, std::uint64_t count) {
   loader(path, nim.datatype);
+  checkDataOffset(path, nim);
   if (nim.nbyper < 1 || nim.nbyper > 8) fail(path, "bytes per value " + std::to_string(nim.nbyper) + " is not 1..8");
   const std::uint64_t bytes = count * std::uint64_t(nim.nbyper);
   const bool gz = nifti_is_gzfile(nim.iname);
@@ -140,14 +170,6 @@ void placement(const nifti_image& nim, VolumeGeometry& g, TensorField& f) {
     f.space = "voxel grid (no sform or qform)";
     f.warnings.push_back("no sform or qform; placed by pixdim alone");
   }
-}
-
-// libnifti2 3.0.1 reports nifti_type 1 for NIfTI-2 files too; the header
-// reader tells the versions apart.
-int niftiVersion(const std::string& path) {
-  int version = 0;
-  std::free(nifti_read_header(path.c_str(), &version, 0));
-  return version;
 }
 
 // dim[k], or 1 beyond dim[0] (writers leave those 0 or stale).
@@ -217,26 +239,32 @@ TensorField readNifti(const std::string& path, const ReadOptions& opt) {
     for (std::uint64_t v = 0; v < voxels; ++v)
       if (sink.accept(v)) kept.push_back(std::uint32_t(v));
   const std::uint64_t keptCount = sel.selectsAll() ? voxels : kept.size();
-  std::vector<float> comps(6 * std::size_t(keptCount));
-  // Values arrive volume by volume: component c of voxels 0..voxels-1, then c + 1.
-  std::uint64_t v = 0, c = 0;
+  promiseData("readNifti", path, opt, 6 * voxels * std::uint64_t(nim->nbyper), keptCount);
+  // Values arrive volume by volume: component c of voxels 0..voxels-1, then
+  // c + 1. They are kept component-major and appended as they are decoded,
+  // so that memory grows with the data actually in the file, never with what
+  // a (gzipped, perhaps truncated) header claims.
+  std::vector<float> comps;
+  util::reserveHuge(comps, 6 * std::size_t(keptCount));
+  std::uint64_t v = 0;
   std::size_t slot = 0;
   streamValues(path, *nim, 6 * voxels, [&](double x) {
     if (kept.empty()) {
-      comps[6 * v + c] = float(x);
+      comps.push_back(float(x));
     } else if (slot < kept.size() && kept[slot] == v) {
-      comps[6 * slot++ + c] = float(x);
+      comps.push_back(float(x));
+      ++slot;
     }
     if (++v == voxels) {
       v = 0;
       slot = 0;
-      ++c;
     }
   });
   f.reserve(std::size_t(keptCount));
   double v6[6];
-  for (std::uint64_t r = 0; r < keptCount; ++r) {
-    std::copy(&comps[6 * r], &comps[6 * r] + 6, v6);
+  const std::size_t stride = std::size_t(keptCount);
+  for (std::size_t r = 0; r < stride; ++r) {
+    for (std::size_t c = 0; c < 6; ++c) v6[c] = comps[c * stride + r];
     sink.pushAccepted(kept.empty() ? r : kept[r], v6);
   }
   sink.finish();
@@ -247,11 +275,13 @@ bool isNiftiLayout(const std::string& name) {
   return name == "fsl" || name == "nifti" || name == "mrtrix" || name == "vtk";
 }
 
-ScalarVolume readNiftiScalar(const std::string& path) {
+ScalarVolume readNiftiScalar(const std::string& path, const int dims[3]) {
   const Image nim = readHeader(path);
   VolumeGeometry g;
   const std::uint64_t voxels = spatialVoxels(path, *nim, g);
   if (std::uint64_t(nim->nvox) != voxels) fail(path, "a mask must be a single 3D volume");
+  if (!std::equal(g.dims, g.dims + 3, dims))
+    fail(path, "mask grid " + gridText(g.dims) + " differs from the tensor grid " + gridText(dims));
   ScalarVolume s;
   std::copy(g.dims, g.dims + 3, s.dims);
   streamValues(path, *nim, voxels, [&](double x) { s.values.push_back(float(x)); });

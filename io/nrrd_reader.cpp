@@ -44,8 +44,28 @@ struct Header {
   }
 };
 
+// Teem adds each key:=value pair with a linear search of those before it, so
+// a header of 200k pairs took 84 s. Counted in the header's text (up to its
+// first empty line) before Teem sees it; real headers have a few dozen.
+constexpr std::size_t kMaxKeyValues = 4096;
+
+void checkKeyValueCount(const std::string& path) {
+  std::unique_ptr<FILE, int (*)(FILE*)> in(std::fopen(path.c_str(), "rb"), &std::fclose);
+  if (!in) fail(path, "cannot open file");
+  std::size_t pairs = 0;
+  int prev = '\n', c;
+  // A pair is a line holding ":="; the header ends at an empty line.
+  while ((c = std::fgetc(in.get())) != EOF) {
+    if (c == '\n' && prev == '\n') break;
+    if (c == '=' && prev == ':' && ++pairs > kMaxKeyValues)
+      fail(path, "header has more than " + std::to_string(kMaxKeyValues) + " key:=value pairs");
+    prev = c;
+  }
+}
+
 // The header only, with the data file left open at the first data byte.
 std::unique_ptr<Header> readHeader(const std::string& path) {
+  checkKeyValueCount(path);
   auto h = std::make_unique<Header>();
   h->nio->skipData = AIR_TRUE;
   h->nio->keepNrrdDataFileOpen = AIR_TRUE;
@@ -57,6 +77,10 @@ std::unique_ptr<Header> readHeader(const std::string& path) {
   }
   if (h->nio->format != nrrdFormatNRRD) fail(path, "not a NRRD file");
   if (!h->nio->dataFile) fail(path, "multiple detached data files are not supported");
+  // A device or pipe never ends or cannot be sized; only a file can hold data.
+  struct stat st {};
+  if (fstat(fileno(h->nio->dataFile), &st) != 0 || !S_ISREG(st.st_mode))
+    fail(path, "the data file is not a regular file");
   if (h->nrrd->type == nrrdTypeBlock) fail(path, "type block holds no numbers");
   return h;
 }
@@ -85,6 +109,32 @@ struct BzStream {
   }
 };
 
+// Teem's loader for nrrdTypeULLong goes through a signed integer, which made
+// values of 2^63 and above negative.
+double loadULLong(const void* p) {
+  std::uint64_t v;
+  std::memcpy(&v, p, sizeof v);
+  return double(v);
+}
+
+double (*loaderFor(int type))(const void*) { return type == nrrdTypeULLong ? loadULLong : nrrdDLoad[type]; }
+
+// The data must fit in what follows the header: raw bytes as they are, text
+// at one byte a value at least (two a byte in hex), gzip within deflate's
+// ratio. Checked before anything is sized from the header.
+void checkEncodedSize(const std::string& path, const Header& h, std::uint64_t count) {
+  const NrrdEncoding* enc = h.nio->encoding;
+  const std::uint64_t bytes = count * nrrdTypeSize[h.nrrd->type];
+  const std::uint64_t avail = bytesAfterHeader(h);
+  const std::uint64_t need = enc == nrrdEncodingHex ? 2 * bytes : enc == nrrdEncodingAscii ? count
+                             : enc == nrrdEncodingRaw ? bytes : 0;
+  if (need > avail)
+    fail(path, "data is truncated: the header describes " + std::to_string(bytes) + " bytes, the data ends after " +
+                   std::to_string(enc == nrrdEncodingRaw ? avail : 0));
+  if (enc == nrrdEncodingGzip && bytes > avail * kMaxGzipRatio)
+    fail(path, "header describes more data than the gzip stream can hold");
+}
+
 // Streams `count` values, `record` at a time (a voxel's values never straddle
 // two calls), into `consume(const double* values, size_t n)`.
 template <class Consume>
@@ -95,8 +145,7 @@ void decode(const std::string& path, Header& h, std::uint64_t count, std::size_t
   const std::uint64_t bytes = count * tsize;
   FILE* file = nio->dataFile;
   const long pos = std::ftell(file);
-  const std::uint64_t avail = bytesAfterHeader(h);
-  double (*load)(const void*) = nrrdDLoad[n->type];
+  double (*load)(const void*) = loaderFor(n->type);
   const std::size_t chunkValues = std::max<std::size_t>(1, kChunkBytes / (tsize * record)) * record;
   std::vector<char> buf(chunkValues * tsize);
   std::vector<double> vals(chunkValues);
@@ -105,10 +154,8 @@ void decode(const std::string& path, Header& h, std::uint64_t count, std::size_t
                    std::to_string(done));
   };
 
+  checkEncodedSize(path, h, count);
   if (nio->encoding == nrrdEncodingAscii || nio->encoding == nrrdEncodingHex) {
-    // Text holds at least one byte per value (two per byte in hex).
-    const std::uint64_t need = nio->encoding == nrrdEncodingHex ? 2 * bytes : count;
-    if (need > avail) truncated(avail);
     // Teem's ascii decoder reads each token into a fixed 1 KiB buffer;
     // refuse longer tokens before it sees them.
     if (nio->encoding == nrrdEncodingAscii) {
@@ -135,10 +182,8 @@ void decode(const std::string& path, Header& h, std::uint64_t count, std::size_t
   std::unique_ptr<gzFile_s, GzCloser> gz;
   BzStream bz;
   if (nio->encoding == nrrdEncodingRaw) {
-    if (bytes > avail) truncated(avail);  // byte skip was applied by Teem
     read = [&](char* dst, std::size_t want) { return std::fread(dst, 1, want, file); };
   } else if (nio->encoding == nrrdEncodingGzip) {
-    if (bytes > avail * kMaxGzipRatio) fail(path, "header describes more data than the gzip stream can hold");
     // zlib reads the descriptor from its own offset, so hand it a duplicate
     // positioned where stdio's buffered position says the data begins.
     const int fd = dup(fileno(file));
@@ -314,6 +359,8 @@ TensorField readNrrd(const std::string& path, const ReadOptions& opt) {
                   " encoding";
   const Selector sel(opt.selection, path, g.dims);
   const std::uint64_t values = voxels * std::uint64_t(layout.count);
+  checkEncodedSize(path, *h, values);
+  promiseData("readNrrd", path, opt, values * nrrdTypeSize[n->type], sel.keptBound(voxels));
   // Reserved up front only where the file has been seen to hold every voxel
   // (found by fuzz_nrrd: a 300-byte header reserved 3.6 GB).
   if (h->nio->encoding == nrrdEncodingRaw && sel.selectsAll() &&
@@ -330,12 +377,14 @@ TensorField readNrrd(const std::string& path, const ReadOptions& opt) {
   return f;
 }
 
-ScalarVolume readNrrdScalar(const std::string& path) {
+ScalarVolume readNrrdScalar(const std::string& path, const int dims[3]) {
   const auto h = readHeader(path);
   Nrrd* n = h->nrrd;
   if (n->dim != 3) fail(path, "a mask must have 3 axes, this has " + std::to_string(n->dim));
   ScalarVolume v;
   const std::uint64_t voxels = gridDims(path, n, 0, v.dims);
+  if (!std::equal(v.dims, v.dims + 3, dims))
+    fail(path, "mask grid " + gridText(v.dims) + " differs from the tensor grid " + gridText(dims));
   decode(path, *h, voxels, 1, [&](const double* x, std::size_t m) {
     for (std::size_t i = 0; i < m; ++i) v.values.push_back(float(x[i]));
   });

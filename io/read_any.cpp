@@ -2,25 +2,66 @@
 
 #include <algorithm>
 
+#include "io/read_guard.h"
 #include "io/readers.h"
 
 namespace tg::io {
+namespace {
 
-TensorField readTensorField(const std::string& path, const ReadOptions& opt) {
+struct Format {
+  TensorField (*read)(const std::string&, const ReadOptions&);
+  const char* who;
+};
+
+Format formatOf(const std::string& path) {
+  std::string lower = path;
+  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  const auto dot = lower.find_last_of('.');
+  const std::string ext = dot == std::string::npos ? "" : lower.substr(dot + 1);
+  if (ext == "vtk" || ext == "vti" || ext == "vtu" || ext == "vtp" || ext == "vts") return {readVtk, "readVtk"};
+  if (ext == "nrrd" || ext == "nhdr") return {readNrrd, "readNrrd"};
+  if (ext == "nii" || lower.ends_with(".nii.gz")) return {readNifti, "readNifti"};
+  throw InputError("readTensorField: " + path + ": unknown extension \"" + (ext.empty() ? "" : "." + ext) +
+                   "\"; supported: .nrrd .nhdr .nii .nii.gz .vtk .vti .vtu .vtp .vts");
+}
+
+std::uint64_t checkedFileSize(const std::string& path) {
   struct stat st {};
   if (stat(path.c_str(), &st) != 0) throw InputError("readTensorField: " + path + ": no such file");
   if (S_ISDIR(st.st_mode)) throw InputError("readTensorField: " + path + ": is a directory");
   if (!S_ISREG(st.st_mode)) throw InputError("readTensorField: " + path + ": not a regular file");
   if (st.st_size == 0) throw InputError("readTensorField: " + path + ": file is empty");
-  std::string lower = path;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  const auto dot = lower.find_last_of('.');
-  const std::string ext = dot == std::string::npos ? "" : lower.substr(dot + 1);
-  if (ext == "vtk" || ext == "vti" || ext == "vtu" || ext == "vtp" || ext == "vts") return readVtk(path, opt);
-  if (ext == "nrrd" || ext == "nhdr") return readNrrd(path, opt);
-  if (ext == "nii" || lower.ends_with(".nii.gz")) return readNifti(path, opt);
-  throw InputError("readTensorField: " + path + ": unknown extension \"" + (ext.empty() ? "" : "." + ext) +
-                   "\"; supported: .nrrd .nhdr .nii .nii.gz .vtk .vti .vtu .vtp .vts");
+  return std::uint64_t(st.st_size);
+}
+
+}  // namespace
+
+void promiseData(const char* who, const std::string& path, const ReadOptions& opt, std::uint64_t decodedBytes,
+                 std::uint64_t keptSamples, std::uint64_t libraryBytes) {
+  const std::uint64_t budget = opt.memoryBudget;
+  // In long double: a hostile header's counts must not wrap the product.
+  const long double need = (long double)keptSamples * kPeakBytesPerTensor + (long double)libraryBytes;
+  if (budget && need > (long double)budget)
+    throw InputError(std::string(who) + ": " + path + ": " + std::to_string(keptSamples) + " tensors would need " +
+                     std::to_string(std::uint64_t(need / (1 << 20))) + " MiB, more than the " +
+                     std::to_string(budget >> 20) + " MiB this load may use (select fewer with --slice or --stride)");
+  if (opt.onPromise) opt.onPromise(decodedBytes, std::uint64_t(std::min<long double>(need, 1e19L)));
+}
+
+TensorField readTensorFieldInProcess(const std::string& path, const ReadOptions& opt) {
+  checkedFileSize(path);
+  return formatOf(path).read(path, opt);
+}
+
+TensorField readTensorField(const std::string& path, const ReadOptions& opt) {
+  const std::uint64_t size = checkedFileSize(path);
+  const Format format = formatOf(path);
+  ReadOptions guarded = opt;
+  if (!guarded.memoryBudget) guarded.memoryBudget = defaultMemoryBudget();
+  return readInChild(format.who, path, limitsFor(size, guarded.memoryBudget), [&](const PromiseFn& promise) {
+    guarded.onPromise = promise;
+    return format.read(path, guarded);
+  });
 }
 
 }  // namespace tg::io

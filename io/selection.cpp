@@ -5,6 +5,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include <sys/stat.h>
+
 #include "io/readers.h"
 
 namespace tg::io {
@@ -35,16 +37,23 @@ SliceSpec parseSlice(const std::string& text) {
   return s;
 }
 
-ScalarVolume readScalarVolume(const std::string& path) {
+std::string gridText(const int d[3]) {
+  return std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]);
+}
+
+ScalarVolume readScalarVolume(const std::string& path, const int dims[3]) {
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) throw InputError("readScalarVolume: " + path + ": no such file");
+  if (!S_ISREG(st.st_mode)) throw InputError("readScalarVolume: " + path + ": not a regular file");
   const std::string lower = [&] {
     std::string l = path;
     std::transform(l.begin(), l.end(), l.begin(), [](unsigned char c) { return char(std::tolower(c)); });
     return l;
   }();
   auto ends = [&](const char* e) { return lower.size() >= std::strlen(e) && lower.ends_with(e); };
-  if (ends(".nrrd") || ends(".nhdr")) return readNrrdScalar(path);
-  if (ends(".nii") || ends(".nii.gz")) return readNiftiScalar(path);
-  if (ends(".vti")) return readVtiScalar(path);
+  if (ends(".nrrd") || ends(".nhdr")) return readNrrdScalar(path, dims);
+  if (ends(".nii") || ends(".nii.gz")) return readNiftiScalar(path, dims);
+  if (ends(".vti")) return readVtiScalar(path, dims);
   throw InputError("readScalarVolume: " + path + ": unknown mask format; use .nrrd, .nhdr, .nii, .nii.gz or .vti");
 }
 
@@ -67,13 +76,24 @@ Selector::Selector(const Selection& sel, const std::string& path, const int* dim
     slabHi_ = s.index + s.thickness / 2;
   }
   if (!sel.maskPath.empty()) {
-    mask_ = readScalarVolume(sel.maskPath);
-    if (!std::equal(dims_, dims_ + 3, mask_.dims))
-      throw InputError("Selector: " + sel.maskPath + ": mask grid " + std::to_string(mask_.dims[0]) + "x" +
-                       std::to_string(mask_.dims[1]) + "x" + std::to_string(mask_.dims[2]) +
-                       " differs from the tensor grid " + std::to_string(dims_[0]) + "x" + std::to_string(dims_[1]) +
-                       "x" + std::to_string(dims_[2]) + " of " + path);
+    mask_ = readScalarVolume(sel.maskPath, dims_);
+    const std::size_t voxels = std::size_t(dims_[0]) * std::size_t(dims_[1]) * std::size_t(dims_[2]);
+    if (!std::equal(dims_, dims_ + 3, mask_.dims) || mask_.values.size() != voxels)
+      throw InputError("Selector: " + sel.maskPath + ": mask grid " + gridText(mask_.dims) +
+                       " differs from the tensor grid " + gridText(dims_) + " of " + path);
   }
+}
+
+std::uint64_t Selector::keptBound(std::uint64_t n) const {
+  const std::uint64_t stride = std::uint64_t(sel_.stride);
+  if (!grid_) return (n + stride - 1) / stride;
+  std::uint64_t kept = 1;
+  for (int k = 0; k < 3; ++k) {
+    std::uint64_t along = (std::uint64_t(dims_[k]) + stride - 1) / stride;
+    if (sel_.slice && sel_.slice->axis == k) along = std::min(along, std::uint64_t(slabHi_ - slabLo_ + 1));
+    kept *= along;
+  }
+  return std::min(kept, n);
 }
 
 Selector::Verdict Selector::judge(std::uint64_t index, const double p[3]) const {

@@ -40,7 +40,11 @@ struct ScalarVolume {
   int dims[3] = {0, 0, 0};
   std::vector<float> values;  // i fastest
 };
-ScalarVolume readScalarVolume(const std::string& path);
+// A regular file only (a FIFO would block), on the grid `dims`: a mask of
+// another grid is refused before any of its data is decoded.
+ScalarVolume readScalarVolume(const std::string& path, const int dims[3]);
+// "AxBxC", for messages.
+std::string gridText(const int dims[3]);
 
 // The per-sample decision, built once per read after the header is known.
 class Selector {
@@ -58,6 +62,9 @@ class Selector {
     return all_ || admitJudged(index, pWC, f);
   }
   bool selectsAll() const { return all_; }
+  // At most how many of `n` samples the slice and stride can keep: what a
+  // reader promises before decoding (ROI and mask only keep fewer).
+  std::uint64_t keptBound(std::uint64_t n) const;
 
  private:
   bool admitJudged(std::uint64_t index, const double pWC[3], TensorField& f) const;

@@ -97,8 +97,9 @@ TEST(RealData, FaAgreesWithSlicersReferenceMap) {
   io::ReadOptions all;
   all.selection.confidenceMin = -1;  // every voxel, as the reference map has
   const auto f = io::readTensorField(test::realData("slicer-helix-dti-masked/helix-DTI.nhdr"), all);
+  const int dims[3] = {64, 32, 16};
   const io::ScalarVolume ref =
-      io::readNrrdScalar(test::realData("slicer-helix-dti-masked/helix-DTI-FractionalAnisotropy.nhdr"));
+      io::readNrrdScalar(test::realData("slicer-helix-dti-masked/helix-DTI-FractionalAnisotropy.nhdr"), dims);
   ASSERT_EQ(ref.dims[0] * ref.dims[1] * ref.dims[2], 64 * 32 * 16);
   ASSERT_EQ(f.size(), ref.values.size());
   const tensor::GlyphSet g = tensor::buildGlyphs(f.positions, f.tensors, f.ids);

@@ -82,7 +82,11 @@ TEST(Vtk, BadInputGetsOneLineNamingFileAndProblem) {
   test::writeFile(d / "huge.vtk", "# vtk DataFile Version 3.0\nx\nBINARY\nDATASET POLYDATA\nPOINTS 99999999999 float\n");
   test::writeFile(d / "hugexml.vtu",
             "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n<UnstructuredGrid>\n"
-            "<Piece NumberOfPoints=\"999999999999\" NumberOfCells=\"0\">\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
+            "<Piece NumberOfPoints=\"999999999999\" NumberOfCells=\"0\">\n<Points><DataArray type=\"Float32\" "
+            "NumberOfComponents=\"3\" format=\"ascii\">0 0 0</DataArray></Points>\n<Cells>"
+            "<DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\"></DataArray>"
+            "<DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\"></DataArray>"
+            "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\"></DataArray></Cells>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n");
   test::writeFile(d / "data.xyz", "1 2 3\n");
   // A valid binary file cut in half.
   io::writeVtk(synth::helixPhantom(6, 6, 6).field, (d / "whole.vtk").string());

@@ -1,0 +1,316 @@
+#include "io/read_guard.h"
+
+#include <fcntl.h>
+#include <poll.h>
+#include <signal.h>
+#include <sys/mman.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <new>
+#include <type_traits>
+
+#include "util/huge_pages.h"
+
+namespace tg::io {
+namespace {
+
+// ---- The field on the wire: PODs, strings and arrays, in one fixed order --
+
+class WireOut {
+ public:
+  explicit WireOut(int fd) : fd_(fd) {}
+  void bytes(const void* p, std::size_t n) {
+    const char* c = static_cast<const char*>(p);
+    while (n > 0) {
+      const ssize_t w = ::write(fd_, c, n);
+      if (w < 0 && errno == EINTR) continue;
+      if (w <= 0) throw std::bad_alloc();  // a full memfd is memory we were not given
+      c += w;
+      n -= std::size_t(w);
+    }
+  }
+  template <class T>
+  void pod(const T& v) {
+    static_assert(std::is_trivially_copyable_v<T>);
+    bytes(&v, sizeof v);
+  }
+  void str(const std::string& s) {
+    pod(std::uint64_t(s.size()));
+    bytes(s.data(), s.size());
+  }
+  template <class T>
+  void array(const std::vector<T>& v) {
+    pod(std::uint64_t(v.size()));
+    bytes(v.data(), v.size() * sizeof(T));
+  }
+
+ private:
+  int fd_;
+};
+
+class WireIn {
+ public:
+  WireIn(const char* p, std::size_t n) : p_(p), end_(p + n) {}
+  void bytes(void* dst, std::size_t n) {
+    if (n > std::size_t(end_ - p_)) throw std::runtime_error("short");
+    std::memcpy(dst, p_, n);
+    p_ += n;
+  }
+  template <class T>
+  T pod() {
+    T v;
+    bytes(&v, sizeof v);
+    return v;
+  }
+  std::string str() {
+    std::string s(count(1), '\0');
+    bytes(s.data(), s.size());
+    return s;
+  }
+  // Straight from the mapping into huge-page storage: the one copy.
+  template <class T>
+  void array(std::vector<T>& v) {
+    const std::size_t n = count(sizeof(T));
+    util::reserveHuge(v, n);
+    const T* first = reinterpret_cast<const T*>(p_);
+    v.assign(first, first + n);
+    p_ += n * sizeof(T);
+  }
+
+ private:
+  std::size_t count(std::size_t elementBytes) {
+    const auto n = pod<std::uint64_t>();
+    if (n > std::size_t(end_ - p_) / elementBytes) throw std::runtime_error("short");
+    return std::size_t(n);
+  }
+  const char* p_;
+  const char* end_;
+};
+
+constexpr std::uint32_t kWireMagic = 0x54474631;  // "TGF1"
+
+void writeField(WireOut& w, const TensorField& f) {
+  w.pod(kWireMagic);
+  for (const std::string* s : {&f.path, &f.description, &f.arrayName, &f.space, &f.layout}) w.str(*s);
+  w.pod(f.measurementFrame.has_value());
+  if (f.measurementFrame) w.pod(*f.measurementFrame);
+  w.pod(std::uint64_t(f.warnings.size()));
+  for (const std::string& s : f.warnings) w.str(s);
+  w.array(f.positions);
+  w.array(f.tensors);
+  w.array(f.ids);
+  for (std::size_t n : {f.totalPoints, f.skippedNonFinite, f.masked, f.unselected}) w.pod(std::uint64_t(n));
+  w.pod(f.grid.has_value());
+  if (f.grid) w.pod(*f.grid);
+  w.pod(f.sampleSpacing);
+}
+
+TensorField readField(WireIn& r) {
+  if (r.pod<std::uint32_t>() != kWireMagic) throw std::runtime_error("magic");
+  TensorField f;
+  for (std::string* s : {&f.path, &f.description, &f.arrayName, &f.space, &f.layout}) *s = r.str();
+  if (r.pod<bool>()) f.measurementFrame = r.pod<std::array<double, 9>>();
+  const auto warnings = r.pod<std::uint64_t>();
+  for (std::uint64_t k = 0; k < warnings && k < 1000; ++k) f.warnings.push_back(r.str());
+  r.array(f.positions);
+  r.array(f.tensors);
+  r.array(f.ids);
+  for (std::size_t* n : {&f.totalPoints, &f.skippedNonFinite, &f.masked, &f.unselected})
+    *n = std::size_t(r.pod<std::uint64_t>());
+  if (r.pod<bool>()) f.grid = r.pod<GridInfo>();
+  f.sampleSpacing = r.pod<double>();
+  return f;
+}
+
+// ---- The status pipe: one letter, then the text -------------------------
+// 'P' + 8 bytes: a promise of decoded bytes; 'O': the field is in the memfd;
+// 'E' + text: the reader's InputError; 'M' + text: out of memory.
+
+// Room for the libraries' own thread stacks, arenas and chunk buffers.
+constexpr std::uint64_t kSlackBytes = std::uint64_t(256) << 20;
+
+std::uint64_t mappedBytes() {
+  std::uint64_t pages = 0;
+  std::ifstream statm("/proc/self/statm");
+  statm >> pages;
+  return pages * std::uint64_t(::sysconf(_SC_PAGESIZE));
+}
+
+// Lowers (never raises) the soft address-space limit to `bytes`.
+void limitAddressSpace(std::uint64_t bytes) {
+  rlimit as{};
+  ::getrlimit(RLIMIT_AS, &as);
+  if (as.rlim_cur == RLIM_INFINITY || rlim_t(bytes) < as.rlim_cur) as.rlim_cur = rlim_t(bytes);
+  ::setrlimit(RLIMIT_AS, &as);
+}
+
+void sendAll(int fd, const void* p, std::size_t n) {
+  const char* c = static_cast<const char*>(p);
+  while (n > 0) {
+    const ssize_t w = ::write(fd, c, n);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) _exit(3);  // the parent is gone
+    c += w;
+    n -= std::size_t(w);
+  }
+}
+
+[[noreturn]] void childMain(int statusFd, int dataFd, const ReadLimits& limits,
+                            const std::function<TensorField(const PromiseFn&)>& read) {
+  // Messages of third-party libraries never reach the user; ours go through the pipe.
+  if (const int null = ::open("/dev/null", O_WRONLY); null >= 0) {
+    ::dup2(null, 1);
+    ::dup2(null, 2);
+    ::close(null);
+  }
+  limitAddressSpace(mappedBytes() + limits.memoryBytes + kSlackBytes);
+  const rlim_t cpu = rlim_t(std::ceil(limits.cpuSeconds));
+  rlimit cl{cpu, cpu + 1};  // SIGXCPU at the soft limit, SIGKILL a second later
+  ::setrlimit(RLIMIT_CPU, &cl);
+  int code = 0;
+  std::uint64_t promised = 0;
+  try {
+    const TensorField f = read([statusFd, &promised](std::uint64_t bytes, std::uint64_t memory) {
+      promised += memory;
+      limitAddressSpace(mappedBytes() + memory + kSlackBytes);
+      const char tag = 'P';
+      sendAll(statusFd, &tag, 1);
+      sendAll(statusFd, &bytes, sizeof bytes);
+    });
+    WireOut w(dataFd);
+    writeField(w, f);
+    sendAll(statusFd, "O", 1);
+  } catch (const InputError& e) {
+    sendAll(statusFd, "E", 1);
+    sendAll(statusFd, e.what(), std::strlen(e.what()));
+  } catch (const std::bad_alloc&) {
+    const std::string what =
+        promised ? "reading needed more memory than the file's header accounts for (" + std::to_string(promised >> 20) +
+                       " MiB): the file is corrupt"
+                 : "reading needed more memory than the " + std::to_string(limits.memoryBytes >> 20) +
+                       " MiB this load may use";
+    sendAll(statusFd, "M", 1);
+    sendAll(statusFd, what.data(), what.size());
+  } catch (const std::exception& e) {
+    sendAll(statusFd, "E", 1);
+    sendAll(statusFd, e.what(), std::strlen(e.what()));
+  } catch (...) {
+    code = 4;
+  }
+  _exit(code);  // no atexit handlers or stdio flushes of the parent's state
+}
+
+std::string signalName(int sig) {
+  const char* d = ::sigdescr_np(sig);
+  return std::string(d ? d : "unknown signal") + ", signal " + std::to_string(sig);
+}
+
+struct Fd {
+  int fd = -1;
+  ~Fd() {
+    if (fd >= 0) ::close(fd);
+  }
+};
+
+}  // namespace
+
+std::uint64_t defaultMemoryBudget() {
+  const std::uint64_t phys = std::uint64_t(::sysconf(_SC_PHYS_PAGES)) * std::uint64_t(::sysconf(_SC_PAGESIZE));
+  std::uint64_t budget = phys / 5 * 4;
+  rlimit as{};
+  if (::getrlimit(RLIMIT_AS, &as) == 0 && as.rlim_cur != RLIM_INFINITY) {
+    const std::uint64_t mapped = mappedBytes() + kSlackBytes;
+    budget = std::min<std::uint64_t>(budget, as.rlim_cur > mapped ? as.rlim_cur - mapped : 0);
+  }
+  return budget;
+}
+
+ReadLimits limitsFor(std::uint64_t fileBytes, std::uint64_t memoryBudget) {
+  ReadLimits l;
+  l.memoryBytes = memoryBudget;
+  l.headerSeconds = 10.0 + double(fileBytes) / 4e6;
+  // Decoding is at least 20 MB/s of output even for bzip2 on a slow core.
+  l.bytesPerSecond = 20e6;
+  l.cpuSeconds = l.headerSeconds + double(memoryBudget) / l.bytesPerSecond;
+  return l;
+}
+
+TensorField readInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
+                        const std::function<TensorField(const PromiseFn&)>& read) {
+  auto fail = [&](const std::string& what) -> InputError { return InputError(who + ": " + path + ": " + what); };
+  Fd data{::memfd_create("tensorglyph-field", MFD_CLOEXEC)};
+  int pipeFds[2];
+  if (data.fd < 0 || ::pipe2(pipeFds, O_CLOEXEC) != 0) throw fail(std::string("cannot start the reader: ") + std::strerror(errno));
+  Fd statusIn{pipeFds[0]}, statusOut{pipeFds[1]};
+  std::fflush(nullptr);
+  const pid_t pid = ::fork();
+  if (pid < 0) throw fail(std::string("cannot start the reader: ") + std::strerror(errno));
+  if (pid == 0) childMain(statusOut.fd, data.fd, limits, read);
+  ::close(statusOut.fd);
+  statusOut.fd = -1;
+
+  // Collect the status until the child closes its end, or the deadline passes.
+  using Clock = std::chrono::steady_clock;
+  auto deadline = Clock::now() + std::chrono::duration<double>(limits.headerSeconds);
+  std::string status;
+  bool timedOut = false;
+  for (char buf[4096];;) {
+    const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
+    if (left <= 0) {
+      timedOut = true;
+      break;
+    }
+    pollfd p{statusIn.fd, POLLIN, 0};
+    const int r = ::poll(&p, 1, int(std::min<long long>(left, 1000)));
+    if (r < 0 && errno != EINTR) break;
+    if (r <= 0) continue;
+    const ssize_t n = ::read(statusIn.fd, buf, sizeof buf);
+    if (n < 0 && errno == EINTR) continue;
+    if (n <= 0) break;
+    status.append(buf, std::size_t(n));
+    // Each promise extends the deadline by the time its bytes may take.
+    while (status.size() >= 9 && status[0] == 'P') {
+      std::uint64_t bytes;
+      std::memcpy(&bytes, status.data() + 1, 8);
+      status.erase(0, 9);
+      deadline += std::chrono::duration<double>(double(bytes) / limits.bytesPerSecond);
+    }
+  }
+  if (timedOut) ::kill(pid, SIGKILL);
+  int ws = 0;
+  while (::waitpid(pid, &ws, 0) < 0 && errno == EINTR) {}
+  if (timedOut)
+    throw fail("reading took longer than its time limit (is a data file a FIFO or a device?); the reader was stopped");
+  if (WIFSIGNALED(ws)) {
+    const int sig = WTERMSIG(ws);
+    if (sig == SIGXCPU || sig == SIGKILL) throw fail("reading used more than its CPU time limit; the reader was stopped");
+    throw fail("corrupt file: the reader crashed on it (" + signalName(sig) + ")");
+  }
+  if (!status.empty() && status[0] == 'E') throw InputError(status.substr(1));
+  if (!status.empty() && status[0] == 'M') throw fail(status.substr(1));
+  if (status != "O") throw fail("the reader ended without a result (exit status " + std::to_string(WEXITSTATUS(ws)) + ")");
+
+  const off_t size = ::lseek(data.fd, 0, SEEK_END);
+  if (size <= 0) throw fail("the reader's result is empty");
+  void* map = ::mmap(nullptr, std::size_t(size), PROT_READ, MAP_PRIVATE | MAP_POPULATE, data.fd, 0);
+  if (map == MAP_FAILED) throw fail(std::string("cannot map the reader's result: ") + std::strerror(errno));
+  try {
+    WireIn in(static_cast<const char*>(map), std::size_t(size));
+    TensorField f = readField(in);
+    ::munmap(map, std::size_t(size));
+    return f;
+  } catch (const std::runtime_error&) {
+    ::munmap(map, std::size_t(size));
+    throw fail("the reader's result is malformed");
+  }
+}
+
+}  // namespace tg::io

@@ -1,0 +1,45 @@
+#pragma once
+// Third-party parsers (VTK's readers above all, and Teem's and libnifti's
+// header parsers) run in a child process, so that a crash, a runaway
+// allocation or a hang inside them becomes one line naming the file instead
+// of taking the process (or the machine) down. The child has an address-space
+// limit, a CPU limit and a wall-clock deadline; its field comes back through
+// a memfd and is read once into the parent's arrays.
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "io/tensor_field.h"
+
+namespace tg::io {
+
+struct ReadLimits {
+  std::uint64_t memoryBytes = 0;  // address space the child may add to what it inherits
+  double cpuSeconds = 0;          // CPU time of the child
+  double headerSeconds = 0;       // wall time until the reader has promised its data (see ReadBudget)
+  double bytesPerSecond = 0;      // then this much more wall time per promised decoded byte
+};
+
+// The memory a load may take: 80% of physical memory, and no more than what
+// the address-space limit (ulimit -v) leaves beyond what is mapped now.
+std::uint64_t defaultMemoryBudget();
+
+// Limits for reading a file of `fileBytes` under `memoryBudget`. Headers are
+// small, so the header deadline is short and scales with the file only where
+// the format parses everything up front (VTK): 10 s + 1 s per 4 MB.
+ReadLimits limitsFor(std::uint64_t fileBytes, std::uint64_t memoryBudget);
+
+// Calls read() in a child process under `limits` and returns its field. The
+// child's stdout and stderr go to /dev/null: a library's own messages never
+// reach the user, only the child's InputError does. The PromiseFn given to
+// read() is called once the reader's header is checked: it extends the
+// deadline by the time `decodedBytes` may take, and lowers the child's
+// address-space limit to what it has mapped plus `memoryBytes` (and a fixed
+// slack), so that a header that lies about its size cannot allocate beyond
+// what it promised. Throws InputError ("who: path: problem") for a crash, a
+// limit, a timeout or the reader's own error.
+using PromiseFn = std::function<void(std::uint64_t decodedBytes, std::uint64_t memoryBytes)>;
+TensorField readInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
+                        const std::function<TensorField(const PromiseFn&)>& read);
+
+}  // namespace tg::io
