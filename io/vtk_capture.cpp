@@ -1,7 +1,6 @@
 #include "io/vtk_capture.h"
 
 #include <cctype>
-#include <limits>
 #include <sstream>
 
 #include <vtkObjectFactory.h>
@@ -27,51 +26,6 @@ class CaptureWindow : public vtkOutputWindow {
   }
 };
 vtkStandardNewMacro(CaptureWindow);
-
-// num_get that also takes [+-]nan and [+-]inf(inity), case-insensitive.
-class NonFiniteNumGet : public std::num_get<char> {
- protected:
-  iter_type do_get(iter_type in, iter_type end, std::ios_base& io, std::ios_base::iostate& err,
-                   float& v) const override {
-    return real(in, end, io, err, v);
-  }
-  iter_type do_get(iter_type in, iter_type end, std::ios_base& io, std::ios_base::iostate& err,
-                   double& v) const override {
-    return real(in, end, io, err, v);
-  }
-  iter_type do_get(iter_type in, iter_type end, std::ios_base& io, std::ios_base::iostate& err,
-                   long double& v) const override {
-    return real(in, end, io, err, v);
-  }
-
- private:
-  template <class T>
-  iter_type real(iter_type in, iter_type end, std::ios_base& io, std::ios_base::iostate& err, T& v) const {
-    bool negative = false;
-    if (in != end && (*in == '-' || *in == '+')) {
-      negative = *in == '-';
-      ++in;
-    }
-    const auto lower = [](char c) { return char(std::tolower(static_cast<unsigned char>(c))); };
-    if (in != end && (lower(*in) == 'n' || lower(*in) == 'i')) {
-      std::string word;
-      for (; in != end && std::isalpha(static_cast<unsigned char>(*in)) && word.size() < 9; ++in) word += lower(*in);
-      err = in == end ? std::ios_base::eofbit : std::ios_base::goodbit;
-      if (word == "nan") v = std::numeric_limits<T>::quiet_NaN();
-      else if (word == "inf" || word == "infinity") v = negative ? -std::numeric_limits<T>::infinity()
-                                                                 : std::numeric_limits<T>::infinity();
-      else err |= std::ios_base::failbit;
-      return in;
-    }
-    if (in != end && (*in == '-' || *in == '+')) {  // a second sign
-      err = std::ios_base::failbit;
-      return in;
-    }
-    in = std::num_get<char>::do_get(in, end, io, err, v);
-    if (negative) v = -v;
-    return in;
-  }
-};
 
 }  // namespace
 
@@ -106,10 +60,5 @@ VtkMessageCapture::~VtkMessageCapture() {
 }
 
 std::string VtkMessageCapture::first() const { return static_cast<CaptureWindow*>(window_.Get())->first; }
-
-NonFiniteNumbers::NonFiniteNumbers()
-    : previous_(std::locale::global(std::locale(std::locale::classic(), new NonFiniteNumGet))) {}
-
-NonFiniteNumbers::~NonFiniteNumbers() { std::locale::global(previous_); }
 
 }  // namespace tg::io

@@ -4,7 +4,6 @@
 // in the legacy reader, the XML parser's errors), never through the reader's
 // ErrorEvent, and then returns whatever its arrays held: zeros or
 // uninitialised memory. A read is only trusted when VTK said nothing.
-#include <locale>
 #include <string>
 
 #include <vtkSmartPointer.h>
@@ -32,21 +31,5 @@ class VtkMessageCapture {
 
 // "ERROR: In /path/vtkX.cxx, line 12\nvtkX (0x55..): what\n\n" -> "VTK: what".
 std::string cleanVtkMessage(const std::string& text);
-
-// C++ streams cannot read "nan" or "inf", which VTK's own ASCII writer
-// writes. While an instance lives, streams created (as VTK's legacy reader
-// creates its own) read them as NaN and ±Inf, so that such tensors are
-// skipped and counted like NaN in any other format instead of failing the
-// file. It sets the global locale: only for a child process that reads.
-class NonFiniteNumbers {
- public:
-  NonFiniteNumbers();
-  ~NonFiniteNumbers();
-  NonFiniteNumbers(const NonFiniteNumbers&) = delete;
-  NonFiniteNumbers& operator=(const NonFiniteNumbers&) = delete;
-
- private:
-  std::locale previous_;
-};
 
 }  // namespace tg::io

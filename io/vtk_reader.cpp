@@ -32,6 +32,7 @@
 #include "io/selection.h"
 #include "io/tsv_trailer.h"
 #include "io/vtk_capture.h"
+#include "io/vtk_xml_checks.h"
 
 namespace tg::io {
 namespace {
@@ -165,46 +166,6 @@ std::uint64_t checkLegacyCounts(const std::string& path, std::uint64_t fileSize)
   return points;
 }
 
-// Points promised by an XML header: the whole extent of a structured file,
-// else the sum of its pieces' NumberOfPoints (the readers only count them
-// once the data is read). Extents are summed in 64 bits: one past INT_MAX
-// made VTK report a -1 x -1 grid.
-std::uint64_t xmlPoints(vtkAlgorithm* reader, const std::string& path) {
-  vtkInformation* info = reader->GetOutputInformation(0);
-  if (info && info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT())) {
-    int e[6];
-    info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), e);
-    std::uint64_t points = 1;
-    for (int k = 0; k < 3; ++k) {
-      const std::int64_t n = std::int64_t(e[2 * k + 1]) - std::int64_t(e[2 * k]) + 1;
-      if (n < 1 || n > INT32_MAX) fail(path, "extent " + std::to_string(e[2 * k]) + ".." + std::to_string(e[2 * k + 1]) +
-                                               " is empty or too long");
-      points *= std::uint64_t(n);
-    }
-    return points;
-  }
-  std::uint64_t points = 0;
-  auto* xr = vtkXMLReader::SafeDownCast(reader);
-  vtkXMLDataElement* root = xr && xr->GetXMLParser() ? xr->GetXMLParser()->GetRootElement() : nullptr;
-  for (int d = 0; root && d < root->GetNumberOfNestedElements(); ++d) {
-    vtkXMLDataElement* data = root->GetNestedElement(d);
-    for (int p = 0; p < data->GetNumberOfNestedElements(); ++p) {
-      vtkXMLDataElement* piece = data->GetNestedElement(p);
-      vtkIdType n = 0;
-      if (std::string(piece->GetName()) != "Piece" || !piece->GetScalarAttribute("NumberOfPoints", n)) continue;
-      if (n < 0) fail(path, "a piece has a negative NumberOfPoints");
-      points += std::uint64_t(n);
-    }
-  }
-  return points;
-}
-
-bool xmlCompressed(vtkAlgorithm* reader) {
-  auto* xr = vtkXMLReader::SafeDownCast(reader);
-  vtkXMLDataElement* root = xr && xr->GetXMLParser() ? xr->GetXMLParser()->GetRootElement() : nullptr;
-  return root && root->GetAttribute("compressor");
-}
-
 // A dataset as VTK read it, and the first thing VTK said about it.
 struct ReadResult {
   vtkSmartPointer<vtkDataSet> data;
@@ -219,7 +180,6 @@ ReadResult runReader(vtkAlgorithm* reader, const std::string& path, std::uint64_
                      std::uint64_t legacyPoints, const ReadOptions& opt, const int* dims) {
   const ErrorSink sink(reader);
   const VtkMessageCapture said;
-  const NonFiniteNumbers nonFinite;
   auto check = [&](const char* stage) {
     if (!sink.first().empty()) fail(path, cleanVtkMessage(sink.first()));
     if (reader->GetErrorCode()) fail(path, said.first().empty() ? stage : said.first());
@@ -237,6 +197,7 @@ ReadResult runReader(vtkAlgorithm* reader, const std::string& path, std::uint64_
     // zlib cannot compress beyond ~1032:1, so more points than that per byte is corrupt.
     if (points > fileSize * 1032) fail(path, "header claims " + std::to_string(points) + " points, more than the file can hold");
     if (xmlCompressed(reader)) libraryBytes = std::max(libraryBytes, 256 * points);
+    checkInlineBinary(reader, path);
     if (dims) {
       int e[6];
       vtkInformation* info = reader->GetOutputInformation(0);
