@@ -107,7 +107,8 @@ void writeField(WireOut& w, const TensorField& f) {
   w.array(f.positions);
   w.array(f.tensors);
   w.array(f.ids);
-  for (std::size_t n : {f.totalPoints, f.skippedNonFinite, f.masked, f.unselected}) w.pod(std::uint64_t(n));
+  for (std::size_t n : {f.totalPoints, f.skippedNonFinite, f.skippedOverflow, f.masked, f.unselected})
+    w.pod(std::uint64_t(n));
   w.pod(f.grid.has_value());
   if (f.grid) w.pod(*f.grid);
   w.pod(f.sampleSpacing);
@@ -123,7 +124,7 @@ TensorField readField(WireIn& r) {
   r.array(f.positions);
   r.array(f.tensors);
   r.array(f.ids);
-  for (std::size_t* n : {&f.totalPoints, &f.skippedNonFinite, &f.masked, &f.unselected})
+  for (std::size_t* n : {&f.totalPoints, &f.skippedNonFinite, &f.skippedOverflow, &f.masked, &f.unselected})
     *n = std::size_t(r.pod<std::uint64_t>());
   if (r.pod<bool>()) f.grid = r.pod<GridInfo>();
   f.sampleSpacing = r.pod<double>();
@@ -236,7 +237,7 @@ std::uint64_t defaultMemoryBudget() {
 ReadLimits limitsFor(std::uint64_t fileBytes, std::uint64_t memoryBudget) {
   ReadLimits l;
   l.memoryBytes = memoryBudget;
-  l.headerSeconds = 10.0 + double(fileBytes) / 4e6;
+  l.headerSeconds = 3.0 + double(fileBytes) / 4e6;
   // Decoding is at least 20 MB/s of output even for bzip2 on a slow core.
   l.bytesPerSecond = 20e6;
   l.cpuSeconds = l.headerSeconds + double(memoryBudget) / l.bytesPerSecond;

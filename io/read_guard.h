@@ -26,7 +26,7 @@ std::uint64_t defaultMemoryBudget();
 
 // Limits for reading a file of `fileBytes` under `memoryBudget`. Headers are
 // small, so the header deadline is short and scales with the file only where
-// the format parses everything up front (VTK): 10 s + 1 s per 4 MB.
+// the format parses everything up front (VTK): 3 s + 1 s per 4 MB.
 ReadLimits limitsFor(std::uint64_t fileBytes, std::uint64_t memoryBudget);
 
 // Calls read() in a child process under `limits` and returns its field. The

@@ -1,6 +1,7 @@
 #include "io/tensor_field.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <numeric>
 
@@ -25,6 +26,11 @@ void TensorField::addSym(std::uint32_t id, const double p[3], const double s[6])
   for (int k = 0; k < 6; ++k) finite = finite && std::isfinite(float(s[k]));
   if (!finite) {
     ++skippedNonFinite;
+    return;
+  }
+  const double norm2 = s[0] * s[0] + s[3] * s[3] + s[5] * s[5] + 2 * (s[1] * s[1] + s[2] * s[2] + s[4] * s[4]);
+  if (!(norm2 <= double(FLT_MAX) * double(FLT_MAX))) {
+    ++skippedOverflow;
     return;
   }
   for (int k = 0; k < 3; ++k) positions.push_back(float(p[k]));

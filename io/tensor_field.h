@@ -39,13 +39,15 @@ struct TensorField {
   std::vector<std::uint32_t> ids;   // input index of each kept tensor
   std::size_t totalPoints = 0;
   std::size_t skippedNonFinite = 0;
+  std::size_t skippedOverflow = 0;  // |D| beyond single precision: its eigenvalues would be infinite
   std::size_t masked = 0;      // below the confidence or mask threshold
   std::size_t unselected = 0;  // outside the slice, stride or region of interest
   std::optional<GridInfo> grid;
   double sampleSpacing = 0;  // grid spacing, or the median nearest-neighbour distance
 
   std::size_t size() const { return ids.size(); }
-  // Appends one tensor unless a component is NaN/Inf (then counts it skipped).
+  // Appends one tensor unless a component is NaN/Inf, or its Frobenius norm
+  // (which bounds every |eigenvalue|) exceeds FLT_MAX; counts it skipped then.
   // t9 is a full row-major 3x3; it is symmetrised.
   void addFull(std::uint32_t id, const double p[3], const double t9[9]);
   // The same for a symmetric tensor given as xx xy xz yy yz zz.

@@ -53,21 +53,21 @@ std::uint64_t inlineBytes(std::ifstream& in, std::int64_t at, unsigned char* hea
   return sextets * 3 / 4;
 }
 
-void checkArrays(vtkXMLDataElement* e, std::ifstream& in, std::size_t prefix, const std::string& path) {
+void checkArrays(vtkXMLDataElement* e, std::ifstream& in, std::size_t prefix, bool bigEndian, const std::string& path) {
   for (int k = 0; k < e->GetNumberOfNestedElements(); ++k) {
     vtkXMLDataElement* child = e->GetNestedElement(k);
     const char* format = child->GetAttribute("format");
     if (std::strcmp(child->GetName(), "DataArray") == 0 && format && std::strcmp(format, "binary") == 0) {
       unsigned char head[8] = {};
       const std::uint64_t have = inlineBytes(in, child->GetXMLByteIndex(), head, prefix);
-      std::uint64_t declared = 0;  // little-endian prefix; VTK writes the file's byte order
-      for (std::size_t b = prefix; b-- > 0;) declared = (declared << 8) | head[b];
+      std::uint64_t declared = 0;  // the prefix is in the file's byte order
+      for (std::size_t b = 0; b < prefix; ++b) declared = (declared << 8) | head[bigEndian ? b : prefix - 1 - b];
       const char* name = child->GetAttribute("Name");
       if (have < prefix || have - prefix < declared)
         fail(path, "inline data of array \"" + std::string(name ? name : "?") + "\" is truncated: it declares " +
                        std::to_string(declared) + " bytes and holds " + std::to_string(have > prefix ? have - prefix : 0));
     }
-    checkArrays(child, in, prefix, path);
+    checkArrays(child, in, prefix, bigEndian, path);
   }
 }
 
@@ -112,11 +112,10 @@ void checkInlineBinary(vtkAlgorithm* reader, const std::string& path) {
   vtkXMLDataElement* root = rootOf(reader);
   if (!root || root->GetAttribute("compressor")) return;
   const char* order = root->GetAttribute("byte_order");
-  if (order && std::strcmp(order, "BigEndian") == 0) return;  // prefix decoded little-endian only
   const char* type = root->GetAttribute("header_type");
   const std::size_t prefix = type && std::strcmp(type, "UInt64") == 0 ? 8 : 4;
   std::ifstream in(path, std::ios::binary);
-  checkArrays(root, in, prefix, path);
+  checkArrays(root, in, prefix, order && std::strcmp(order, "BigEndian") == 0, path);
 }
 
 }  // namespace tg::io

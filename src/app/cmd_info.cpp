@@ -63,9 +63,10 @@ int cmdInfo(int argc, const char** argv) {
                 gr.directions[5], gr.directions[8]);
   }
   std::printf("sample spacing: %g\n", f.sampleSpacing);
-  std::printf("tensors: %zu total, %zu masked, %zu outside the selection, %zu skipped (NaN/Inf), %zu below cl/cp, "
-              "%zu drawn\n",
-              f.totalPoints, f.masked, f.unselected, f.skippedNonFinite, g.droppedByShape, g.glyphs.size());
+  std::printf("tensors: %zu total, %zu masked, %zu outside the selection, %zu skipped (NaN/Inf), %zu skipped "
+              "(overflow), %zu below cl/cp, %zu drawn\n",
+              f.totalPoints, f.masked, f.unselected, f.skippedNonFinite, f.skippedOverflow, g.droppedByShape,
+              g.glyphs.size());
   std::printf("  positive semi-definite: %zu, indefinite: %zu, negative definite: %zu, zero: %zu\n",
               g.glyphs.size() - negDef - indefinite - zero, indefinite, negDef, zero);
   if (!g.glyphs.empty()) {

@@ -1,6 +1,7 @@
 #include <OpenImageIO/imageio.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <optional>
 #include <string>
@@ -120,7 +121,11 @@ render::CameraDesc chooseCamera(const RenderOptions& o, const Scene& s, const gl
     d.upWC = o.up.value_or(glm::dvec3(0, 1, 0));
   }
   if (o.ortho) d.orthoHeight = *o.ortho;
-  if (const char* err = render::validateCamera(d); *err) throw UsageError(err);
+  if (const char* err = render::validateCamera(d); *err) {
+    // A camera framed from the data alone fails only on the data's extent.
+    if (o.eye || o.ortho || o.fov) throw UsageError(err);
+    throw io::InputError("render: " + s.field.path + ": the field cannot be framed (" + err + ")");
+  }
   return d;
 }
 
@@ -153,6 +158,9 @@ int cmdRender(int argc, const char** argv) {
   params.background = o.background;
 
   const auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale);
+  if (!std::isfinite(lo.x + lo.y + lo.z + hi.x + hi.y + hi.z))
+    throw io::InputError("render: " + scene.field.path + ": the glyphs extend beyond the floating-point range (scale " +
+                         std::to_string(params.scale) + ")");
   const render::Camera cam = render::makeCamera(chooseCamera(o, scene, lo, hi), o.width, o.height, lo, hi);
 
   auto ctx = createContext(o.backend, o.width, o.height);

@@ -82,6 +82,10 @@ void reportLoad(const io::TensorField& f, const char* command) {
   if (f.skippedNonFinite)
     std::fprintf(stderr, "tensorglyph %s: %s: skipped %zu tensors with NaN/Inf components\n", command, f.path.c_str(),
                  f.skippedNonFinite);
+  if (f.skippedOverflow)
+    std::fprintf(stderr,
+                 "tensorglyph %s: %s: skipped %zu tensors whose eigenvalues overflow single precision (|D| > 3.4e38)\n",
+                 command, f.path.c_str(), f.skippedOverflow);
   if (f.size() == 0)
     std::fprintf(stderr, "tensorglyph %s: %s: no tensor is left to draw (%zu masked, %zu outside the selection)\n",
                  command, f.path.c_str(), f.masked, f.unselected);
