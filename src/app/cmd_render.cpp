@@ -1,6 +1,8 @@
 #include <OpenImageIO/imageio.h>
 
 #include <chrono>
+#include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <optional>
@@ -158,7 +160,10 @@ int cmdRender(int argc, const char** argv) {
   params.background = o.background;
 
   const auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale);
-  if (!std::isfinite(lo.x + lo.y + lo.z + hi.x + hi.y + hi.z))
+  // The GPU works in single precision: a box beyond FLT_MAX draws nothing.
+  const double extent = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y),
+                                  std::abs(hi.z)});
+  if (!(extent <= double(FLT_MAX)))
     throw io::InputError("render: " + scene.field.path + ": the glyphs extend beyond the floating-point range (scale " +
                          std::to_string(params.scale) + ")");
   const render::Camera cam = render::makeCamera(chooseCamera(o, scene, lo, hi), o.width, o.height, lo, hi);
