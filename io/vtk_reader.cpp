@@ -386,7 +386,7 @@ TensorField readVtk(const std::string& path, const ReadOptions& opt) {
 
   TensorField f;
   f.path = path;
-  f.arrayName = arr ? nameOf(arr) : "Cartesian Stress (3D-TSV trailer)";
+  f.arrayName = arr ? (arr->GetName() ? arr->GetName() : "") : "Cartesian Stress (3D-TSV trailer)";
   f.description = std::string(ds->GetClassName()) + ", " + std::to_string(n) + " points";
   f.layout = layoutOf(arr);
   auto* image = vtkImageData::SafeDownCast(ds);
