@@ -10,7 +10,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <memory>
+#include <string_view>
 
+#include "io/nifti_layouts.h"
 #include "io/readers.h"
 #include "io/selection.h"
 #include "io/volume_sink.h"
@@ -187,6 +189,41 @@ std::uint64_t spatialVoxels(const std::string& path, const nifti_image& nim, Vol
   return n;
 }
 
+// The component order and frame to read with, and what chose each.
+struct Convention {
+  const NiftiLayout* layout;
+  TensorFrame frame;
+  std::string layoutSource, frameSource;
+};
+
+Convention convention(const std::string& path, const nifti_image& nim, const ReadOptions& opt) {
+  if (const std::string o = inapplicableOption(InputFormat::Nifti, opt); !o.empty())
+    fail(path, o + " does not apply to NIfTI");
+  Convention c{nullptr, TensorFrame::Fsl, "--layout", "--frame"};
+  if (!opt.layout.empty()) {
+    c.layout = niftiLayoutNamed(opt.layout);
+    if (!c.layout) fail(path, "unknown layout \"" + opt.layout + "\"; choose " + kNiftiLayoutChoices);
+  } else if (nim.intent_code == NIFTI_INTENT_SYMMATRIX) {
+    c.layout = niftiLayoutNamed("nifti");
+    c.layoutSource = "the SYMMATRIX intent; override with --layout";
+  } else if (std::string_view(nim.descrip, strnlen(nim.descrip, sizeof nim.descrip)).starts_with("MRtrix version")) {
+    c.layout = niftiLayoutNamed("mrtrix");  // MRtrix's NIfTI writer signs its files so
+    c.layoutSource = "the descrip names MRtrix; override with --layout";
+  } else {
+    c.layout = niftiLayoutNamed("fsl");
+    c.layoutSource = "the default, FSL's; override with --layout";
+  }
+  if (!opt.frame.empty()) {
+    const auto named = tensorFrameNamed(opt.frame);
+    if (!named) fail(path, "unknown frame \"" + opt.frame + "\"; choose " + kTensorFrameChoices);
+    c.frame = *named;
+  } else {
+    c.frame = c.layout->frame;
+    c.frameSource = std::string("the ") + c.layout->name + " layout's; override with --frame";
+  }
+  return c;
+}
+
 }  // namespace
 
 TensorField readNifti(const std::string& path, const ReadOptions& opt) {
@@ -202,28 +239,35 @@ TensorField readNifti(const std::string& path, const ReadOptions& opt) {
                    std::to_string(g.dims[2]) + "x" + std::to_string(nt) + "x" + std::to_string(nu) +
                    " hold no tensor; expected 6 volumes along dimension 4 or 5");
   if (dimOr1(*nim, 6) != 1 || dimOr1(*nim, 7) != 1) fail(path, "dimensions 6 and 7 must be 1");
-  std::string layout = opt.layout;
-  if (layout.empty()) layout = nim->intent_code == NIFTI_INTENT_SYMMATRIX ? "nifti" : "fsl";
+  const Convention conv = convention(path, *nim, opt);
   ComponentLayout cl;
-  if (layout == "fsl") cl.sym = {0, 1, 2, 3, 4, 5};         // xx xy xz yy yz zz
-  else if (layout == "nifti") cl.sym = {0, 1, 3, 2, 4, 5};  // lower triangle: xx xy yy xz yz zz
-  else if (layout == "mrtrix") cl.sym = {0, 3, 4, 1, 5, 2};  // xx yy zz xy xz yz
-  else if (layout == "vtk") cl.sym = {0, 3, 5, 1, 4, 2};     // xx yy zz xy yz xz
-  else fail(path, "unknown layout \"" + layout + "\"; choose " + kNiftiLayoutChoices);
-  f.layout = layout + (opt.layout.empty() ? " (from the header; override with --layout)" : "");
+  cl.sym = conv.layout->sym;
+  f.layout = std::string(conv.layout->name) + ": " + conv.layout->order + " (" + conv.layoutSource + ")";
 
   placement(*nim, g, f);
   double a[9];
   std::copy(g.axesWC, g.axesWC + 9, a);
   const double det = determinant3(a);
   if (!(std::abs(det) > 0) || !std::isfinite(det)) fail(path, "the affine is singular");
-  if (layout != "mrtrix") {
+  f.frame = std::string(tensorFrameName(conv.frame)) + " (" + conv.frameSource + "): ";
+  if (conv.frame == TensorFrame::World) {
+    f.frame += "the affine's world axes, not rotated";
+  } else {
     std::array<double, 9> t = orthogonalPart(a);
     // FSL's voxel frame is radiological: x runs opposite to i when the
-    // affine keeps handedness (det > 0).
-    if (layout == "fsl" && det > 0)
+    // sform (else qform) keeps handedness (det > 0). Without either FSL
+    // takes the image as radiological already (newimage's left_right_order).
+    const bool affine = nim->sform_code > 0 || nim->qform_code > 0;
+    const bool mirror = conv.frame == TensorFrame::Fsl && det > 0 && affine;
+    if (mirror)
       for (int r = 0; r < 3; ++r) t[3 * r] = -t[3 * r];
     g.tensorToWC = t;
+    f.tensorToWC = t;
+    f.frame += conv.frame == TensorFrame::Voxel ? "the voxel axes"
+               : mirror  ? "FSL's voxel axes, i reversed as the affine's det > 0"
+               : affine  ? "FSL's voxel axes, the voxel axes as the affine's det < 0"
+                         : "FSL's voxel axes, the voxel axes as there is no sform or qform";
+    f.frame += ", rotated by the affine's orthogonal part";
   }
   f.description = "NIfTI-" + std::to_string(niftiVersion(path)) + " volume, " + std::to_string(g.dims[0]) +
                   "x" + std::to_string(g.dims[1]) + "x" + std::to_string(g.dims[2]) + ", " +
@@ -268,12 +312,12 @@ TensorField readNifti(const std::string& path, const ReadOptions& opt) {
     sink.pushAccepted(kept.empty() ? r : kept[r], v6);
   }
   sink.finish();
+  const std::string implausible = implausibleLayoutWarning(comps, std::size_t(keptCount), *conv.layout);
+  if (!implausible.empty()) f.warnings.push_back(implausible);
   return f;
 }
 
-bool isNiftiLayout(const std::string& name) {
-  return name == "fsl" || name == "nifti" || name == "mrtrix" || name == "vtk";
-}
+bool isNiftiLayout(const std::string& name) { return niftiLayoutNamed(name) != nullptr; }
 
 ScalarVolume readNiftiScalar(const std::string& path, const int dims[3]) {
   const Image nim = readHeader(path);

@@ -321,9 +321,12 @@ TensorField readNrrd(const std::string& path, const ReadOptions& opt) {
   Nrrd* n = h->nrrd;
   if (n->dim < 3 || n->dim > 4)
     fail(path, "has " + std::to_string(n->dim) + " axes; a tensor volume has 4 (tensor, i, j, k) or 3");
+  if (const std::string o = inapplicableOption(InputFormat::Nrrd, opt); !o.empty())
+    fail(path, o + " does not apply to NRRD, whose header gives the tensor kind and measurement frame");
   TensorField f;
   f.path = path;
   const ComponentLayout layout = layoutOf(path, n, f);
+  f.hasConfidence = layout.confidence >= 0;
   VolumeGeometry g = geometry(path, n, 1, f);
   const std::uint64_t voxels = std::uint64_t(g.dims[0]) * std::uint64_t(g.dims[1]) * std::uint64_t(g.dims[2]);
 
@@ -352,7 +355,13 @@ TensorField readNrrd(const std::string& path, const ReadOptions& opt) {
   }
   for (int r = 0; r < 3; ++r)
     for (int c = 0; c < 3; ++c) t[3 * r + c] *= flip[r];
-  if (t != std::array<double, 9>{1, 0, 0, 0, 1, 0, 0, 0, 1}) g.tensorToWC = t;
+  if (t != std::array<double, 9>{1, 0, 0, 0, 1, 0, 0, 0, 1}) g.tensorToWC = f.tensorToWC = t;
+  f.frame = f.measurementFrame ? "the measurement frame, D = M D Mᵀ"
+            : n->spaceDim == 3 ? "the space's axes (no measurement frame)"
+                               : "the grid's axes (no space or measurement frame), not rotated";
+  if (flip[0] < 0)
+    f.frame += std::string("; then ") + (flip[1] < 0 ? "x and y" : "x") + " negated, " +
+               airEnumStr(nrrdSpace, space) + " to RAS";
 
   f.description = std::string("NRRD volume, ") + std::to_string(g.dims[0]) + "x" + std::to_string(g.dims[1]) + "x" +
                   std::to_string(g.dims[2]) + ", " + airEnumStr(nrrdType, n->type) + ", " + h->nio->encoding->name +

@@ -96,12 +96,18 @@ class WireIn {
 };
 
 constexpr std::uint32_t kWireMagic = 0x54474631;  // "TGF1"
+// Every member of TensorField crosses the process boundary in writeField and
+// readField; a new member changes this size and must be carried there too.
+static_assert(sizeof(TensorField) == 648, "TensorField changed: carry the new member in writeField/readField");
 
 void writeField(WireOut& w, const TensorField& f) {
   w.pod(kWireMagic);
-  for (const std::string* s : {&f.path, &f.description, &f.arrayName, &f.space, &f.layout}) w.str(*s);
-  w.pod(f.measurementFrame.has_value());
-  if (f.measurementFrame) w.pod(*f.measurementFrame);
+  for (const std::string* s : {&f.path, &f.description, &f.arrayName, &f.space, &f.layout, &f.frame}) w.str(*s);
+  for (const auto* m : {&f.measurementFrame, &f.tensorToWC}) {
+    w.pod(m->has_value());
+    if (*m) w.pod(**m);
+  }
+  w.pod(f.hasConfidence);
   w.pod(std::uint64_t(f.warnings.size()));
   for (const std::string& s : f.warnings) w.str(s);
   w.array(f.positions);
@@ -117,8 +123,10 @@ void writeField(WireOut& w, const TensorField& f) {
 TensorField readField(WireIn& r) {
   if (r.pod<std::uint32_t>() != kWireMagic) throw std::runtime_error("magic");
   TensorField f;
-  for (std::string* s : {&f.path, &f.description, &f.arrayName, &f.space, &f.layout}) *s = r.str();
-  if (r.pod<bool>()) f.measurementFrame = r.pod<std::array<double, 9>>();
+  for (std::string* s : {&f.path, &f.description, &f.arrayName, &f.space, &f.layout, &f.frame}) *s = r.str();
+  for (auto* m : {&f.measurementFrame, &f.tensorToWC})
+    if (r.pod<bool>()) *m = r.pod<std::array<double, 9>>();
+  f.hasConfidence = r.pod<bool>();
   const auto warnings = r.pod<std::uint64_t>();
   for (std::uint64_t k = 0; k < warnings && k < 1000; ++k) f.warnings.push_back(r.str());
   r.array(f.positions);

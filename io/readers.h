@@ -10,11 +10,17 @@
 
 namespace tg::io {
 
+// Options that apply to one format only are refused by the other readers.
 struct ReadOptions {
-  std::string arrayName;  // VTK: empty: the active tensors, else the only 6/9-component array
-  // NIfTI component order: "" (auto: the SYMMATRIX intent means "nifti",
-  // else "fsl"), "fsl", "nifti", "mrtrix" or "vtk". See readNifti.
+  // VTK: the point array holding the tensors; empty: the active tensors, else
+  // the only tensor-like array (see readVtk).
+  std::string arrayName;
+  // NIfTI component order: "" (from the header: the SYMMATRIX intent means
+  // "nifti", an MRtrix `descrip` "mrtrix", else "fsl"), "fsl", "nifti",
+  // "mrtrix" or "vtk". See nifti_layouts.h.
   std::string layout;
+  // NIfTI tensor frame: "" (the layout's own), "voxel", "fsl" or "world".
+  std::string frame;
   Selection selection;
   // Memory the load may take (0: no limit); readers refuse a header whose
   // promised data would exceed it before allocating anything.
@@ -22,6 +28,9 @@ struct ReadOptions {
   // Set by readTensorField's child process: told the decoded bytes and the
   // memory a read will take once its reader knows them (io/read_guard.h).
   std::function<void(std::uint64_t decodedBytes, std::uint64_t memoryBytes)> onPromise;
+  // --confidence-min was given: the CLI refuses it for tensors without a
+  // confidence value (TensorField::hasConfidence).
+  bool confidenceGiven = false;
 };
 
 // Bytes one kept tensor takes at the peak of a load: its sample (position,
@@ -36,7 +45,14 @@ inline constexpr std::uint64_t kPeakBytesPerTensor = 96;
 void promiseData(const char* who, const std::string& path, const ReadOptions& opt, std::uint64_t decodedBytes,
                  std::uint64_t keptSamples, std::uint64_t libraryBytes = 0);
 
-// Legacy .vtk and XML .vti/.vtu/.vtp/.vts through VTK's readers.
+// Legacy .vtk and XML .vti/.vtu/.vtp/.vts through VTK's readers. Point
+// tensors of 9 (row-major) or 6 (XX YY ZZ XY YZ XZ) components, or 2-D FEM
+// tensors of 4 (XX YY ZZ XY, OpenGeoSys) or 3 (XX YY XY) with zero
+// out-of-plane shear. Without --array: the active tensors, else the one
+// array of 9 or 6 components or a 4-component OpenGeoSys `sigma`/`epsilon`;
+// several such arrays are refused, named. 3-component arrays (vectors and
+// colours as often) are read only when --array names them. Tensors are taken
+// to be in the world axes of the points, as VTK's filters take them.
 TensorField readVtk(const std::string& path, const ReadOptions& opt);
 // The header path of a legacy .vtk alone: the count checks readVtk makes
 // before VTK allocates anything, and VTK's own header and dataset-type read.
@@ -49,10 +65,9 @@ TensorField readNrrd(const std::string& path, const ReadOptions& opt);
 
 // .nii/.nii.gz (NIfTI-1 and -2) through libnifti2: six volumes along the 4th
 // or 5th dimension. Placement from the sform, else the qform, else pixdim.
-// Tensor frame by layout: "fsl" tensors are in FSL's voxel frame (x mirrored
-// when the affine's determinant is positive), "nifti" and "vtk" in the voxel
-// frame; both are rotated into the world by the affine's orthogonal part.
-// "mrtrix" tensors are already in the world (scanner) frame.
+// Component order by --layout, tensor frame by --frame, each defaulting as
+// nifti_layouts.h says. Warns when most tensors are indefinite under the
+// chosen order, naming the orders that read them as diffusion tensors.
 TensorField readNifti(const std::string& path, const ReadOptions& opt);
 // The --layout names readNifti knows, for checking a command line early.
 bool isNiftiLayout(const std::string& name);
@@ -63,6 +78,14 @@ inline constexpr const char* kNiftiLayoutChoices = "fsl, nifti, mrtrix or vtk";
 ScalarVolume readNrrdScalar(const std::string& path, const int dims[3]);
 ScalarVolume readNiftiScalar(const std::string& path, const int dims[3]);
 ScalarVolume readVtiScalar(const std::string& path, const int dims[3]);
+
+// The format a path names, by its extension.
+enum class InputFormat { Vtk, Nrrd, Nifti, Unknown };
+InputFormat inputFormatOf(const std::string& path);
+const char* inputFormatName(InputFormat f);
+// The flag of the first option set in `opt` that `format` has no use for
+// ("--layout"), or "". Readers refuse such options rather than ignore them.
+std::string inapplicableOption(InputFormat format, const ReadOptions& opt);
 
 // Any supported file, by extension. Checks existence, type and emptiness
 // first, then reads in a child process under limits (io/read_guard.h), with

@@ -33,6 +33,12 @@ struct TensorField {
   std::string space;        // world space of the positions, e.g. "RAS"; "" when the format has none
   std::string layout;       // component order read from the file, for `info`
   std::optional<std::array<double, 9>> measurementFrame;  // row-major, as applied (D_WC = M D Mᵀ)
+  // The tensor frame as read, for `info`: its name and why ("fsl: FSL's voxel
+  // axes, i reversed as the affine's det > 0"), and the whole map applied,
+  // D_WC = T D Tᵀ (none: the identity; tensors were stored in WC).
+  std::string frame;
+  std::optional<std::array<double, 9>> tensorToWC;  // row-major T
+  bool hasConfidence = false;  // the format gives each tensor a confidence (masked NRRD)
   std::vector<std::string> warnings;  // one line each, without the file name
   std::vector<float> positions;     // 3 per kept tensor, WC
   std::vector<float> tensors;       // 6 per kept tensor: xx xy xz yy yz zz, WC

@@ -220,13 +220,32 @@ bool isLegacy(const std::string& path) {
   return path.size() > 4 && (path.ends_with(".vtk") || path.ends_with(".VTK"));
 }
 
+std::string nameOf(vtkDataArray* a) { return a->GetName() ? a->GetName() : "?"; }
+
+// Arrays of 3 or 4 components are vectors and colours as often as tensors:
+// without --array, only OpenGeoSys's stress and strain names count, which it
+// writes as 4 components (XX YY ZZ XY) on 2-D meshes.
+bool tensorLike(vtkDataArray* a) {
+  const int nc = a->GetNumberOfComponents();
+  const std::string name = nameOf(a);
+  return nc == 9 || nc == 6 || (nc == 4 && (name == "sigma" || name == "epsilon"));
+}
+
 bool hasTensorArray(vtkDataSet* ds) {
   vtkPointData* pd = ds->GetPointData();
   if (pd->GetTensors()) return true;
   for (int k = 0; k < pd->GetNumberOfArrays(); ++k)
-    if (vtkDataArray* a = pd->GetArray(k); a && (a->GetNumberOfComponents() == 9 || a->GetNumberOfComponents() == 6))
-      return true;
+    if (vtkDataArray* a = pd->GetArray(k); a && tensorLike(a)) return true;
   return false;
+}
+
+std::string describeArrays(vtkPointData* pd, bool onlyTensorLike) {
+  std::string list;
+  for (int k = 0; k < pd->GetNumberOfArrays(); ++k)
+    if (vtkDataArray* a = pd->GetArray(k); a && (!onlyTensorLike || tensorLike(a)))
+      list += std::string(list.empty() ? "" : ", ") + nameOf(a) + " (" + std::to_string(a->GetNumberOfComponents()) +
+              " components)";
+  return list;
 }
 
 vtkDataArray* pickTensorArray(vtkDataSet* ds, const std::string& path, const ReadOptions& opt) {
@@ -234,27 +253,59 @@ vtkDataArray* pickTensorArray(vtkDataSet* ds, const std::string& path, const Rea
   vtkDataArray* arr = nullptr;
   if (!opt.arrayName.empty()) {
     arr = pd->GetArray(opt.arrayName.c_str());
-    if (!arr) fail(path, "no point array named \"" + opt.arrayName + "\"");
-  } else if ((arr = pd->GetTensors())) {
-  } else {
-    std::string seen;
-    for (int k = 0; k < pd->GetNumberOfArrays(); ++k) {
-      vtkDataArray* a = pd->GetArray(k);
-      if (!a) continue;
-      seen += std::string(seen.empty() ? "" : ", ") + (a->GetName() ? a->GetName() : "?") + " (" +
-              std::to_string(a->GetNumberOfComponents()) + " components)";
-      if ((a->GetNumberOfComponents() == 9 || a->GetNumberOfComponents() == 6) && !arr) arr = a;
+    if (!arr) {
+      const std::string seen = describeArrays(pd, false);
+      fail(path, "no point array named \"" + opt.arrayName + "\"" + (seen.empty() ? "" : "; found " + seen));
     }
-    if (!arr) fail(path, seen.empty() ? "no point tensors" : "no point array with 9 or 6 components; found " + seen);
+  } else if (!(arr = pd->GetTensors())) {
+    // No active tensors: the one tensor-like array, never the first of several.
+    int count = 0;
+    for (int k = 0; k < pd->GetNumberOfArrays(); ++k)
+      if (vtkDataArray* a = pd->GetArray(k); a && tensorLike(a) && ++count == 1) arr = a;
+    if (count > 1)
+      fail(path, std::to_string(count) + " point arrays could hold the tensors: " + describeArrays(pd, true) +
+                     "; choose one with --array");
+    if (!arr) {
+      const std::string seen = describeArrays(pd, false);
+      fail(path, seen.empty() ? "no point tensors"
+                              : "no point array with 9 or 6 components (or a 4-component OpenGeoSys sigma or "
+                                "epsilon); found " + seen + "; --array NAME reads 4 or 3 components as 2-D tensors");
+    }
   }
   const int nc = arr->GetNumberOfComponents();
-  if (nc != 9 && nc != 6)
-    fail(path, "point array \"" + std::string(arr->GetName() ? arr->GetName() : "?") + "\" has " + std::to_string(nc) +
-                   " components; expected 9 or 6 (XX YY ZZ XY YZ XZ)");
+  if (nc != 9 && nc != 6 && nc != 4 && nc != 3)
+    fail(path, "point array \"" + nameOf(arr) + "\" has " + std::to_string(nc) +
+                   " components; expected 9, 6 (XX YY ZZ XY YZ XZ), 4 (XX YY ZZ XY) or 3 (XX YY XY)");
   if (arr->GetNumberOfTuples() != ds->GetNumberOfPoints())
     fail(path, "tensor array has " + std::to_string(arr->GetNumberOfTuples()) + " tuples for " +
                    std::to_string(ds->GetNumberOfPoints()) + " points");
   return arr;
+}
+
+// The component order as read, for `info`.
+std::string layoutOf(vtkDataArray* arr) {
+  if (!arr) return "Sxx Syy Szz Syz Szx Sxy";
+  switch (arr->GetNumberOfComponents()) {
+    case 9: return "9 values (row-major 3x3)";
+    case 6: return "6 values, VTK order (XX YY ZZ XY YZ XZ)";
+    case 4: return "4 values, 2-D (XX YY ZZ XY, as OpenGeoSys writes them); XZ = YZ = 0";
+    default: return "3 values, 2-D (XX YY XY); ZZ = XZ = YZ = 0";
+  }
+}
+
+// One tuple of `nc` components as a full row-major 3x3.
+void fullTensor(int nc, const double* t, double full[9]) {
+  const double zero[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
+  std::copy(zero, zero + 9, full);
+  if (nc == 9) {
+    std::copy(t, t + 9, full);
+  } else if (nc == 6) {  // XX YY ZZ XY YZ XZ
+    const double f[9] = {t[0], t[3], t[5], t[3], t[1], t[4], t[5], t[4], t[2]};
+    std::copy(f, f + 9, full);
+  } else {  // XX YY ZZ XY, or XX YY XY
+    const double xy = nc == 4 ? t[3] : t[2];
+    full[0] = t[0], full[1] = full[3] = xy, full[4] = t[1], full[8] = nc == 4 ? t[2] : 0.0;
+  }
 }
 
 }  // namespace
@@ -336,6 +387,8 @@ ScalarVolume readVtiScalar(const std::string& path, const int dims[3]) {
 }
 
 TensorField readVtk(const std::string& path, const ReadOptions& opt) {
+  if (const std::string o = inapplicableOption(InputFormat::Vtk, opt); !o.empty())
+    fail(path, o + " does not apply to VTK, whose tensors have a fixed order in world axes");
   const ReadResult read = readDataSet(path, opt);
   vtkDataSet* ds = read.data;
   const vtkIdType n = ds->GetNumberOfPoints();
@@ -356,24 +409,30 @@ TensorField readVtk(const std::string& path, const ReadOptions& opt) {
   f.path = path;
   f.arrayName = arr ? (arr->GetName() ? arr->GetName() : "") : "Cartesian Stress (3D-TSV trailer)";
   f.description = std::string(ds->GetClassName()) + ", " + std::to_string(n) + " points";
-  f.layout = !arr ? "Sxx Syy Szz Syz Szx Sxy"
-            : arr->GetNumberOfComponents() == 6 ? "6 values, VTK order (XX YY ZZ XY YZ XZ)"
-                                                : "9 values (row-major 3x3)";
+  f.layout = layoutOf(arr);
   auto* image = vtkImageData::SafeDownCast(ds);
+  f.frame = std::string("world: the points' axes, not rotated, as VTK's filters take them") +
+            (image && !image->GetDirectionMatrix()->IsIdentity() ? " (the Direction matrix places points only)" : "");
+  const int nc = arr ? arr->GetNumberOfComponents() : 9;
+  if (nc <= 4) {
+    double b[6];
+    ds->GetBounds(b);
+    if (b[5] > b[4])
+      f.warnings.push_back("2-D tensors lie in the x-y plane, but the points span z from " + std::to_string(b[4]) +
+                           " to " + std::to_string(b[5]));
+  }
   const Selector sel(opt.selection, path, image ? image->GetDimensions() : nullptr);
   if (sel.selectsAll()) f.reserve(std::size_t(n));
-  const bool six = arr && arr->GetNumberOfComponents() == 6;
-  double p[3], t[9];
+  double p[3], t[9], full[9];
   for (vtkIdType i = 0; i < n; ++i) {
     ds->GetPoint(i, p);
     if (!sel.admit(std::uint64_t(i), p, f)) continue;
     if (!arr) {
       f.addFull(std::uint32_t(i), p, &trailer[9 * std::size_t(i)]);
-    } else if (arr->GetTuple(i, t); six) {  // VTK's symmetric order: XX YY ZZ XY YZ XZ
-      const double full[9] = {t[0], t[3], t[5], t[3], t[1], t[4], t[5], t[4], t[2]};
-      f.addFull(std::uint32_t(i), p, full);
     } else {
-      f.addFull(std::uint32_t(i), p, t);
+      arr->GetTuple(i, t);
+      fullTensor(nc, t, full);
+      f.addFull(std::uint32_t(i), p, full);
     }
   }
   if (auto* img = image) {

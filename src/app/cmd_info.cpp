@@ -24,7 +24,9 @@ int cmdInfo(int argc, const char** argv) {
   if (input.empty()) throw UsageError("INPUT is required");
   flags.validate();
 
+  checkOptionsApply(input, flags.read);
   const io::TensorField f = io::readTensorField(input, flags.read);
+  checkLoaded(f, flags.read);
   for (const std::string& w : f.warnings) std::fprintf(stderr, "tensorglyph info: %s: %s\n", f.path.c_str(), w.c_str());
   const tensor::GlyphSet g = tensor::buildGlyphs(f.positions, f.tensors, f.ids, 0, flags.glyph);
   std::size_t negDef = 0, indefinite = 0, zero = 0;
@@ -47,12 +49,21 @@ int cmdInfo(int argc, const char** argv) {
   if (!f.arrayName.empty()) std::printf("tensor array: %s\n", f.arrayName.c_str());
   if (!f.layout.empty()) std::printf("components: %s\n", f.layout.c_str());
   std::printf("space: %s\n", f.space.empty() ? "(none given)" : f.space.c_str());
+  std::printf("tensor frame: %s\n", f.frame.empty() ? "(not stated)" : f.frame.c_str());
   if (f.measurementFrame) {
     const auto& m = *f.measurementFrame;
     std::printf("measurement frame (columns): (%g,%g,%g) (%g,%g,%g) (%g,%g,%g)\n", m[0], m[3], m[6], m[1], m[4], m[7],
                 m[2], m[5], m[8]);
+  }
+  // The whole map applied, mirror included: a reflection shows as det -1.
+  if (f.tensorToWC) {
+    const auto& t = *f.tensorToWC;
+    const double det = t[0] * (t[4] * t[8] - t[5] * t[7]) - t[1] * (t[3] * t[8] - t[5] * t[6]) +
+                       t[2] * (t[3] * t[7] - t[4] * t[6]);
+    std::printf("tensors to world, D = T D Tᵀ, T (rows): [%.6g %.6g %.6g] [%.6g %.6g %.6g] [%.6g %.6g %.6g]%s\n", t[0],
+                t[1], t[2], t[3], t[4], t[5], t[6], t[7], t[8], det < 0 ? " (a reflection)" : "");
   } else {
-    std::printf("measurement frame: (none; tensors are in the world frame)\n");
+    std::printf("tensors to world: identity (stored in world axes)\n");
   }
   if (f.grid) {
     const io::GridInfo& gr = *f.grid;

@@ -4,18 +4,21 @@
 #include <stdexcept>
 
 #include "app/cli_common.h"
+#include "io/nifti_layouts.h"
 
 namespace tg::app {
 
 void FieldFlags::addTo(OIIO::ArgParse& ap, bool scaling) {
   using Args = OIIO::cspan<const char*>;
   io::Selection& sel = read.selection;
-  ap.arg("--array NAME").help("VTK: the point array holding the tensors").action([&](auto&, Args a) {
-    read.arrayName = a[1];
-  });
+  ap.arg("--array NAME").help("VTK: the point array holding the tensors (9, 6, 4 or 3 components)")
+      .action([&](auto&, Args a) { read.arrayName = a[1]; });
   ap.arg("--layout L").help("NIfTI component order: fsl (xx xy xz yy yz zz), nifti (SYMMATRIX: xx xy yy xz yz zz), "
-                            "mrtrix (xx yy zz xy xz yz, world frame) or vtk (xx yy zz xy yz xz)")
+                            "mrtrix (xx yy zz xy xz yz) or vtk (xx yy zz xy yz xz); default from the header")
       .action([&](auto&, Args a) { read.layout = a[1]; });
+  ap.arg("--frame F").help("NIfTI tensor axes: voxel, fsl (voxel, i reversed when det > 0) or world; default: the "
+                           "layout's (fsl: fsl, mrtrix: world, else voxel)")
+      .action([&](auto&, Args a) { read.frame = a[1]; });
   ap.arg("--mask FILE").help("scalar volume on the same grid (.nrrd .nhdr .nii .nii.gz .vti)").action([&](auto&, Args a) {
     sel.maskPath = a[1];
   });
@@ -23,7 +26,10 @@ void FieldFlags::addTo(OIIO::ArgParse& ap, bool scaling) {
     sel.maskMin = parseDouble("--mask-min", a[1]);
   });
   ap.arg("--confidence-min C").help("masked NRRD tensors: keep confidence >= C (default 0.5)")
-      .action([&](auto&, Args a) { sel.confidenceMin = parseDouble("--confidence-min", a[1]); });
+      .action([&](auto&, Args a) {
+        sel.confidenceMin = parseDouble("--confidence-min", a[1]);
+        read.confidenceGiven = true;
+      });
   ap.arg("--slice SPEC").help("axis:index[:thickness], e.g. z:40 or z:40:5 (a slab centred on 40)")
       .action([&](auto&, Args a) {
         try {
@@ -67,6 +73,8 @@ void FieldFlags::validate() const {
   if (sel.stride < 1 || sel.stride > 1000000) throw UsageError("--stride must be within 1..1000000");
   if (!read.layout.empty() && !io::isNiftiLayout(read.layout))
     throw UsageError("--layout: unknown layout \"" + read.layout + "\"; choose " + io::kNiftiLayoutChoices);
+  if (!read.frame.empty() && !io::tensorFrameNamed(read.frame))
+    throw UsageError("--frame: unknown frame \"" + read.frame + "\"; choose " + io::kTensorFrameChoices);
   if (!(glyph.clMin >= 0 && glyph.clMin <= 1)) throw UsageError("--cl-min must be within 0..1");
   if (!(glyph.cpMin >= 0 && glyph.cpMin <= 1)) throw UsageError("--cp-min must be within 0..1");
   if (scale && !(*scale > 0.0)) throw UsageError("--scale must be positive");
@@ -75,6 +83,27 @@ void FieldFlags::validate() const {
 double FieldFlags::scaleFor(const tensor::GlyphSet& set, double spacing) const {
   const tensor::ScaleMode mode = scaleMode.value_or(scale ? tensor::ScaleMode::Absolute : tensor::ScaleMode::Spacing);
   return tensor::resolveScale(mode, scale.value_or(1.0), set, spacing);
+}
+
+void checkOptionsApply(const std::string& input, const io::ReadOptions& opt) {
+  const io::InputFormat format = input.empty() ? io::InputFormat::Unknown : io::inputFormatOf(input);
+  if (format == io::InputFormat::Unknown && !input.empty()) return;  // the reader names the extension
+  const std::string flag = io::inapplicableOption(format, opt);
+  if (flag.empty()) return;
+  throw UsageError(flag + " does not apply to " +
+                   (input.empty() ? std::string("the built-in scene") : input + ", a " + io::inputFormatName(format) +
+                                                                            " file"));
+}
+
+void checkLoaded(const io::TensorField& f, const io::ReadOptions& opt) {
+  if (opt.confidenceGiven && !f.hasConfidence)
+    throw UsageError("--confidence-min does not apply to " + f.path + ": its tensors have no confidence value (" +
+                     f.layout + ")");
+  if (f.size() == 0)
+    throw io::InputError("checkLoaded: " + f.path + ": no tensor to draw: of " + std::to_string(f.totalPoints) + ", " +
+                         std::to_string(f.skippedNonFinite) + " skipped (NaN/Inf), " + std::to_string(f.skippedOverflow) +
+                         " skipped (overflow), " + std::to_string(f.masked) +
+                         " masked, " + std::to_string(f.unselected) + " outside the selection");
 }
 
 void reportLoad(const io::TensorField& f, const char* command) {
@@ -86,9 +115,6 @@ void reportLoad(const io::TensorField& f, const char* command) {
     std::fprintf(stderr,
                  "tensorglyph %s: %s: skipped %zu tensors whose eigenvalues overflow single precision (|D| > 3.4e38)\n",
                  command, f.path.c_str(), f.skippedOverflow);
-  if (f.size() == 0)
-    std::fprintf(stderr, "tensorglyph %s: %s: no tensor is left to draw (%zu masked, %zu outside the selection)\n",
-                 command, f.path.c_str(), f.masked, f.unselected);
 }
 
 }  // namespace tg::app

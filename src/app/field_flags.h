@@ -2,6 +2,7 @@
 // The flags that choose what of a field is drawn and how big, shared by
 // every subcommand that loads one (render, info, bench, view).
 #include <optional>
+#include <string>
 
 #include <OpenImageIO/argparse.h>
 
@@ -16,7 +17,7 @@ struct FieldFlags {
   std::optional<double> scale;
   std::optional<tensor::ScaleMode> scaleMode;
 
-  // --array --layout --mask --mask-min --confidence-min --slice --stride
+  // --array --layout --frame --mask --mask-min --confidence-min --slice --stride
   // --roi --cl-min --cp-min --min-eigenvalue, and with `scaling` also
   // --scale and --scale-mode.
   void addTo(OIIO::ArgParse& ap, bool scaling);
@@ -27,7 +28,15 @@ struct FieldFlags {
   double scaleFor(const tensor::GlyphSet& set, double sampleSpacing) const;
 };
 
-// Prints a loaded field's warnings and skipped/masked counts on stderr,
+// Before loading: UsageError naming the first option that `input`'s format
+// (or the built-in scene, for "") has no use for.
+void checkOptionsApply(const std::string& input, const io::ReadOptions& opt);
+// After loading: UsageError for --confidence-min on tensors without a
+// confidence; InputError naming the file when no tensor is left to draw
+// (all skipped, masked or outside the selection).
+void checkLoaded(const io::TensorField& f, const io::ReadOptions& opt);
+
+// Prints a loaded field's warnings and skipped count on stderr,
 // "tensorglyph COMMAND: FILE: ...", one line each.
 void reportLoad(const io::TensorField& f, const char* command);
 

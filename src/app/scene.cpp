@@ -1,5 +1,7 @@
 #include "app/scene.h"
 
+#include "app/field_flags.h"
+
 #include "data-synthetic/generators.h"
 #include "io/readers.h"
 
@@ -33,13 +35,15 @@ Scene defaultScene() {
 }
 
 Scene loadScene(const std::string& input, const io::ReadOptions& opt) {
-  if (input.empty()) {
-    Scene s = defaultScene();
-    io::applySelection(s.field, opt.selection);
-    return s;
-  }
+  checkOptionsApply(input, opt);
   Scene s;
-  s.field = io::readTensorField(input, opt);
+  if (input.empty()) {
+    s = defaultScene();
+    io::applySelection(s.field, opt.selection);
+  } else {
+    s.field = io::readTensorField(input, opt);
+  }
+  checkLoaded(s.field, opt);
   return s;
 }
 
