@@ -109,23 +109,20 @@ struct Row {
 };
 
 void writeCsv(const std::vector<Row>& rows, const std::string& path) {
-  io::AtomicOutput out(path);
-  {
-    std::ofstream f(out.tempPath());
-    f << "iterations,epsilon,frame_ms,mean_iterations,max_iterations,coverage_error_pct,interior_error_pct,"
-         "depth_err_median,depth_err_p99,depth_err_max,normal_err_median_deg,normal_err_p99_deg,normal_err_max_deg\n";
-    char line[512];
-    for (const Row& r : rows) {
-      std::snprintf(line, sizeof line, "%d,%g,%.3f,%.3f,%u,%.4f,%.4f,%.3g,%.3g,%.3g,%.3g,%.3g,%.3g\n", r.iterations,
-                    r.epsilon, r.frameMs, r.stats.mean, r.stats.max, r.coveragePct(), r.interiorPct(), r.diff.depth.median,
-                    r.diff.depth.p99, r.diff.depth.max, r.diff.normalDeg.median, r.diff.normalDeg.p99,
-                    r.diff.normalDeg.max);
-      f << line;
-    }
-    f.close();
-    if (!f) throw std::runtime_error("bench accuracy: " + path + ": write failed");
+  std::string f =
+      "iterations,epsilon,frame_ms,mean_iterations,max_iterations,coverage_error_pct,interior_error_pct,"
+      "depth_err_median,depth_err_p99,depth_err_max,normal_err_median_deg,normal_err_p99_deg,normal_err_max_deg\n";
+  char line[512];
+  for (const Row& r : rows) {
+    std::snprintf(line, sizeof line, "%d,%g,%.3f,%.3f,%u,%.4f,%.4f,%.3g,%.3g,%.3g,%.3g,%.3g,%.3g\n", r.iterations,
+                  r.epsilon, r.frameMs, r.stats.mean, r.stats.max, r.coveragePct(), r.interiorPct(), r.diff.depth.median,
+                  r.diff.depth.p99, r.diff.depth.max, r.diff.normalDeg.median, r.diff.normalDeg.p99,
+                  r.diff.normalDeg.max);
+    f += line;
   }
-  out.commit();
+  io::AtomicFile out(path);
+  out.write(f.data(), f.size());
+  out.commit(std::int64_t(f.size()));
 }
 
 bool plot(const std::vector<Row>& rows, const std::vector<double>& epsilons, const std::string& path) {

@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 #include <limits>
 
 #include "app/cli_values.h"
@@ -206,8 +206,8 @@ void runScaleSweep(gl::Context& ctx, const ScaleOptions& o) {
   for (Method& m : methods)
     if (m.scaleFactor == 1.0) m.coveragePct = coverageErrorPct(gl, lib, m, o.gamma);
 
-  io::AtomicOutput out(o.csv);
-  std::ofstream f(out.tempPath());
+  io::AtomicFile out(o.csv);  // created now: an unwritable directory fails before the sweep
+  std::ostringstream f;
   f << "method,resolution,n,width,height,frame_ms,gpu_ms,empty_frame_ms,covered_pct,newton_mean,"
        "gpu_bytes_per_glyph,vtk_mesh_bytes_per_glyph,coverage_error_pct,device\n";
   std::fprintf(stderr, "scale sweep: %s (%s), %dx%d\n", ctx.backendName(), ctx.describe().c_str(), o.width, o.height);
@@ -258,9 +258,9 @@ void runScaleSweep(gl::Context& ctx, const ScaleOptions& o) {
                    m.skipped ? "; larger counts skipped" : "");
     }
   }
-  f.close();
-  if (!f) throw std::runtime_error("runScaleSweep: " + o.csv + ": write failed");
-  out.commit();
+  const std::string text = f.str();
+  out.write(text.data(), text.size());
+  out.commit(std::int64_t(text.size()));
 }
 
 }  // namespace tg::app
