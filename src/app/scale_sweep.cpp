@@ -9,6 +9,7 @@
 #include <limits>
 
 #include "app/cli_values.h"
+#include "app/frame_size.h"
 #include "data-synthetic/generators.h"
 #include "gl/shader_library.h"
 #include "io/atomic_file.h"
@@ -42,13 +43,15 @@ ScaleOptions parseScaleOptions(int argc, const char** argv, ScaleOptions o) {
     switch (c) {
       case 'o': o.csv = arg; break;
       case kN: o.counts = parseList<double>("--n", arg, parseDouble); break;
-      case kResolutions: o.resolutions = parseList<int>("--resolutions", arg, parseInt); break;
+      case kResolutions: o.resolutions = parseList<int>("--resolutions", arg, [](auto f, auto t) {
+          return parseIntIn(f, t, render::TessellatedGlyphs::kMinResolution, render::TessellatedGlyphs::kMaxResolution);
+        }); break;
       case kSize:
         if (optind >= argc) throw UsageError("--size needs W H");
-        o.width = int(parseInt("--size", arg));
-        o.height = int(parseInt("--size", argv[optind++]));
+        o.width = parseIntIn("--size", arg, 16, 8192);
+        o.height = parseIntIn("--size", argv[optind++], 16, 8192);
         break;
-      case kFrames: o.frames = int(parseInt("--frames", arg)); break;
+      case kFrames: o.frames = parseIntIn("--frames", arg, 1, 1000); break;
       case kBudget: o.budgetS = parseDouble("--budget", arg); break;
       case kGamma: o.gamma = parseDouble("--gamma", arg); break;
       case kBackend: o.backend = arg; break;
@@ -69,11 +72,11 @@ void checkScaleOptions(const ScaleOptions& o) {
   for (int r : o.resolutions)
     if (r < render::TessellatedGlyphs::kMinResolution || r > render::TessellatedGlyphs::kMaxResolution)
       throw UsageError("--resolutions: each must be within 4..64");
-  if (o.width < 16 || o.height < 16 || o.width > 8192 || o.height > 8192) throw UsageError("--size must be within 16..8192");
-  if (o.frames < 1 || o.frames > 1000) throw UsageError("--frames must be within 1..1000");
+  checkFrameSize("--size", o.width, o.height);
   if (!(o.budgetS > 0.0)) throw UsageError("--budget must be positive");
   if (!(o.gamma >= 0.0 && o.gamma <= 100.0)) throw UsageError("--gamma must be within 0..100");
   if (o.requireGpu && o.backend != "egl") throw UsageError("--require-gpu needs --backend egl");
+  checkOutputPath("-o", o.csv);
 }
 
 std::string scaleUsage(const std::string& command) {
