@@ -53,7 +53,7 @@ void writeRandomNrrdStreaming(const std::string& nhdrPath, std::size_t n, std::u
 
   // Data first, in 1M-tensor chunks, each write checked.
   io::AtomicFile raw(io::AtomicFile::UniqueName{}, hp.parent_path().string(), hp.stem().string(), ".raw");
-  {
+  try {
     RandomTensorStream rs(seed);
     constexpr std::size_t kChunk = 1 << 20;
     std::vector<float> buf(6 * kChunk);
@@ -63,6 +63,8 @@ void writeRandomNrrdStreaming(const std::string& nhdrPath, std::size_t n, std::u
       raw.write(buf.data(), sizeof(float) * 6 * m);
       done += m;
     }
+  } catch (const std::exception& e) {
+    throw std::runtime_error("writeRandomNrrdStreaming: " + nhdrPath + ": " + e.what());
   }
 
   // The header, by Teem, without data: it names the data file.

@@ -84,8 +84,10 @@ std::vector<std::string> nrrdDataFiles(const std::string& header) {
   if (_nrrdOneLine(&len, h.nio, h.file) || len == 0 || !nrrdFormatNRRD->contentStartsLike(h.nio))
     return {};  // not NRRD: the reader says so
   // Teem's header loop (_nrrdFormatNRRD_read) up to its "data file" field,
-  // without the step that opens the data files. Only the fields the data
-  // file parser depends on are parsed: dimension and sizes.
+  // without the step that opens the data files. Comments and key:=value
+  // lines are skipped (nothing here needs them, and Teem's key/value list
+  // grows quadratically); every other field goes through Teem's own parser,
+  // as the LIST form checks the header is complete.
   for (;;) {
     h.nio->pos = 0;
     if (_nrrdOneLine(&len, h.nio, h.file)) fail(header, teemNrrdError());
@@ -94,9 +96,11 @@ std::vector<std::string> nrrdDataFiles(const std::string& header) {
     const char* colon = std::strstr(line, ": ");
     if (line[0] == '#' || !colon) continue;  // comments, key:=value, or lines the reader refuses
     const int field = airEnumVal(nrrdField, std::string(line, colon).c_str());
-    if (field != nrrdField_dimension && field != nrrdField_sizes && field != nrrdField_data_file) continue;
+    if (field == nrrdField_unknown || field == nrrdField_comment || field == nrrdField_keyvalue) continue;
+    if (h.nio->seen[field]) fail(header, std::string("field \"") + airEnumStr(nrrdField, field) + "\" given twice");
     h.nio->pos = int(colon + 2 - line + std::strspn(colon + 2, " \t"));
     if (nrrdFieldInfoParse[field](h.file, h.nrrd, h.nio, AIR_TRUE)) fail(header, teemNrrdError());
+    h.nio->seen[field] = AIR_TRUE;
     if (field == nrrdField_data_file) break;  // a LIST has read the rest of the file
   }
   std::vector<std::string> files;

@@ -107,7 +107,8 @@ struct Row {
   double interiorPct() const { return percent(diff.interiorMismatch); }
 };
 
-void writeCsv(const std::vector<Row>& rows, const std::string& path) {
+// The CSV's bytes into `out`, not yet committed.
+void writeCsv(const std::vector<Row>& rows, io::AtomicFile& out) {
   std::string f =
       "iterations,epsilon,frame_ms,mean_iterations,max_iterations,coverage_error_pct,interior_error_pct,"
       "depth_err_median,depth_err_p99,depth_err_max,normal_err_median_deg,normal_err_p99_deg,normal_err_max_deg\n";
@@ -119,9 +120,7 @@ void writeCsv(const std::vector<Row>& rows, const std::string& path) {
                   r.diff.normalDeg.max);
     f += line;
   }
-  io::AtomicFile out(path);
   out.write(f.data(), f.size());
-  out.commit(std::int64_t(f.size()));
 }
 
 bool plot(const std::vector<Row>& rows, const std::vector<double>& epsilons, const std::string& path) {
@@ -215,9 +214,12 @@ int benchAccuracy(int argc, const char** argv) {
       if (r.diff.nonFinite) std::fprintf(stderr, "bench accuracy: %zu non-finite GPU values\n", r.diff.nonFinite);
       rows.push_back(r);
     }
-  writeCsv(rows, o.csv);
+  // The CSV is committed after the plot, so that a failure leaves neither.
+  io::AtomicFile csv(o.csv);
+  writeCsv(rows, csv);
   if (!plot(rows, o.epsilons, o.plot))
     std::fprintf(stderr, "bench accuracy: %s: no font found, so the plot has no labels\n", o.plot.c_str());
+  csv.commit(std::int64_t(csv.bytesWritten()));
   std::fprintf(stderr, "bench accuracy: wrote %s and %s\n", o.csv.c_str(), o.plot.c_str());
   return 0;
 }
