@@ -1,45 +1,73 @@
-#include <teem/biff.h>
 #include <teem/nrrd.h>
 
-#include <cstdio>
+#include <unistd.h>
+
 #include <filesystem>
-#include <memory>
+#include <regex>
 #include <stdexcept>
 #include <vector>
 
 #include "data-synthetic/generators.h"
 #include "data-synthetic/random_tensors.h"
 #include "io/atomic_file.h"
+#include "io/input_files.h"
+#include "io/nrrd_save.h"
 
 namespace tg::synth {
+namespace {
+
+// The pair is committed by its header alone. The data goes to a new file
+// under a unique name, "STEM.RANDOM.raw", which only the new header names;
+// the header is renamed over the old one last, so that a failure at any step
+// leaves the old header and the old data as they were, and two writers at
+// once each install a header over their own data. The rename exchanges the
+// headers (io::AtomicFile::commitExchange), so each writer learns exactly
+// which header it displaced, and removes that header's data file when it is
+// one of ours ("STEM.RANDOM.raw" beside it) and the header now in place does
+// not name it. Data a user's own header named is never removed.
+void removeDisplacedData(const std::string& displaced, const std::filesystem::path& header) noexcept try {
+  const std::regex ours(std::regex_replace(header.stem().string(), std::regex(R"([.^$|()\[\]{}*+?\\])"), R"(\$&)") +
+                        R"(\.[A-Za-z0-9]{12}\.raw)");
+  const std::vector<std::string> now = io::nrrdDataFiles(header.string());
+  const std::string dir = header.has_parent_path() ? header.parent_path().string() : ".";
+  for (const std::string& old : io::nrrdDataFiles(displaced)) {
+    const std::filesystem::path p(old);
+    if (!io::sameFile(p.has_parent_path() ? p.parent_path().string() : ".", dir) ||
+        !std::regex_match(p.filename().string(), ours))
+      continue;
+    bool needed = false;
+    for (const std::string& n : now) needed = needed || io::sameFile(n, old);
+    if (!needed) unlink(old.c_str());
+  }
+} catch (const std::exception&) {
+  // An unreadable header, displaced or current: keep every data file.
+}
+
+}  // namespace
 
 void writeRandomNrrdStreaming(const std::string& nhdrPath, std::size_t n, std::uint64_t seed) {
   const std::filesystem::path hp(nhdrPath);
   if (hp.extension() != ".nhdr") throw std::runtime_error("writeRandomNrrdStreaming: " + nhdrPath + ": needs .nhdr");
   if (n == 0) throw std::runtime_error("writeRandomNrrdStreaming: " + nhdrPath + ": N must be positive");
   const GridDims dims = gridDims(n);
-  const std::string rawName = hp.stem().string() + ".raw";
-  const std::string rawPath = (hp.parent_path() / rawName).string();
 
-  // Data first, in 1M-tensor chunks, to a temporary file.
-  io::AtomicOutput raw(rawPath);
-  {
-    std::unique_ptr<FILE, int (*)(FILE*)> out(std::fopen(raw.tempPath().c_str(), "wb"), &std::fclose);
-    if (!out) throw std::runtime_error("writeRandomNrrdStreaming: " + rawPath + ": cannot create");
+  // Data first, in 1M-tensor chunks, each write checked.
+  io::AtomicFile raw(io::AtomicFile::UniqueName{}, hp.parent_path().string(), hp.stem().string(), ".raw");
+  try {
     RandomTensorStream rs(seed);
     constexpr std::size_t kChunk = 1 << 20;
     std::vector<float> buf(6 * kChunk);
     for (std::size_t done = 0; done < n;) {
       const std::size_t m = std::min(kChunk, n - done);
       for (std::size_t i = 0; i < m; ++i) rs.next(&buf[6 * i]);
-      if (std::fwrite(buf.data(), sizeof(float), 6 * m, out.get()) != 6 * m)
-        throw std::runtime_error("writeRandomNrrdStreaming: " + rawPath + ": write failed (disk full?)");
+      raw.write(buf.data(), sizeof(float) * 6 * m);
       done += m;
     }
-    if (std::fflush(out.get()) != 0) throw std::runtime_error("writeRandomNrrdStreaming: " + rawPath + ": write failed");
+  } catch (const std::exception& e) {
+    throw std::runtime_error("writeRandomNrrdStreaming: " + nhdrPath + ": " + e.what());
   }
 
-  // The header, by Teem, without data: it points at the final data file name.
+  // The header, by Teem, without data: it names the data file.
   Nrrd* nrrd = nrrdNew();
   float placeholder = 0;  // never read: skipData
   const std::size_t sizes[4] = {6, dims.x, dims.y, dims.z};
@@ -50,24 +78,32 @@ void writeRandomNrrdStreaming(const std::string& nhdrPath, std::size_t n, std::u
   nio->skipData = AIR_TRUE;
   nio->encoding = nrrdEncodingRaw;
   const unsigned idx = airArrayLenIncr(nio->dataFNArr, 1);
-  nio->dataFN[idx] = airStrdup(rawName.c_str());
-  io::AtomicOutput header(nhdrPath);
-  int err = nrrdWrap_nva(nrrd, &placeholder, nrrdTypeFloat, 4, sizes);
-  if (!err) {
+  nio->dataFN[idx] = airStrdup(std::filesystem::path(raw.target()).filename().c_str());
+  io::AtomicFile header(nhdrPath);
+  std::int64_t size = 0;
+  try {
+    if (nrrdWrap_nva(nrrd, &placeholder, nrrdTypeFloat, 4, sizes))
+      throw std::runtime_error("writeRandomNrrdStreaming: " + nhdrPath + ": Teem cannot describe the grid");
     nrrdAxisInfoSet_nva(nrrd, nrrdAxisInfoKind, kinds);
     nrrdAxisInfoSet_nva(nrrd, nrrdAxisInfoSpacing, spacings);
-    err = nrrdSave(header.tempPath().c_str(), nrrd, nio);
+    size = io::writeNrrdTo(header, nrrd, nio, "writeRandomNrrdStreaming");
+  } catch (...) {
+    nrrdIoStateNix(nio);
+    nrrdNix(nrrd);
+    throw;
   }
   nrrdIoStateNix(nio);
   nrrdNix(nrrd);
-  if (err) {
-    char* e = biffGetDone(NRRD);
-    const std::string msg = e ? e : "Teem error";
-    std::free(e);
-    throw std::runtime_error("writeRandomNrrdStreaming: " + nhdrPath + ": " + msg);
+  // From here a failure must remove the data itself: it is no longer
+  // registered for removal, so that no signal can take it from under a
+  // committed header (at worst it is left unnamed).
+  raw.keep();
+  try {
+    header.commitExchange(size, [&](const std::string& displaced) { removeDisplacedData(displaced, hp); });
+  } catch (...) {
+    unlink(raw.target().c_str());
+    throw;
   }
-  raw.commit();
-  header.commit();
 }
 
 }  // namespace tg::synth

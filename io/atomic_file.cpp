@@ -1,33 +1,180 @@
 #include "io/atomic_file.h"
 
+#include <fcntl.h>
+#include <sys/random.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
-#include <atomic>
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <stdexcept>
 
+#include "io/temp_registry.h"
+
 namespace tg::io {
+namespace {
 
-AtomicOutput::AtomicOutput(const std::string& finalPath) : final_(finalPath) {
-  const std::filesystem::path p(finalPath);
-  static std::atomic<unsigned> counter{0};  // unique names for several outputs in one process
-  std::string name = ".";
-  name.append(p.stem().string()).append(".tmp").append(std::to_string(getpid())).append("-");
-  name.append(std::to_string(counter++)).append(p.extension().string());
-  temp_ = (p.parent_path() / name).string();
+std::string randomName() {
+  static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
+  unsigned char bytes[12];
+  std::size_t got = 0;
+  while (got < sizeof bytes) {
+    const ssize_t r = getrandom(bytes + got, sizeof bytes - got, 0);
+    if (r < 0 && errno != EINTR) throw std::runtime_error(std::string("getrandom: ") + std::strerror(errno));
+    if (r > 0) got += std::size_t(r);
+  }
+  std::string s;
+  for (unsigned char b : bytes) s += kAlphabet[b % 62];
+  return s;
 }
 
-AtomicOutput::~AtomicOutput() {
-  if (!committed_) std::remove(temp_.c_str());
+std::filesystem::path dirOf(const std::string& target) {
+  const std::filesystem::path p(target);
+  return p.has_parent_path() ? p.parent_path() : std::filesystem::path(".");
 }
 
-void AtomicOutput::commit() {
-  if (std::rename(temp_.c_str(), final_.c_str()) != 0)
-    throw std::runtime_error("AtomicOutput::commit: " + final_ + ": " + std::strerror(errno));
-  committed_ = true;
+}  // namespace
+
+// A new file at dir/prefix RANDOM suffix. O_EXCL never opens an existing
+// name, and with O_CREAT it refuses a symbolic link there, dangling or not;
+// O_NOFOLLOW says so twice. Mode 0666 lets the kernel apply the umask (and a
+// default ACL), so the committed file has the permissions any new file would
+// have, unlike mkstemp's 0600. The name is registered before the file exists,
+// so that no signal can come between the two and leave it behind.
+void AtomicFile::create(const std::string& dir, const std::string& prefix, const std::string& suffix) {
+  const std::filesystem::path d = dir.empty() ? std::filesystem::path(".") : std::filesystem::path(dir);
+  for (int attempt = 0; attempt < 100 && fd_ < 0; ++attempt) {
+    temp_ = (d / (prefix + randomName() + suffix)).string();
+    slot_ = registerTemp(temp_.c_str());
+    fd_ = open(temp_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
+    if (fd_ >= 0) break;
+    const int err = errno;
+    releaseTemp(slot_);
+    slot_ = -1;
+    if (err != EEXIST) {
+      temp_.clear();
+      fail(std::string("cannot create a file in its directory: ") + std::strerror(err));
+    }
+  }
+  if (fd_ < 0) {
+    temp_.clear();
+    fail("cannot create a file in its directory: 100 random names taken");
+  }
+  struct stat st {};
+  fstat(fd_, &st);
+  dev_ = st.st_dev;
+  ino_ = st.st_ino;
+}
+
+AtomicFile::AtomicFile(const std::string& target) : target_(target) {
+  const std::filesystem::path p(target);
+  if (!p.has_filename()) fail("not a file name");
+  // Appended piece by piece: GCC 12's -Wrestrict misfires on "." + string.
+  std::string prefix(1, '.'), suffix = ".tmp";
+  prefix.append(p.stem().string()).append("-");
+  suffix.append(p.extension().string());
+  create(dirOf(target).string(), prefix, suffix);
+}
+
+AtomicFile::AtomicFile(UniqueName, const std::string& dir, const std::string& stem, const std::string& ext)
+    : target_((std::filesystem::path(dir) / (stem + ext)).string()) {
+  create(dir, stem + ".", ext);
+  target_ = temp_;
+}
+
+AtomicFile::~AtomicFile() {
+  if (fd_ >= 0) close(fd_);
+  if (!done_ && !temp_.empty()) unlink(temp_.c_str());
+  releaseTemp(slot_);
+}
+
+void AtomicFile::fail(const std::string& what) const {
+  throw std::runtime_error("AtomicFile: " + target_ + ": " + what);
+}
+
+void AtomicFile::write(const void* data, std::size_t n) {
+  const auto* p = static_cast<const char*>(data);
+  while (n > 0) {
+    const ssize_t w = ::write(fd_, p, n);
+    if (w < 0 && errno == EINTR) continue;
+    if (w <= 0) fail(std::string("write failed: ") + (w < 0 ? std::strerror(errno) : "no progress"));
+    p += w;
+    n -= std::size_t(w);
+    written_ += std::uint64_t(w);
+  }
+}
+
+void AtomicFile::syncAndClose(std::int64_t expectedSize) {
+  // A writer that reopened the path by name must have written this very file.
+  struct stat now {};
+  if (lstat(temp_.c_str(), &now) != 0 || now.st_dev != dev_ || now.st_ino != ino_ || !S_ISREG(now.st_mode))
+    fail("the temporary file " + temp_ + " was replaced while being written");
+  if (expectedSize >= 0 && now.st_size != expectedSize)
+    fail("wrote " + std::to_string(now.st_size) + " bytes, not " + std::to_string(expectedSize) + " (disk full?)");
+  // Disk full often shows only here: delayed allocation, or NFS at close.
+  if (fsync(fd_) != 0) fail(std::string("fsync failed: ") + std::strerror(errno));
+  const int fd = fd_;
+  fd_ = -1;
+  if (close(fd) != 0) fail(std::string("close failed: ") + std::strerror(errno));
+}
+
+void AtomicFile::commit(std::int64_t expectedSize) {
+  syncAndClose(expectedSize);
+  if (std::rename(temp_.c_str(), target_.c_str()) != 0) fail(std::string("rename failed: ") + std::strerror(errno));
+  done_ = true;
+  releaseTemp(slot_);
+  slot_ = -1;
+  syncDirectoryOf(target_);
+}
+
+void AtomicFile::commitExchange(std::int64_t expectedSize,
+                                const std::function<void(const std::string& displaced)>& displaced) {
+  syncAndClose(expectedSize);
+  for (;;) {
+    if (renameat2(AT_FDCWD, temp_.c_str(), AT_FDCWD, target_.c_str(), RENAME_EXCHANGE) == 0) {
+      // The temporary name now holds the displaced target; still registered,
+      // so a signal removes it as well.
+      syncDirectoryOf(target_);
+      displaced(temp_);
+      unlink(temp_.c_str());
+      break;
+    }
+    if (errno == ENOENT) {
+      // No target yet: create it, unless another writer just did (then exchange).
+      if (renameat2(AT_FDCWD, temp_.c_str(), AT_FDCWD, target_.c_str(), RENAME_NOREPLACE) == 0) break;
+      if (errno == EEXIST) continue;
+    }
+    if (errno != EINVAL && errno != ENOSYS) fail(std::string("rename failed: ") + std::strerror(errno));
+    // A file system without exchange: a plain rename; under a race the
+    // displaced header's data may then stay behind, never a wrong pairing.
+    if (std::rename(temp_.c_str(), target_.c_str()) != 0) fail(std::string("rename failed: ") + std::strerror(errno));
+    break;
+  }
+  done_ = true;
+  releaseTemp(slot_);
+  slot_ = -1;
+  syncDirectoryOf(target_);
+}
+
+void AtomicFile::keep() {
+  syncAndClose(-1);
+  done_ = true;
+  releaseTemp(slot_);
+  slot_ = -1;
+  syncDirectoryOf(target_);
+}
+
+void syncDirectoryOf(const std::string& path) {
+  const std::string dir = dirOf(path).string();
+  const int fd = open(dir.c_str(), O_RDONLY | O_DIRECTORY | O_CLOEXEC);
+  if (fd < 0) throw std::runtime_error("syncDirectoryOf: " + dir + ": " + std::strerror(errno));
+  const int r = fsync(fd);
+  const int err = errno;
+  close(fd);
+  // Some file systems cannot sync a directory (EINVAL); their renames are as durable as they get.
+  if (r != 0 && err != EINVAL) throw std::runtime_error("syncDirectoryOf: " + dir + ": " + std::strerror(err));
 }
 
 }  // namespace tg::io

@@ -3,7 +3,7 @@
 
 #include <stdexcept>
 
-#include "io/atomic_file.h"
+#include "io/nrrd_save.h"
 #include "io/teem_util.h"
 #include "io/writers.h"
 
@@ -41,17 +41,18 @@ void writeNrrd(const TensorField& f, const std::string& path, const double m[9])
   nrrdAxisInfoSet_nva(nrrd, nrrdAxisInfoSpaceDirection, dirs);
   for (int c = 0; c < 3; ++c)
     for (int r = 0; r < 3; ++r) nrrd->measurementFrame[c][r] = m[r * 3 + c];  // Teem: [column][row]
-  AtomicOutput out(path);
   NrrdIoState* nio = nrrdIoStateNew();
   nio->encoding = nrrdEncodingGzip;
-  const int err = nrrdSave(out.tempPath().c_str(), nrrd, nio);
-  nrrdIoStateNix(nio);
-  if (err) {
+  try {
+    AtomicFile out(path);
+    out.commit(writeNrrdTo(out, nrrd, nio, "writeNrrd"));
+  } catch (...) {
+    nrrdIoStateNix(nio);
     done();
-    throw std::runtime_error("writeNrrd: " + path + ": " + teemNrrdError());
+    throw;
   }
+  nrrdIoStateNix(nio);
   done();
-  out.commit();
 }
 
 }  // namespace tg::io

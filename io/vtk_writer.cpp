@@ -35,7 +35,6 @@ vtkSmartPointer<vtkFloatArray> tensorArray(const TensorField& f) {
 
 void writeVtk(const TensorField& f, const std::string& path) {
   const std::string ext = path.substr(path.find_last_of('.') + 1);
-  AtomicOutput out(path);
   vtkSmartPointer<vtkDataSet> ds;
   if (ext == "vti") {
     if (!f.grid || std::size_t(f.grid->dims[0]) * f.grid->dims[1] * f.grid->dims[2] != f.size())
@@ -62,28 +61,35 @@ void writeVtk(const TensorField& f, const std::string& path) {
     }
   }
   ds->GetPointData()->SetTensors(tensorArray(f));
+  // VTK's writers lose the error of their last buffered write, so they write
+  // into memory and the bytes go to the file through AtomicFile's checks.
   int ok = 0;
+  std::string bytes;
   if (ext == "vtk") {
     auto w = vtkSmartPointer<vtkDataSetWriter>::New();
-    w->SetFileName(out.tempPath().c_str());
+    w->WriteToOutputStringOn();
     w->SetFileTypeToBinary();
     w->SetInputData(ds);
     ok = w->Write();
+    bytes = w->GetOutputStdString();
   } else if (ext == "vti" || ext == "vtu" || ext == "vtp") {
     vtkSmartPointer<vtkXMLWriter> w;
     if (ext == "vti") w = vtkSmartPointer<vtkXMLImageDataWriter>::New();
     else if (ext == "vtu") w = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
     else w = vtkSmartPointer<vtkXMLPolyDataWriter>::New();
-    w->SetFileName(out.tempPath().c_str());
+    w->WriteToOutputStringOn();
     w->SetInputData(ds);
     w->SetDataModeToAppended();
     w->SetCompressorTypeToZLib();
     ok = w->Write();
+    bytes = w->GetOutputString();
   } else {
     throw std::runtime_error("writeVtk: " + path + ": unknown extension");
   }
-  if (!ok) throw std::runtime_error("writeVtk: " + path + ": VTK writer failed");
-  out.commit();
+  if (!ok || bytes.empty()) throw std::runtime_error("writeVtk: " + path + ": VTK writer failed");
+  AtomicFile out(path);
+  out.write(bytes.data(), bytes.size());
+  out.commit(std::int64_t(bytes.size()));
 }
 
 }  // namespace tg::io

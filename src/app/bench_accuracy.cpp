@@ -15,6 +15,8 @@
 #include "app/arg_parse.h"
 #include "app/bench.h"
 #include "app/field_flags.h"
+#include "app/frame_size.h"
+#include "app/output_check.h"
 #include "app/cli_common.h"
 #include "app/plot.h"
 #include "app/scene.h"
@@ -52,19 +54,19 @@ Options parse(int argc, const char** argv) {
     o.plot = a[1];
   });
   ap.arg("--size W H").help("image size in pixels (default 640 480)").action([&](auto&, Args a) {
-    o.width = int(parseInt("--size", a[1]));
-    o.height = int(parseInt("--size", a[2]));
+    o.width = parseIntIn("--size", a[1], 16, 8192);
+    o.height = parseIntIn("--size", a[2], 16, 8192);
   });
   ap.arg("--gamma G").help("superquadric sharpness (default 3)").action([&](auto&, Args a) {
     o.gamma = parseDouble("--gamma", a[1]);
   });
   ap.arg("--iterations LIST").help("maximum iterations, comma-separated (default 1,2,3,4,5,6,8,10,12,15,20,30)")
-      .action([&](auto&, Args a) { o.iterations = parseList<int>("--iterations", a[1], parseInt); });
+      .action([&](auto&, Args a) { o.iterations = parseList<int>("--iterations", a[1], [](auto f, auto t) { return parseIntIn(f, t, 1, 1000); }); });
   ap.arg("--epsilon LIST").help("tolerances, comma-separated (default 1e-2,1e-3,...,1e-7)").action([&](auto&, Args a) {
     o.epsilons = parseList<double>("--epsilon", a[1], parseDouble);
   });
   ap.arg("--frames N").help("timed frames per setting; the median is reported (default 5)").action([&](auto&, Args a) {
-    o.frames = int(parseInt("--frames", a[1]));
+    o.frames = parseIntIn("--frames", a[1], 1, 1000);
   });
   ap.arg("--fa-min F").help("hide glyphs with FA below F").action([&](auto&, Args a) {
     o.faMin = parseDouble("--fa-min", a[1]);
@@ -84,17 +86,14 @@ std::string withExtension(const std::string& path, const std::string& ext) {
 void validate(Options& o) {
   if (o.csv.empty()) throw UsageError("-o CSV is required");
   if (o.plot.empty()) o.plot = withExtension(o.csv, ".png");
-  if (o.plot == o.csv) throw UsageError("--plot must differ from -o");
-  if (o.width < 16 || o.height < 16 || o.width > 8192 || o.height > 8192)
-    throw UsageError("--size must be within 16..8192");
+  checkFrameSize("--size", o.width, o.height);
   if (!(o.gamma > 0.0 && o.gamma <= 1e4)) throw UsageError("--gamma must be within (0, 10000]: at 0 no glyph marches");
-  for (int n : o.iterations)
-    if (n < 1 || n > 1000) throw UsageError("--iterations: each must be within 1..1000");
   for (double e : o.epsilons)
     if (!(e >= 1e-9 && e <= 0.5)) throw UsageError("--epsilon: each must be within 1e-9..0.5");
-  if (o.frames < 1 || o.frames > 1000) throw UsageError("--frames must be within 1..1000");
   o.field.validate();
   checkBackend(o.backend);
+  refuseOutputsOverInputs({{"-o", o.csv}, {"--plot", o.plot}},
+                          {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath}});
 }
 
 struct Row {
@@ -108,24 +107,20 @@ struct Row {
   double interiorPct() const { return percent(diff.interiorMismatch); }
 };
 
-void writeCsv(const std::vector<Row>& rows, const std::string& path) {
-  io::AtomicOutput out(path);
-  {
-    std::ofstream f(out.tempPath());
-    f << "iterations,epsilon,frame_ms,mean_iterations,max_iterations,coverage_error_pct,interior_error_pct,"
-         "depth_err_median,depth_err_p99,depth_err_max,normal_err_median_deg,normal_err_p99_deg,normal_err_max_deg\n";
-    char line[512];
-    for (const Row& r : rows) {
-      std::snprintf(line, sizeof line, "%d,%g,%.3f,%.3f,%u,%.4f,%.4f,%.3g,%.3g,%.3g,%.3g,%.3g,%.3g\n", r.iterations,
-                    r.epsilon, r.frameMs, r.stats.mean, r.stats.max, r.coveragePct(), r.interiorPct(), r.diff.depth.median,
-                    r.diff.depth.p99, r.diff.depth.max, r.diff.normalDeg.median, r.diff.normalDeg.p99,
-                    r.diff.normalDeg.max);
-      f << line;
-    }
-    f.close();
-    if (!f) throw std::runtime_error("bench accuracy: " + path + ": write failed");
+// The CSV's bytes into `out`, not yet committed.
+void writeCsv(const std::vector<Row>& rows, io::AtomicFile& out) {
+  std::string f =
+      "iterations,epsilon,frame_ms,mean_iterations,max_iterations,coverage_error_pct,interior_error_pct,"
+      "depth_err_median,depth_err_p99,depth_err_max,normal_err_median_deg,normal_err_p99_deg,normal_err_max_deg\n";
+  char line[512];
+  for (const Row& r : rows) {
+    std::snprintf(line, sizeof line, "%d,%g,%.3f,%.3f,%u,%.4f,%.4f,%.3g,%.3g,%.3g,%.3g,%.3g,%.3g\n", r.iterations,
+                  r.epsilon, r.frameMs, r.stats.mean, r.stats.max, r.coveragePct(), r.interiorPct(), r.diff.depth.median,
+                  r.diff.depth.p99, r.diff.depth.max, r.diff.normalDeg.median, r.diff.normalDeg.p99,
+                  r.diff.normalDeg.max);
+    f += line;
   }
-  out.commit();
+  out.write(f.data(), f.size());
 }
 
 bool plot(const std::vector<Row>& rows, const std::vector<double>& epsilons, const std::string& path) {
@@ -219,9 +214,12 @@ int benchAccuracy(int argc, const char** argv) {
       if (r.diff.nonFinite) std::fprintf(stderr, "bench accuracy: %zu non-finite GPU values\n", r.diff.nonFinite);
       rows.push_back(r);
     }
-  writeCsv(rows, o.csv);
+  // The CSV is committed after the plot, so that a failure leaves neither.
+  io::AtomicFile csv(o.csv);
+  writeCsv(rows, csv);
   if (!plot(rows, o.epsilons, o.plot))
     std::fprintf(stderr, "bench accuracy: %s: no font found, so the plot has no labels\n", o.plot.c_str());
+  csv.commit(std::int64_t(csv.bytesWritten()));
   std::fprintf(stderr, "bench accuracy: wrote %s and %s\n", o.csv.c_str(), o.plot.c_str());
   return 0;
 }

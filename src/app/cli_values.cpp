@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <filesystem>
 
 namespace tg::app {
 
@@ -19,6 +20,24 @@ long long parseInt(std::string_view flag, std::string_view text) {
   if (ec != std::errc() || end != text.data() + text.size() || text.empty())
     throw UsageError(std::string(flag) + ": \"" + std::string(text) + "\" is not an integer");
   return v;
+}
+
+long long parseInt(std::string_view flag, std::string_view text, long long lo, long long hi) {
+  long long v = 0;
+  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  if (ec != std::errc() || end != text.data() + text.size() || text.empty() || v < lo || v > hi)
+    throw UsageError(std::string(flag) + ": \"" + std::string(text) + "\" is not an integer within " +
+                     std::to_string(lo) + ".." + std::to_string(hi));
+  return v;
+}
+
+void checkOutputPath(std::string_view flag, const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) throw UsageError(std::string(flag) + ": \"" + path + "\" is a directory");
+  const fs::path dir = fs::path(path).parent_path();
+  if (!dir.empty() && !fs::is_directory(dir, ec))
+    throw UsageError(std::string(flag) + ": \"" + path + "\": no directory \"" + dir.string() + "\"");
 }
 
 glm::dvec3 parseVec3(std::string_view flag, std::span<const char* const> a) {

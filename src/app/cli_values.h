@@ -24,7 +24,17 @@ struct HelpShown {};
 // Whole-string numbers only ("1.5x" and "" are errors), finite.
 double parseDouble(std::string_view flag, std::string_view text);
 long long parseInt(std::string_view flag, std::string_view text);
+// An integer within lo..hi, checked before any narrowing: "4294967297" for an
+// int option is an error naming the flag and the range, never a wrapped 1.
+long long parseInt(std::string_view flag, std::string_view text, long long lo, long long hi);
+inline int parseIntIn(std::string_view flag, std::string_view text, int lo, int hi) {
+  return int(parseInt(flag, text, lo, hi));
+}
 glm::dvec3 parseVec3(std::string_view flag, std::span<const char* const> args);
+
+// An output path that can be written: not a directory, in a directory that
+// exists. Throws UsageError naming the flag.
+void checkOutputPath(std::string_view flag, const std::string& path);
 
 // A comma-separated list, each item through `parse` (parseInt, parseDouble).
 template <class T, class Parse>

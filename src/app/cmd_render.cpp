@@ -12,7 +12,9 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/field_flags.h"
+#include "app/frame_size.h"
 #include "app/names.h"
+#include "app/output_check.h"
 #include "app/scene.h"
 #include "gl/shader_library.h"
 #include "io/image_writer.h"
@@ -45,18 +47,18 @@ RenderOptions parse(int argc, const char** argv) {
   ap.arg("-o OUT").help("output image: .png (8-bit RGBA), .exr (float RGBA Z N id), other OIIO formats")
       .action([&](auto&, Args a) { o.output = a[1]; });
   ap.arg("--size W H").help("image size in pixels (default 1024 768)").action([&](auto&, Args a) {
-    o.width = int(parseInt("--size", a[1]));
-    o.height = int(parseInt("--size", a[2]));
+    o.width = parseIntIn("--size", a[1], 1, kMaxFrameSide);
+    o.height = parseIntIn("--size", a[2], 1, kMaxFrameSide);
   });
   ap.arg("--glyph KIND").help("ellipsoid (default) or superquadric").action([&](auto&, Args a) { o.glyph = a[1]; });
   ap.arg("--iterations N").help("superquadric Newton iterations at most (default 10)").action([&](auto&, Args a) {
-    o.maxIterations = int(parseInt("--iterations", a[1]));
+    o.maxIterations = parseIntIn("--iterations", a[1], 1, 1000);
   });
   ap.arg("--epsilon E").help("superquadric hit tolerance, relative to glyph size (default 1e-4)")
       .action([&](auto&, Args a) { o.epsilon = parseDouble("--epsilon", a[1]); });
   ap.arg("--tessellate R").help("draw the tessellated baseline instead: an R x R superquadric mesh per glyph, "
                                  "as VTK's vtkTensorGlyph (4..64; needs --glyph superquadric)")
-      .action([&](auto&, Args a) { o.tessellate = int(parseInt("--tessellate", a[1])); });
+      .action([&](auto&, Args a) { o.tessellate = parseIntIn("--tessellate", a[1], 0, render::TessellatedGlyphs::kMaxResolution); });
   ap.arg("--stats").help("report Newton iteration statistics on stderr").action([&](auto&, Args) { o.stats = true; });
   ap.arg("--gamma G").help("superquadric sharpness (Kindlmann 2004), >= 0").action([&](auto&, Args a) {
     o.gamma = parseDouble("--gamma", a[1]);
@@ -80,7 +82,7 @@ RenderOptions parse(int argc, const char** argv) {
   ap.arg("--backend NAME").help("osmesa (default), egl, glfw or auto").action([&](auto&, Args a) { o.backend = a[1]; });
   o.field.addTo(ap, true);
   ap.arg("--repeat N").help("render N more frames and report the median frame time").action([&](auto&, Args a) {
-    o.repeat = int(parseInt("--repeat", a[1]));
+    o.repeat = parseIntIn("--repeat", a[1], 0, 10000);
   });
   ap.arg("--verbose").help("report timings and memory on stderr").action([&](auto&, Args) { o.verbose = true; });
   parseArgs(ap, argc, argv);
@@ -90,8 +92,7 @@ RenderOptions parse(int argc, const char** argv) {
 // Every parameter is checked before anything is loaded or created.
 void validate(const RenderOptions& o) {
   if (o.output.empty()) throw UsageError("-o OUT is required");
-  if (o.width < 1 || o.height < 1 || o.width > 16384 || o.height > 16384)
-    throw UsageError("--size must be within 1..16384");
+  checkFrameSize("--size", o.width, o.height);
   if (!glyphKindNamed(o.glyph))
     throw UsageError("--glyph: unknown kind \"" + o.glyph + "\"; choose ellipsoid or superquadric");
   if (!(o.gamma >= 0.0 && o.gamma <= 1e4)) throw UsageError("--gamma must be within 0..10000");
@@ -111,6 +112,7 @@ void validate(const RenderOptions& o) {
   checkBackend(o.backend);
   if (!OIIO::ImageOutput::create(o.output))
     throw UsageError("-o: no image format for \"" + o.output + "\"");
+  refuseOutputsOverInputs({{"-o", o.output}}, {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath}});
 }
 
 render::CameraDesc chooseCamera(const RenderOptions& o, const Scene& s, const glm::dvec3& lo, const glm::dvec3& hi) {

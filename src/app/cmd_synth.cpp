@@ -1,5 +1,6 @@
 
 #include <cstdio>
+#include <limits>
 #include <string>
 
 #include "app/arg_parse.h"
@@ -43,12 +44,12 @@ int cmdSynth(int argc, const char** argv) {
   });
   ap.arg("-o OUT").help("output file").action([&](auto&, Args a) { out = a[1]; });
   ap.arg("--n N").help("size: grid side (helix, boussinesq) or glyph count (random)").action([&](auto&, Args a) {
-    n = parseInt("--n", a[1]);
+    n = parseInt("--n", a[1], 0, 4000000000LL);
   });
-  ap.arg("--seed S").help("random seed").action([&](auto&, Args a) { seed = parseInt("--seed", a[1]); });
+  ap.arg("--seed S").help("random seed").action([&](auto&, Args a) { seed = parseInt("--seed", a[1], 0, std::numeric_limits<long long>::max()); });
   parseArgs(ap, argc, argv);
   if (kind.empty() || out.empty()) throw UsageError(std::string("KIND and -o OUT are required; KIND is one of ") + kKinds);
-  if (n < 0 || n > 4000000000LL) throw UsageError("--n must be within 0..4e9");
+  checkOutputPath("-o", out);
 
   if (kind == "helix") {
     const int side = n ? int(std::min(n, 512LL)) : 32;

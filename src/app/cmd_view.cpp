@@ -18,7 +18,9 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/field_flags.h"
+#include "app/frame_size.h"
 #include "app/names.h"
+#include "app/output_check.h"
 #include "app/scene.h"
 #include "app/view_panel.h"
 #include "app/view_script.h"
@@ -47,8 +49,8 @@ ViewOptions parse(int argc, const char** argv) {
   using Args = OIIO::cspan<const char*>;
   addInputArg(ap, o.input);
   ap.arg("--size W H").help("window size (default 1280 800)").action([&](auto&, Args a) {
-    o.width = int(parseInt("--size", a[1]));
-    o.height = int(parseInt("--size", a[2]));
+    o.width = parseIntIn("--size", a[1], 64, kMaxFrameSide);
+    o.height = parseIntIn("--size", a[2], 64, kMaxFrameSide);
   });
   ap.arg("--glyph KIND").help("ellipsoid (default) or superquadric").action([&](auto&, Args a) { o.glyph = a[1]; });
   ap.arg("--gamma G").help("superquadric sharpness, >= 0 (default 3)").action([&](auto&, Args a) {
@@ -66,8 +68,7 @@ ViewOptions parse(int argc, const char** argv) {
 }
 
 void validate(const ViewOptions& o) {
-  if (o.width < 64 || o.height < 64 || o.width > 16384 || o.height > 16384)
-    throw UsageError("--size must be within 64..16384");
+  checkFrameSize("--size", o.width, o.height);
   if (!glyphKindNamed(o.glyph)) throw UsageError("--glyph: unknown kind \"" + o.glyph + "\"; choose ellipsoid or superquadric");
   if (!colorModeNamed(o.color)) throw UsageError("--color: unknown mode \"" + o.color + "\"; choose " + kColorModeNames);
   if (!(o.gamma >= 0.0 && o.gamma <= 1e4)) throw UsageError("--gamma must be within 0..10000");
@@ -94,6 +95,10 @@ int cmdView(int argc, const char** argv) {
   validate(o);
   // The script is checked whole before anything is loaded or opened.
   const std::vector<ScriptStep> script = o.script.empty() ? std::vector<ScriptStep>{} : parseScript(o.script);
+  std::vector<NamedPath> scriptShots;
+  for (const ScriptStep& s : script)
+    if (s.verb == "screenshot") scriptShots.push_back({o.script + ":" + std::to_string(s.line) + ": screenshot", s.args[0]});
+  refuseOutputsOverInputs(scriptShots, {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath}});
   Scene scene = loadScene(o.input, o.field.read);
   reportLoad(scene.field, "view");
   tensor::GlyphSet glyphs =
@@ -153,7 +158,7 @@ int cmdView(int argc, const char** argv) {
       } else if (step < script.size()) {
         const ScriptStep& s = script[step++];
         if (s.verb == "screenshot") shot = s.args[0];
-        else if (s.verb == "frames") framesLeft = int(parseInt("frames", s.args[0])) - 1;
+        else if (s.verb == "frames") framesLeft = parseIntIn("frames", s.args[0], 1, 100000) - 1;
         else applyStep(s, v);
       } else {
         glfwSetWindowShouldClose(window, GLFW_TRUE);

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-#include "io/atomic_file.h"
+#include "io/image_writer.h"
 
 namespace tg::app {
 namespace {
@@ -127,10 +127,9 @@ bool writePlot(const std::vector<PlotPanel>& panels, const std::string& path, in
     throw std::runtime_error("writePlot: " + path + ": no panels, or panels too small");
   Canvas c(w * int(panels.size()), h);
   for (std::size_t k = 0; k < panels.size(); ++k) drawPanel(c, panels[k], int(k) * w, w, h);
-  io::AtomicOutput out(path);
-  if (!c.buf().write(out.tempPath(), OIIO::TypeDesc::UINT8))
-    throw std::runtime_error("writePlot: " + path + ": " + c.buf().geterror());
-  out.commit();
+  OIIO::ImageSpec spec = c.buf().spec();
+  spec.set_format(OIIO::TypeDesc::UINT8);
+  io::writeOiioImage(path, spec, OIIO::TypeDesc::FLOAT, c.buf().localpixels());
   return c.labelled();
 }
 

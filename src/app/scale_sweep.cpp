@@ -5,10 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
+#include <sstream>
 #include <limits>
 
 #include "app/cli_values.h"
+#include "app/frame_size.h"
 #include "data-synthetic/generators.h"
 #include "gl/shader_library.h"
 #include "io/atomic_file.h"
@@ -42,13 +43,15 @@ ScaleOptions parseScaleOptions(int argc, const char** argv, ScaleOptions o) {
     switch (c) {
       case 'o': o.csv = arg; break;
       case kN: o.counts = parseList<double>("--n", arg, parseDouble); break;
-      case kResolutions: o.resolutions = parseList<int>("--resolutions", arg, parseInt); break;
+      case kResolutions: o.resolutions = parseList<int>("--resolutions", arg, [](auto f, auto t) {
+          return parseIntIn(f, t, render::TessellatedGlyphs::kMinResolution, render::TessellatedGlyphs::kMaxResolution);
+        }); break;
       case kSize:
         if (optind >= argc) throw UsageError("--size needs W H");
-        o.width = int(parseInt("--size", arg));
-        o.height = int(parseInt("--size", argv[optind++]));
+        o.width = parseIntIn("--size", arg, 16, 8192);
+        o.height = parseIntIn("--size", argv[optind++], 16, 8192);
         break;
-      case kFrames: o.frames = int(parseInt("--frames", arg)); break;
+      case kFrames: o.frames = parseIntIn("--frames", arg, 1, 1000); break;
       case kBudget: o.budgetS = parseDouble("--budget", arg); break;
       case kGamma: o.gamma = parseDouble("--gamma", arg); break;
       case kBackend: o.backend = arg; break;
@@ -69,11 +72,11 @@ void checkScaleOptions(const ScaleOptions& o) {
   for (int r : o.resolutions)
     if (r < render::TessellatedGlyphs::kMinResolution || r > render::TessellatedGlyphs::kMaxResolution)
       throw UsageError("--resolutions: each must be within 4..64");
-  if (o.width < 16 || o.height < 16 || o.width > 8192 || o.height > 8192) throw UsageError("--size must be within 16..8192");
-  if (o.frames < 1 || o.frames > 1000) throw UsageError("--frames must be within 1..1000");
+  checkFrameSize("--size", o.width, o.height);
   if (!(o.budgetS > 0.0)) throw UsageError("--budget must be positive");
   if (!(o.gamma >= 0.0 && o.gamma <= 100.0)) throw UsageError("--gamma must be within 0..100");
   if (o.requireGpu && o.backend != "egl") throw UsageError("--require-gpu needs --backend egl");
+  checkOutputPath("-o", o.csv);
 }
 
 std::string scaleUsage(const std::string& command) {
@@ -206,8 +209,8 @@ void runScaleSweep(gl::Context& ctx, const ScaleOptions& o) {
   for (Method& m : methods)
     if (m.scaleFactor == 1.0) m.coveragePct = coverageErrorPct(gl, lib, m, o.gamma);
 
-  io::AtomicOutput out(o.csv);
-  std::ofstream f(out.tempPath());
+  io::AtomicFile out(o.csv);  // created now: an unwritable directory fails before the sweep
+  std::ostringstream f;
   f << "method,resolution,n,width,height,frame_ms,gpu_ms,empty_frame_ms,covered_pct,newton_mean,"
        "gpu_bytes_per_glyph,vtk_mesh_bytes_per_glyph,coverage_error_pct,device\n";
   std::fprintf(stderr, "scale sweep: %s (%s), %dx%d\n", ctx.backendName(), ctx.describe().c_str(), o.width, o.height);
@@ -258,9 +261,9 @@ void runScaleSweep(gl::Context& ctx, const ScaleOptions& o) {
                    m.skipped ? "; larger counts skipped" : "");
     }
   }
-  f.close();
-  if (!f) throw std::runtime_error("runScaleSweep: " + o.csv + ": write failed");
-  out.commit();
+  const std::string text = f.str();
+  out.write(text.data(), text.size());
+  out.commit(std::int64_t(text.size()));
 }
 
 }  // namespace tg::app

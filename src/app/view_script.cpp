@@ -51,13 +51,11 @@ void check(const ScriptStep& s) {
       throw UsageError("light: unknown term \"" + w + "\"; choose ambient, head, key, specular or shininess");
     if (!(number(s, 1) >= 0.0)) throw UsageError("light: must be >= 0");
   }
-  if (v == "iterations" && !(parseInt(v, s.args[0]) >= 1 && parseInt(v, s.args[0]) <= 1000))
-    throw UsageError("iterations: must be within 1..1000");
+  if (v == "iterations") parseIntIn(v, s.args[0], 1, 1000);
   if (v == "epsilon" && !(number(s, 0) >= 1e-9 && number(s, 0) <= 0.5))
     throw UsageError("epsilon: must be within 1e-9..0.5");
   if (v == "stats" && s.args[0] != "on" && s.args[0] != "off") throw UsageError("stats: on or off");
-  if (v == "frames" && !(parseInt(v, s.args[0]) >= 1 && parseInt(v, s.args[0]) <= 100000))
-    throw UsageError("frames: must be within 1..100000");
+  if (v == "frames") parseIntIn(v, s.args[0], 1, 100000);
 }
 
 }  // namespace
@@ -99,7 +97,7 @@ void applyStep(const ScriptStep& s, ViewState& v) {
   else if (w == "gamma") p.gamma = number(s, 0);
   else if (w == "fa-min") p.faMin = number(s, 0);
   else if (w == "color") p.color = *colorModeNamed(s.args[0]);
-  else if (w == "iterations") p.march.maxIterations = int(parseInt(w, s.args[0]));
+  else if (w == "iterations") p.march.maxIterations = parseIntIn(w, s.args[0], 1, 1000);
   else if (w == "epsilon") p.march.epsilon = number(s, 0);
   else if (w == "stats") p.iterationStats = s.args[0] == "on";
   else if (w == "scale") {

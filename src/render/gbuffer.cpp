@@ -5,6 +5,34 @@
 #include <string>
 
 namespace tg::render {
+namespace {
+
+struct Format {
+  GLenum format;
+  int bytes;  // per texel
+};
+// albedo, normal, id, depth, lit colour, occluder depth; then the pyramid.
+constexpr Format kTargets[6] = {{GL_RGBA8, 4}, {GL_RGBA16F, 8}, {GL_R32UI, 4}, {GL_DEPTH_COMPONENT32F, 4},
+                                {GL_RGBA32F, 16}, {GL_DEPTH_COMPONENT32F, 4}};
+constexpr Format kPyramid = {GL_R32F, 4};
+
+int levelsFor(int w, int h) {
+  int levels = 1;  // down to 1 x 1
+  while ((std::max(w, h) >> levels) > 0) ++levels;
+  return levels;
+}
+
+}  // namespace
+
+std::uint64_t GBuffer::bytesFor(int width, int height) {
+  std::uint64_t perPixel = 0;
+  for (const Format& f : kTargets) perPixel += std::uint64_t(f.bytes);
+  std::uint64_t total = perPixel * std::uint64_t(width) * std::uint64_t(height);
+  const int pw = (width + 1) / 2, ph = (height + 1) / 2;
+  for (int l = 0; l < levelsFor(pw, ph); ++l)
+    total += std::uint64_t(kPyramid.bytes) * std::uint64_t(std::max(1, pw >> l)) * std::uint64_t(std::max(1, ph >> l));
+  return total;
+}
 
 GBuffer::GBuffer(const gl::Api& gl, int width, int height) : gl_(gl), width_(width), height_(height) {
   GLint maxSize = 0;
@@ -12,18 +40,16 @@ GBuffer::GBuffer(const gl::Api& gl, int width, int height) : gl_(gl), width_(wid
   if (width < 1 || height < 1 || width > maxSize || height > maxSize)
     throw std::runtime_error("GBuffer: image size " + std::to_string(width) + "x" + std::to_string(height) +
                              " outside 1.." + std::to_string(maxSize));
-  const GLenum formats[6] = {GL_RGBA8, GL_RGBA16F, GL_R32UI, GL_DEPTH_COMPONENT32F, GL_RGBA32F,
-                             GL_DEPTH_COMPONENT32F};
   gl.CreateTextures(GL_TEXTURE_2D, 6, tex_);
   for (int k = 0; k < 6; ++k) {
-    gl.TextureStorage2D(tex_[k], 1, formats[k], width, height);
+    gl.TextureStorage2D(tex_[k], 1, kTargets[k].format, width, height);
     // Nearest: an integer texture with the default linear filter is
     // incomplete, and texelFetch from it silently returns zero.
     gl.TextureParameteri(tex_[k], GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     gl.TextureParameteri(tex_[k], GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   }
   gl.CreateTextures(GL_TEXTURE_2D, 1, &tex_[6]);
-  gl.TextureStorage2D(tex_[6], pyramidLevels(), GL_R32F, pyramidWidth(), pyramidHeight());
+  gl.TextureStorage2D(tex_[6], pyramidLevels(), kPyramid.format, pyramidWidth(), pyramidHeight());
   gl.CreateFramebuffers(3, fbo_);
   for (int k = 0; k < 3; ++k) gl.NamedFramebufferTexture(fbo_[0], GL_COLOR_ATTACHMENT0 + k, tex_[k], 0);
   gl.NamedFramebufferTexture(fbo_[0], GL_DEPTH_ATTACHMENT, tex_[3], 0);
@@ -57,11 +83,7 @@ void GBuffer::beginGeometry() const {
   gl_.ClearNamedFramebufferfv(fbo_[0], GL_DEPTH, 0, &farDepth);
 }
 
-int GBuffer::pyramidLevels() const {
-  int levels = 1;  // down to 1 x 1
-  while ((std::max(pyramidWidth(), pyramidHeight()) >> levels) > 0) ++levels;
-  return levels;
-}
+int GBuffer::pyramidLevels() const { return levelsFor(pyramidWidth(), pyramidHeight()); }
 
 void GBuffer::beginOccluders() const {
   gl_.BindFramebuffer(GL_FRAMEBUFFER, fbo_[2]);

@@ -1,5 +1,7 @@
 #pragma once
 // Offscreen targets: the geometry pass's G-buffer and the lit colour.
+#include <cstdint>
+
 #include "gl/loader.h"
 
 namespace tg::render {
@@ -10,6 +12,11 @@ class GBuffer {
   ~GBuffer();
   GBuffer(const GBuffer&) = delete;
   GBuffer& operator=(const GBuffer&) = delete;
+
+  // What a width x height G-buffer holds in its textures, from the same
+  // format table the constructor allocates: 40 bytes per pixel and the
+  // occluder pyramid. Needs no context, so sizes can be checked up front.
+  static std::uint64_t bytesFor(int width, int height);
 
   int width() const { return width_; }
   int height() const { return height_; }

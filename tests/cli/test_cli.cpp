@@ -98,10 +98,14 @@ TEST(Cli, SynthWritesReadableFields) {
   }
   const CmdResult r = run("synth random --n 1000 -o " + (d / "big.nhdr").string());
   ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_EQ(fs::file_size(d / "big.raw"), 1000u * 6 * 4);
   std::ifstream h(d / "big.nhdr");
   const std::string hdr((std::istreambuf_iterator<char>(h)), {});
-  EXPECT_NE(hdr.find("big.raw"), std::string::npos) << hdr;
+  // The data file has a unique name, "big.RANDOM.raw", which the header gives.
+  const auto at = hdr.find("data file: ");
+  ASSERT_NE(at, std::string::npos) << hdr;
+  const std::string data = hdr.substr(at + 11, hdr.find('\n', at) - at - 11);
+  EXPECT_TRUE(fs::path(data).filename().string().starts_with("big.")) << data;
+  EXPECT_EQ(fs::file_size(d / data), 1000u * 6 * 4);
   EXPECT_NE(hdr.find("3D-symmetric-matrix"), std::string::npos) << hdr;
 }
 
