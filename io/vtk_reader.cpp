@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include <vtkCallbackCommand.h>
+#include <vtkCharArray.h>
 #include <vtkDataArray.h>
 #include <vtkDataSet.h>
 #include <vtkDataSetReader.h>
@@ -32,6 +33,7 @@
 #include "io/selection.h"
 #include "io/tsv_trailer.h"
 #include "io/vtk_capture.h"
+#include "io/vtk_nonfinite.h"
 #include "io/vtk_xml_checks.h"
 
 namespace tg::io {
@@ -170,6 +172,7 @@ std::uint64_t checkLegacyCounts(const std::string& path, std::uint64_t fileSize)
 struct ReadResult {
   vtkSmartPointer<vtkDataSet> data;
   std::string vtkSaid;  // empty: VTK said nothing
+  NonFiniteText nonFinite;  // legacy ASCII read through sentinels: restore each value
 };
 
 // Runs a reader whose counts are checked. Errors fail the read; the first
@@ -213,7 +216,7 @@ ReadResult runReader(vtkAlgorithm* reader, const std::string& path, std::uint64_
   check("VTK reader failed");
   auto* out = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
   if (!out) fail(path, said.first().empty() ? "no dataset in file" : said.first());
-  return {out, said.first()};
+  return {out, said.first(), {}};
 }
 
 bool isLegacy(const std::string& path) {
@@ -352,7 +355,26 @@ ReadResult readDataSet(const std::string& path, const ReadOptions& opt, const in
   } else {
     fail(path, "unknown VTK extension \"." + ext + "\"");
   }
-  return runReader(reader, path, fileSize, legacyPoints, opt, dims);
+  ReadResult read = runReader(reader, path, fileSize, legacyPoints, opt, dims);
+  // C++ streams stop at "nan" and "inf": read such a file again from a copy
+  // whose non-finite words are sentinels (io/vtk_nonfinite.h).
+  if (legacyPoints && read.vtkSaid.find("Error reading ascii data") != std::string::npos) {
+    NonFiniteText nonFinite = NonFiniteText::replace(path);
+    if (!nonFinite.empty()) {
+      auto r = vtkSmartPointer<vtkDataSetReader>::New();
+      r->ReadAllTensorsOn();
+      r->ReadAllFieldsOn();
+      r->ReadAllScalarsOn();
+      r->ReadAllVectorsOn();
+      auto text = vtkSmartPointer<vtkCharArray>::New();
+      text->SetArray(const_cast<char*>(nonFinite.text().data()), vtkIdType(nonFinite.text().size()), 1);
+      r->SetInputArray(text);
+      r->ReadFromInputStringOn();
+      read = runReader(r, path, fileSize, legacyPoints, opt, dims);
+      read.nonFinite = std::move(nonFinite);
+    }
+  }
+  return read;
 }
 
 }  // namespace
@@ -426,11 +448,13 @@ TensorField readVtk(const std::string& path, const ReadOptions& opt) {
   double p[3], t[9], full[9];
   for (vtkIdType i = 0; i < n; ++i) {
     ds->GetPoint(i, p);
+    for (double& x : p) x = read.nonFinite.restore(x);
     if (!sel.admit(std::uint64_t(i), p, f)) continue;
     if (!arr) {
       f.addFull(std::uint32_t(i), p, &trailer[9 * std::size_t(i)]);
     } else {
       arr->GetTuple(i, t);
+      for (int k = 0; k < nc; ++k) t[k] = read.nonFinite.restore(t[k]);
       fullTensor(nc, t, full);
       f.addFull(std::uint32_t(i), p, full);
     }

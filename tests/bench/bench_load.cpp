@@ -94,6 +94,31 @@ void loadAndEigen(benchmark::State& st) {
   st.SetItemsProcessed(std::int64_t(st.iterations()) * std::int64_t(n));
 }
 
+// The same through readTensorField: the read runs in a child process under
+// limits (io/read_guard.h) and the field comes back through a memfd. The
+// difference to loadAndEigen is the guard's cost.
+void loadAndEigenGuarded(benchmark::State& st) {
+  const std::string& path = fileFor(st.range(0));
+  std::size_t n = 0;
+  for (auto _ : st) {
+    const io::TensorField f = io::readTensorField(path, {});
+    const tensor::GlyphSet g = tensor::buildGlyphs(f.positions, f.tensors, f.ids, 1);
+    n = g.glyphs.size();
+    benchmark::DoNotOptimize(g.glyphs.data());
+  }
+  st.SetItemsProcessed(std::int64_t(st.iterations()) * std::int64_t(n));
+}
+
+// The guard's fixed cost per file: fork, limits, memfd and wait, on one tensor.
+void guardPerFile(benchmark::State& st) {
+  const std::string& path = fileFor(1);
+  for (auto _ : st) benchmark::DoNotOptimize(io::readTensorField(path, {}).size());
+}
+void unguardedPerFile(benchmark::State& st) {
+  const std::string& path = fileFor(1);
+  for (auto _ : st) benchmark::DoNotOptimize(io::readTensorFieldInProcess(path, {}).size());
+}
+
 }  // namespace
 
 BENCHMARK(loadOnly)->Arg(1 << 21)->Unit(benchmark::kMillisecond)->UseRealTime();
@@ -101,5 +126,8 @@ BENCHMARK(eigenOnly)->Arg(1 << 21)->Unit(benchmark::kMillisecond)->UseRealTime()
 BENCHMARK(eigensolveOnly)->Arg(1 << 21)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(eigensolveBlockOnly)->Arg(1 << 21)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(loadAndEigen)->Arg(1 << 21)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(loadAndEigenGuarded)->Arg(1 << 21)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(guardPerFile)->Unit(benchmark::kMicrosecond)->UseRealTime();
+BENCHMARK(unguardedPerFile)->Unit(benchmark::kMicrosecond)->UseRealTime();
 
 BENCHMARK_MAIN();

@@ -52,6 +52,29 @@ TEST(Vtk, NaNTensorsAreSkippedAndCounted) {
   EXPECT_EQ(f.ids[1], 2u);
 }
 
+// VTK's ASCII writer prints NaN and Inf as "nan" and "inf", which its own
+// reader cannot parse. Such files read, with those tensors skipped, and every
+// other value exactly as written, in float and double arrays, including a
+// value equal to the first sentinel the reader would otherwise use.
+TEST(Vtk, LegacyAsciiWithNanAndInfReads) {
+  for (const char* type : {"float", "double"}) {
+    const fs::path p = tmpDir() / (std::string("nan-ascii-") + type + ".vtk");
+    test::writeFile(p, std::string("# vtk DataFile Version 3.0\nnan\nASCII\nDATASET POLYDATA\nPOINTS 5 float\n"
+                                   "0 0 0 1 0 0 2 0 0 3 0 0 nan 0 0\nPOINT_DATA 5\nTENSORS t ") + type +
+                           "\n1.17549435e-37 0 0 0 1 0 0 0 1\n-inf 0 0 0 1 0 0 0 1\n2 0 0 0 1 0 0 0 3\n"
+                           "NaN 0 0 0 1 0 0 0 1\n1 0 0 0 1 0 0 0 1\n");
+    const io::TensorField f = io::readTensorField(p.string(), {});
+    ASSERT_EQ(f.size(), 2u) << type;
+    EXPECT_EQ(f.skippedNonFinite, 3u) << type;
+    EXPECT_EQ(f.ids[0], 0u);
+    EXPECT_EQ(f.ids[1], 2u);
+    EXPECT_EQ(f.tensors[0], 1.17549435e-37f) << type;
+    EXPECT_EQ(f.tensors[6 + 0], 2.0f);
+    EXPECT_EQ(f.tensors[6 + 5], 3.0f);
+    EXPECT_EQ(f.positions[3], 2.0f) << "the third point: its own x, not a sentinel";
+  }
+}
+
 TEST(Vtk, SixComponentsInVtkOrder) {
   const fs::path p = tmpDir() / "six.vtk";
   test::writeFile(p,
