@@ -16,6 +16,7 @@
 #include <functional>
 #include <memory>
 
+#include "io/input_files.h"
 #include "io/readers.h"
 #include "io/teem_util.h"
 #include "io/volume_sink.h"
@@ -66,6 +67,18 @@ void checkKeyValueCount(const std::string& path) {
 // The header only, with the data file left open at the first data byte.
 std::unique_ptr<Header> readHeader(const std::string& path) {
   checkKeyValueCount(path);
+  // Teem opens its data files in nrrdLoad even with skipData, and the open of
+  // a FIFO blocks; stat tells without opening.
+  std::vector<std::string> dataFiles;
+  try {
+    dataFiles = nrrdDataFiles(path);
+  } catch (const InputError&) {
+    // A header it cannot parse: nrrdLoad below reports the same fault as ours.
+  }
+  for (const std::string& data : dataFiles) {
+    struct stat st {};
+    if (stat(data.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) fail(path, "data file " + data + " is not a regular file");
+  }
   auto h = std::make_unique<Header>();
   h->nio->skipData = AIR_TRUE;
   h->nio->keepNrrdDataFileOpen = AIR_TRUE;
@@ -146,7 +159,11 @@ void decode(const std::string& path, Header& h, std::uint64_t count, std::size_t
   FILE* file = nio->dataFile;
   const long pos = std::ftell(file);
   double (*load)(const void*) = loaderFor(n->type);
-  const std::size_t chunkValues = std::max<std::size_t>(1, kChunkBytes / (tsize * record)) * record;
+  // Whole records, at most 4 MiB, and no more than the data: a fresh reader
+  // process pays a page fault for every page of these buffers.
+  const std::uint64_t records = std::min<std::uint64_t>(std::max<std::size_t>(1, kChunkBytes / (tsize * record)),
+                                                         (count + record - 1) / record);
+  const std::size_t chunkValues = std::size_t(records) * record;
   std::vector<char> buf(chunkValues * tsize);
   std::vector<double> vals(chunkValues);
   auto truncated = [&](std::uint64_t done) {

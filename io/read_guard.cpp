@@ -27,15 +27,18 @@ namespace {
 class WireOut {
  public:
   explicit WireOut(int fd) : fd_(fd) {}
+  // Small items gather in a buffer; arrays go straight to the memfd.
   void bytes(const void* p, std::size_t n) {
-    const char* c = static_cast<const char*>(p);
-    while (n > 0) {
-      const ssize_t w = ::write(fd_, c, n);
-      if (w < 0 && errno == EINTR) continue;
-      if (w <= 0) throw std::bad_alloc();  // a full memfd is memory we were not given
-      c += w;
-      n -= std::size_t(w);
+    if (n < 4096) {
+      pending_.append(static_cast<const char*>(p), n);
+      return;
     }
+    flush();
+    put(p, n);
+  }
+  void flush() {
+    put(pending_.data(), pending_.size());
+    pending_.clear();
   }
   template <class T>
   void pod(const T& v) {
@@ -53,7 +56,18 @@ class WireOut {
   }
 
  private:
+  void put(const void* p, std::size_t n) {
+    const char* c = static_cast<const char*>(p);
+    while (n > 0) {
+      const ssize_t w = ::write(fd_, c, n);
+      if (w < 0 && errno == EINTR) continue;
+      if (w <= 0) throw std::bad_alloc();  // a full memfd is memory we were not given
+      c += w;
+      n -= std::size_t(w);
+    }
+  }
   int fd_;
+  std::string pending_;
 };
 
 class WireIn {
@@ -196,6 +210,7 @@ void sendAll(int fd, const void* p, std::size_t n) {
     });
     WireOut w(dataFd);
     writeField(w, f);
+    w.flush();
     sendAll(statusFd, "O", 1);
   } catch (const InputError& e) {
     sendAll(statusFd, "E", 1);
