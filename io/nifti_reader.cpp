@@ -144,11 +144,13 @@ void streamValues(const std::string& path, const nifti_image& nim, std::uint64_t
   const bool swap = nim.byteorder != nifti_short_order() && tsize > 1;
   const double slope = nim.scl_slope, inter = nim.scl_inter;
   const bool scaled = slope != 0.0 && std::isfinite(slope) && !(slope == 1.0 && inter == 0.0);
-  std::vector<char> buf(kChunkBytes);
+  // No larger than the data: a fresh reader process faults in every page.
+  std::vector<char> buf(std::size_t(std::min<std::uint64_t>(kChunkBytes, count * tsize)));
   for (std::uint64_t done = 0; done < count;) {
     const std::size_t want = std::size_t(std::min<std::uint64_t>(kChunkBytes / tsize, count - done));
-    if (znzread(buf.data(), tsize, want, f) != want)
-      fail(path, "data is truncated: the image ends after value " + std::to_string(done));
+    if (const std::size_t got = znzread(buf.data(), tsize, want, f); got != want)
+      fail(path, "data is truncated: the header describes " + std::to_string(count) + " values, the image ends after " +
+                     std::to_string(done + got));
     if (swap) nifti_swap_Nbytes(std::int64_t(want), int(tsize), buf.data());
     for (std::size_t i = 0; i < want; ++i) {
       const double x = load(buf.data() + i * tsize);
