@@ -57,6 +57,9 @@ TensorField readVtk(const std::string& path, const ReadOptions& opt);
 // The header path of a legacy .vtk alone: the count checks readVtk makes
 // before VTK allocates anything, and VTK's own header and dataset-type read.
 void checkVtkLegacyHeader(const std::string& path);
+// The same for an XML .vtu: VTK's XML parse of the structure (expat) and our
+// checks of it (io/vtk_xml_checks.h), without decoding the data.
+void checkVtkXmlHeader(const std::string& path);
 
 // .nrrd/.nhdr through Teem: kinds 3D-symmetric-matrix, 3D-masked-symmetric-
 // matrix and 3D-matrix on the first axis; space directions or old axis

@@ -391,6 +391,21 @@ void checkVtkLegacyHeader(const std::string& path) {
     fail(path, !sink.first().empty() ? sink.first() : !said.first().empty() ? said.first() : "not a legacy VTK dataset");
 }
 
+void checkVtkXmlHeader(const std::string& path) {
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) fail(path, "cannot open file");
+  vtkNew<vtkXMLUnstructuredGridReader> r;
+  const ErrorSink sink(r);
+  const VtkMessageCapture said;
+  r->SetFileName(path.c_str());
+  r->UpdateInformation();
+  if (!sink.first().empty() || r->GetErrorCode())
+    fail(path, !sink.first().empty() ? cleanVtkMessage(sink.first()) : said.first().empty() ? "unreadable XML header" : said.first());
+  xmlPoints(r, path);
+  checkInlineBinary(r, path);
+  if (!said.first().empty()) fail(path, said.first());
+}
+
 ScalarVolume readVtiScalar(const std::string& path, const int dims[3]) {
   const ReadResult read = readDataSet(path, ReadOptions{}, dims);
   if (!read.vtkSaid.empty()) fail(path, read.vtkSaid);
