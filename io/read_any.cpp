@@ -19,8 +19,9 @@ TensorField readTensorField(const std::string& path, const ReadOptions& opt) {
   if (ext == "vtk" || ext == "vti" || ext == "vtu" || ext == "vtp" || ext == "vts") return readVtk(path, opt);
   if (ext == "nrrd" || ext == "nhdr") return readNrrd(path, opt);
   if (ext == "nii" || lower.ends_with(".nii.gz")) return readNifti(path, opt);
+  if (ext == "mif" || ext == "mih") return readMif(path, opt);
   throw InputError("readTensorField: " + path + ": unknown extension \"" + (ext.empty() ? "" : "." + ext) +
-                   "\"; supported: .nrrd .nhdr .nii .nii.gz .vtk .vti .vtu .vtp .vts");
+                   "\"; supported: .nrrd .nhdr .nii .nii.gz .mif .mih .vtk .vti .vtu .vtp .vts");
 }
 
 }  // namespace tg::io

@@ -38,10 +38,18 @@ TensorField readNifti(const std::string& path, const ReadOptions& opt);
 bool isNiftiLayout(const std::string& name);
 inline constexpr const char* kNiftiLayoutChoices = "fsl, nifti, mrtrix or vtk";
 
+// MRtrix .mif (header and data) and .mih (header naming a data file), read by
+// hand: a 4-D image whose last axis holds xx yy zz xy xz yz, tensors already
+// in scanner space (as dwi2tensor writes them), placed at
+// transform * (ijk .* vox) in RAS. Any layout (strides), data type and byte
+// order; scaling applied. --layout other than "mrtrix" is refused.
+TensorField readMif(const std::string& path, const ReadOptions& opt);
+
 // Scalar volumes, for masks.
 ScalarVolume readNrrdScalar(const std::string& path);
 ScalarVolume readNiftiScalar(const std::string& path);
 ScalarVolume readVtiScalar(const std::string& path);
+ScalarVolume readMifScalar(const std::string& path);
 
 // Any supported file, by extension. Checks existence, type and emptiness first.
 TensorField readTensorField(const std::string& path, const ReadOptions& opt);

@@ -45,7 +45,9 @@ ScalarVolume readScalarVolume(const std::string& path) {
   if (ends(".nrrd") || ends(".nhdr")) return readNrrdScalar(path);
   if (ends(".nii") || ends(".nii.gz")) return readNiftiScalar(path);
   if (ends(".vti")) return readVtiScalar(path);
-  throw InputError("readScalarVolume: " + path + ": unknown mask format; use .nrrd, .nhdr, .nii, .nii.gz or .vti");
+  if (ends(".mif") || ends(".mih")) return readMifScalar(path);
+  throw InputError("readScalarVolume: " + path +
+                   ": unknown mask format; use .nrrd, .nhdr, .nii, .nii.gz, .mif, .mih or .vti");
 }
 
 Selector::Selector(const Selection& sel, const std::string& path, const int* dims) : sel_(sel) {
