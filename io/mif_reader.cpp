@@ -407,7 +407,9 @@ template <class Consume>
 void streamValues(const std::string& path, const Image& im, std::size_t record, Consume&& consume) {
   const Header& h = im.h;
   const std::size_t tsize = std::size_t(h.type.bytes);
-  const std::size_t chunk = std::max<std::size_t>(1, kChunkBytes / (tsize * record)) * record;
+  // h.values is a whole number of records.
+  const std::size_t chunk = std::size_t(
+      std::min<std::uint64_t>(std::max<std::size_t>(1, kChunkBytes / (tsize * record)) * record, h.values));
   std::vector<char> raw(chunk * tsize);
   std::vector<double> vals(chunk);
   for (std::uint64_t done = 0; done < h.values;) {
