@@ -368,3 +368,45 @@ TEST(Mif, MrconvertOutputMatchesTheNiftiReader) {
     }
   }
 }
+
+// MRtrix's own tensor fit as a peer: dwi2tensor fits noiseless signals of one
+// known tensor D (given in scanner space, as dw_scheme's gradients are) in a
+// rotated image stored x-descending; the .mif it writes must read back as D
+// at every voxel, unrotated, which pins the component order and the frame.
+TEST(Mif, Dwi2tensorOutputReadsBackAsTheFittedTensor) {
+  const double d[6] = {1.2e-3, 0.3e-3, 0.2e-3, 0.8e-3, -0.1e-3, 0.5e-3};  // xx xy xz yy yz zz
+  std::vector<std::array<double, 4>> scheme{{0, 0, 0, 0}};
+  for (int k = 0; k < 12; ++k) {  // twelve directions on a spiral
+    const double z = 1 - (k + 0.5) / 6.0, r = std::sqrt(1 - z * z), phi = 2.4 * k;
+    scheme.push_back({r * std::cos(phi), r * std::sin(phi), z, 1000});
+  }
+  const int nv = int(scheme.size()), voxels = 8;
+  std::string raw;
+  for (int v = 0; v < nv; ++v) {
+    const auto& g = scheme[std::size_t(v)];
+    const double gdg = d[0] * g[0] * g[0] + d[3] * g[1] * g[1] + d[5] * g[2] * g[2] +
+                       2 * (d[1] * g[0] * g[1] + d[2] * g[0] * g[2] + d[4] * g[1] * g[2]);
+    const float s = float(1000 * std::exp(-g[3] * gdg));
+    for (int i = 0; i < voxels; ++i) raw.append(reinterpret_cast<const char*>(&s), 4);
+  }
+  std::string header = "mrtrix image\ndim: 2,2,2," + std::to_string(nv) +
+                       "\nvox: 2,2,2,1\nlayout: -0,+1,+2,+3\ndatatype: Float32LE\n"
+                       "transform: 0.8660254037844387,-0.5,0,-4\ntransform: 0.5,0.8660254037844387,0,6\n"
+                       "transform: 0,0,1,8\n";
+  for (const auto& g : scheme)
+    header += "dw_scheme: " + std::to_string(g[0]) + "," + std::to_string(g[1]) + "," + std::to_string(g[2]) + "," +
+              std::to_string(g[3]) + "\n";
+  test::writeFile(tmpDir() / "dwi.mih", header + "file: dwi.raw\nEND\n");
+  test::writeFile(tmpDir() / "dwi.raw", raw);
+  const fs::path dt = tmpDir() / "dt.mif";
+  const std::string cmd =
+      std::string(TG_DWI2TENSOR) + " -quiet -force " + (tmpDir() / "dwi.mih").string() + " " + dt.string() + " 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  const io::TensorField f = read(dt);
+  ASSERT_EQ(f.size(), std::size_t(voxels));
+  for (std::size_t v = 0; v < f.size(); ++v)
+    for (std::size_t k = 0; k < 6; ++k) EXPECT_NEAR(f.tensors[6 * v + k], d[k], 1e-7) << "voxel " << v << " " << k;
+  // Voxel (1, 0, 0) lies one rotated 2 mm step from the origin.
+  EXPECT_NEAR(f.positions[3], -4 + 2 * 0.8660254037844387, 1e-5);
+  EXPECT_NEAR(f.positions[4], 6 + 2 * 0.5, 1e-5);
+}
