@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <memory>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -545,7 +546,9 @@ TensorField readMif(const std::string& path, const ReadOptions& opt) {
         }
     }
     const std::size_t keptCount = sel.selectsAll() ? std::size_t(voxels) : kept.size();
-    std::vector<float> comps(6 * keptCount);
+    // Not zeroed: the walk visits every (voxel, component) once, so each
+    // kept slot is written before it is read.
+    const auto comps = std::make_unique_for_overwrite<float[]>(6 * keptCount);
     Walk walk(h);
     streamValues(path, im, 6, [&](const double* v, std::size_t m) {
       for (std::size_t i = 0; i < m; ++i, walk.next()) {
@@ -557,7 +560,9 @@ TensorField readMif(const std::string& path, const ReadOptions& opt) {
     double v6[6];
     for (std::size_t s = 0; s < keptCount; ++s) {
       std::copy(&comps[6 * s], &comps[6 * s] + 6, v6);
-      sink.pushAccepted(kept.empty() ? s : kept[s], v6);
+      // Every voxel in index order is push()'s case, placed incrementally.
+      if (kept.empty()) sink.push(v6);
+      else sink.pushAccepted(kept[s], v6);
     }
   }
   sink.finish();
