@@ -4,6 +4,10 @@
 // value that sizes or places the data is checked, and the data file's size
 // against it, before anything is allocated from it. Data is then streamed in
 // fixed-size chunks, in file order, into the VolumeSink.
+// Choices where MRtrix is looser: dim, vox, layout, datatype and scaling may
+// not repeat; data split over several files, Bit and complex types are
+// refused; a transform whose 3x3 is not orthonormal is replaced by its polar
+// rotation, with a warning (MRtrix keeps scaling in vox, never there).
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -326,7 +330,8 @@ Header parseHeader(const std::string& path, int fd, std::uint64_t size) {
   Header h;
   std::vector<std::string> seen;
   int files = 0;
-  for (const auto& [key, value] : readEntries(path, fd, size, h.headerEnd)) parseEntry(path, h, key, value, seen, files);
+  for (const auto& [key, value] : readEntries(path, fd, size, h.headerEnd))
+    parseEntry(path, h, key, value, seen, files);
   for (const char* key : {"dim", "vox", "layout", "datatype"})
     if (std::find(seen.begin(), seen.end(), key) == seen.end()) fail(path, std::string("no ") + key + " in the header");
   if (files == 0) fail(path, "no file in the header");
@@ -377,7 +382,8 @@ Image openImage(const std::string& path, Shape&& shape) {
     im.data = openRegular(path, im.dataPath, "data file", size);
   }
   std::uint64_t bytes = 0;
-  if (__builtin_mul_overflow(h.values, std::uint64_t(h.type.bytes), &bytes)) fail(path, "dim: the image size overflows");
+  if (__builtin_mul_overflow(h.values, std::uint64_t(h.type.bytes), &bytes))
+    fail(path, "dim: the image size overflows");
   if (h.dataOffset > size)
     fail(path, "data offset " + std::to_string(h.dataOffset) + " is beyond the end of " + im.dataPath + " (" +
                    std::to_string(size) + " bytes)");

@@ -187,7 +187,8 @@ TEST(Mif, NonFiniteTensorsAreSkippedAndCounted) {
 
 TEST(Mif, MaskInAnyLayout) {
   // A 2x3x4 mask stored k fastest, j descending: keeps voxels 1, 6 and 23.
-  const std::string header = "mrtrix image\ndim: 2,3,4\nvox: 1,1,1\nlayout: +2,-1,+0\ndatatype: UInt8\nfile: mask.raw\nEND\n";
+  const std::string header =
+      "mrtrix image\ndim: 2,3,4\nvox: 1,1,1\nlayout: +2,-1,+0\ndatatype: UInt8\nfile: mask.raw\nEND\n";
   std::string raw(24, '\0');
   for (const int v : {1, 6, 23}) {
     const int i = v % 2, j = v / 2 % 3, k = v / 6;
