@@ -210,14 +210,14 @@ struct Header {
   std::uint64_t values = 0;     // product of dim
 };
 
-// The "key: value" entries up to END, in order. Keys are lower case and '#'
-// starts a comment, as in MRtrix's own parser.
-std::vector<std::pair<std::string, std::string>> readEntries(const std::string& path, int fd, std::uint64_t size,
-                                                             std::uint64_t& headerEnd) {
+// Hands each "key: value" entry up to END, in order, to entry(key, value);
+// none is kept, so 16 MiB of comments cost no more than their buffer. Keys
+// are lower case and '#' starts a comment, as in MRtrix's own parser.
+template <class Entry>
+void readEntries(const std::string& path, int fd, std::uint64_t size, std::uint64_t& headerEnd, Entry&& entry) {
   static constexpr std::string_view kMagic = "mrtrix image";
   std::string buf;
   std::size_t lineStart = 0, lineNo = 0;
-  std::vector<std::pair<std::string, std::string>> entries;
   for (;;) {
     const std::size_t nl = buf.find('\n', lineStart);
     if (nl == std::string::npos) {
@@ -248,14 +248,14 @@ std::vector<std::pair<std::string, std::string>> readEntries(const std::string& 
     if (line.empty()) continue;
     if (line == "END") {
       headerEnd = std::min<std::uint64_t>(lineStart, size);
-      return entries;
+      return;
     }
     const std::size_t colon = line.find(':');
     if (colon == std::string_view::npos)
       fail(path, "header line " + std::to_string(lineNo) + " is not \"key: value\"");
     const std::string key = lower(trim(line.substr(0, colon)));
     if (key.empty()) fail(path, "header line " + std::to_string(lineNo) + " has no key");
-    entries.emplace_back(key, std::string(trim(line.substr(colon + 1))));
+    entry(key, std::string(trim(line.substr(colon + 1))));
   }
 }
 
@@ -330,8 +330,8 @@ Header parseHeader(const std::string& path, int fd, std::uint64_t size) {
   Header h;
   std::vector<std::string> seen;
   int files = 0;
-  for (const auto& [key, value] : readEntries(path, fd, size, h.headerEnd))
-    parseEntry(path, h, key, value, seen, files);
+  readEntries(path, fd, size, h.headerEnd,
+              [&](const std::string& key, const std::string& value) { parseEntry(path, h, key, value, seen, files); });
   for (const char* key : {"dim", "vox", "layout", "datatype"})
     if (std::find(seen.begin(), seen.end(), key) == seen.end()) fail(path, std::string("no ") + key + " in the header");
   if (files == 0) fail(path, "no file in the header");
