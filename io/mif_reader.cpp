@@ -13,6 +13,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cerrno>
 #include <charconv>
@@ -128,7 +129,6 @@ double parseReal(const std::string& path, const std::string& key, std::string_vi
   return x;
 }
 
-enum class Kind { Int, UInt, Float };
 using Convert = void (*)(const char* src, std::size_t n, double* dst);
 
 template <class U>
