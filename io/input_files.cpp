@@ -1,5 +1,7 @@
 #include "io/input_files.h"
 
+#include "io/readers.h"
+
 #include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -125,6 +127,13 @@ std::vector<std::string> filesReadBy(const std::string& input) {
   if (lower.ends_with(".nrrd") || lower.ends_with(".nhdr")) {
     const auto data = nrrdDataFiles(input);
     files.insert(files.end(), data.begin(), data.end());
+  }
+  if (lower.ends_with(".mih")) {
+    try {
+      files.push_back(mifDataFile(input));
+    } catch (const InputError&) {
+      // A header the reader will refuse names no file to protect.
+    }
   }
   return files;
 }

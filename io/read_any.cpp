@@ -14,15 +14,17 @@ struct Format {
 };
 
 Format formatOf(const std::string& path) {
-  std::string lower = path;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  const auto dot = lower.find_last_of('.');
-  const std::string ext = dot == std::string::npos ? "" : lower.substr(dot + 1);
-  if (ext == "vtk" || ext == "vti" || ext == "vtu" || ext == "vtp" || ext == "vts") return {readVtk, "readVtk"};
-  if (ext == "nrrd" || ext == "nhdr") return {readNrrd, "readNrrd"};
-  if (ext == "nii" || lower.ends_with(".nii.gz")) return {readNifti, "readNifti"};
-  throw InputError("readTensorField: " + path + ": unknown extension \"" + (ext.empty() ? "" : "." + ext) +
-                   "\"; supported: .nrrd .nhdr .nii .nii.gz .vtk .vti .vtu .vtp .vts");
+  switch (inputFormatOf(path)) {
+    case InputFormat::Vtk: return {readVtk, "readVtk"};
+    case InputFormat::Nrrd: return {readNrrd, "readNrrd"};
+    case InputFormat::Nifti: return {readNifti, "readNifti"};
+    case InputFormat::Mif: return {readMif, "readMif"};
+    case InputFormat::Unknown: break;
+  }
+  const auto dot = path.find_last_of('.');
+  const std::string ext = dot == std::string::npos || path.find('/', dot) != std::string::npos ? "" : path.substr(dot);
+  throw InputError("readTensorField: " + path + ": unknown extension \"" + ext +
+                   "\"; supported: .nrrd .nhdr .nii .nii.gz .mif .mih .vtk .vti .vtu .vtp .vts");
 }
 
 std::uint64_t checkedFileSize(const std::string& path) {

@@ -13,6 +13,7 @@ InputFormat inputFormatOf(const std::string& path) {
   if (ext == "vtk" || ext == "vti" || ext == "vtu" || ext == "vtp" || ext == "vts") return InputFormat::Vtk;
   if (ext == "nrrd" || ext == "nhdr") return InputFormat::Nrrd;
   if (ext == "nii" || lower.ends_with(".nii.gz")) return InputFormat::Nifti;
+  if (ext == "mif" || ext == "mih") return InputFormat::Mif;
   return InputFormat::Unknown;
 }
 
@@ -21,15 +22,16 @@ const char* inputFormatName(InputFormat f) {
     case InputFormat::Vtk: return "VTK";
     case InputFormat::Nrrd: return "NRRD";
     case InputFormat::Nifti: return "NIfTI";
+    case InputFormat::Mif: return "MRtrix";
     case InputFormat::Unknown: break;
   }
   return "unknown";
 }
 
 std::string inapplicableOption(InputFormat format, const ReadOptions& opt) {
-  // NRRD and VTK state their own component order and frame (kind and
-  // measurement frame; VTK's fixed order in world axes); only NIfTI leaves
-  // them to convention. Only VTK has named arrays; only NRRD has confidence.
+  // NRRD, VTK and MRtrix state their own component order and frame (kind and
+  // measurement frame; VTK's fixed order in world axes; MRtrix's in scanner
+  // space); only NIfTI leaves them to convention. Only VTK has named arrays; only NRRD has confidence.
   if (format != InputFormat::Nifti && !opt.layout.empty()) return "--layout";
   if (format != InputFormat::Nifti && !opt.frame.empty()) return "--frame";
   if (format != InputFormat::Vtk && !opt.arrayName.empty()) return "--array";

@@ -76,14 +76,25 @@ TensorField readNifti(const std::string& path, const ReadOptions& opt);
 bool isNiftiLayout(const std::string& name);
 inline constexpr const char* kNiftiLayoutChoices = "fsl, nifti, mrtrix or vtk";
 
+// MRtrix .mif (header and data) and .mih (header naming a data file), read by
+// hand: a 4-D image whose last axis holds xx yy zz xy xz yz, tensors already
+// in scanner space (as dwi2tensor writes them), placed at
+// transform * (ijk .* vox) in RAS. Any layout (strides), data type and byte
+// order; scaling applied. --layout other than "mrtrix" is refused.
+TensorField readMif(const std::string& path, const ReadOptions& opt);
+// The file a .mif/.mih header's data is in (the header itself for a .mif),
+// without opening it.
+std::string mifDataFile(const std::string& path);
+
 // Scalar volumes, for masks: refused before any data is decoded unless their
 // grid is `dims`.
 ScalarVolume readNrrdScalar(const std::string& path, const int dims[3]);
 ScalarVolume readNiftiScalar(const std::string& path, const int dims[3]);
 ScalarVolume readVtiScalar(const std::string& path, const int dims[3]);
+ScalarVolume readMifScalar(const std::string& path, const int dims[3]);
 
 // The format a path names, by its extension.
-enum class InputFormat { Vtk, Nrrd, Nifti, Unknown };
+enum class InputFormat { Vtk, Nrrd, Nifti, Mif, Unknown };
 InputFormat inputFormatOf(const std::string& path);
 const char* inputFormatName(InputFormat f);
 // The flag of the first option set in `opt` that `format` has no use for

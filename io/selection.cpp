@@ -54,7 +54,9 @@ ScalarVolume readScalarVolume(const std::string& path, const int dims[3]) {
   if (ends(".nrrd") || ends(".nhdr")) return readNrrdScalar(path, dims);
   if (ends(".nii") || ends(".nii.gz")) return readNiftiScalar(path, dims);
   if (ends(".vti")) return readVtiScalar(path, dims);
-  throw InputError("readScalarVolume: " + path + ": unknown mask format; use .nrrd, .nhdr, .nii, .nii.gz or .vti");
+  if (ends(".mif") || ends(".mih")) return readMifScalar(path, dims);
+  throw InputError("readScalarVolume: " + path +
+                   ": unknown mask format; use .nrrd, .nhdr, .nii, .nii.gz, .mif, .mih or .vti");
 }
 
 Selector::Selector(const Selection& sel, const std::string& path, const int* dims) : sel_(sel) {

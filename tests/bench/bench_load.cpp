@@ -9,9 +9,12 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <map>
 
 #include "data-synthetic/generators.h"
+#include "data-synthetic/random_tensors.h"
+#include "io/input_files.h"
 #include "io/readers.h"
 #include "tensor/eigen.h"
 #include "tensor/glyph.h"
@@ -119,8 +122,70 @@ void unguardedPerFile(benchmark::State& st) {
   for (auto _ : st) benchmark::DoNotOptimize(io::readTensorFieldInProcess(path, {}).size());
 }
 
+// The same tensors as an MRtrix image in one of kMifLayouts: the first is the
+// NRRD's own raw file named by a .mih (voxel by voxel, read as it comes); the
+// others are transcoded and gathered by the reader before the sink.
+constexpr const char* kMifLayouts[] = {"+1,+2,+3,+0", "-1,+2,+3,+0", "+0,+1,+2,+3", "-0,+2,+1,+3"};
+
+std::string mifFor(std::int64_t n, std::size_t layout) {
+  const std::filesystem::path nhdr = fileFor(n);
+  const synth::GridDims d = synth::gridDims(std::size_t(n));
+  const std::string name = nhdr.stem().string() + "-layout" + std::to_string(layout);
+  const std::filesystem::path mih = nhdr.parent_path() / (name + ".mih");
+  if (std::filesystem::exists(mih)) return mih.string();
+  // synth names its data file uniquely (io/atomic_file.h); the header says which.
+  std::string raw = std::filesystem::path(io::nrrdDataFiles(nhdr.string()).at(0)).filename().string();
+  if (layout > 0) {
+    // Value (voxel v, component c) moves to its offset under the layout.
+    std::ifstream in(nhdr.parent_path() / raw, std::ios::binary);
+    std::vector<float> src(6 * std::size_t(n)), dst(src.size());
+    in.read(reinterpret_cast<char*>(src.data()), std::streamsize(src.size() * sizeof(float)));
+    const std::size_t dim[4] = {d.x, d.y, d.z, 6};
+    int rank[4];
+    bool down[4];
+    for (int a = 0; a < 4; ++a) {
+      const std::string item = std::string(kMifLayouts[layout]).substr(std::size_t(3 * a), 2);
+      down[a] = item[0] == '-';
+      rank[a] = item[1] - '0';
+    }
+    std::size_t stride[4];
+    for (int a = 0; a < 4; ++a) {
+      stride[a] = 1;
+      for (int b = 0; b < 4; ++b) stride[a] *= rank[b] < rank[a] ? dim[b] : 1;
+    }
+    for (std::size_t v = 0; v < std::size_t(n); ++v)
+      for (std::size_t c = 0; c < 6; ++c) {
+        const std::size_t idx[4] = {v % d.x, v / d.x % d.y, v / (d.x * d.y), c};
+        std::size_t off = 0;
+        for (int a = 0; a < 4; ++a) off += (down[a] ? dim[a] - 1 - idx[a] : idx[a]) * stride[a];
+        dst[off] = src[6 * v + c];
+      }
+    raw = name + ".raw";
+    std::ofstream(nhdr.parent_path() / raw, std::ios::binary)
+        .write(reinterpret_cast<const char*>(dst.data()), std::streamsize(dst.size() * sizeof(float)));
+  }
+  std::ofstream(mih) << "mrtrix image\ndim: " << d.x << "," << d.y << "," << d.z << ",6\nvox: 1,1,1,1\nlayout: "
+                     << kMifLayouts[layout] << "\ndatatype: Float32LE\ntransform: 1,0,0,0\ntransform: 0,1,0,0\n"
+                     << "transform: 0,0,1,0\nfile: " << raw << "\nEND\n";
+  return mih.string();
+}
+
+// Arguments: tensor count, index into kMifLayouts. Compare with loadOnly.
+void loadMif(benchmark::State& st) {
+  const std::string path = mifFor(st.range(0), std::size_t(st.range(1)));
+  std::size_t n = 0;
+  for (auto _ : st) {
+    const io::TensorField f = io::readMif(path, {});
+    n = f.size();
+    benchmark::DoNotOptimize(f.tensors.data());
+  }
+  st.SetLabel(kMifLayouts[st.range(1)]);
+  st.SetItemsProcessed(std::int64_t(st.iterations()) * std::int64_t(n));
+}
+
 }  // namespace
 
+BENCHMARK(loadMif)->ArgsProduct({{1 << 21}, {0, 1, 2, 3}})->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(loadOnly)->Arg(1 << 21)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(eigenOnly)->Arg(1 << 21)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(eigensolveOnly)->Arg(1 << 21)->Unit(benchmark::kMillisecond)->UseRealTime();

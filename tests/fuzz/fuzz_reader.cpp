@@ -1,6 +1,7 @@
-// libFuzzer target for one reader's header path: built three times with
+// libFuzzer target for one reader's header path: built four times with
 // TG_FUZZ_FORMAT = 0 (NRRD: header and streamed data), 1 (NIfTI: header and
-// data), 2 (legacy VTK: our count checks and VTK's header read).
+// data), 2 (legacy VTK: our count checks and VTK's header read), 3 (MRtrix
+// .mif: header and data, as a tensor image and as a mask).
 // Any input must end in a result or an InputError: never a crash, a hang,
 // a sanitizer report or an allocation sized by an unchecked header.
 //   build-fuzz/fuzz_nrrd CORPUS_COPY tests/fuzz/corpus/nrrd -max_total_time=30
@@ -17,7 +18,10 @@ namespace {
 
 std::string scratchPath(const std::uint8_t* data, std::size_t size) {
   const bool gz = size >= 2 && data[0] == 0x1f && data[1] == 0x8b;
-  const char* ext = TG_FUZZ_FORMAT == 0 ? ".nrrd" : TG_FUZZ_FORMAT == 1 ? (gz ? ".nii.gz" : ".nii") : ".vtk";
+  const char* ext = TG_FUZZ_FORMAT == 0   ? ".nrrd"
+                    : TG_FUZZ_FORMAT == 1 ? (gz ? ".nii.gz" : ".nii")
+                    : TG_FUZZ_FORMAT == 2 ? ".vtk"
+                                          : ".mif";
   return "/tmp/tg_fuzz_" + std::to_string(::getpid()) + ext;
 }
 
@@ -34,8 +38,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     if (TG_FUZZ_FORMAT == 0) tg::io::readNrrd(path, {});
     else if (TG_FUZZ_FORMAT == 1) tg::io::readNifti(path, {});
-    else tg::io::checkVtkLegacyHeader(path);  // VTK's body parser is not ours; see tests/fuzz/README
+    else if (TG_FUZZ_FORMAT == 2) tg::io::checkVtkLegacyHeader(path);  // VTK's body parser is not ours; see README
+    else tg::io::readMif(path, {});
   } catch (const tg::io::InputError&) {
+  }
+  if (TG_FUZZ_FORMAT == 3) {
+    try {
+      const int dims[3] = {2, 2, 2};  // the corpus's masks
+      tg::io::readMifScalar(path, dims);
+    } catch (const tg::io::InputError&) {
+    }
   }
   std::remove(path.c_str());
   return 0;
