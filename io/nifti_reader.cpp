@@ -55,11 +55,39 @@ class SilenceStderr {
   int saved_;
 };
 
+// libnifti2 3.0.1's nifti_image_read copies dim[1..dim[0]] into arrays of
+// eight without checking dim[0]: NIfTI-2 headers with dim[0] = 2052, or 4
+// in the other byte order, smashed its stack or segfaulted (found by
+// fuzz_nifti). The raw header is read first, and dim[0] checked in the
+// file's byte order before nifti_image_read sees it.
+void checkRawDims(const std::string& path) {
+  int version = 0;
+  void* raw = nifti_read_header(path.c_str(), &version, 0);
+  if (!raw) fail(path, "not a readable NIfTI-1/-2 header");
+  // nifti_read_header leaves the bytes in the file's order; a header whose
+  // size field reads swapped is big-endian on this machine (or the reverse).
+  std::int64_t dim0 = 0;
+  bool sized = true;
+  if (version == 2) {
+    const auto* h = static_cast<nifti_2_header*>(raw);
+    sized = h->sizeof_hdr == 540 || __builtin_bswap32(std::uint32_t(h->sizeof_hdr)) == 540;
+    dim0 = h->sizeof_hdr == 540 ? h->dim[0] : std::int64_t(__builtin_bswap64(std::uint64_t(h->dim[0])));
+  } else {
+    const auto* h = static_cast<nifti_1_header*>(raw);
+    sized = h->sizeof_hdr == 348 || __builtin_bswap32(std::uint32_t(h->sizeof_hdr)) == 348;
+    dim0 = h->sizeof_hdr == 348 ? h->dim[0] : std::int16_t(__builtin_bswap16(std::uint16_t(h->dim[0])));
+  }
+  std::free(raw);
+  if (!sized) fail(path, "not a readable NIfTI-1/-2 header");
+  if (dim0 < 1 || dim0 > 7) fail(path, "dim[0] is " + std::to_string(dim0) + ", not 1..7");
+}
+
 Image readHeader(const std::string& path) {
   nifti_set_debug_level(0);
   Image nim(nullptr, nifti_image_free);
   {
     const SilenceStderr quiet;
+    checkRawDims(path);
     nim.reset(nifti_image_read(path.c_str(), 0));
   }
   if (!nim) fail(path, "not a readable NIfTI-1/-2 header");

@@ -1,7 +1,9 @@
 // libFuzzer target for one reader's header path: built four times with
 // TG_FUZZ_FORMAT = 0 (NRRD: header and streamed data), 1 (NIfTI: header and
-// data), 2 (legacy VTK: our count checks and VTK's header read), 3 (MRtrix
-// .mif: header and data, as a tensor image and as a mask).
+// data, and the data-file list outputs are checked against), 2 (legacy VTK:
+// our count checks and VTK's header read), 3 (MRtrix .mif: header and data,
+// as a tensor image and as a mask), 4 (XML .vtu: VTK's parse of the
+// structure and our checks of it: extents, piece counts, inline lengths).
 // Any input must end in a result or an InputError: never a crash, a hang,
 // a sanitizer report or an allocation sized by an unchecked header.
 //   build-fuzz/fuzz_nrrd CORPUS_COPY tests/fuzz/corpus/nrrd -max_total_time=30
@@ -12,6 +14,7 @@
 #include <cstdio>
 #include <string>
 
+#include "io/input_files.h"
 #include "io/readers.h"
 
 namespace {
@@ -21,7 +24,8 @@ std::string scratchPath(const std::uint8_t* data, std::size_t size) {
   const char* ext = TG_FUZZ_FORMAT == 0   ? ".nrrd"
                     : TG_FUZZ_FORMAT == 1 ? (gz ? ".nii.gz" : ".nii")
                     : TG_FUZZ_FORMAT == 2 ? ".vtk"
-                                          : ".mif";
+                    : TG_FUZZ_FORMAT == 3 ? ".mif"
+                                          : ".vtu";
   return "/tmp/tg_fuzz_" + std::to_string(::getpid()) + ext;
 }
 
@@ -36,10 +40,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
   try {
+    if (TG_FUZZ_FORMAT == 0) tg::io::nrrdDataFiles(path);
+  } catch (const tg::io::InputError&) {
+  }
+  try {
     if (TG_FUZZ_FORMAT == 0) tg::io::readNrrd(path, {});
     else if (TG_FUZZ_FORMAT == 1) tg::io::readNifti(path, {});
     else if (TG_FUZZ_FORMAT == 2) tg::io::checkVtkLegacyHeader(path);  // VTK's body parser is not ours; see README
-    else tg::io::readMif(path, {});
+    else if (TG_FUZZ_FORMAT == 3) tg::io::readMif(path, {});
+    else tg::io::checkVtkXmlHeader(path);  // VTK's data decoders run only in the guarded child
   } catch (const tg::io::InputError&) {
   }
   if (TG_FUZZ_FORMAT == 3) {
