@@ -1,6 +1,7 @@
 #include "io/read_guard.h"
 
 #include <fcntl.h>
+#include <sys/uio.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/mman.h>
@@ -15,6 +16,7 @@
 #include <cstring>
 #include <fstream>
 #include <new>
+#include <optional>
 #include <type_traits>
 
 #include "util/huge_pages.h"
@@ -27,17 +29,18 @@ namespace {
 class WireOut {
  public:
   explicit WireOut(int fd) : fd_(fd) {}
-  // Small items gather in a buffer; arrays go straight to the memfd.
+  // Small items gather in a buffer; arrays go straight into the pipe.
   void bytes(const void* p, std::size_t n) {
     if (n < 4096) {
       pending_.append(static_cast<const char*>(p), n);
       return;
     }
     flush();
-    put(p, n);
+    put(p, n, true);
   }
+  // Written, not spliced: the buffer is reused while the pipe still holds it.
   void flush() {
-    put(pending_.data(), pending_.size());
+    put(pending_.data(), pending_.size(), false);
     pending_.clear();
   }
   template <class T>
@@ -56,12 +59,22 @@ class WireOut {
   }
 
  private:
-  void put(const void* p, std::size_t n) {
+  // Arrays are spliced: the pipe takes references to the child's pages and
+  // the parent's read() is the one copy. The child does not touch them again.
+  void put(const void* p, std::size_t n, bool splice) {
     const char* c = static_cast<const char*>(p);
     while (n > 0) {
-      const ssize_t w = ::write(fd_, c, n);
-      if (w < 0 && errno == EINTR) continue;
-      if (w <= 0) throw std::bad_alloc();  // a full memfd is memory we were not given
+      ssize_t w = -1;
+      if (splice) {
+        iovec io{const_cast<char*>(c), n};
+        w = ::vmsplice(fd_, &io, 1, 0);
+        if (w < 0 && errno == EINTR) continue;
+      }
+      if (w < 0) {  // small items, or a kernel without vmsplice for pipes
+        w = ::write(fd_, c, n);
+        if (w < 0 && errno == EINTR) continue;
+      }
+      if (w <= 0) _exit(3);  // the parent is gone
       c += w;
       n -= std::size_t(w);
     }
@@ -70,13 +83,27 @@ class WireOut {
   std::string pending_;
 };
 
+using Clock = std::chrono::steady_clock;
+
+// The parent's end: exactly the bytes asked for, before a deadline, each
+// array straight into its final (huge-page) storage.
 class WireIn {
  public:
-  WireIn(const char* p, std::size_t n) : p_(p), end_(p + n) {}
+  WireIn(int fd, Clock::time_point deadline, std::uint64_t maxBytes) : fd_(fd), deadline_(deadline), max_(maxBytes) {}
   void bytes(void* dst, std::size_t n) {
-    if (n > std::size_t(end_ - p_)) throw std::runtime_error("short");
-    std::memcpy(dst, p_, n);
-    p_ += n;
+    char* c = static_cast<char*>(dst);
+    while (n > 0) {
+      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline_ - Clock::now()).count();
+      if (left <= 0) throw std::runtime_error("the reader's result did not arrive in time");
+      pollfd p{fd_, POLLIN, 0};
+      const int r = ::poll(&p, 1, int(std::min<long long>(left, 1000)));
+      if (r <= 0) continue;
+      const ssize_t got = ::read(fd_, c, n);
+      if (got < 0 && errno == EINTR) continue;
+      if (got <= 0) throw std::runtime_error("the reader's result is short");
+      c += got;
+      n -= std::size_t(got);
+    }
   }
   template <class T>
   T pod() {
@@ -89,24 +116,23 @@ class WireIn {
     bytes(s.data(), s.size());
     return s;
   }
-  // Straight from the mapping into huge-page storage: the one copy.
   template <class T>
   void array(std::vector<T>& v) {
     const std::size_t n = count(sizeof(T));
     util::reserveHuge(v, n);
-    const T* first = reinterpret_cast<const T*>(p_);
-    v.assign(first, first + n);
-    p_ += n * sizeof(T);
+    v.resize(n);
+    bytes(v.data(), n * sizeof(T));
   }
 
  private:
   std::size_t count(std::size_t elementBytes) {
     const auto n = pod<std::uint64_t>();
-    if (n > std::size_t(end_ - p_) / elementBytes) throw std::runtime_error("short");
+    if (n > max_ / elementBytes) throw std::runtime_error("the reader's result is malformed");
     return std::size_t(n);
   }
-  const char* p_;
-  const char* end_;
+  int fd_;
+  Clock::time_point deadline_;
+  std::uint64_t max_;
 };
 
 constexpr std::uint32_t kWireMagic = 0x54474631;  // "TGF1"
@@ -135,7 +161,7 @@ void writeField(WireOut& w, const TensorField& f) {
 }
 
 TensorField readField(WireIn& r) {
-  if (r.pod<std::uint32_t>() != kWireMagic) throw std::runtime_error("magic");
+  if (r.pod<std::uint32_t>() != kWireMagic) throw std::runtime_error("the reader's result is malformed");
   TensorField f;
   for (std::string* s : {&f.path, &f.description, &f.arrayName, &f.space, &f.layout, &f.frame}) *s = r.str();
   for (auto* m : {&f.measurementFrame, &f.tensorToWC})
@@ -154,7 +180,8 @@ TensorField readField(WireIn& r) {
 }
 
 // ---- The status pipe: one letter, then the text -------------------------
-// 'P' + 8 bytes: a promise of decoded bytes; 'O': the field is in the memfd;
+// 'P' + 8 bytes: a promise of decoded bytes; 'O': the field follows on the
+// data pipe;
 // 'E' + text: the reader's InputError; 'M' + text: out of memory.
 
 // Room for the libraries' own thread stacks, arenas and chunk buffers.
@@ -208,10 +235,11 @@ void sendAll(int fd, const void* p, std::size_t n) {
       sendAll(statusFd, &tag, 1);
       sendAll(statusFd, &bytes, sizeof bytes);
     });
+    // The parent reads the field once it sees 'O'.
+    sendAll(statusFd, "O", 1);
     WireOut w(dataFd);
     writeField(w, f);
     w.flush();
-    sendAll(statusFd, "O", 1);
   } catch (const InputError& e) {
     sendAll(statusFd, "E", 1);
     sendAll(statusFd, e.what(), std::strlen(e.what()));
@@ -270,23 +298,25 @@ ReadLimits limitsFor(std::uint64_t fileBytes, std::uint64_t memoryBudget) {
 TensorField readInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
                         const std::function<TensorField(const PromiseFn&)>& read) {
   auto fail = [&](const std::string& what) -> InputError { return InputError(who + ": " + path + ": " + what); };
-  Fd data{::memfd_create("tensorglyph-field", MFD_CLOEXEC)};
-  int pipeFds[2];
-  if (data.fd < 0 || ::pipe2(pipeFds, O_CLOEXEC) != 0) throw fail(std::string("cannot start the reader: ") + std::strerror(errno));
-  Fd statusIn{pipeFds[0]}, statusOut{pipeFds[1]};
+  int statusFds[2], dataFds[2];
+  if (::pipe2(statusFds, O_CLOEXEC) != 0) throw fail(std::string("cannot start the reader: ") + std::strerror(errno));
+  Fd statusIn{statusFds[0]}, statusOut{statusFds[1]};
+  if (::pipe2(dataFds, O_CLOEXEC) != 0) throw fail(std::string("cannot start the reader: ") + std::strerror(errno));
+  Fd dataIn{dataFds[0]}, dataOut{dataFds[1]};
+  ::fcntl(dataOut.fd, F_SETPIPE_SZ, 1 << 20);  // fewer round trips; the default 64 KiB works too
   std::fflush(nullptr);
   const pid_t pid = ::fork();
   if (pid < 0) throw fail(std::string("cannot start the reader: ") + std::strerror(errno));
-  if (pid == 0) childMain(statusOut.fd, data.fd, limits, read);
+  if (pid == 0) childMain(statusOut.fd, dataOut.fd, limits, read);
   ::close(statusOut.fd);
-  statusOut.fd = -1;
+  ::close(dataOut.fd);
+  statusOut.fd = dataOut.fd = -1;
 
-  // Collect the status until the child closes its end, or the deadline passes.
-  using Clock = std::chrono::steady_clock;
+  // Collect the status until the child says 'O' or ends, or the deadline passes.
   auto deadline = Clock::now() + std::chrono::duration<double>(limits.headerSeconds);
   std::string status;
   bool timedOut = false;
-  for (char buf[4096];;) {
+  for (char buf[4096]; status != "O";) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
     if (left <= 0) {
       timedOut = true;
@@ -296,7 +326,7 @@ TensorField readInChild(const std::string& who, const std::string& path, const R
     const int r = ::poll(&p, 1, int(std::min<long long>(left, 1000)));
     if (r < 0 && errno != EINTR) break;
     if (r <= 0) continue;
-    const ssize_t n = ::read(statusIn.fd, buf, sizeof buf);
+    const ssize_t n = ::read(statusIn.fd, buf, status.empty() ? 1 : sizeof buf);
     if (n < 0 && errno == EINTR) continue;
     if (n <= 0) break;
     status.append(buf, std::size_t(n));
@@ -308,11 +338,28 @@ TensorField readInChild(const std::string& who, const std::string& path, const R
       deadline += std::chrono::duration<double>(double(bytes) / limits.bytesPerSecond);
     }
   }
-  if (timedOut) ::kill(pid, SIGKILL);
+  std::optional<TensorField> field;
+  std::string transferError;
+  if (status == "O") {
+    // Memory bandwidth, not the reader, sets this pace: 10 s and 100 MB/s.
+    const auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                                          std::chrono::duration<double>(10.0 + double(limits.memoryBytes) / 1e8));
+    try {
+      WireIn in(dataIn.fd, until, limits.memoryBytes + (std::uint64_t(1) << 20));
+      field = readField(in);
+    } catch (const std::runtime_error& e) {
+      transferError = e.what();
+    } catch (const std::bad_alloc&) {
+      transferError = "the reader's result does not fit in memory";
+    }
+  }
+  if (timedOut || !transferError.empty()) ::kill(pid, SIGKILL);
   int ws = 0;
   while (::waitpid(pid, &ws, 0) < 0 && errno == EINTR) {}
   if (timedOut)
     throw fail("reading took longer than its time limit (is a data file a FIFO or a device?); the reader was stopped");
+  if (!transferError.empty()) throw fail(transferError);
+  if (field) return std::move(*field);
   if (WIFSIGNALED(ws)) {
     const int sig = WTERMSIG(ws);
     if (sig == SIGXCPU || sig == SIGKILL) throw fail("reading used more than its CPU time limit; the reader was stopped");
@@ -320,21 +367,7 @@ TensorField readInChild(const std::string& who, const std::string& path, const R
   }
   if (!status.empty() && status[0] == 'E') throw InputError(status.substr(1));
   if (!status.empty() && status[0] == 'M') throw fail(status.substr(1));
-  if (status != "O") throw fail("the reader ended without a result (exit status " + std::to_string(WEXITSTATUS(ws)) + ")");
-
-  const off_t size = ::lseek(data.fd, 0, SEEK_END);
-  if (size <= 0) throw fail("the reader's result is empty");
-  void* map = ::mmap(nullptr, std::size_t(size), PROT_READ, MAP_PRIVATE | MAP_POPULATE, data.fd, 0);
-  if (map == MAP_FAILED) throw fail(std::string("cannot map the reader's result: ") + std::strerror(errno));
-  try {
-    WireIn in(static_cast<const char*>(map), std::size_t(size));
-    TensorField f = readField(in);
-    ::munmap(map, std::size_t(size));
-    return f;
-  } catch (const std::runtime_error&) {
-    ::munmap(map, std::size_t(size));
-    throw fail("the reader's result is malformed");
-  }
+  throw fail("the reader ended without a result (exit status " + std::to_string(WEXITSTATUS(ws)) + ")");
 }
 
 }  // namespace tg::io

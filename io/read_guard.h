@@ -4,7 +4,8 @@
 // allocation or a hang inside them becomes one line naming the file instead
 // of taking the process (or the machine) down. The child has an address-space
 // limit, a CPU limit and a wall-clock deadline; its field comes back through
-// a memfd and is read once into the parent's arrays.
+// a pipe, its arrays spliced (vmsplice) so that the parent's read into its
+// own arrays is the one copy.
 #include <cstdint>
 #include <functional>
 #include <string>
