@@ -200,7 +200,7 @@ ReadResult runReader(vtkAlgorithm* reader, const std::string& path, std::uint64_
     // zlib cannot compress beyond ~1032:1, so more points than that per byte is corrupt.
     if (points > fileSize * 1032) fail(path, "header claims " + std::to_string(points) + " points, more than the file can hold");
     if (xmlCompressed(reader)) libraryBytes = std::max(libraryBytes, 256 * points);
-    checkInlineBinary(reader, path);
+    checkXmlStructure(reader, path);
     if (dims) {
       int e[6];
       vtkInformation* info = reader->GetOutputInformation(0);
@@ -402,7 +402,7 @@ void checkVtkXmlHeader(const std::string& path) {
   if (!sink.first().empty() || r->GetErrorCode())
     fail(path, !sink.first().empty() ? cleanVtkMessage(sink.first()) : said.first().empty() ? "unreadable XML header" : said.first());
   xmlPoints(r, path);
-  checkInlineBinary(r, path);
+  checkXmlStructure(r, path);
   if (!said.first().empty()) fail(path, said.first());
 }
 

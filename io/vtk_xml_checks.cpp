@@ -1,5 +1,9 @@
 #include "io/vtk_xml_checks.h"
 
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 
@@ -33,12 +37,14 @@ int base64Value(char c) {
   return -1;
 }
 
-// The base64 text of the element starting at `at`: its first `prefix` bytes
-// decoded into `head`, and the number of bytes the whole text decodes to.
-std::uint64_t inlineBytes(std::ifstream& in, std::int64_t at, unsigned char* head, std::size_t prefix) {
+// Base64 text from `at` (past the start tag's '>' when `skipTag`) up to the
+// next '<': its first `prefix` bytes decoded into `head`, and the number of
+// bytes the whole text decodes to.
+std::uint64_t base64Bytes(std::ifstream& in, std::int64_t at, bool skipTag, unsigned char* head, std::size_t prefix) {
   in.clear();
   in.seekg(at);
-  for (char c; in.get(c) && c != '>';) {}
+  if (skipTag)
+    for (char c; in.get(c) && c != '>';) {}
   std::uint64_t sextets = 0;
   std::uint32_t acc = 0;
   std::size_t got = 0;
@@ -53,21 +59,129 @@ std::uint64_t inlineBytes(std::ifstream& in, std::int64_t at, unsigned char* hea
   return sextets * 3 / 4;
 }
 
-void checkArrays(vtkXMLDataElement* e, std::ifstream& in, std::size_t prefix, bool bigEndian, const std::string& path) {
+// How a file's binary blocks are framed: the size prefix's width and order.
+struct Framing {
+  std::size_t prefix = 4;
+  bool bigEndian = false;
+  bool compressed = false;
+  std::int64_t appendedStart = -1;  // first byte after AppendedData's '_'
+  bool appendedBase64 = false;
+  std::uint64_t fileSize = 0;
+};
+
+std::uint64_t decodePrefix(const unsigned char* head, const Framing& fr) {
+  std::uint64_t v = 0;
+  for (std::size_t b = 0; b < fr.prefix; ++b) v = (v << 8) | head[fr.bigEndian ? b : fr.prefix - 1 - b];
+  return v;
+}
+
+std::string arrayName(vtkXMLDataElement* e) {
+  const char* name = e->GetAttribute("Name");
+  std::string quoted(1, '"');
+  return quoted.append(name ? name : "?").append(1, '"');
+}
+
+// An appended raw block at `pos`: its size prefix (or, compressed, its block
+// table) and the bytes they promise must lie inside the file.
+void checkAppendedRaw(std::ifstream& in, std::uint64_t pos, const Framing& fr, vtkXMLDataElement* e,
+                      const std::string& path) {
+  auto readPrefix = [&](std::uint64_t at) {
+    unsigned char head[8] = {};
+    in.clear();
+    in.seekg(std::streamoff(at));
+    in.read(reinterpret_cast<char*>(head), std::streamsize(fr.prefix));
+    return decodePrefix(head, fr);
+  };
+  auto beyond = [&](std::uint64_t need) {
+    fail(path, "appended data of array " + arrayName(e) + " is truncated: it needs " + std::to_string(need) +
+                   " bytes from byte " + std::to_string(pos) + ", only " +
+                   std::to_string(fr.fileSize > pos ? fr.fileSize - pos : 0) + " remain");
+  };
+  const std::uint64_t room = fr.fileSize > pos ? fr.fileSize - pos : 0;
+  if (room < fr.prefix) beyond(fr.prefix);
+  const std::uint64_t first = readPrefix(pos);
+  if (!fr.compressed) {
+    if (first > room - fr.prefix) beyond(fr.prefix + first);
+    return;
+  }
+  // Compressed: blocks, block size, last block size, then each block's size.
+  if (first > room / fr.prefix) beyond(first * fr.prefix);
+  std::uint64_t need = (3 + first) * fr.prefix;
+  if (need > room) beyond(need);
+  for (std::uint64_t k = 0; k < first; ++k) need += readPrefix(pos + (3 + k) * fr.prefix);
+  if (need > room) beyond(need);
+}
+
+void checkArrays(vtkXMLDataElement* e, std::ifstream& in, const Framing& fr, const std::string& path) {
   for (int k = 0; k < e->GetNumberOfNestedElements(); ++k) {
     vtkXMLDataElement* child = e->GetNestedElement(k);
     const char* format = child->GetAttribute("format");
-    if (std::strcmp(child->GetName(), "DataArray") == 0 && format && std::strcmp(format, "binary") == 0) {
+    const bool array = std::strcmp(child->GetName(), "DataArray") == 0 && format;
+    if (array && std::strcmp(format, "binary") == 0 && !fr.compressed) {
       unsigned char head[8] = {};
-      const std::uint64_t have = inlineBytes(in, child->GetXMLByteIndex(), head, prefix);
-      std::uint64_t declared = 0;  // the prefix is in the file's byte order
-      for (std::size_t b = 0; b < prefix; ++b) declared = (declared << 8) | head[bigEndian ? b : prefix - 1 - b];
-      const char* name = child->GetAttribute("Name");
-      if (have < prefix || have - prefix < declared)
-        fail(path, "inline data of array \"" + std::string(name ? name : "?") + "\" is truncated: it declares " +
-                       std::to_string(declared) + " bytes and holds " + std::to_string(have > prefix ? have - prefix : 0));
+      const std::uint64_t have = base64Bytes(in, child->GetXMLByteIndex(), true, head, fr.prefix);
+      const std::uint64_t declared = decodePrefix(head, fr);
+      if (have < fr.prefix || have - fr.prefix < declared)
+        fail(path, "inline data of array " + arrayName(child) + " is truncated: it declares " +
+                       std::to_string(declared) + " bytes and holds " +
+                       std::to_string(have > fr.prefix ? have - fr.prefix : 0));
+    } else if (array && std::strcmp(format, "appended") == 0) {
+      long long offset = 0;
+      if (!child->GetScalarAttribute("offset", offset) || offset < 0)
+        fail(path, "appended array " + arrayName(child) + " has no valid offset");
+      if (fr.appendedStart < 0) fail(path, "array " + arrayName(child) + " is appended, but the file has no AppendedData");
+      const std::uint64_t pos = std::uint64_t(fr.appendedStart) + std::uint64_t(offset);
+      if (pos >= fr.fileSize) fail(path, "appended array " + arrayName(child) + " starts beyond the end of the file");
+      if (!fr.appendedBase64) {
+        checkAppendedRaw(in, pos, fr, child, path);
+      } else if (!fr.compressed) {
+        unsigned char head[8] = {};
+        const std::uint64_t have = base64Bytes(in, std::int64_t(pos), false, head, fr.prefix);
+        const std::uint64_t declared = decodePrefix(head, fr);
+        if (have < fr.prefix || have - fr.prefix < declared)
+          fail(path, "appended data of array " + arrayName(child) + " is truncated: it declares " +
+                         std::to_string(declared) + " bytes and holds " +
+                         std::to_string(have > fr.prefix ? have - fr.prefix : 0));
+      }
     }
-    checkArrays(child, in, prefix, bigEndian, path);
+    checkArrays(child, in, fr, path);
+  }
+}
+
+vtkXMLDataElement* findNested(vtkXMLDataElement* e, const char* name) {
+  for (int k = 0; e && k < e->GetNumberOfNestedElements(); ++k)
+    if (std::strcmp(e->GetNestedElement(k)->GetName(), name) == 0) return e->GetNestedElement(k);
+  return nullptr;
+}
+
+// A structured dataset's numbers VTK would otherwise replace by defaults
+// when they do not parse (Spacing="nan 1 1" became spacing 1), and pieces
+// outside the whole extent, whose points VTK leaves uninitialised.
+void checkStructured(vtkXMLDataElement* root, const std::string& path) {
+  const char* type = root->GetAttribute("type");
+  if (!type) return;
+  vtkXMLDataElement* data = findNested(root, type);
+  if (!data) return;
+  auto finite = [&](const char* name, int n) {
+    if (!data->GetAttribute(name)) return;
+    double v[9];
+    if (data->GetVectorAttribute(name, n, v) != n || !std::all_of(v, v + n, [](double x) { return std::isfinite(x); }))
+      fail(path, std::string(type) + " " + name + " is not " + std::to_string(n) + " finite numbers");
+  };
+  finite("Origin", 3);
+  finite("Spacing", 3);
+  finite("Direction", 9);
+  long long whole[6];
+  if (!data->GetAttribute("WholeExtent")) return;
+  if (data->GetVectorAttribute("WholeExtent", 6, whole) != 6) fail(path, "WholeExtent is not six integers");
+  for (int p = 0; p < data->GetNumberOfNestedElements(); ++p) {
+    vtkXMLDataElement* piece = data->GetNestedElement(p);
+    long long e[6];
+    if (std::strcmp(piece->GetName(), "Piece") != 0) continue;
+    if (piece->GetVectorAttribute("Extent", 6, e) != 6) fail(path, "a piece's Extent is not six integers");
+    for (int k = 0; k < 3; ++k)
+      if (e[2 * k] < whole[2 * k] || e[2 * k + 1] > whole[2 * k + 1] || e[2 * k] > e[2 * k + 1])
+        fail(path, "a piece's Extent lies outside the WholeExtent: its points would be left unset");
   }
 }
 
@@ -108,14 +222,32 @@ bool xmlCompressed(vtkAlgorithm* reader) {
 }
 
 
-void checkInlineBinary(vtkAlgorithm* reader, const std::string& path) {
+void checkXmlStructure(vtkAlgorithm* reader, const std::string& path) {
   vtkXMLDataElement* root = rootOf(reader);
-  if (!root || root->GetAttribute("compressor")) return;
+  if (!root) return;
+  checkStructured(root, path);
+  Framing fr;
+  fr.compressed = root->GetAttribute("compressor") != nullptr;
   const char* order = root->GetAttribute("byte_order");
+  fr.bigEndian = order && std::strcmp(order, "BigEndian") == 0;
   const char* type = root->GetAttribute("header_type");
-  const std::size_t prefix = type && std::strcmp(type, "UInt64") == 0 ? 8 : 4;
+  fr.prefix = type && std::strcmp(type, "UInt64") == 0 ? 8 : 4;
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) fail(path, "cannot open file");
+  fr.fileSize = std::uint64_t(st.st_size);
   std::ifstream in(path, std::ios::binary);
-  checkArrays(root, in, prefix, order && std::strcmp(order, "BigEndian") == 0, path);
+  if (vtkXMLDataElement* appended = findNested(root, "AppendedData")) {
+    const char* encoding = appended->GetAttribute("encoding");
+    fr.appendedBase64 = !encoding || std::strcmp(encoding, "raw") != 0;
+    in.seekg(appended->GetXMLByteIndex());
+    for (char c; in.get(c) && c != '>';) {}
+    for (char c; in.get(c);)
+      if (c == '_') {
+        fr.appendedStart = std::int64_t(in.tellg());
+        break;
+      }
+  }
+  checkArrays(root, in, fr, path);
 }
 
 }  // namespace tg::io

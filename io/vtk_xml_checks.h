@@ -20,10 +20,12 @@ std::uint64_t xmlPoints(vtkAlgorithm* reader, const std::string& path);
 // Whether the file names a compressor.
 bool xmlCompressed(vtkAlgorithm* reader);
 
-// Every inline binary (base64) DataArray holds at least the bytes its own
-// size prefix declares. VTK decodes a short one past its end into the
-// following markup and reports nothing. Compressed inline arrays are left to
-// VTK's decompressor, which does report short blocks.
-void checkInlineBinary(vtkAlgorithm* reader, const std::string& path);
+// What VTK leaves unchecked in an XML file's structure and then fills with
+// zeros, uninitialised memory or defaults: every inline or appended binary
+// array holds the bytes its size prefix (or block table) promises, within the
+// file; appended offsets are not negative; Origin, Spacing and Direction are
+// finite numbers; each piece lies inside the whole extent. Compressed inline
+// arrays are left to VTK's decompressor, which reports short blocks.
+void checkXmlStructure(vtkAlgorithm* reader, const std::string& path);
 
 }  // namespace tg::io
