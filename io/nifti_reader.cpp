@@ -66,20 +66,25 @@ void checkRawDims(const std::string& path) {
   if (!raw) fail(path, "not a readable NIfTI-1/-2 header");
   // nifti_read_header leaves the bytes in the file's order; a header whose
   // size field reads swapped is big-endian on this machine (or the reverse).
-  std::int64_t dim0 = 0;
+  std::int64_t dim[8] = {};
   bool sized = true;
   if (version == 2) {
     const auto* h = static_cast<nifti_2_header*>(raw);
     sized = h->sizeof_hdr == 540 || __builtin_bswap32(std::uint32_t(h->sizeof_hdr)) == 540;
-    dim0 = h->sizeof_hdr == 540 ? h->dim[0] : std::int64_t(__builtin_bswap64(std::uint64_t(h->dim[0])));
+    for (int k = 0; k < 8; ++k)
+      dim[k] = h->sizeof_hdr == 540 ? h->dim[k] : std::int64_t(__builtin_bswap64(std::uint64_t(h->dim[k])));
   } else {
     const auto* h = static_cast<nifti_1_header*>(raw);
     sized = h->sizeof_hdr == 348 || __builtin_bswap32(std::uint32_t(h->sizeof_hdr)) == 348;
-    dim0 = h->sizeof_hdr == 348 ? h->dim[0] : std::int16_t(__builtin_bswap16(std::uint16_t(h->dim[0])));
+    for (int k = 0; k < 8; ++k)
+      dim[k] = h->sizeof_hdr == 348 ? h->dim[k] : std::int16_t(__builtin_bswap16(std::uint16_t(h->dim[k])));
   }
   std::free(raw);
   if (!sized) fail(path, "not a readable NIfTI-1/-2 header");
-  if (dim0 < 1 || dim0 > 7) fail(path, "dim[0] is " + std::to_string(dim0) + ", not 1..7");
+  if (dim[0] < 1 || dim[0] > 7) fail(path, "dim[0] is " + std::to_string(dim[0]) + ", not 1..7");
+  // libnifti2 quietly turns a dimension below 1 into 1, which shifted the data.
+  for (int k = 1; k <= dim[0]; ++k)
+    if (dim[k] < 1) fail(path, "dimension " + std::to_string(k) + " is " + std::to_string(dim[k]));
 }
 
 Image readHeader(const std::string& path) {
@@ -176,9 +181,10 @@ void streamValues(const std::string& path, const nifti_image& nim, std::uint64_t
   std::vector<char> buf(std::size_t(std::min<std::uint64_t>(kChunkBytes, count * tsize)));
   for (std::uint64_t done = 0; done < count;) {
     const std::size_t want = std::size_t(std::min<std::uint64_t>(kChunkBytes / tsize, count - done));
-    if (const std::size_t got = znzread(buf.data(), tsize, want, f); got != want)
+    // Whole bytes: znzread counts a partly read last value as read.
+    if (const std::size_t got = znzread(buf.data(), 1, want * tsize, f); got != want * tsize)
       fail(path, "data is truncated: the header describes " + std::to_string(count) + " values, the image ends after " +
-                     std::to_string(done + got));
+                     std::to_string(done + got / tsize));
     if (swap) nifti_swap_Nbytes(std::int64_t(want), int(tsize), buf.data());
     for (std::size_t i = 0; i < want; ++i) {
       const double x = load(buf.data() + i * tsize);
