@@ -368,6 +368,20 @@ TensorField readNrrd(const std::string& path, const ReadOptions& opt) {
   if (n->spaceDim == 3 && std::isfinite(n->measurementFrame[0][0])) {
     for (int r = 0; r < 3; ++r)
       for (int c = 0; c < 3; ++c) t[3 * r + c] = n->measurementFrame[c][r];
+    // A frame is a rotation (or reflection): a singular one would draw every
+    // tensor as zero, a scaled one would scale the glyphs unseen.
+    double worst = 0;
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) {
+        double dot = 0;
+        for (int r = 0; r < 3; ++r) dot += t[3 * r + a] * t[3 * r + b];
+        worst = std::max(worst, std::abs(dot - (a == b ? 1.0 : 0.0)));
+      }
+    if (!std::isfinite(worst) || !(std::abs(determinant3(t.data())) > 1e-6))
+      fail(path, "the measurement frame is singular or not finite");
+    if (worst > 1e-3)
+      f.warnings.push_back("the measurement frame is not orthonormal (max |MᵀM - I| = " + std::to_string(worst) +
+                           "); applied as given, so it scales the tensors");
     f.measurementFrame = t;
   }
   for (int r = 0; r < 3; ++r)

@@ -184,6 +184,12 @@ TensorField readField(WireIn& r) {
 // data pipe;
 // 'E' + text: the reader's InputError; 'M' + text: out of memory.
 
+std::string sizeText(std::uint64_t bytes) {
+  return bytes >= (std::uint64_t(1) << 20) ? std::to_string(bytes >> 20) + " MiB"
+         : bytes >= 1024                   ? std::to_string(bytes >> 10) + " KiB"
+                                           : std::to_string(bytes) + " bytes";
+}
+
 // Room for the libraries' own thread stacks, arenas and chunk buffers.
 constexpr std::uint64_t kSlackBytes = std::uint64_t(256) << 20;
 
@@ -221,6 +227,8 @@ void sendAll(int fd, const void* p, std::size_t n) {
     ::dup2(null, 2);
     ::close(null);
   }
+  // The parent's handlers would remove the parent's temporary files.
+  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGXFSZ}) ::signal(sig, SIG_DFL);
   limitAddressSpace(mappedBytes() + limits.memoryBytes + kSlackBytes);
   const rlim_t cpu = rlim_t(std::ceil(limits.cpuSeconds));
   rlimit cl{cpu, cpu + 1};  // SIGXCPU at the soft limit, SIGKILL a second later
@@ -245,14 +253,13 @@ void sendAll(int fd, const void* p, std::size_t n) {
     sendAll(statusFd, e.what(), std::strlen(e.what()));
   } catch (const std::bad_alloc&) {
     const std::string what =
-        promised ? "reading needed more memory than the file's header accounts for (" + std::to_string(promised >> 20) +
-                       " MiB): the file is corrupt"
-                 : "reading needed more memory than the " + std::to_string(limits.memoryBytes >> 20) +
-                       " MiB this load may use";
+        promised ? "reading needed more memory than the file's header accounts for (" + sizeText(promised) +
+                       "): the file is corrupt"
+                 : "reading needed more memory than the " + sizeText(limits.memoryBytes) + " this load may use";
     sendAll(statusFd, "M", 1);
     sendAll(statusFd, what.data(), what.size());
   } catch (const std::exception& e) {
-    sendAll(statusFd, "E", 1);
+    sendAll(statusFd, "X", 1);  // not the reader's own message: the parent names the file
     sendAll(statusFd, e.what(), std::strlen(e.what()));
   } catch (...) {
     code = 4;
@@ -282,7 +289,7 @@ std::uint64_t defaultMemoryBudget() {
     const std::uint64_t mapped = mappedBytes() + kSlackBytes;
     budget = std::min<std::uint64_t>(budget, as.rlim_cur > mapped ? as.rlim_cur - mapped : 0);
   }
-  return budget;
+  return std::max<std::uint64_t>(budget, 1);  // 0 would mean no limit at all
 }
 
 ReadLimits limitsFor(std::uint64_t fileBytes, std::uint64_t memoryBudget) {
@@ -357,7 +364,8 @@ TensorField readInChild(const std::string& who, const std::string& path, const R
   int ws = 0;
   while (::waitpid(pid, &ws, 0) < 0 && errno == EINTR) {}
   if (timedOut)
-    throw fail("reading took longer than its time limit (is a data file a FIFO or a device?); the reader was stopped");
+    throw fail("reading took longer than its time limit, " + std::to_string(int(limits.headerSeconds)) +
+               " s for the header and then what the promised data allows; the reader was stopped");
   if (!transferError.empty()) throw fail(transferError);
   if (field) return std::move(*field);
   if (WIFSIGNALED(ws)) {
@@ -367,6 +375,7 @@ TensorField readInChild(const std::string& who, const std::string& path, const R
   }
   if (!status.empty() && status[0] == 'E') throw InputError(status.substr(1));
   if (!status.empty() && status[0] == 'M') throw fail(status.substr(1));
+  if (!status.empty() && status[0] == 'X') throw fail("the reader failed (" + status.substr(1) + "): the file is corrupt");
   throw fail("the reader ended without a result (exit status " + std::to_string(WEXITSTATUS(ws)) + ")");
 }
 

@@ -33,14 +33,14 @@ extern "C" void removeTempsAndDie(int sig) {
 }
 
 void installHandlers() {
-  for (int sig : {SIGINT, SIGTERM, SIGHUP}) {
+  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE}) {
     struct sigaction old {};
     sigaction(sig, nullptr, &old);
     if (old.sa_handler == SIG_IGN) continue;  // e.g. under nohup: keep ignoring it
     struct sigaction sa {};
     sa.sa_handler = removeTempsAndDie;
     sigemptyset(&sa.sa_mask);
-    for (int other : {SIGINT, SIGTERM, SIGHUP}) sigaddset(&sa.sa_mask, other);
+    for (int other : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE}) sigaddset(&sa.sa_mask, other);
     sigaction(sig, &sa, nullptr);
   }
 }

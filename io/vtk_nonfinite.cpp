@@ -6,7 +6,6 @@
 #include <fstream>
 #include <iterator>
 #include <limits>
-#include <set>
 #include <vector>
 
 #include "io/tensor_field.h"
@@ -26,9 +25,12 @@ bool isNonFiniteWord(const std::string& t) {
   return w == "nan" || w == "inf" || w == "infinity";
 }
 
-bool isNumber(const std::string& t) {
+// The token as a number, if all of it is one. float(d) of a value parsed as
+// double can differ from strtof of the text in the last bit; the sentinels
+// are far from any such rounding boundary.
+bool numberOf(const std::string& t, double& d) {
   char* end = nullptr;
-  std::strtod(t.c_str(), &end);
+  d = std::strtod(t.c_str(), &end);
   return end == t.c_str() + t.size();
 }
 
@@ -44,8 +46,15 @@ NonFiniteText NonFiniteText::replace(const std::string& path) {
     bool nan, negative;
   };
   std::vector<Word> words;
-  std::set<double> numbers;
-  std::set<float> numbersF;
+  // Which candidates occur among the file's own numbers, as double or float.
+  constexpr std::size_t kCount = std::size(kCandidates);
+  double candD[kCount];
+  float candF[kCount];
+  bool taken[kCount] = {};
+  for (std::size_t c = 0; c < kCount; ++c) {
+    candD[c] = std::strtod(kCandidates[c], nullptr);
+    candF[c] = std::strtof(kCandidates[c], nullptr);
+  }
   for (std::size_t lineStart = 0; lineStart < text.size();) {
     std::size_t lineEnd = text.find('\n', lineStart);
     if (lineEnd == std::string::npos) lineEnd = text.size();
@@ -60,9 +69,12 @@ NonFiniteText NonFiniteText::replace(const std::string& path) {
       if (isNonFiniteWord(t)) {
         const char c = char(std::tolower(static_cast<unsigned char>(t[t[0] == '+' || t[0] == '-' ? 1 : 0])));
         lineWords.push_back({s, k - s, c == 'n', t[0] == '-'});
-      } else if (isNumber(t)) {
-        numbers.insert(std::strtod(t.c_str(), nullptr));
-        numbersF.insert(std::strtof(t.c_str(), nullptr));
+      } else if (double d; numberOf(t, d)) {
+        const double a = std::abs(d);
+        const float af = std::abs(float(d));
+        // Only tiny values can match: skip the comparisons for the rest.
+        if (a < 1e-29)
+          for (std::size_t c = 0; c < kCount; ++c) taken[c] = taken[c] || a == candD[c] || af == candF[c];
       } else {
         numeric = false;  // a keyword line: names there are not values
       }
@@ -73,11 +85,8 @@ NonFiniteText NonFiniteText::replace(const std::string& path) {
   NonFiniteText r;
   if (words.empty()) return r;
   std::vector<const char*> free;
-  for (const char* c : kCandidates) {
-    const double d = std::strtod(c, nullptr);
-    const float f = std::strtof(c, nullptr);
-    if (!numbers.count(d) && !numbers.count(-d) && !numbersF.count(f) && !numbersF.count(-f)) free.push_back(c);
-  }
+  for (std::size_t c = 0; c < kCount; ++c)
+    if (!taken[c]) free.push_back(kCandidates[c]);
   if (free.size() < 2) throw InputError("readVtk: " + path + ": cannot stand in for its NaN/Inf values");
   const std::string nanText = free[0], infText = free[1];
   r.nanD_ = std::strtod(free[0], nullptr), r.nanF_ = double(std::strtof(free[0], nullptr));

@@ -180,7 +180,7 @@ struct ReadResult {
 // account for it. `legacyPoints`: what checkLegacyCounts found (0 for XML,
 // whose header VTK reads first). `dims`: the grid a mask must have.
 ReadResult runReader(vtkAlgorithm* reader, const std::string& path, std::uint64_t fileSize,
-                     std::uint64_t legacyPoints, const ReadOptions& opt, const int* dims) {
+                     std::uint64_t legacyPoints, const ReadOptions& opt, const int* dims, std::uint64_t textCopies = 0) {
   const ErrorSink sink(reader);
   const VtkMessageCapture said;
   auto check = [&](const char* stage) {
@@ -192,7 +192,8 @@ ReadResult runReader(vtkAlgorithm* reader, const std::string& path, std::uint64_
   // What VTK holds while it parses: the file's values decoded (an ASCII value
   // is at least 2 bytes and becomes at most 8), or for compressed XML all
   // points with a generous 256 bytes of arrays and cells each.
-  std::uint64_t libraryBytes = 4 * fileSize;
+  // `textCopies`: copies of the file's text VTK holds when it reads from memory.
+  std::uint64_t libraryBytes = (4 + textCopies) * fileSize;
   if (xml) {
     reader->UpdateInformation();
     check("unreadable XML header");
@@ -361,6 +362,7 @@ ReadResult readDataSet(const std::string& path, const ReadOptions& opt, const in
   if (legacyPoints && read.vtkSaid.find("Error reading ascii data") != std::string::npos) {
     NonFiniteText nonFinite = NonFiniteText::replace(path);
     if (!nonFinite.empty()) {
+      read = ReadResult{};  // the failed pass's arrays go before the second pass
       auto r = vtkSmartPointer<vtkDataSetReader>::New();
       r->ReadAllTensorsOn();
       r->ReadAllFieldsOn();
@@ -370,7 +372,8 @@ ReadResult readDataSet(const std::string& path, const ReadOptions& opt, const in
       text->SetArray(const_cast<char*>(nonFinite.text().data()), vtkIdType(nonFinite.text().size()), 1);
       r->SetInputArray(text);
       r->ReadFromInputStringOn();
-      read = runReader(r, path, fileSize, legacyPoints, opt, dims);
+      // VTK copies the text twice more (a std::string, then a stream).
+      read = runReader(r, path, fileSize, legacyPoints, opt, dims, 3);
       read.nonFinite = std::move(nonFinite);
     }
   }

@@ -1,4 +1,5 @@
 // tensorglyph: exact GPU tensor glyphs. Dispatches to a subcommand.
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -23,6 +24,9 @@ constexpr const char* kUsage =
 }  // namespace
 
 int main(int argc, const char** argv) {
+  // Past `ulimit -f` a write fails with EFBIG, which each writer reports with
+  // the file's name, instead of the process dying with a partial file.
+  std::signal(SIGXFSZ, SIG_IGN);
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h")) {
     std::fputs(kUsage, argc < 2 ? stderr : stdout);
     return argc < 2 ? 2 : 0;
