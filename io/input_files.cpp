@@ -56,14 +56,14 @@ FILE* openRegular(const std::string& path) {
 
 // The name a "%d"-style format gives `index`: Teem passes the header's format
 // string to sprintf; here only one %d (with flags and width) is substituted.
-std::string numbered(const std::string& header, const std::string& format, int index) {
+std::string numbered(const std::string& header, const std::string& format, long long index) {
   const auto pct = format.find('%');
   auto end = format.find_first_not_of("0123456789+- ", pct + 1);
   if (pct == std::string::npos || end == std::string::npos || format[end] != 'd' ||
       format.find('%', end + 1) != std::string::npos)
     fail(header, "data file format \"" + format + "\" needs exactly one %d");
   std::string spec(1, '%');
-  spec.append(format, pct + 1, end - pct - 1).append(1, 'd');
+  spec.append(format, pct + 1, end - pct - 1).append("lld");
   char num[64];
   std::snprintf(num, sizeof num, spec.c_str(), index);
   std::string name = format.substr(0, pct);
@@ -107,9 +107,13 @@ std::vector<std::string> nrrdDataFiles(const std::string& header) {
   }
   std::vector<std::string> files;
   if (h.nio->dataFNFormat) {
-    const unsigned n = _nrrdDataFNNumber(h.nio);
+    // Counted here: Teem's _nrrdDataFNNumber steps through every index, and
+    // "0 1999999999 1" took seconds before the limit below could say no.
+    const long long step = h.nio->dataFNStep, lo = h.nio->dataFNMin, hi = h.nio->dataFNMax;
+    if (step == 0 || (hi - lo) / step < 0) fail(header, "data file range is empty or its step is 0");
+    const unsigned long long n = static_cast<unsigned long long>((hi - lo) / step) + 1;
     if (n > kMaxDataFiles) fail(header, std::to_string(n) + " data files; at most 100000 are accepted");
-    for (int i = h.nio->dataFNMin, k = 0; unsigned(k) < n; i += h.nio->dataFNStep, ++k)
+    for (long long i = lo, k = 0; static_cast<unsigned long long>(k) < n; i += step, ++k)
       files.push_back(resolved(dir, numbered(header, h.nio->dataFNFormat, i)));
   } else {
     for (unsigned k = 0; k < h.nio->dataFNArr->len; ++k) {

@@ -107,7 +107,7 @@ std::uint64_t checkLegacyCounts(const std::string& path, std::uint64_t fileSize)
     for (const char* k : {"points", "cells", "cell_types", "polygons", "lines", "vertices", "triangle_strips",
                           "point_data", "cell_data", "dimensions", "tensors", "scalars", "vectors", "normals", "field"})
       if (lower.rfind(k, 0) == 0 && lower != k && !(std::string(k) == "cells" && lower == "cell_types") &&
-          !(std::string(k) == "points" && lower == "point_data"))
+          !(std::string(k) == "points" && lower == "point_data") && lower != "tensors6")
         fail(path, "malformed keyword \"" + key + "\"");
     // VTK compares keywords case-insensitively, and so must the counts.
     key = lower;
@@ -138,8 +138,8 @@ std::uint64_t checkLegacyCounts(const std::string& path, std::uint64_t fileSize)
       if (a < 1 || b < 1 || c < 1) fail(path, "DIMENSIONS must be positive");
       impossible(key, a * b * c);
       points = std::max(points, std::uint64_t(a * b * c));
-    } else if (key == "TENSORS" && (ls >> type >> type)) {
-      dataBytes += 9.0L * tuples * typeSize(type);
+    } else if ((key == "TENSORS" || key == "TENSORS6") && (ls >> type >> type)) {
+      dataBytes += (key == "TENSORS" ? 9.0L : 6.0L) * tuples * typeSize(type);
     } else if ((key == "VECTORS" || key == "NORMALS") && (ls >> type >> type)) {
       dataBytes += 3.0L * tuples * typeSize(type);
     } else if (key == "COLOR_SCALARS" && (ls >> type >> a)) {

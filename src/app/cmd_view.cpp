@@ -98,7 +98,8 @@ int cmdView(int argc, const char** argv) {
   std::vector<NamedPath> scriptShots;
   for (const ScriptStep& s : script)
     if (s.verb == "screenshot") scriptShots.push_back({o.script + ":" + std::to_string(s.line) + ": screenshot", s.args[0]});
-  refuseOutputsOverInputs(scriptShots, {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath}});
+  refuseOutputsOverInputs(scriptShots,
+                          {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath}, {"--script", o.script}});
   Scene scene = loadScene(o.input, o.field.read);
   reportLoad(scene.field, "view");
   tensor::GlyphSet glyphs =

@@ -1,5 +1,7 @@
 #include "app/view_script.h"
 
+#include <sys/stat.h>
+
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -61,14 +63,19 @@ void check(const ScriptStep& s) {
 }  // namespace
 
 std::vector<ScriptStep> parseScript(const std::string& path) {
+  // A regular file of sane size: a FIFO would block and /dev/zero never end.
+  struct stat st {};
+  if (::stat(path.c_str(), &st) != 0) throw io::InputError("parseScript: " + path + ": no such file");
+  if (!S_ISREG(st.st_mode)) throw io::InputError("parseScript: " + path + ": not a regular file");
+  if (st.st_size > (1 << 20)) throw io::InputError("parseScript: " + path + ": larger than 1 MiB");
   std::ifstream in(path);
-  if (!in) throw io::InputError(path + ": cannot open the script");
+  if (!in) throw io::InputError("parseScript: " + path + ": cannot open the script");
   std::vector<ScriptStep> steps;
   std::string line;
   int number = 0;
   while (std::getline(in, line)) {
     ++number;
-    if (number > 100000) throw io::InputError(path + ": more than 100000 lines");
+    if (number > 100000) throw io::InputError("parseScript: " + path + ": more than 100000 lines");
     line = line.substr(0, line.find('#'));
     std::istringstream words(line);
     ScriptStep s;

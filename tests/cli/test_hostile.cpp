@@ -270,6 +270,50 @@ TEST(Hostile, TruncatedXmlDataFails) {
   expectRefused("cut64.vtu", "truncated");
 }
 
+// Found by attacking the first version of this work: each read exit 0 and drew
+// zeros, uninitialised memory, shifted data or defaults.
+TEST(Hostile, AttackFindingsFailInsteadOfDrawingGarbage) {
+  const std::string image = "<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\" version=\"0.1\" "
+                            "byte_order=\"LittleEndian\" header_type=\"UInt32\">\n<ImageData WholeExtent=\"0 1 0 0 0 0\" "
+                            "Origin=\"0 0 0\" Spacing=\"1 1 1\">\n";
+  const std::string tail = "</ImageData>\n";
+  // Appended raw data cut 40 bytes in.
+  std::string data(4, '\0');
+  const std::uint32_t bytes = 72;
+  std::memcpy(data.data(), &bytes, 4);
+  data += bin(std::vector<float>(18, 1.0f));
+  const std::string appended = image + "<Piece Extent=\"0 1 0 0 0 0\"><PointData Tensors=\"t\"><DataArray "
+                               "type=\"Float32\" Name=\"t\" NumberOfComponents=\"9\" format=\"appended\" offset=\"0\"/>"
+                               "</PointData></Piece>\n" + tail + "<AppendedData encoding=\"raw\">\n_";
+  write(dir() / "appended.vti", appended + data.substr(0, 40));
+  expectRefused("appended.vti", "truncated");
+  std::string negative = appended;
+  negative.replace(negative.find("offset=\"0\""), 10, "offset=\"-9\"");
+  write(dir() / "negative.vti", negative + data + "\n</AppendedData>\n</VTKFile>\n");
+  expectRefused("negative.vti", "offset");
+  // A piece outside the whole extent; a spacing that is not a number.
+  const std::string ascii = "<PointData Tensors=\"t\"><DataArray type=\"Float32\" Name=\"t\" NumberOfComponents=\"9\" "
+                            "format=\"ascii\">1 0 0 0 1 0 0 0 1 1 0 0 0 1 0 0 0 1</DataArray></PointData></Piece>\n";
+  write(dir() / "outside.vti", image + "<Piece Extent=\"5 6 0 0 0 0\">" + ascii + tail + "</VTKFile>\n");
+  expectRefused("outside.vti", "WholeExtent");
+  std::string nanSpacing = image + "<Piece Extent=\"0 1 0 0 0 0\">" + ascii + tail + "</VTKFile>\n";
+  nanSpacing.replace(nanSpacing.find("Spacing=\"1 1 1\""), 15, "Spacing=\"nan 1 1\"");
+  write(dir() / "spacing.vti", nanSpacing);
+  expectRefused("spacing.vti", "Spacing");
+  // A .nii.gz one byte short: libnifti counts the half-read last value as read.
+  const std::string twelve = bin({1, 0, 0, 2, 0, 0, 1, 0, 0, 2, 0, 0});
+  write(dir() / "short.nii.gz", gzipped(niftiHeader(2, 1, 1, 352) + twelve.substr(0, twelve.size() - 1)));
+  expectRefused("short.nii.gz", "truncated");
+  // A negative dimension, which libnifti makes 1.
+  write(dir() / "negdim.nii", niftiHeader(2, -3, 1, 352) + twelve);
+  expectRefused("negdim.nii", "dimension 2 is -3");
+  // A zero measurement frame, which drew every tensor as zero.
+  write(dir() / "frame.nrrd", "NRRD0005\ntype: float\ndimension: 4\nsizes: 6 1 1 1\nspace: RAS\nspace directions: none "
+                              "(1,0,0) (0,1,0) (0,0,1)\nmeasurement frame: (0,0,0) (0,0,0) (0,0,0)\n" + kNrrdTensor +
+                              "\n" + bin({1, 0, 0, 2, 0, 3}));
+  expectRefused("frame.nrrd", "measurement frame");
+}
+
 TEST(Hostile, AnExtentBeyondIntIsRefused) {
   write(dir() / "extent.vti",
         "<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\" version=\"0.1\">\n<ImageData WholeExtent=\""
