@@ -69,7 +69,7 @@ Options parse(int argc, const char** argv) {
     o.frames = parseIntIn("--frames", a[1], 1, 1000);
   });
   ap.arg("--fa-min F").help("hide glyphs with FA below F").action([&](auto&, Args a) {
-    o.faMin = parseDouble("--fa-min", a[1]);
+    o.faMin = parseDoubleIn("--fa-min", a[1], 0.0, 1.0);
   });
   ap.arg("--backend NAME").help("osmesa (default), egl, glfw or auto").action([&](auto&, Args a) { o.backend = a[1]; });
   o.field.addTo(ap, true);

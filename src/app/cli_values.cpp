@@ -2,6 +2,7 @@
 
 #include <charconv>
 #include <cmath>
+#include <sstream>
 #include <filesystem>
 
 namespace tg::app {
@@ -11,6 +12,16 @@ double parseDouble(std::string_view flag, std::string_view text) {
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
   if (ec != std::errc() || end != text.data() + text.size() || text.empty() || !std::isfinite(v))
     throw UsageError(std::string(flag) + ": \"" + std::string(text) + "\" is not a finite number");
+  return v;
+}
+
+double parseDoubleIn(std::string_view flag, std::string_view text, double lo, double hi) {
+  const double v = parseDouble(flag, text);
+  if (!(v >= lo && v <= hi)) {
+    std::ostringstream range;
+    range << flag << " must be within " << lo << ".." << hi;
+    throw UsageError(range.str());
+  }
   return v;
 }
 

@@ -23,6 +23,8 @@ struct HelpShown {};
 
 // Whole-string numbers only ("1.5x" and "" are errors), finite.
 double parseDouble(std::string_view flag, std::string_view text);
+// parseDouble within [lo, hi]: "FLAG must be within LO..HI" otherwise.
+double parseDoubleIn(std::string_view flag, std::string_view text, double lo, double hi);
 long long parseInt(std::string_view flag, std::string_view text);
 // An integer within lo..hi, checked before any narrowing: "4294967297" for an
 // int option is an error naming the flag and the range, never a wrapped 1.

@@ -63,7 +63,7 @@ RenderOptions parse(int argc, const char** argv) {
   ap.arg("--gamma G").help("superquadric sharpness (Kindlmann 2004), >= 0").action([&](auto&, Args a) {
     o.gamma = parseDouble("--gamma", a[1]);
   });
-  ap.arg("--fa-min F").help("hide glyphs with FA below F").action([&](auto&, Args a) { o.faMin = parseDouble("--fa-min", a[1]); });
+  ap.arg("--fa-min F").help("hide glyphs with FA below F").action([&](auto&, Args a) { o.faMin = parseDoubleIn("--fa-min", a[1], 0.0, 1.0); });
   ap.arg("--eye X Y Z").help("camera position (WC)").action([&](auto&, Args a) { o.eye = parseVec3("--eye", rest(a)); });
   ap.arg("--look-at X Y Z").help("point the camera looks at (WC)").action([&](auto&, Args a) {
     o.lookAt = parseVec3("--look-at", rest(a));

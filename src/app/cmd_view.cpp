@@ -56,7 +56,7 @@ ViewOptions parse(int argc, const char** argv) {
   ap.arg("--gamma G").help("superquadric sharpness, >= 0 (default 3)").action([&](auto&, Args a) {
     o.gamma = parseDouble("--gamma", a[1]);
   });
-  ap.arg("--fa-min F").help("hide glyphs with FA below F").action([&](auto&, Args a) { o.faMin = parseDouble("--fa-min", a[1]); });
+  ap.arg("--fa-min F").help("hide glyphs with FA below F").action([&](auto&, Args a) { o.faMin = parseDoubleIn("--fa-min", a[1], 0.0, 1.0); });
   ap.arg("--color MODE").help(std::string(kColorModeNames)).action([&](auto&, Args a) { o.color = a[1]; });
   ap.arg("--script FILE").help("run the commands in FILE (see README, \"Viewer\"), then exit")
       .action([&](auto&, Args a) { o.script = a[1]; });

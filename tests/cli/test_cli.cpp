@@ -243,3 +243,15 @@ TEST(Cli, HelpExitsCleanlyForEveryCommand) {
   }
   std::filesystem::remove_all(dir);
 }
+
+// An FA threshold outside [0, 1] hid every glyph and wrote an empty image
+// with exit 0; like --cl-min and --cp-min it is a usage error now.
+TEST(Cli, FaMinOutsideZeroToOneIsAUsageError) {
+  const fs::path out = dir() / "famin.png";
+  for (const char* v : {"2", "-0.1"}) {
+    const std::string args = std::string("render -o ") + out.string() + " --fa-min " + v;
+    tg::test::expectFailsCleanly(args, "--fa-min must be within 0..1", out, dir(), 1);
+    EXPECT_EQ(tg::test::runBinary(args, dir()).code, 2) << args;
+  }
+  EXPECT_EQ(tg::test::runBinary("render -o " + out.string() + " --fa-min 1 --size 32 24", dir()).code, 0);
+}
