@@ -538,7 +538,8 @@ TensorField readMif(const std::string& path, const ReadOptions& opt) {
   ComponentLayout cl;
   cl.sym = {0, 3, 4, 1, 5, 2};
   const std::uint64_t voxels = spatialVoxels(path, h);
-  const Selector sel(opt.selection, path, g.dims);
+  const GridPlacement placed = placementOf(g);
+  const Selector sel(opt.selection, path, g.dims, &placed);
   promiseData("readMif", path, opt, 6 * voxels * std::uint64_t(h.type.bytes), sel.keptBound(voxels));
   VolumeSink sink(f, g, cl, sel, 0.0);
   if (fileOrderIsIndexOrder(h)) {
@@ -601,6 +602,8 @@ ScalarVolume readMifScalar(const std::string& path, const int dims[3]) {
   });
   ScalarVolume s;
   for (std::size_t k = 0; k < 3; ++k) s.dims[k] = int(im.h.dim[k]);
+  TensorField unused;
+  if (!im.h.transform.empty()) s.placement = placementOf(geometry(path, im.h, unused));
   s.values.resize(std::size_t(im.h.values));
   Walk walk(im.h);
   streamValues(path, im, 1, [&](const double* v, std::size_t m) {

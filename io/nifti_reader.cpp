@@ -312,7 +312,8 @@ TensorField readNifti(const std::string& path, const ReadOptions& opt) {
   // Which voxels to keep is known before any data: decide it first, then
   // read the six volumes in file order into the kept voxels' slots only.
   checkDataSize(path, *nim, 6 * voxels);
-  const Selector sel(opt.selection, path, g.dims);
+  const GridPlacement placed = placementOf(g);
+  const Selector sel(opt.selection, path, g.dims, &placed);
   VolumeSink sink(f, g, cl, sel, 0.0);
   std::vector<std::uint32_t> kept;  // empty: every voxel is kept
   if (!sel.selectsAll())
@@ -364,6 +365,9 @@ ScalarVolume readNiftiScalar(const std::string& path, const int dims[3]) {
     fail(path, "mask grid " + gridText(g.dims) + " differs from the tensor grid " + gridText(dims));
   ScalarVolume s;
   std::copy(g.dims, g.dims + 3, s.dims);
+  TensorField unused;
+  placement(*nim, g, unused);
+  if (nim->sform_code > 0 || nim->qform_code > 0) s.placement = placementOf(g);  // else its placement is unstated
   streamValues(path, *nim, voxels, [&](double x) { s.values.push_back(float(x)); });
   return s;
 }

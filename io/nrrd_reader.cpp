@@ -309,6 +309,18 @@ VolumeGeometry geometry(const std::string& path, const Nrrd* n, unsigned first, 
   return g;
 }
 
+// World space: RAS, with LPS and LAS turned into it (positions here; the
+// tensors by the same signs, which `flip` returns); others as given.
+void toRas(const Nrrd* n, VolumeGeometry& g, double flip[3]) {
+  flip[0] = flip[1] = flip[2] = 1;
+  if (n->space == nrrdSpaceLeftPosteriorSuperior || n->space == nrrdSpaceScannerXYZ) flip[0] = flip[1] = -1;
+  if (n->space == nrrdSpaceLeftAnteriorSuperior) flip[0] = -1;
+  for (int r = 0; r < 3; ++r) {
+    g.originWC[r] *= flip[r];
+    for (int c = 0; c < 3; ++c) g.axesWC[3 * r + c] *= flip[r];
+  }
+}
+
 // The component layout of the tensor axis, from its kind or else its size.
 ComponentLayout layoutOf(const std::string& path, const Nrrd* n, TensorField& f) {
   const int kind = n->axis[0].kind;
@@ -350,20 +362,14 @@ TensorField readNrrd(const std::string& path, const ReadOptions& opt) {
   VolumeGeometry g = geometry(path, n, 1, f);
   const std::uint64_t voxels = std::uint64_t(g.dims[0]) * std::uint64_t(g.dims[1]) * std::uint64_t(g.dims[2]);
 
-  // World space: RAS, with LPS and LAS turned into it; others as given.
-  double flip[3] = {1, 1, 1};
+  double flip[3];
+  toRas(n, g, flip);
   const int space = n->space;
-  if (space == nrrdSpaceLeftPosteriorSuperior || space == nrrdSpaceScannerXYZ) flip[0] = flip[1] = -1;
-  if (space == nrrdSpaceLeftAnteriorSuperior) flip[0] = -1;
   if (space != nrrdSpaceUnknown) {
     f.space = std::string("RAS");
     if (space != nrrdSpaceRightAnteriorSuperior)
       f.space = flip[0] < 0 ? std::string("RAS (converted from ") + airEnumStr(nrrdSpace, space) + ")"
                             : std::string(airEnumStr(nrrdSpace, space));
-  }
-  for (int r = 0; r < 3; ++r) {
-    g.originWC[r] *= flip[r];
-    for (int c = 0; c < 3; ++c) g.axesWC[3 * r + c] *= flip[r];
   }
   // NRRD: "measurement frame" vectors are the columns of M (Teem stores
   // measurementFrame[column][row]); D_world = M D Mᵀ. The flip follows.
@@ -400,7 +406,8 @@ TensorField readNrrd(const std::string& path, const ReadOptions& opt) {
   f.description = std::string("NRRD volume, ") + std::to_string(g.dims[0]) + "x" + std::to_string(g.dims[1]) + "x" +
                   std::to_string(g.dims[2]) + ", " + airEnumStr(nrrdType, n->type) + ", " + h->nio->encoding->name +
                   " encoding";
-  const Selector sel(opt.selection, path, g.dims);
+  const GridPlacement placed = placementOf(g);
+  const Selector sel(opt.selection, path, g.dims, &placed);
   const std::uint64_t values = voxels * std::uint64_t(layout.count);
   checkEncodedSize(path, *h, values);
   promiseData("readNrrd", path, opt, values * nrrdTypeSize[n->type], sel.keptBound(voxels));
@@ -428,6 +435,11 @@ ScalarVolume readNrrdScalar(const std::string& path, const int dims[3]) {
   const std::uint64_t voxels = gridDims(path, n, 0, v.dims);
   if (!std::equal(v.dims, v.dims + 3, dims))
     fail(path, "mask grid " + gridText(v.dims) + " differs from the tensor grid " + gridText(dims));
+  TensorField unused;
+  VolumeGeometry g = geometry(path, n, 0, unused);
+  double flip[3];
+  toRas(n, g, flip);
+  if (n->spaceDim == 3) v.placement = placementOf(g);  // old headers place by spacing alone: unstated
   decode(path, *h, voxels, 1, [&](const double* x, std::size_t m) {
     for (std::size_t i = 0; i < m; ++i) v.values.push_back(float(x[i]));
   });

@@ -248,6 +248,10 @@ void sendAll(int fd, const void* p, std::size_t n) {
     WireOut w(dataFd);
     writeField(w, f);
     w.flush();
+    // Now, with `f` alive: the pipe still refers to its pages, and freeing
+    // them could hand small arrays' heap memory to later allocations before
+    // the parent has read them.
+    _exit(0);
   } catch (const InputError& e) {
     sendAll(statusFd, "E", 1);
     sendAll(statusFd, e.what(), std::strlen(e.what()));

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <charconv>
 #include <cstring>
+#include <cmath>
+#include <sstream>
 #include <stdexcept>
 
 #include <sys/stat.h>
@@ -59,7 +61,33 @@ ScalarVolume readScalarVolume(const std::string& path, const int dims[3]) {
                    ": unknown mask format; use .nrrd, .nhdr, .nii, .nii.gz, .mif, .mih or .vti");
 }
 
-Selector::Selector(const Selection& sel, const std::string& path, const int* dims) : sel_(sel) {
+namespace {
+
+// A mask is applied voxel by voxel, so it must lie where the tensors do:
+// the same dims on another placement (another origin, spacing or axis order)
+// would mask the wrong voxels. Tolerance: 1e-3 of the grid's longest step.
+void checkSamePlacement(const GridPlacement& tensors, const GridPlacement& mask, const std::string& maskPath,
+                        const std::string& path) {
+  double step = 0;
+  for (double a : tensors.axesWC) step = std::max(step, std::abs(a));
+  const double tol = 1e-3 * std::max(step, 1e-30);
+  double worst = 0;
+  for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(tensors.originWC[k] - mask.originWC[k]));
+  for (int k = 0; k < 9; ++k) worst = std::max(worst, std::abs(tensors.axesWC[k] - mask.axesWC[k]));
+  if (!(worst <= tol)) {
+    std::ostringstream m;
+    m << "Selector: " << maskPath << ": mask lies elsewhere than the tensors of " << path << " (origin "
+      << mask.originWC[0] << " " << mask.originWC[1] << " " << mask.originWC[2] << " against " << tensors.originWC[0]
+      << " " << tensors.originWC[1] << " " << tensors.originWC[2] << ", or other axes; differs by up to " << worst
+      << ")";
+    throw InputError(m.str());
+  }
+}
+
+}  // namespace
+
+Selector::Selector(const Selection& sel, const std::string& path, const int* dims, const GridPlacement* placement)
+    : sel_(sel) {
   if (sel.stride < 1) throw InputError("Selector: " + path + ": stride must be at least 1");
   all_ = !sel.slice && sel.stride == 1 && !sel.roiWC && sel.maskPath.empty();
   if (!dims) {
@@ -83,6 +111,7 @@ Selector::Selector(const Selection& sel, const std::string& path, const int* dim
     if (!std::equal(dims_, dims_ + 3, mask_.dims) || mask_.values.size() != voxels)
       throw InputError("Selector: " + sel.maskPath + ": mask grid " + gridText(mask_.dims) +
                        " differs from the tensor grid " + gridText(dims_) + " of " + path);
+    if (placement && mask_.placement) checkSamePlacement(*placement, *mask_.placement, sel.maskPath, path);
   }
 }
 

@@ -35,10 +35,19 @@ struct Selection {
 // "z:10", "2:10:3", "x:0". Throws std::invalid_argument with a one-line reason.
 SliceSpec parseSlice(const std::string& text);
 
-// A scalar volume, as a mask is given: NRRD, NIfTI or .vti, one value per voxel.
+// Where a grid's voxels lie: voxel (i, j, k) at originWC + axesWC (i j k)ᵀ.
+struct GridPlacement {
+  double originWC[3] = {0, 0, 0};
+  double axesWC[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};  // row-major; column k is one step along index k
+};
+
+// A scalar volume, as a mask is given: NRRD, NIfTI, MRtrix or .vti, one value per voxel.
 struct ScalarVolume {
   int dims[3] = {0, 0, 0};
   std::vector<float> values;  // i fastest
+  // Where the file says its voxels lie (an sform or qform, a transform, space
+  // directions, a .vti's origin and spacing); none when it does not say.
+  std::optional<GridPlacement> placement;
 };
 // A regular file only (a FIFO would block), on the grid `dims`: a mask of
 // another grid is refused before any of its data is decoded.
@@ -52,8 +61,9 @@ class Selector {
   enum class Verdict { Keep, Unselected, Masked };
   // dims: the grid's, or null for a point set. Throws InputError naming
   // `path` when the selection does not fit the data (a slice beyond the grid,
-  // a mask of another size, a slice of a point set).
-  Selector(const Selection& sel, const std::string& path, const int* dims);
+  // a mask of another size or placed elsewhere, a slice of a point set).
+  // `placement`: the tensor grid's, compared with the mask's own.
+  Selector(const Selection& sel, const std::string& path, const int* dims, const GridPlacement* placement = nullptr);
   Verdict judge(std::uint64_t index, const double pWC[3]) const;
   // judge() for a reader: true to keep the sample; otherwise counts it in
   // f (total and masked or unselected) and returns false.

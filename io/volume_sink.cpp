@@ -83,6 +83,13 @@ void VolumeSink::finish() {
   f_.sampleSpacing = std::isfinite(minSpacing) ? minSpacing : estimateSampleSpacing(f_.positions);
 }
 
+GridPlacement placementOf(const VolumeGeometry& g) {
+  GridPlacement p;
+  std::copy(g.originWC, g.originWC + 3, p.originWC);
+  std::copy(g.axesWC, g.axesWC + 9, p.axesWC);
+  return p;
+}
+
 double determinant3(const double a[9]) {
   return a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) + a[2] * (a[3] * a[7] - a[4] * a[6]);
 }

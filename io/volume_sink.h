@@ -19,6 +19,7 @@ struct VolumeGeometry {
 };
 
 void positionWC(const VolumeGeometry& g, const int ijk[3], double pWC[3]);
+GridPlacement placementOf(const VolumeGeometry& g);
 
 // Where the six unique components sit among a voxel's values.
 struct ComponentLayout {

@@ -31,6 +31,7 @@
 
 #include "io/readers.h"
 #include "io/selection.h"
+#include "io/volume_sink.h"
 #include "io/tsv_trailer.h"
 #include "io/vtk_capture.h"
 #include "io/vtk_nonfinite.h"
@@ -218,6 +219,18 @@ ReadResult runReader(vtkAlgorithm* reader, const std::string& path, std::uint64_
   auto* out = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
   if (!out) fail(path, said.first().empty() ? "no dataset in file" : said.first());
   return {out, said.first(), {}};
+}
+
+// Index to world of image data: origin + Direction diag(spacing) ijk.
+GridPlacement imagePlacement(vtkImageData* img) {
+  GridPlacement p;
+  double spacing[3];
+  img->GetSpacing(spacing);
+  img->GetOrigin(p.originWC);
+  const double* dir = img->GetDirectionMatrix()->GetData();
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) p.axesWC[3 * r + c] = dir[3 * r + c] * spacing[c];
+  return p;
 }
 
 bool isLegacy(const std::string& path) {
@@ -420,6 +433,7 @@ ScalarVolume readVtiScalar(const std::string& path, const int dims[3]) {
   if (!a || a->GetNumberOfComponents() != 1) fail(path, "no one-component point array to use as a mask");
   ScalarVolume v;
   img->GetDimensions(v.dims);
+  v.placement = imagePlacement(img);
   const vtkIdType n = a->GetNumberOfTuples();
   v.values.resize(std::size_t(n));
   for (vtkIdType i = 0; i < n; ++i) v.values[std::size_t(i)] = float(a->GetComponent(i, 0));
@@ -461,7 +475,9 @@ TensorField readVtk(const std::string& path, const ReadOptions& opt) {
       f.warnings.push_back("2-D tensors lie in the x-y plane, but the points span z from " + std::to_string(b[4]) +
                            " to " + std::to_string(b[5]));
   }
-  const Selector sel(opt.selection, path, image ? image->GetDimensions() : nullptr);
+  std::optional<GridPlacement> placed;
+  if (image) placed = imagePlacement(image);
+  const Selector sel(opt.selection, path, image ? image->GetDimensions() : nullptr, placed ? &*placed : nullptr);
   if (sel.selectsAll()) f.reserve(std::size_t(n));
   double p[3], t[9], full[9];
   for (vtkIdType i = 0; i < n; ++i) {
