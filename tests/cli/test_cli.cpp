@@ -226,8 +226,17 @@ TEST(Cli, ViewRejectsABadScriptBeforeOpeningAWindow) {
     // Checked before any window: this passes without a display (plain ctest).
     tg::test::expectFailsCleanly("view --script " + script.string(), what, shot, dir, 1);
   }
-  tg::test::expectFailsCleanly("view --script " + (dir / "missing.txt").string(), "cannot open the script", shot,
+  tg::test::expectFailsCleanly("view --script " + (dir / "missing.txt").string(), "no such file", shot,
                                dir, 1);
+  // Attack findings: /dev/zero grew without bound, a FIFO hung, and a script
+  // that screenshots onto itself was overwritten with a PNG.
+  tg::test::expectFailsCleanly("view --script /dev/zero", "not a regular file", shot, dir, 1);
+  const std::filesystem::path self = dir / "self.png";
+  std::ofstream(self) << "screenshot " << self.string() << "\n";
+  const tg::test::CmdResult r = tg::test::runBinary("view --script " + self.string(), dir);
+  EXPECT_EQ(r.code, 2) << r.err;
+  EXPECT_NE(r.err.find("overwritten"), std::string::npos) << r.err;
+  EXPECT_EQ(tg::test::slurp(self), "screenshot " + self.string() + "\n");
   std::filesystem::remove_all(dir);
 }
 
