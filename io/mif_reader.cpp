@@ -24,6 +24,7 @@
 #include <utility>
 #include <vector>
 
+#include "io/mif_datatype.h"
 #include "io/readers.h"
 #include "io/selection.h"
 #include "io/volume_sink.h"
@@ -130,70 +131,6 @@ double parseReal(const std::string& path, const std::string& key, std::string_vi
   return x;
 }
 
-using Convert = void (*)(const char* src, std::size_t n, double* dst);
-
-template <class U>
-U swapBytes(U u) {
-  if constexpr (sizeof(U) == 2) return __builtin_bswap16(u);
-  else if constexpr (sizeof(U) == 4) return __builtin_bswap32(u);
-  else if constexpr (sizeof(U) == 8) return __builtin_bswap64(u);
-  else return u;
-}
-
-template <class T, bool Swap>
-void convert(const char* src, std::size_t n, double* dst) {
-  using U = std::conditional_t<sizeof(T) == 1, std::uint8_t,
-                               std::conditional_t<sizeof(T) == 2, std::uint16_t,
-                                                  std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>>>;
-  for (std::size_t i = 0; i < n; ++i) {
-    U u;
-    std::memcpy(&u, src + i * sizeof(T), sizeof(U));
-    if constexpr (Swap) u = swapBytes(u);
-    dst[i] = double(std::bit_cast<T>(u));
-  }
-}
-
-template <class T>
-Convert converter(bool swap) {
-  return swap ? &convert<T, true> : &convert<T, false>;
-}
-
-struct DataType {
-  std::string name;  // as the header spells it
-  int bytes = 0;
-  Convert convert = nullptr;
-};
-
-// MRtrix's names, case-insensitive; a multi-byte type without LE/BE is the
-// machine's own order, as MRtrix reads it.
-DataType parseDataType(const std::string& path, std::string_view text) {
-  const std::string t = lower(text);
-  std::string base = t;
-  bool big = std::endian::native == std::endian::big;
-  if (t.ends_with("le") || t.ends_with("be")) {
-    big = t.ends_with("be");
-    base = t.substr(0, t.size() - 2);
-  }
-  const bool swap = big != (std::endian::native == std::endian::big);
-  DataType d{std::string(text), 0, nullptr};
-  if (base == "int8") d = {d.name, 1, converter<std::int8_t>(false)};
-  else if (base == "uint8") d = {d.name, 1, converter<std::uint8_t>(false)};
-  else if (base == "int16") d = {d.name, 2, converter<std::int16_t>(swap)};
-  else if (base == "uint16") d = {d.name, 2, converter<std::uint16_t>(swap)};
-  else if (base == "int32") d = {d.name, 4, converter<std::int32_t>(swap)};
-  else if (base == "uint32") d = {d.name, 4, converter<std::uint32_t>(swap)};
-  else if (base == "int64") d = {d.name, 8, converter<std::int64_t>(swap)};
-  else if (base == "uint64") d = {d.name, 8, converter<std::uint64_t>(swap)};
-  else if (base == "float32") d = {d.name, 4, converter<float>(swap)};
-  else if (base == "float64") d = {d.name, 8, converter<double>(swap)};
-  else if (base == "bit" || base.starts_with("cfloat"))
-    fail(path, "datatype " + std::string(text) + " is not supported; tensors need real numbers");
-  else fail(path, "datatype \"" + std::string(text) + "\" is not an MRtrix data type");
-  // "Int8LE" and the like name no real type.
-  if (d.bytes == 1 && base != t) fail(path, "datatype \"" + std::string(text) + "\" is not an MRtrix data type");
-  return d;
-}
-
 struct Header {
   std::vector<std::uint64_t> dim;
   std::size_t voxCount = 0;
@@ -201,7 +138,7 @@ struct Header {
   std::vector<int> rank;  // layout: order of increasing stride, 0 fastest
   std::vector<bool> descending;
   std::string layoutText;
-  DataType type;
+  MifDataType type;
   std::vector<std::array<double, 4>> transform;
   double offset = 0, scale = 1;
   bool scaled = false;
@@ -303,7 +240,7 @@ void parseEntry(const std::string& path, Header& h, const std::string& key, cons
   } else if (key == "layout") {
     parseLayout(path, h, value);
   } else if (key == "datatype") {
-    h.type = parseDataType(path, value);
+    h.type = parseMifDataType(path, value);
   } else if (key == "transform") {
     const auto items = splitList(path, key, value);
     if (items.size() != 4) fail(path, "transform: a row holds " + std::to_string(items.size()) + " numbers, not 4");
