@@ -11,6 +11,7 @@
 #include <teem/nrrd.h>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstring>
 #include <functional>
@@ -187,10 +188,34 @@ void decode(const std::string& path, Header& h, std::uint64_t count, std::size_t
       std::clearerr(file);
       std::fseek(file, pos, SEEK_SET);
     }
+    // Teem parses ascii text into the declared type, so that 300 became 44
+    // in a uchar file: parse into doubles instead and check each value
+    // against the declared type's range (hex is bytes, and cannot wrap).
+    const bool ascii = nio->encoding == nrrdEncodingAscii;
+    const int declared = n->type;
+    const double lo = ascii ? nrrdTypeMin[declared] : 0, hi = ascii ? nrrdTypeMax[declared] : 0;
+    const bool integral = ascii && nrrdTypeIsIntegral[declared];
+    struct RestoreType {
+      Nrrd* n;
+      int type;
+      ~RestoreType() { n->type = type; }
+    } restore{n, declared};
+    if (ascii) n->type = nrrdTypeDouble;
     for (std::uint64_t done = 0; done < count;) {
       const std::size_t want = std::size_t(std::min<std::uint64_t>(chunkValues, count - done));
-      if (nio->encoding->read(file, buf.data(), want, n, nio)) fail(path, teemNrrdError());
-      for (std::size_t i = 0; i < want; ++i) vals[i] = load(buf.data() + i * tsize);  // native order already
+      if (nio->encoding->read(file, ascii ? static_cast<void*>(vals.data()) : buf.data(), want, n, nio))
+        fail(path, teemNrrdError());
+      for (std::size_t i = 0; i < want; ++i) {
+        if (!ascii) {
+          vals[i] = load(buf.data() + i * tsize);  // native order already
+        } else if (integral && !(vals[i] >= lo && vals[i] <= hi && vals[i] == std::floor(vals[i]))) {
+          fail(path, "ascii value " + std::to_string(vals[i]) + " (value " + std::to_string(done + i) + ") is not a " +
+                         airEnumStr(nrrdType, declared));
+        } else if (!integral && declared == nrrdTypeFloat && std::isfinite(vals[i]) && std::abs(vals[i]) > FLT_MAX) {
+          fail(path, "ascii value " + std::to_string(vals[i]) + " (value " + std::to_string(done + i) +
+                         ") is beyond the float range");
+        }
+      }
       consume(vals.data(), want);
       done += want;
     }

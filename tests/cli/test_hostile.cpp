@@ -312,6 +312,10 @@ TEST(Hostile, AttackFindingsFailInsteadOfDrawingGarbage) {
                               "(1,0,0) (0,1,0) (0,0,1)\nmeasurement frame: (0,0,0) (0,0,0) (0,0,0)\n" + kNrrdTensor +
                               "\n" + bin({1, 0, 0, 2, 0, 3}));
   expectRefused("frame.nrrd", "measurement frame");
+  // An ascii uchar of 300, which Teem's parser wrapped to 44.
+  write(dir() / "wrap.nrrd", "NRRD0005\ntype: uchar\ndimension: 4\nsizes: 6 1 1 1\n"
+                             "kinds: 3D-symmetric-matrix domain domain domain\nencoding: ascii\n\n300 0 0 2 0 1\n");
+  expectRefused("wrap.nrrd", "is not a unsigned char");
 }
 
 TEST(Hostile, AnExtentBeyondIntIsRefused) {
