@@ -244,7 +244,11 @@ void decode(const std::string& path, Header& h, std::uint64_t count, std::size_t
     read = [&](char* dst, std::size_t want) {
       const int got = gzread(gz.get(), dst, unsigned(want));
       int code = 0;
-      if (got < 0) fail(path, std::string("gzip data is corrupt: ") + gzerror(gz.get(), &code));
+      if (got < 0) {
+        std::string why = gzerror(gz.get(), &code);
+        if (why.rfind("<fd:", 0) == 0 && why.find(": ") != std::string::npos) why.erase(0, why.find(": ") + 2);
+        fail(path, "gzip data is corrupt: " + why);
+      }
       return std::size_t(got);
     };
   } else if (nio->encoding == nrrdEncodingBzip2) {
@@ -282,6 +286,16 @@ void decode(const std::string& path, Header& h, std::uint64_t count, std::size_t
     }
     consume(vals.data(), m);
     done += want;
+  }
+  // One read past the data reaches the end of a compressed stream, where
+  // zlib and libbz2 check its CRC: a stream cut at its trailer, or with
+  // corrupt data that still inflates, is refused rather than trusted.
+  if (nio->encoding == nrrdEncodingGzip || nio->encoding == nrrdEncodingBzip2) {
+    char extra;
+    read(&extra, 1);
+    int code = Z_OK;
+    if (nio->encoding == nrrdEncodingGzip && (gzerror(gz.get(), &code), code != Z_OK && code != Z_STREAM_END))
+      fail(path, "gzip data is corrupt: the stream ends without its trailer (no CRC to check the data by)");
   }
 }
 

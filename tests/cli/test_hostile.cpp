@@ -316,6 +316,17 @@ TEST(Hostile, AttackFindingsFailInsteadOfDrawingGarbage) {
   write(dir() / "wrap.nrrd", "NRRD0005\ntype: uchar\ndimension: 4\nsizes: 6 1 1 1\n"
                              "kinds: 3D-symmetric-matrix domain domain domain\nencoding: ascii\n\n300 0 0 2 0 1\n");
   expectRefused("wrap.nrrd", "is not a unsigned char");
+  // A gzip stream cut at its trailer, and one whose CRC is wrong: the data
+  // inflated, and nothing checked it.
+  const std::string head = "NRRD0005\ntype: float\ndimension: 4\nsizes: 6 1 1 1\n"
+                           "kinds: 3D-symmetric-matrix domain domain domain\nencoding: gzip\nendian: little\n\n";
+  const std::string gz = gzipped(bin({1, 0, 0, 2, 0, 3}));
+  write(dir() / "trailer.nrrd", head + gz.substr(0, gz.size() - 8));
+  expectRefused("trailer.nrrd", "without its trailer");
+  std::string badCrc = gz;
+  badCrc[badCrc.size() - 8] = char(badCrc[badCrc.size() - 8] ^ 0xff);
+  write(dir() / "crc.nrrd", head + badCrc);
+  expectRefused("crc.nrrd", "incorrect data check");
 }
 
 TEST(Hostile, AnExtentBeyondIntIsRefused) {
