@@ -181,8 +181,8 @@ TensorField readField(WireIn& r) {
 
 // ---- The status pipe: one letter, then the text -------------------------
 // 'P' + 8 bytes: a promise of decoded bytes; 'O': the field follows on the
-// data pipe;
-// 'E' + text: the reader's InputError; 'M' + text: out of memory.
+// data pipe; 'E' + text: the reader's InputError; 'M' + text: out of memory;
+// 'X' + text: any other exception, which the parent words with the file.
 
 std::string sizeText(std::uint64_t bytes) {
   return bytes >= (std::uint64_t(1) << 20) ? std::to_string(bytes >> 20) + " MiB"
@@ -227,8 +227,12 @@ void sendAll(int fd, const void* p, std::size_t n) {
     ::dup2(null, 2);
     ::close(null);
   }
-  // The parent's handlers would remove the parent's temporary files.
-  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGXFSZ}) ::signal(sig, SIG_DFL);
+  // The parent's handlers would remove the parent's temporary files; an
+  // ignored signal (nohup) stays ignored.
+  for (int sig : {SIGINT, SIGTERM, SIGHUP, SIGQUIT, SIGPIPE, SIGXFSZ}) {
+    struct sigaction old {};
+    if (::sigaction(sig, nullptr, &old) == 0 && old.sa_handler != SIG_IGN) ::signal(sig, SIG_DFL);
+  }
   limitAddressSpace(mappedBytes() + limits.memoryBytes + kSlackBytes);
   const rlim_t cpu = rlim_t(std::ceil(limits.cpuSeconds));
   rlimit cl{cpu, cpu + 1};  // SIGXCPU at the soft limit, SIGKILL a second later
