@@ -534,8 +534,7 @@ ScalarVolume readMifScalar(const std::string& path, const int dims[3]) {
     if (h.dim.size() != 3) fail(path, "a mask must have 3 axes, this has " + std::to_string(h.dim.size()));
     spatialVoxels(path, h);
     const int got[3] = {int(h.dim[0]), int(h.dim[1]), int(h.dim[2])};
-    if (!std::equal(got, got + 3, dims))
-      fail(path, "mask grid " + gridText(got) + " differs from the tensor grid " + gridText(dims));
+    if (const std::string m = maskGridMismatch(got, dims); !m.empty()) fail(path, m);
   });
   ScalarVolume s;
   for (std::size_t k = 0; k < 3; ++k) s.dims[k] = int(im.h.dim[k]);

@@ -6,6 +6,7 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -55,50 +56,73 @@ class SilenceStderr {
   int saved_;
 };
 
+// What the raw header says, in the file's byte order turned into ours.
+struct RawHeader {
+  int version = 0;
+  double voxOffset = 0;
+};
+
 // libnifti2 3.0.1's nifti_image_read copies dim[1..dim[0]] into arrays of
 // eight without checking dim[0]: NIfTI-2 headers with dim[0] = 2052, or 4
 // in the other byte order, smashed its stack or segfaulted (found by
-// fuzz_nifti). The raw header is read first, and dim[0] checked in the
-// file's byte order before nifti_image_read sees it.
-void checkRawDims(const std::string& path) {
-  int version = 0;
-  void* raw = nifti_read_header(path.c_str(), &version, 0);
+// fuzz_nifti). It also turns a dimension below 1 into 1, which shifted the
+// data. The raw header is read first and checked before it sees it.
+RawHeader checkRawHeader(const std::string& path) {
+  RawHeader r;
+  void* raw = nifti_read_header(path.c_str(), &r.version, 0);
   if (!raw) fail(path, "not a readable NIfTI-1/-2 header");
   // nifti_read_header leaves the bytes in the file's order; a header whose
-  // size field reads swapped is big-endian on this machine (or the reverse).
+  // size field reads swapped is in the other byte order from ours.
   std::int64_t dim[8] = {};
   bool sized = true;
-  if (version == 2) {
+  if (r.version == 2) {
     const auto* h = static_cast<nifti_2_header*>(raw);
-    sized = h->sizeof_hdr == 540 || __builtin_bswap32(std::uint32_t(h->sizeof_hdr)) == 540;
-    for (int k = 0; k < 8; ++k)
-      dim[k] = h->sizeof_hdr == 540 ? h->dim[k] : std::int64_t(__builtin_bswap64(std::uint64_t(h->dim[k])));
+    const bool native = h->sizeof_hdr == 540;
+    sized = native || __builtin_bswap32(std::uint32_t(h->sizeof_hdr)) == 540;
+    for (int k = 0; k < 8; ++k) dim[k] = native ? h->dim[k] : std::int64_t(__builtin_bswap64(std::uint64_t(h->dim[k])));
+    r.voxOffset = double(native ? h->vox_offset : std::int64_t(__builtin_bswap64(std::uint64_t(h->vox_offset))));
   } else {
     const auto* h = static_cast<nifti_1_header*>(raw);
-    sized = h->sizeof_hdr == 348 || __builtin_bswap32(std::uint32_t(h->sizeof_hdr)) == 348;
-    for (int k = 0; k < 8; ++k)
-      dim[k] = h->sizeof_hdr == 348 ? h->dim[k] : std::int16_t(__builtin_bswap16(std::uint16_t(h->dim[k])));
+    const bool native = h->sizeof_hdr == 348;
+    sized = native || __builtin_bswap32(std::uint32_t(h->sizeof_hdr)) == 348;
+    for (int k = 0; k < 8; ++k) dim[k] = native ? h->dim[k] : std::int16_t(__builtin_bswap16(std::uint16_t(h->dim[k])));
+    r.voxOffset = native ? h->vox_offset
+                         : std::bit_cast<float>(__builtin_bswap32(std::bit_cast<std::uint32_t>(h->vox_offset)));
   }
   std::free(raw);
   if (!sized) fail(path, "not a readable NIfTI-1/-2 header");
   if (dim[0] < 1 || dim[0] > 7) fail(path, "dim[0] is " + std::to_string(dim[0]) + ", not 1..7");
-  // libnifti2 quietly turns a dimension below 1 into 1, which shifted the data.
   for (int k = 1; k <= dim[0]; ++k)
     if (dim[k] < 1) fail(path, "dimension " + std::to_string(k) + " is " + std::to_string(dim[k]));
+  return r;
+}
+
+// In a single .nii file the data starts at vox_offset, at least 352 (NIfTI-1)
+// or 544 (NIfTI-2) bytes in: the header and the extension flag come first.
+// libnifti2 quietly reads a smaller, zero, negative or NaN offset from byte
+// 348, which shifted every volume by one value.
+void checkDataOffset(const std::string& path, const nifti_image& nim, const RawHeader& raw) {
+  if (!nim.iname || !nim.fname || std::strcmp(nim.iname, nim.fname) != 0) return;  // .hdr/.img pair
+  const double least = raw.version == 2 ? 544 : 352;
+  if (!(raw.voxOffset >= least) || !(raw.voxOffset < 9.2e18))
+    fail(path, "vox_offset " + std::to_string(raw.voxOffset) +
+                   " is not a data offset: a .nii file's data starts at byte " + std::to_string(int(least)) +
+                   " or later");
+  if (double(nim.iname_offset) != std::floor(raw.voxOffset))
+    fail(path, "vox_offset disagrees with the offset libnifti2 uses");
 }
 
 Image readHeader(const std::string& path) {
   nifti_set_debug_level(0);
   Image nim(nullptr, nifti_image_free);
+  RawHeader raw;
   {
     const SilenceStderr quiet;
-    checkRawDims(path);
+    raw = checkRawHeader(path);
     nim.reset(nifti_image_read(path.c_str(), 0));
   }
   if (!nim) fail(path, "not a readable NIfTI-1/-2 header");
-  if (nim->dim[0] < 1 || nim->dim[0] > 7) fail(path, "dim[0] is " + std::to_string(nim->dim[0]) + ", not 1..7");
-  for (int k = 1; k <= nim->dim[0]; ++k)
-    if (nim->dim[k] < 1) fail(path, "dimension " + std::to_string(k) + " is " + std::to_string(nim->dim[k]));
+  checkDataOffset(path, *nim, raw);
   if (!nim->iname) fail(path, "no image file named");
   return nim;
 }
@@ -127,31 +151,12 @@ int niftiVersion(const std::string& path) {
   return version;
 }
 
-// In a single .nii file the data starts at vox_offset, at least 352 (NIfTI-1)
-// or 544 (NIfTI-2) bytes in: the header and the extension flag come first.
-// libnifti2 quietly reads a smaller, zero, negative or NaN offset from byte
-// 348, which shifted every volume by one value.
-void checkDataOffset(const std::string& path, const nifti_image& nim) {
-  if (!nim.iname || !nim.fname || std::strcmp(nim.iname, nim.fname) != 0) return;  // .hdr/.img pair
-  int version = 0;
-  void* raw = nifti_read_header(path.c_str(), &version, 0);
-  if (!raw) fail(path, "not a readable NIfTI-1/-2 header");
-  const double offset = version == 2 ? double(static_cast<nifti_2_header*>(raw)->vox_offset)
-                                     : double(static_cast<nifti_1_header*>(raw)->vox_offset);
-  std::free(raw);
-  const double least = version == 2 ? 544 : 352;
-  if (!(offset >= least) || !(offset < 9.2e18))
-    fail(path, "vox_offset " + std::to_string(offset) + " is not a data offset: a .nii file's data starts at byte " +
-                   std::to_string(int(least)) + " or later");
-  if (double(nim.iname_offset) != std::floor(offset)) fail(path, "vox_offset disagrees with the offset libnifti2 uses");
-}
 
 // Streams values [0, count) of the image file, in order, to consume(value).
 // The data the header describes must fit in the image file (or, gzipped,
 // within deflate's ratio of it). Called before anything is sized by the header.
 void checkDataSize(const std::string& path, const nifti_image& nim, std::uint64_t count) {
   loader(path, nim.datatype);
-  checkDataOffset(path, nim);
   if (nim.nbyper < 1 || nim.nbyper > 8) fail(path, "bytes per value " + std::to_string(nim.nbyper) + " is not 1..8");
   const std::uint64_t bytes = count * std::uint64_t(nim.nbyper);
   const bool gz = nifti_is_gzfile(nim.iname);
@@ -361,8 +366,7 @@ ScalarVolume readNiftiScalar(const std::string& path, const int dims[3]) {
   VolumeGeometry g;
   const std::uint64_t voxels = spatialVoxels(path, *nim, g);
   if (std::uint64_t(nim->nvox) != voxels) fail(path, "a mask must be a single 3D volume");
-  if (!std::equal(g.dims, g.dims + 3, dims))
-    fail(path, "mask grid " + gridText(g.dims) + " differs from the tensor grid " + gridText(dims));
+  if (const std::string m = maskGridMismatch(g.dims, dims); !m.empty()) fail(path, m);
   ScalarVolume s;
   std::copy(g.dims, g.dims + 3, s.dims);
   TensorField unused;

@@ -472,8 +472,7 @@ ScalarVolume readNrrdScalar(const std::string& path, const int dims[3]) {
   if (n->dim != 3) fail(path, "a mask must have 3 axes, this has " + std::to_string(n->dim));
   ScalarVolume v;
   const std::uint64_t voxels = gridDims(path, n, 0, v.dims);
-  if (!std::equal(v.dims, v.dims + 3, dims))
-    fail(path, "mask grid " + gridText(v.dims) + " differs from the tensor grid " + gridText(dims));
+  if (const std::string m = maskGridMismatch(v.dims, dims); !m.empty()) fail(path, m);
   TensorField unused;
   VolumeGeometry g = geometry(path, n, 0, unused);
   double flip[3];

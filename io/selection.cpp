@@ -43,20 +43,24 @@ std::string gridText(const int d[3]) {
   return std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]);
 }
 
+std::string maskGridMismatch(const int got[3], const int want[3]) {
+  if (std::equal(got, got + 3, want)) return "";
+  return "mask grid " + gridText(got) + " differs from the tensor grid " + gridText(want);
+}
+
 ScalarVolume readScalarVolume(const std::string& path, const int dims[3]) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) throw InputError("readScalarVolume: " + path + ": no such file");
   if (!S_ISREG(st.st_mode)) throw InputError("readScalarVolume: " + path + ": not a regular file");
-  const std::string lower = [&] {
-    std::string l = path;
-    std::transform(l.begin(), l.end(), l.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-    return l;
-  }();
-  auto ends = [&](const char* e) { return lower.size() >= std::strlen(e) && lower.ends_with(e); };
-  if (ends(".nrrd") || ends(".nhdr")) return readNrrdScalar(path, dims);
-  if (ends(".nii") || ends(".nii.gz")) return readNiftiScalar(path, dims);
-  if (ends(".vti")) return readVtiScalar(path, dims);
-  if (ends(".mif") || ends(".mih")) return readMifScalar(path, dims);
+  switch (inputFormatOf(path)) {
+    case InputFormat::Nrrd: return readNrrdScalar(path, dims);
+    case InputFormat::Nifti: return readNiftiScalar(path, dims);
+    case InputFormat::Mif: return readMifScalar(path, dims);
+    case InputFormat::Vtk:
+      if (path.size() > 4 && (path.ends_with(".vti") || path.ends_with(".VTI"))) return readVtiScalar(path, dims);
+      break;
+    case InputFormat::Unknown: break;
+  }
   throw InputError("readScalarVolume: " + path +
                    ": unknown mask format; use .nrrd, .nhdr, .nii, .nii.gz, .mif, .mih or .vti");
 }

@@ -54,6 +54,9 @@ struct ScalarVolume {
 ScalarVolume readScalarVolume(const std::string& path, const int dims[3]);
 // "AxBxC", for messages.
 std::string gridText(const int dims[3]);
+// "" when a mask's grid `got` is the tensors' `want`; else the message that
+// every mask reader gives before decoding anything.
+std::string maskGridMismatch(const int got[3], const int want[3]);
 
 // The per-sample decision, built once per read after the header is known.
 class Selector {

@@ -209,8 +209,7 @@ ReadResult runReader(vtkAlgorithm* reader, const std::string& path, std::uint64_
       if (!info || !info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT())) fail(path, "a mask must be image data");
       info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), e);
       const int got[3] = {e[1] - e[0] + 1, e[3] - e[2] + 1, e[5] - e[4] + 1};
-      if (!std::equal(got, got + 3, dims))
-        fail(path, "mask grid " + gridText(got) + " differs from the tensor grid " + gridText(dims));
+      if (const std::string m = maskGridMismatch(got, dims); !m.empty()) fail(path, m);
     }
   }
   promiseData("readVtk", path, opt, libraryBytes, dims ? 0 : points, libraryBytes);
@@ -329,6 +328,17 @@ void fullTensor(int nc, const double* t, double full[9]) {
 
 namespace {
 
+// Every array of a legacy file, not only the first of each attribute kind,
+// so that --array can name any of them.
+vtkSmartPointer<vtkDataSetReader> legacyReader() {
+  auto r = vtkSmartPointer<vtkDataSetReader>::New();
+  r->ReadAllTensorsOn();
+  r->ReadAllFieldsOn();
+  r->ReadAllScalarsOn();
+  r->ReadAllVectorsOn();
+  return r;
+}
+
 // VTK 9.1's legacy reader dereferences null on some corrupt bodies that pass
 // every header check (tests/fuzz/vtk-body-crashes), and its XML parser
 // recurses once per nesting level: readTensorField runs all of this in a
@@ -343,12 +353,8 @@ ReadResult readDataSet(const std::string& path, const ReadOptions& opt, const in
   std::uint64_t legacyPoints = 0;
   if (ext == "vtk") {
     legacyPoints = std::max<std::uint64_t>(checkLegacyCounts(path, fileSize), 1);
-    auto r = vtkSmartPointer<vtkDataSetReader>::New();
+    auto r = legacyReader();
     r->SetFileName(path.c_str());
-    r->ReadAllTensorsOn();
-    r->ReadAllFieldsOn();
-    r->ReadAllScalarsOn();
-    r->ReadAllVectorsOn();
     reader = r;
   } else if (ext == "vti") {
     auto r = vtkSmartPointer<vtkXMLImageDataReader>::New();
@@ -376,11 +382,7 @@ ReadResult readDataSet(const std::string& path, const ReadOptions& opt, const in
     NonFiniteText nonFinite = NonFiniteText::replace(path);
     if (!nonFinite.empty()) {
       read = ReadResult{};  // the failed pass's arrays go before the second pass
-      auto r = vtkSmartPointer<vtkDataSetReader>::New();
-      r->ReadAllTensorsOn();
-      r->ReadAllFieldsOn();
-      r->ReadAllScalarsOn();
-      r->ReadAllVectorsOn();
+      auto r = legacyReader();
       auto text = vtkSmartPointer<vtkCharArray>::New();
       text->SetArray(const_cast<char*>(nonFinite.text().data()), vtkIdType(nonFinite.text().size()), 1);
       r->SetInputArray(text);
