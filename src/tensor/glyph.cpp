@@ -12,7 +12,6 @@
 #include "tensor/anisotropy.h"
 #include "tensor/eigen.h"
 #include "tensor/lanes.h"
-#include "util/huge_pages.h"
 
 namespace tg::tensor {
 namespace {
@@ -164,8 +163,7 @@ GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> te
   if (positions.size() != 3 * n || tensors.size() != 6 * n || (!ids.empty() && ids.size() != n))
     throw std::invalid_argument("buildGlyphs: positions, tensors and ids disagree in count");
   GlyphSet set;
-  util::reserveHuge(set.glyphs, n);
-  set.glyphs.resize(n);
+  set.glyphs.extend(n);  // every record is written by buildRange
   const bool filtering = opt.clMin > 0 || opt.cpMin > 0;
   std::vector<char> dropped(filtering ? n : 0);
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());

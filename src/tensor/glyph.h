@@ -6,6 +6,8 @@
 #include <span>
 #include <vector>
 
+#include "util/mapped_array.h"
+
 #include <glm/vec3.hpp>
 
 namespace tg::tensor {
@@ -40,7 +42,7 @@ struct GlyphTile {
 };
 
 struct GlyphSet {
-  std::vector<GlyphRecord> glyphs;
+  util::MappedArray<GlyphRecord> glyphs;  // untouched until built: no zeroing pass
   std::vector<GlyphTile> tiles;  // ceil(glyphs / kTileGlyphs)
   glm::dvec3 boundsMinWC{0.0}, boundsMaxWC{0.0};  // of glyph centres
   double maxAbsEigenvalue = 0;
