@@ -84,8 +84,12 @@ ResolvedScale resolveScale(const ScaleParams& p, const MagnitudeSample& sample) 
   map.magnitude = p.magnitude;
   // λ0: the median of the non-zero magnitudes, so that the typical glyph sits
   // at the knee of the log mapping.
-  const auto nonzero = std::upper_bound(sample.sorted.begin(), sample.sorted.end(), 0.0);
-  const double median = nonzero == sample.sorted.end() ? 1.0 : *(nonzero + (sample.sorted.end() - nonzero) / 2);
+  // Percentiles are of the glyphs that have a size: zero tensors draw
+  // nothing, and a volume that is mostly background (zeros outside the
+  // brain) must not be sized by them.
+  const std::vector<double> sized(std::upper_bound(sample.sorted.begin(), sample.sorted.end(), 0.0),
+                                  sample.sorted.end());
+  const double median = sized.empty() ? 1.0 : sized[sized.size() / 2];
   map.lambda0 = p.lambda0.value_or(median);
   const double spacing = sample.spacing;
   const bool haveSpacing = spacing > 0.0 && std::isfinite(spacing);
@@ -98,11 +102,11 @@ ResolvedScale resolveScale(const ScaleParams& p, const MagnitudeSample& sample) 
     case ScaleMode::Max:
     case ScaleMode::Spacing: {
       const bool max = p.mode == ScaleMode::Max;
-      const double m = max ? sample.maxAbs : quantile(sample.sorted, p.percentile);
+      const double m = max ? sample.maxAbs : quantile(sized, p.percentile);
       const double f = mappedMagnitude(map, m);
       r.scale = haveSpacing && f > 0.0 ? p.factor * 0.5 * spacing / f : p.factor;
       how = max ? format("max: the largest glyph (|eigenvalue| %g) is %g sample spacings across", m, p.factor)
-                : format("spacing: the glyph at the %g%% of sizes (|eigenvalue| %g) is %g sample spacings across",
+                : format("spacing: the glyph at the %g%% of non-zero sizes (|eigenvalue| %g) is %g sample spacings across",
                          100.0 * p.percentile, m, p.factor);
       if (!haveSpacing || !(f > 0.0)) how += " (undefined here: scale 1)";
       break;
@@ -111,9 +115,10 @@ ResolvedScale resolveScale(const ScaleParams& p, const MagnitudeSample& sample) 
   const double clamp = p.clampSpacings.value_or(p.mode == ScaleMode::Absolute ? 0.0 : ScaleParams::kDefaultClamp);
   map.maxRadiusWC = clamp > 0.0 && haveSpacing ? 0.5 * clamp * spacing : 0.0;
   std::size_t clamped = 0;
-  for (double m : sample.sorted) clamped += glyphFactor(r.scale, map, m) != glyphFactor(r.scale, {map.magnitude, map.lambda0, 0.0}, m);
-  r.clampedFraction = sample.sorted.empty() ? 0.0 : double(clamped) / double(sample.sorted.size());
-  r.typicalRadiusWC = glyphRadiusWC(r.scale, map, quantile(sample.sorted, p.percentile));
+  const SizeMapping unclamped{map.magnitude, map.lambda0, 0.0};
+  for (double m : sized) clamped += glyphFactor(r.scale, map, m) != glyphFactor(r.scale, unclamped, m);
+  r.clampedFraction = sized.empty() ? 0.0 : double(clamped) / double(sized.size());
+  r.typicalRadiusWC = glyphRadiusWC(r.scale, map, quantile(sized, p.percentile));
   r.why = format("scale %.6g (%s), sample spacing %g; magnitude %s", r.scale, how.c_str(), spacing,
                  magnitudeName(map.magnitude));
   if (map.magnitude != Magnitude::Linear)

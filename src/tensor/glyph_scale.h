@@ -53,7 +53,8 @@ glm::dvec3 glyphAxes(const GlyphRecord& g, double scale, const SizeMapping& s);
 struct ScaleParams {
   // absolute: `factor` world units per (mapped) eigenvalue unit;
   // max: the largest glyph is `factor` sample spacings across;
-  // spacing: the glyph at the `percentile` of sizes is `factor` spacings across.
+  // spacing: the glyph at the `percentile` of sizes (of the non-zero tensors)
+  // is `factor` spacings across.
   ScaleMode mode = ScaleMode::Spacing;
   double factor = 1.0;
   // 0.9, not the maximum nor 0.99: in a singular field (a point load) the top
@@ -61,7 +62,7 @@ struct ScaleParams {
   // glyph a dot (README, "Scale and framing"; measured there).
   double percentile = 0.9;
   Magnitude magnitude = Magnitude::Linear;
-  std::optional<double> lambda0;  // default: the median glyph magnitude m
+  std::optional<double> lambda0;  // default: the median non-zero glyph magnitude m
   // Largest glyph diameter, in sample spacings (vtkTensorGlyph's ClampScaling,
   // MaxScaleFactor in spacings); 0: off. Default: kDefaultClamp in the
   // spacing and max modes, off in absolute mode (a size in world units is

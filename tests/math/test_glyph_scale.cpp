@@ -178,3 +178,17 @@ TEST(GlyphScale, FramingIgnoresAFewOutlyingPointsOnly) {
   EXPECT_NE(box.why.find("percentile"), std::string::npos) << box.why;
   EXPECT_EQ(tensor::framingBox(stray, false, 0.0).hi.x, 1002.0);
 }
+
+TEST(GlyphScale, ZeroTensorsDoNotSetTheScale) {
+  // A volume that is mostly background: 90% zero tensors, as Slicer's
+  // estimated helix is outside the phantom.
+  std::vector<float> pos, ten;
+  for (int i = 0; i < 1000; ++i) {
+    pos.insert(pos.end(), {float(i % 10), float((i / 10) % 10), float(i / 100)});
+    const float v = i % 10 == 0 ? 2e-3f : 0.0f;
+    ten.insert(ten.end(), {v, 0, 0, v / 2, 0, v / 4});
+  }
+  const auto set = tensor::buildGlyphs(pos, ten, {}, 1);
+  const auto r = tensor::resolveScale({}, tensor::sampleMagnitudes(set, 1.0));
+  EXPECT_NEAR(r.scale * 2e-3, 0.5, 1e-6);  // the drawn glyphs are one spacing across (2e-3 in float)
+}
