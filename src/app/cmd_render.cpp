@@ -20,6 +20,7 @@
 #include "io/image_writer.h"
 #include "io/readers.h"
 #include "render/renderer.h"
+#include "tensor/glyph_scale.h"
 
 namespace tg::app {
 namespace {
@@ -115,9 +116,12 @@ void validate(const RenderOptions& o) {
   refuseOutputsOverInputs({{"-o", o.output}}, {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath}});
 }
 
-render::CameraDesc chooseCamera(const RenderOptions& o, const Scene& s, const glm::dvec3& lo, const glm::dvec3& hi) {
+// Frames `frame` (the sample positions, tensor::framingBox), not the glyphs'
+// whole box: one singular glyph must not shrink the view.
+render::CameraDesc chooseCamera(const RenderOptions& o, const Scene& s, const tensor::FramingBox& frame) {
   const render::Projection proj = o.ortho ? render::Projection::Orthographic : render::Projection::Perspective;
   const double aspect = double(o.width) / o.height;
+  const glm::dvec3 lo = frame.lo, hi = frame.hi;
   render::CameraDesc d = sceneCamera(s, lo, hi, proj, o.fov.value_or(30.0), aspect);
   if (o.eye) {
     d.eyeWC = *o.eye;
@@ -151,7 +155,10 @@ int cmdRender(int argc, const char** argv) {
   // at most two copies of the glyphs (here the records and the GL buffer).
   scene.field.releaseSamples();
   render::FrameParams params;
-  params.scale = o.field.scaleFor(glyphs, scene.field.sampleSpacing);
+  const tensor::ResolvedScale sized =
+      tensor::resolveScale(o.field.scaleParams(), tensor::sampleMagnitudes(glyphs, scene.field.sampleSpacing));
+  params.scale = sized.scale;
+  params.sizing = sized.mapping;
   params.faMin = o.faMin.value_or(scene.preferredFaMin.value_or(0.0));
   params.color = *colorModeNamed(o.color);
   params.glyph = *glyphKindNamed(o.glyph);
@@ -161,14 +168,15 @@ int cmdRender(int argc, const char** argv) {
   params.tessellation = o.tessellate;
   params.background = o.background;
 
-  const auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale);
+  const auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale, params.sizing);
   // The GPU works in single precision: a box beyond FLT_MAX draws nothing.
   const double extent = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y),
                                   std::abs(hi.z)});
   if (!(extent <= double(FLT_MAX)))
     throw io::InputError("render: " + scene.field.path + ": the glyphs extend beyond the floating-point range (scale " +
                          std::to_string(params.scale) + ")");
-  const render::Camera cam = render::makeCamera(chooseCamera(o, scene, lo, hi), o.width, o.height, lo, hi);
+  const tensor::FramingBox frame = tensor::framingBox(glyphs, !scene.field.grid, sized.typicalRadiusWC);
+  const render::Camera cam = render::makeCamera(chooseCamera(o, scene, frame), o.width, o.height, lo, hi);
 
   auto ctx = createContext(o.backend, o.width, o.height);
   const gl::ShaderLibrary lib;
@@ -211,6 +219,10 @@ int cmdRender(int argc, const char** argv) {
     std::fprintf(stderr, "\n  %llu glyphs drawn (after FA and frustum culling), scale %.6g, fa-min %.3g, peak RSS %.1f MiB\n",
                  static_cast<unsigned long long>(drawn), params.scale, params.faMin,
                  double(peakRssBytes()) / (1024.0 * 1024.0));
+    const std::string framing = o.eye ? "--eye given; it looks by default at the centre of " + frame.why
+                                : scene.preferredCamera ? std::string("the built-in scene's own view")
+                                                        : frame.why;
+    std::fprintf(stderr, "  size: %s\n  framing: %s\n", sized.why.c_str(), framing.c_str());
   }
   return 0;
 }

@@ -106,17 +106,19 @@ int cmdView(int argc, const char** argv) {
       tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids, 0, o.field.glyph);
   scene.field.releaseSamples();
 
-  ViewState v{{}, OrbitCamera(render::CameraDesc{}), 1.0, 1.0};
-  v.baseScale = o.field.scaleFor(glyphs, scene.field.sampleSpacing);
+  ViewState v{{}, OrbitCamera(render::CameraDesc{}), 1.0, 1.0, o.field.scaleParams(),
+              tensor::sampleMagnitudes(glyphs, scene.field.sampleSpacing)};
+  resize(v);
   render::FrameParams& p = v.params;
-  p.scale = v.baseScale;
   p.faMin = o.faMin.value_or(scene.preferredFaMin.value_or(0.0));
   p.color = *colorModeNamed(o.color);
   p.glyph = *glyphKindNamed(o.glyph);
   p.gamma = o.gamma;
   {
-    const auto [lo, hi] = tensor::glyphBoxWC(glyphs, p.scale);
-    v.camera = OrbitCamera(sceneCamera(scene, lo, hi, render::Projection::Perspective, 30.0,
+    // As render frames it: the sample positions (tensor::framingBox).
+    const double typical = tensor::resolveScale(v.sizing, v.magnitudes).typicalRadiusWC;
+    const tensor::FramingBox frame = tensor::framingBox(glyphs, !scene.field.grid, typical);
+    v.camera = OrbitCamera(sceneCamera(scene, frame.lo, frame.hi, render::Projection::Perspective, 30.0,
                                        double(o.width) / o.height));
   }
 
@@ -183,7 +185,7 @@ int cmdView(int argc, const char** argv) {
         status.lastChangeUs = us;
         applied = p;
       }
-      const auto [lo, hi] = tensor::glyphBoxWC(glyphs, p.scale);
+      const auto [lo, hi] = tensor::glyphBoxWC(glyphs, p.scale, p.sizing);
       const render::Camera cam = render::makeCamera(v.camera.desc(), w, h, lo, hi);
       renderer.render(cam, p, *target);
       // Never waits for the GPU: the status trails the frame by one or two.

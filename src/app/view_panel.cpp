@@ -10,6 +10,31 @@
 namespace tg::app {
 namespace {
 
+// Magnitude mapping and clamp: resolved again from the kept magnitudes, so
+// a change is uniforms only (resize()).
+void sizeControls(ViewState& v) {
+  int mapping = int(v.sizing.magnitude);
+  bool changed = false;
+  if (ImGui::Combo("magnitude", &mapping, "linear\0log\0shape only\0")) {
+    v.sizing.magnitude = tensor::Magnitude(mapping);
+    changed = true;
+  }
+  bool clamped = v.params.sizing.maxRadiusWC > 0.0;
+  if (ImGui::Checkbox("clamp", &clamped)) {
+    v.sizing.clampSpacings = clamped ? tensor::ScaleParams::kDefaultClamp : 0.0;
+    changed = true;
+  }
+  if (clamped) {
+    ImGui::SameLine();
+    auto n = float(v.sizing.clampSpacings.value_or(tensor::ScaleParams::kDefaultClamp));
+    if (ImGui::SliderFloat("spacings", &n, 0.25f, 20.0f, "%.2f", ImGuiSliderFlags_Logarithmic)) {
+      v.sizing.clampSpacings = n;
+      changed = true;
+    }
+  }
+  if (changed) resize(v);
+}
+
 void controls(ViewState& v, const tensor::GlyphSet& meta) {
   render::FrameParams& p = v.params;
   int kind = int(p.glyph);
@@ -23,6 +48,7 @@ void controls(ViewState& v, const tensor::GlyphSet& meta) {
     v.scaleFactor = factor;
     p.scale = v.baseScale * factor;
   }
+  sizeControls(v);
   int color = int(p.color);
   if (ImGui::Combo("colour", &color, "DEC (principal direction)\0FA\0mean diffusivity\0cl\0cp\0sign\0"))
     p.color = render::ColorMode(color);

@@ -13,11 +13,11 @@
 namespace tg::app {
 namespace {
 
-// Argument counts; -1 for slab, which takes one or three.
+// Argument counts; -1 for slab, which takes one or three; -2 for magnitude, one or two.
 const std::map<std::string, int, std::less<>> kArity = {
     {"orbit", 2},  {"pan", 2},    {"zoom", 1},       {"reset", 0},   {"glyph", 1},  {"gamma", 1},
     {"fa-min", 1}, {"scale", 1},  {"color", 1},      {"slab", -1},   {"light", 2},  {"iterations", 1},
-    {"epsilon", 1}, {"stats", 1}, {"frames", 1},     {"screenshot", 1}};
+    {"epsilon", 1}, {"stats", 1}, {"frames", 1},     {"screenshot", 1}, {"magnitude", -2}, {"clamp", 1}};
 
 double number(const ScriptStep& s, std::size_t k) { return parseDouble(s.verb, s.args[k]); }
 
@@ -28,7 +28,10 @@ void check(const ScriptStep& s) {
   const auto it = kArity.find(s.verb);
   if (it == kArity.end()) throw UsageError("unknown command \"" + s.verb + "\"");
   const std::size_t n = s.args.size();
-  if (it->second >= 0 ? n != std::size_t(it->second) : (n != 1 && n != 3))
+  const bool countOk = it->second >= 0 ? n == std::size_t(it->second)
+                       : it->second == -1 ? (n == 1 || n == 3)
+                                          : (n == 1 || n == 2);
+  if (!countOk)
     throw UsageError(s.verb + ": wrong number of arguments");
   const std::string& v = s.verb;
   auto positive = [&](std::size_t k) {
@@ -58,6 +61,13 @@ void check(const ScriptStep& s) {
     throw UsageError("epsilon: must be within 1e-9..0.5");
   if (v == "stats" && s.args[0] != "on" && s.args[0] != "off") throw UsageError("stats: on or off");
   if (v == "frames") parseIntIn(v, s.args[0], 1, 100000);
+  if (v == "magnitude") {
+    if (!tensor::magnitudeNamed(s.args[0]))
+      throw UsageError("magnitude: unknown mapping \"" + s.args[0] + "\"; choose " + tensor::kMagnitudeNames);
+    if (n == 2 && s.args[0] == "linear") throw UsageError("magnitude: LAMBDA0 applies to log or shape only");
+    if (n == 2) positive(1);
+  }
+  if (v == "clamp") parseDoubleIn(v, s.args[0], 0.0, 1e6);
 }
 
 }  // namespace
@@ -93,6 +103,13 @@ std::vector<ScriptStep> parseScript(const std::string& path) {
   return steps;
 }
 
+void resize(ViewState& v) {
+  const tensor::ResolvedScale r = tensor::resolveScale(v.sizing, v.magnitudes);
+  v.baseScale = r.scale;
+  v.params.scale = r.scale * v.scaleFactor;
+  v.params.sizing = r.mapping;
+}
+
 void applyStep(const ScriptStep& s, ViewState& v) {
   const std::string& w = s.verb;
   render::FrameParams& p = v.params;
@@ -110,6 +127,14 @@ void applyStep(const ScriptStep& s, ViewState& v) {
   else if (w == "scale") {
     v.scaleFactor = number(s, 0);
     p.scale = v.baseScale * v.scaleFactor;
+  } else if (w == "magnitude" || w == "clamp") {
+    if (w == "magnitude") {
+      v.sizing.magnitude = *tensor::magnitudeNamed(s.args[0]);
+      v.sizing.lambda0 = s.args.size() == 2 ? std::optional<double>(number(s, 1)) : std::nullopt;
+    } else {
+      v.sizing.clampSpacings = number(s, 0);
+    }
+    resize(v);
   } else if (w == "slab") {
     p.slab = s.args.size() == 1 ? render::Slab{} : render::Slab{axisNamed(s.args[0]), number(s, 1), number(s, 2)};
   } else if (w == "light") {

@@ -11,6 +11,8 @@
 //   gamma G                superquadric sharpness, >= 0
 //   fa-min F               hide glyphs with FA below F
 //   scale F                glyph size, F times the initial scale
+//   magnitude linear|log|shape [LAMBDA0]   size mapping (tensor/glyph_scale.h); LAMBDA0 default: the median
+//   clamp N                no glyph wider than N sample spacings; 0: off
 //   color dec|fa|md|cl|cp|sign
 //   slab x|y|z LO HI       only glyphs with centres in [LO, HI] along the axis (WC)
 //   slab off
@@ -33,7 +35,15 @@ struct ViewState {
   OrbitCamera camera;
   double baseScale = 1.0;  // params.scale = baseScale * scaleFactor
   double scaleFactor = 1.0;
+  // The size choice and the field's magnitudes, kept so that a change of
+  // mapping or clamp is resolved again without the records (resize()).
+  tensor::ScaleParams sizing{};
+  tensor::MagnitudeSample magnitudes{};
 };
+
+// Resolves v.sizing over v.magnitudes into baseScale, params.scale and
+// params.sizing: uniforms only.
+void resize(ViewState& v);
 
 struct ScriptStep {
   int line = 0;

@@ -81,6 +81,11 @@ void GlyphRenderer::setParams(const FrameParams& p) {
   auto changed = [&](auto member) { return !old || !(old->*member == p.*member); };
   for (const gl::Program* prog : glyphPrograms()) {
     if (changed(&FrameParams::scale)) prog->set("uScale", float(p.scale));
+    if (changed(&FrameParams::sizing)) {
+      prog->set("uMagnitude", int(p.sizing.magnitude));
+      prog->set("uLambda0", float(p.sizing.lambda0));
+      prog->set("uMaxRadiusWC", float(p.sizing.maxRadiusWC));
+    }
     if (changed(&FrameParams::faMin)) prog->set("uFaMin", float(p.faMin));
     if (changed(&FrameParams::slab)) {
       prog->set("uSlabAxis", p.slab.axis);
@@ -109,7 +114,7 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   gl_.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   const bool tessellated = p.tessellation > 0;
   if (tessellated) culling_.bypass();
-  else culling_.prepare(cam, p.scale, p.faMin, p.slab, p.frustumCulling);
+  else culling_.prepare(cam, p.scale, p.sizing, p.faMin, p.slab, p.frustumCulling);
   if (count_ > 0) {
     gl_.Enable(GL_DEPTH_TEST);
     gl_.DepthFunc(GL_GREATER);  // reversed Z

@@ -18,6 +18,7 @@
 #include "render/quad_sprites.h"
 #include "render/tessellated.h"
 #include "tensor/glyph.h"
+#include "tensor/glyph_scale.h"
 
 namespace tg::render {
 
@@ -50,6 +51,7 @@ struct IterationStats {
 
 struct FrameParams {
   double scale = 1.0;  // world units per eigenvalue unit
+  tensor::SizeMapping sizing;  // magnitude mapping and clamp (tensor/glyph_scale.h); default: none
   double faMin = 0.0;
   Slab slab;
   GlyphKind glyph = GlyphKind::Ellipsoid;

@@ -226,31 +226,6 @@ glm::dvec3 ellipsoidAxes(const GlyphRecord& g, double scale) {
 
 namespace tg::tensor {
 
-double defaultScale(const GlyphSet& set, double spacing) {
-  const std::size_t n = set.glyphs.size();
-  if (n == 0 || !(spacing > 0.0)) return 1.0;
-  // A strided sample of at most 65536 glyphs estimates the percentile.
-  const std::size_t step = std::max<std::size_t>(1, n / 65536);
-  std::vector<double> m;
-  for (std::size_t i = 0; i < n; i += step) {
-    const float* l = set.glyphs[i].eigenvalues;
-    m.push_back(std::max(std::abs(double(l[0])), std::abs(double(l[2]))));
-  }
-  const std::size_t k = std::min(m.size() - 1, std::size_t(0.99 * double(m.size())));
-  std::nth_element(m.begin(), m.begin() + std::ptrdiff_t(k), m.end());
-  return m[k] > 0.0 ? 0.5 * spacing / m[k] : 1.0;
-}
-
-double resolveScale(ScaleMode mode, double factor, const GlyphSet& set, double spacing) {
-  switch (mode) {
-    case ScaleMode::Absolute: return factor;
-    case ScaleMode::Max:
-      return set.maxAbsEigenvalue > 0.0 && spacing > 0.0 ? factor * 0.5 * spacing / set.maxAbsEigenvalue : factor;
-    case ScaleMode::Spacing: return factor * defaultScale(set, spacing);
-  }
-  return factor;
-}
-
 BoxWC glyphBoxWC(const GlyphSet& set, double scale) {
   const double pad = scale * set.maxAbsEigenvalue;
   return {set.boundsMinWC - pad, set.boundsMaxWC + pad};
