@@ -133,7 +133,7 @@ void offset(LegendRect& r, float dx, float dy) {
 const char* colorTitle(ColorMode m) {
   switch (m) {
     case ColorMode::FA: return "FA (fractional anisotropy)";
-    case ColorMode::MD: return "MD (mean eigenvalue)";
+    case ColorMode::MD: return "MD, mean eigenvalue";
     case ColorMode::CL: return "cl (Westin linear)";
     case ColorMode::CP: return "cp (Westin planar)";
     case ColorMode::Sign: return "sign of normal stress";
@@ -147,7 +147,7 @@ void colorBar(Builder& b, LegendLayout& out, const LegendParams& p, const Legend
   const float k = b.k();
   const bool sign = in.color == ColorMode::Sign;
   const bool md = in.color == ColorMode::MD;
-  b.line(md ? withUnits(colorTitle(in.color), p.units.empty() ? "" : "(" + p.units + ")") : colorTitle(in.color));
+  b.line(md && !p.units.empty() ? std::string(colorTitle(in.color)) + " [" + p.units + "]" : colorTitle(in.color));
   b.skip(4 * k);
   LegendSwatch s;
   s.kind = sign ? SwatchKind::Sign : SwatchKind::Viridis;
@@ -159,6 +159,7 @@ void colorBar(Builder& b, LegendLayout& out, const LegendParams& p, const Legend
   out.swatches.push_back(s);
   out.hasColorBar = true;
   out.colorBar = s.rect;
+  out.barValues = sign ? glm::dvec2(-1.0, 1.0) : md ? glm::dvec2(in.mdMin, in.mdMax) : glm::dvec2(0.0, 1.0);
   b.widen(barLen);
   b.skip(s.rect.height() + 5 * k);  // room for the tick marks
   const float y = b.y();
@@ -171,10 +172,14 @@ void colorBar(Builder& b, LegendLayout& out, const LegendParams& p, const Legend
     b.text(number(in.mdMin), 0.5f * barLen, y, 0.5f);
     b.skip(font.lineHeight());
   } else {
-    const double lo = md ? in.mdMin : 0.0, hi = md ? in.mdMax : 1.0;
-    b.text(number(lo), 0, y, 0);
-    b.text(number(0.5 * (lo + hi)), 0.5f * barLen, y, 0.5f);
-    b.text(number(hi), barLen, y, 1);
+    const double lo = out.barValues[0], hi = out.barValues[1];
+    const LegendRect left = b.text(number(lo), 0, y, 0);
+    const LegendRect right = b.text(number(hi), barLen, y, 1);
+    // The middle value only where it clears both ends by a character.
+    const std::string mid = number(0.5 * (lo + hi));
+    const float half = 0.5f * font.textSize(mid).x, gap = font.textSize(" ").x;
+    if (left.x1 + gap <= 0.5f * barLen - half && 0.5f * barLen + half + gap <= right.x0)
+      b.text(mid, 0.5f * barLen, y, 0.5f);
     b.skip(font.lineHeight());
   }
 }
@@ -248,8 +253,9 @@ LegendLayout layoutLegend(const LegendParams& p, const LegendInputs& in, const C
   const float w = std::ceil(b.width()) + 2 * pad, h = std::ceil(b.y()) + 2 * pad;
   const bool left = p.corner == LegendCorner::TopLeft || p.corner == LegendCorner::BottomLeft;
   const bool top = p.corner == LegendCorner::TopLeft || p.corner == LegendCorner::TopRight;
-  const float x0 = left ? margin : float(cam.width) - margin - w;
-  const float y0 = top ? margin : float(cam.height) - margin - h;
+  // A panel larger than the image keeps its top-left corner in view.
+  const float x0 = std::max(0.0f, left ? margin : float(cam.width) - margin - w);
+  const float y0 = std::max(0.0f, top ? margin : float(cam.height) - margin - h);
   out.panel = {x0, y0, x0 + w, y0 + h};
   const float dx = x0 + pad, dy = y0 + pad;
   for (std::size_t i = 1; i < out.swatches.size(); ++i) offset(out.swatches[i].rect, dx, dy);

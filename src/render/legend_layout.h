@@ -71,6 +71,9 @@ struct LegendLayout {
   std::vector<LegendLabel> labels;
   bool hasColorBar = false, hasSphere = false, hasScaleBar = false;
   LegendRect colorBar, sphere, scaleBar;
+  // What the colour bar's left and right edges stand for, as labelled:
+  // FA, cl, cp 0..1; md its range; sign the normalised normal stress -1..1.
+  glm::dvec2 barValues{0.0, 1.0};
   ScaleBarChoice scale;
   std::vector<LegendAxisMark> axes;
 };

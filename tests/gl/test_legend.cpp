@@ -5,10 +5,15 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
 #include <vector>
 
+#include <OpenImageIO/imageio.h>
 #include <glm/gtc/matrix_access.hpp>
 
+#include "io/image_writer.h"
 #include "render/legend_layout.h"
 #include "render/legend_pass.h"
 
@@ -136,6 +141,29 @@ TEST(LegendLayout, RoundLengthsAreOneTwoOrFiveTimesAPowerOfTen) {
   }
 }
 
+// Labels of one row never overlap, whatever the md values print as; the
+// middle value is left out when it would not fit.
+TEST(LegendLayout, TickLabelsDoNotOverlap) {
+  const render::LegendFont font(1);
+  render::CameraDesc d;
+  const auto cam = render::makeCamera(d, 640, 480, glm::dvec3(-1), glm::dvec3(1));
+  render::LegendParams p;
+  p.enabled = true;
+  for (const auto& [lo, hi] : {std::pair{0.0007f, 0.000733f}, std::pair{-12345.6f, 98765.4f}, std::pair{0.0f, 1.0f}}) {
+    const render::LegendInputs in{render::ColorMode::MD, 1.0, lo, hi, 0.0, 0.0};
+    const render::LegendLayout l = render::layoutLegend(p, in, cam, font);
+    for (std::size_t i = 0; i < l.labels.size(); ++i) {
+      EXPECT_GE(l.labels[i].rect.x0, l.panel.x0);
+      EXPECT_LE(l.labels[i].rect.x1, l.panel.x1);
+      for (std::size_t j = i + 1; j < l.labels.size(); ++j) {
+        const render::LegendRect a = l.labels[i].rect, b = l.labels[j].rect;
+        const bool apart = a.x1 <= b.x0 || b.x1 <= a.x0 || a.y1 <= b.y0 || b.y1 <= a.y0;
+        EXPECT_TRUE(apart) << l.labels[i].text << " / " << l.labels[j].text;
+      }
+    }
+  }
+}
+
 // Off: no pass, no bytes, and the frame bit-identical to one that never had a
 // legend. On: the legend changes pixels in its panel and nowhere else.
 TEST_F(Legend, OffBuildsNothingAndLeavesTheFrameBitIdentical) {
@@ -176,9 +204,9 @@ TEST_F(Legend, OffBuildsNothingAndLeavesTheFrameBitIdentical) {
 }
 
 // Each glyph's colour (its albedo: ambient light only) is the bar's colour at
-// the glyph's value of the mapped quantity, for every viridis mode. The
-// values are the shader's inputs: the record's FA, its eigenvalues and the
-// uploaded md range.
+// the glyph's value of the mapped quantity, placed on the bar by the values
+// its ends are labelled with, for every viridis mode. The glyph values are
+// the shader's inputs: the record's FA and eigenvalues.
 TEST_F(Legend, BarColoursEqualTheGlyphColours) {
   const auto set = rowOfGlyphs();
   const auto cam = topCamera(320, 240);
@@ -188,12 +216,26 @@ TEST_F(Legend, BarColoursEqualTheGlyphColours) {
     const Frame f = drawWithLegend(set, cam, p);
     const render::LegendSwatch& bar = barOf(f.layout);
     ASSERT_GT(bar.rect.width(), 100.0f);
+    // The end labels print the end values.
+    const auto label = [&](double v) {
+      char buf[32];
+      std::snprintf(buf, sizeof buf, "%.3g", v);
+      return std::any_of(f.layout.labels.begin(), f.layout.labels.end(),
+                         [&](const render::LegendLabel& l) { return l.text == buf; });
+    };
+    EXPECT_TRUE(label(f.layout.barValues[0]) && label(f.layout.barValues[1]));
+    if (mode == render::ColorMode::MD) {
+      EXPECT_NEAR(f.layout.barValues[0], set.mdMin, 1e-6);  // as uploaded to the glyph shaders (float)
+      EXPECT_NEAR(f.layout.barValues[1], set.mdMax, 1e-6);
+    }
     for (const tensor::GlyphRecord& g : set.glyphs) {
       const double l0 = g.eigenvalues[0], l1 = g.eigenvalues[1], l2 = g.eigenvalues[2], tr = l0 + l1 + l2;
-      const double t = mode == render::ColorMode::FA   ? double(g.fa)
-                       : mode == render::ColorMode::MD ? (tr / 3.0 - float(set.mdMin)) / (float(set.mdMax) - float(set.mdMin))
-                       : mode == render::ColorMode::CL ? (l0 - l1) / tr
-                                                       : 2.0 * (l1 - l2) / tr;
+      const double value = mode == render::ColorMode::FA   ? double(g.fa)
+                           : mode == render::ColorMode::MD ? tr / 3.0
+                           : mode == render::ColorMode::CL ? (l0 - l1) / tr
+                                                           : 2.0 * (l1 - l2) / tr;
+      const glm::dvec2 ends = f.layout.barValues;
+      const double t = (value - ends[0]) / (ends[1] - ends[0]);
       const glm::dvec2 c = project(cam, {g.posWC[0], g.posWC[1], g.posWC[2]});
       ASSERT_FALSE(inside(f.layout.panel, int(c.x), int(c.y)));
       const glm::vec3 glyph = pixel(f.img, int(c.x), int(c.y));
@@ -269,8 +311,8 @@ TEST_F(Legend, LabelTextIsDrawnWhereTheLayoutPutsIt) {
   q.legend.units = "kPa";
   const Frame g = drawWithLegend(set, cam, q);
   ASSERT_EQ(g.layout.labels.size(), f.layout.labels.size());
-  EXPECT_EQ(f.layout.labels[0].text, "MD (mean eigenvalue)");
-  EXPECT_EQ(g.layout.labels[0].text, "MD (mean eigenvalue) (kPa)");
+  EXPECT_EQ(f.layout.labels[0].text, "MD, mean eigenvalue");
+  EXPECT_EQ(g.layout.labels[0].text, "MD, mean eigenvalue [kPa]");
   const render::LegendRect title = g.layout.labels[0].rect;
   std::size_t changedInTitle = 0;
   for (int y = int(title.y0); y < int(title.y1); ++y)
@@ -376,5 +418,59 @@ TEST_F(Legend, DecSphereTurnsWithTheCamera) {
       EXPECT_GT(at[a], at[(a + 1) % 3]) << m.axis;
       EXPECT_GT(at[a], at[(a + 2) % 3]) << m.axis;
     }
+  }
+}
+
+// Small golden images: the fa bar, the sign bar over stress-like glyphs, and
+// the dec sphere, each with its scale bar, under the default lighting.
+// TG_UPDATE_GOLDEN=1 rewrites them (look at them before committing).
+TEST_F(Legend, GoldenImages) {
+  const float pos[12] = {-3, 2.5f, 0, -1, 2.5f, 0, 1, 2.5f, 0, 3, 2.5f, 0};
+  const float mixed[24] = {1, 0.3f, 0, -0.6f, 0, 0.2f, -1, 0, 0.2f, -0.4f, 0, -0.2f,
+                           0.8f, 0, 0, 0.5f, 0.1f, 0.3f, 0.9f, 0, 0.4f, -0.7f, 0, -0.2f};
+  const auto stress = tensor::buildGlyphs(pos, mixed, {});
+  const auto row = rowOfGlyphs();
+  struct Case {
+    const char* name;
+    render::ColorMode mode;
+    const tensor::GlyphSet& set;
+  };
+  for (const Case& c : {Case{"legend-fa", render::ColorMode::FA, row}, Case{"legend-sign", render::ColorMode::Sign, stress},
+                        Case{"legend-dec", render::ColorMode::DEC, row}}) {
+    SCOPED_TRACE(c.name);
+    render::CameraDesc d;
+    d.eyeWC = {2, -6, 9};
+    d.upWC = {0, 0, 1};
+    const auto cam = render::makeCamera(d, 256, 192, glm::dvec3(-6), glm::dvec3(6));
+    render::FrameParams p;
+    p.scale = 0.4;
+    p.color = c.mode;
+    p.legend.enabled = true;
+    p.legend.units = c.mode == render::ColorMode::Sign ? "MPa" : "";
+    p.legend.lengthUnits = "mm";
+    const render::FrameImage img = drawWithLegend(c.set, cam, p).img;
+    const std::string path = std::string(TG_SOURCE_DIR) + "/tests/golden/" + c.name + ".png";
+    if (std::getenv("TG_UPDATE_GOLDEN")) io::writeImage(img, path);
+    auto in = OIIO::ImageInput::open(path);
+    ASSERT_TRUE(in) << path;
+    ASSERT_EQ(in->spec().width, cam.width);
+    ASSERT_EQ(in->spec().height, cam.height);
+    std::vector<unsigned char> want(std::size_t(cam.width) * cam.height * 4);
+    ASSERT_TRUE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, want.data()));
+    double sum = 0;
+    int worst = 0;
+    for (std::size_t i = 0; i < want.size(); ++i) {
+      const int got = int(std::clamp(img.rgba[i], 0.0f, 1.0f) * 255.0f + 0.5f);
+      const int diff = std::abs(got - int(want[i]));
+      sum += diff;
+      worst = std::max(worst, diff);
+    }
+    // As the default scene's golden image (tests/cli/test_cli.cpp): max
+    // 40/255 lets another llvmpipe build shade glyphs a few levels apart,
+    // while a legend text or bar moved by one pixel flips pixels by 150+;
+    // mean 0.6/255 keeps shading drift under a level, while a wrong colour
+    // function or range moves the bar's pixels by tens.
+    EXPECT_LE(worst, 40);
+    EXPECT_LE(sum / double(want.size()), 0.6);
   }
 }
