@@ -13,6 +13,11 @@ std::optional<render::LegendCorner> legendCornerNamed(std::string_view name) {
   return std::nullopt;
 }
 
+const char* legendCornerName(render::LegendCorner c) {
+  using C = render::LegendCorner;
+  return c == C::TopLeft ? "top-left" : c == C::TopRight ? "top-right" : c == C::BottomLeft ? "bottom-left" : "bottom-right";
+}
+
 void checkLegendText(std::string_view flag, std::string_view text) {
   if (text.size() > 40) throw UsageError(std::string(flag) + ": at most 40 characters");
   for (const char c : text)
@@ -24,7 +29,8 @@ void LegendFlags::addTo(OIIO::ArgParse& ap) {
   using Args = OIIO::cspan<const char*>;
   ap.arg("--legend").help("draw a legend: the colour key (a bar, or for dec a sphere of directions) and a scale bar")
       .action([this](auto&, Args) { params.enabled = true; });
-  ap.arg("--legend-corner C").help(std::string("the legend's corner: ") + kLegendCornerNames + " (default bottom-right)")
+  ap.arg("--legend-corner C").help(std::string("the legend's corner: ") + kLegendCornerNames + " (default " +
+                                       legendCornerName(render::LegendParams{}.corner) + ")")
       .action([this](auto&, Args a) {
         const auto c = legendCornerNamed(a[1]);
         if (!c) throw UsageError(std::string("--legend-corner: unknown corner \"") + a[1] + "\"; choose " +

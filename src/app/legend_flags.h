@@ -14,6 +14,7 @@ namespace tg::app {
 inline constexpr const char* kLegendCornerNames = "top-left, top-right, bottom-left or bottom-right";
 
 std::optional<render::LegendCorner> legendCornerNamed(std::string_view name);
+const char* legendCornerName(render::LegendCorner c);
 
 // Throws UsageError "FLAG: ..." for text the legend cannot show: control
 // characters, or longer than 40 bytes (the panel would outgrow the image).
