@@ -13,6 +13,7 @@
 #include "app/commands.h"
 #include "app/field_flags.h"
 #include "app/frame_size.h"
+#include "app/legend_flags.h"
 #include "app/names.h"
 #include "app/output_check.h"
 #include "app/scene.h"
@@ -28,6 +29,7 @@ namespace {
 struct RenderOptions {
   std::string input, output, backend = "osmesa", glyph = "ellipsoid", color = "dec";
   FieldFlags field;
+  LegendFlags legend;
   int width = 1024, height = 768;
   double gamma = 3.0;
   std::optional<double> faMin, fov, ortho;
@@ -82,6 +84,7 @@ RenderOptions parse(int argc, const char** argv) {
   });
   ap.arg("--backend NAME").help("osmesa (default), egl, glfw or auto").action([&](auto&, Args a) { o.backend = a[1]; });
   o.field.addTo(ap, true);
+  o.legend.addTo(ap);
   ap.arg("--repeat N").help("render N more frames and report the median frame time").action([&](auto&, Args a) {
     o.repeat = parseIntIn("--repeat", a[1], 0, 10000);
   });
@@ -105,6 +108,7 @@ void validate(const RenderOptions& o) {
   if (o.maxIterations < 1 || o.maxIterations > 1000) throw UsageError("--iterations must be within 1..1000");
   if (!(o.epsilon >= 1e-9 && o.epsilon <= 0.5)) throw UsageError("--epsilon must be within 1e-9..0.5");
   o.field.validate();
+  o.legend.validate();
   if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
   if ((o.lookAt || o.up) && !o.eye) throw UsageError("--look-at and --up need --eye");
   if (!colorModeNamed(o.color))
@@ -167,6 +171,7 @@ int cmdRender(int argc, const char** argv) {
   params.iterationStats = o.stats;
   params.tessellation = o.tessellate;
   params.background = o.background;
+  params.legend = o.legend.params;
 
   const auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale, params.sizing);
   // The GPU works in single precision: a box beyond FLT_MAX draws nothing.

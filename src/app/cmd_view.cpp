@@ -19,6 +19,7 @@
 #include "app/commands.h"
 #include "app/field_flags.h"
 #include "app/frame_size.h"
+#include "app/legend_flags.h"
 #include "app/names.h"
 #include "app/output_check.h"
 #include "app/scene.h"
@@ -34,6 +35,7 @@ namespace {
 struct ViewOptions {
   std::string input, script, glyph = "ellipsoid", color = "dec", shotPrefix = "tensorglyph-view-";
   FieldFlags field;
+  LegendFlags legend;
   int width = 1280, height = 800;
   double gamma = 3.0;
   std::optional<double> faMin;
@@ -63,6 +65,7 @@ ViewOptions parse(int argc, const char** argv) {
   ap.arg("--screenshot-prefix P").help("key S saves P0000.png, P0001.png, ... (default tensorglyph-view-)")
       .action([&](auto&, Args a) { o.shotPrefix = a[1]; });
   o.field.addTo(ap, true);
+  o.legend.addTo(ap);
   parseArgs(ap, argc, argv);
   return o;
 }
@@ -73,6 +76,7 @@ void validate(const ViewOptions& o) {
   if (!colorModeNamed(o.color)) throw UsageError("--color: unknown mode \"" + o.color + "\"; choose " + kColorModeNames);
   if (!(o.gamma >= 0.0 && o.gamma <= 1e4)) throw UsageError("--gamma must be within 0..10000");
   o.field.validate();
+  o.legend.validate();
 }
 
 // The median of a sample, 0 for none.
@@ -114,6 +118,7 @@ int cmdView(int argc, const char** argv) {
   p.color = *colorModeNamed(o.color);
   p.glyph = *glyphKindNamed(o.glyph);
   p.gamma = o.gamma;
+  p.legend = o.legend.params;
   {
     // As render frames it: the sample positions (tensor::framingBox).
     const double typical = tensor::resolveScale(v.sizing, v.magnitudes).typicalRadiusWC;

@@ -72,6 +72,15 @@ void controls(ViewState& v, const tensor::GlyphSet& meta) {
       p.slab.hi = std::max(range[0], range[1]);
     }
   }
+  if (ImGui::CollapsingHeader("legend")) {
+    ImGui::Checkbox("show legend", &p.legend.enabled);
+    int corner = int(p.legend.corner);
+    if (ImGui::Combo("corner", &corner, "top left\0top right\0bottom left\0bottom right\0"))
+      p.legend.corner = render::LegendCorner(corner);
+    ImGui::Checkbox("colour key", &p.legend.colorKey);
+    ImGui::SameLine();
+    ImGui::Checkbox("scale bar", &p.legend.scaleBar);
+  }
   if (ImGui::CollapsingHeader("lighting")) {
     ImGui::SliderFloat("ambient", &p.light.ambient, 0.0f, 1.0f);
     ImGui::SliderFloat("headlight", &p.light.head, 0.0f, 1.0f);

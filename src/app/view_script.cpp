@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "app/cli_common.h"
+#include "app/legend_flags.h"
 #include "app/names.h"
 #include "io/tensor_field.h"
 
@@ -17,7 +18,8 @@ namespace {
 const std::map<std::string, int, std::less<>> kArity = {
     {"orbit", 2},  {"pan", 2},    {"zoom", 1},       {"reset", 0},   {"glyph", 1},  {"gamma", 1},
     {"fa-min", 1}, {"scale", 1},  {"color", 1},      {"slab", -1},   {"light", 2},  {"iterations", 1},
-    {"epsilon", 1}, {"stats", 1}, {"frames", 1},     {"screenshot", 1}, {"magnitude", -2}, {"clamp", 1}};
+    {"epsilon", 1}, {"stats", 1}, {"frames", 1},     {"screenshot", 1}, {"magnitude", -2}, {"clamp", 1},
+    {"legend", 1},  {"legend-corner", 1}, {"units", 1}, {"length-units", 1}};
 
 double number(const ScriptStep& s, std::size_t k) { return parseDouble(s.verb, s.args[k]); }
 
@@ -68,6 +70,10 @@ void check(const ScriptStep& s) {
     if (n == 2) positive(1);
   }
   if (v == "clamp") parseDoubleIn(v, s.args[0], 0.0, 1e6);
+  if (v == "legend" && s.args[0] != "on" && s.args[0] != "off") throw UsageError("legend: on or off");
+  if (v == "legend-corner" && !legendCornerNamed(s.args[0]))
+    throw UsageError("legend-corner: unknown corner \"" + s.args[0] + "\"; choose " + kLegendCornerNames);
+  if (v == "units" || v == "length-units") checkLegendText(v, s.args[0]);
 }
 
 }  // namespace
@@ -124,6 +130,10 @@ void applyStep(const ScriptStep& s, ViewState& v) {
   else if (w == "iterations") p.march.maxIterations = parseIntIn(w, s.args[0], 1, 1000);
   else if (w == "epsilon") p.march.epsilon = number(s, 0);
   else if (w == "stats") p.iterationStats = s.args[0] == "on";
+  else if (w == "legend") p.legend.enabled = s.args[0] == "on";
+  else if (w == "legend-corner") p.legend.corner = *legendCornerNamed(s.args[0]);
+  else if (w == "units") p.legend.units = s.args[0];
+  else if (w == "length-units") p.legend.lengthUnits = s.args[0];
   else if (w == "scale") {
     v.scaleFactor = number(s, 0);
     p.scale = v.baseScale * v.scaleFactor;

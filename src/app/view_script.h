@@ -20,6 +20,10 @@
 //   iterations N           superquadric Newton iterations at most
 //   epsilon E              superquadric hit tolerance
 //   stats on|off           count Newton iterations (status line)
+//   legend on|off          the colour key and scale bar (render --legend)
+//   legend-corner top-left|top-right|bottom-left|bottom-right
+//   units TEXT             units of the tensor values in the legend (one word)
+//   length-units TEXT      units of positions for the scale bar (one word)
 //   frames N               render N frames unchanged (for timing)
 //   screenshot FILE        save the rendered view (without the panel)
 #include <string>

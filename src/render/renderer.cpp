@@ -7,6 +7,8 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "render/legend_pass.h"
+
 namespace tg::render {
 
 GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib)
@@ -19,7 +21,8 @@ GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib)
       sprites_(gl),
       culling_(gl, lib),
       pyramid_(gl, lib),
-      tessellated_(gl, lib) {
+      tessellated_(gl, lib),
+      lib_(lib) {
   // The lighting pass's core-profile draw needs a vertex array object even
   // with no attributes.
   gl.CreateVertexArrays(1, &vao_);
@@ -43,6 +46,8 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   hasOccluders_ = set.sphereCount + set.definiteCount > 0;
   mdMin_ = float(set.mdMin);
   mdMax_ = float(set.mdMax);
+  eigenMin_ = set.eigenvalueMin;
+  eigenMax_ = set.eigenvalueMax;
   for (const gl::Program* prog : glyphPrograms()) prog->set("uMdRange", glm::vec2(mdMin_, mdMax_));
   if (count_ > 0) {
     gl_.CreateBuffers(1, &buffer_);
@@ -173,6 +178,12 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   gl_.UseProgram(lighting_.id());
   gl_.BindVertexArray(vao_);
   gl_.DrawArrays(GL_TRIANGLES, 0, 3);
+  if (p.legend.enabled) {
+    if (!legend_) legend_ = std::make_unique<LegendPass>(gl_, lib_);
+    legend_->draw(cam, p.legend, {p.color, p.scale, mdMin_, mdMax_, eigenMin_, eigenMax_});
+  } else {
+    legend_.reset();
+  }
   gl::checkError(gl_, "GlyphRenderer::render");
 }
 
@@ -190,7 +201,8 @@ void flipRows(std::vector<T>& v, int width, int height, int channels) {
 }  // namespace
 
 std::size_t GlyphRenderer::gpuBytes() const {
-  return std::size_t(count_) * sizeof(tensor::GlyphRecord) + culling_.gpuBytes() + tessellated_.meshBytes();
+  return std::size_t(count_) * sizeof(tensor::GlyphRecord) + culling_.gpuBytes() + tessellated_.meshBytes() +
+         (legend_ ? legend_->gpuBytes() : 0);
 }
 
 IterationStats GlyphRenderer::iterationStats() const {

@@ -13,6 +13,7 @@
 #include "render/camera.h"
 #include "render/frame_image.h"
 #include "render/gbuffer.h"
+#include "render/legend_params.h"
 #include "render/occluder_pyramid.h"
 #include "render/glyph_culling.h"
 #include "render/quad_sprites.h"
@@ -68,8 +69,11 @@ struct FrameParams {
   ColorMode color = ColorMode::DEC;
   glm::vec4 background{0.08f, 0.08f, 0.10f, 1.0f};
   Lighting light;
+  LegendParams legend;
   bool operator==(const FrameParams&) const = default;
 };
+
+class LegendPass;
 
 class GlyphRenderer {
  public:
@@ -101,6 +105,8 @@ class GlyphRenderer {
   // commands, the compacted indices once a threshold needed them, and the
   // tessellated mesh once drawn.
   std::size_t gpuBytes() const;
+  // The legend pass, while the last frame had one (null: nothing built or held).
+  const LegendPass* legendPass() const { return legend_.get(); }
 
  private:
   void setCamera(const gl::Program& prog, const Camera& cam) const;
@@ -121,7 +127,10 @@ class GlyphRenderer {
   bool hasOccluders_ = false;  // spheres or definite glyphs uploaded
   std::uint64_t occlusionPrepasses_ = 0;
   float mdMin_ = 0, mdMax_ = 0;
+  double eigenMin_ = 0, eigenMax_ = 0;
   std::optional<FrameParams> params_;  // as last set
+  const gl::ShaderLibrary& lib_;
+  std::unique_ptr<LegendPass> legend_;
 };
 
 }  // namespace tg::render

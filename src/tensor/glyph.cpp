@@ -22,6 +22,8 @@ struct Partial {
   double maxAbs = 0;
   double mdMin = std::numeric_limits<double>::infinity();
   double mdMax = -std::numeric_limits<double>::infinity();
+  double eigenMin = std::numeric_limits<double>::infinity();
+  double eigenMax = -std::numeric_limits<double>::infinity();
 };
 
 // The unit quaternion (x, y, z, w) of the rotation whose columns are the
@@ -106,6 +108,8 @@ TG_LANE_CLONES void buildRange(std::span<const float> pos, std::span<const float
       p.maxAbs = std::max({p.maxAbs, std::abs(eb.values[0][k]), std::abs(eb.values[2][k])});
       p.mdMin = std::min(p.mdMin, md[k]);
       p.mdMax = std::max(p.mdMax, md[k]);
+      p.eigenMin = std::min(p.eigenMin, eb.values[2][k]);
+      p.eigenMax = std::max(p.eigenMax, eb.values[0][k]);
     }
   }
 }
@@ -195,12 +199,16 @@ GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> te
     all.maxAbs = std::max(all.maxAbs, p.maxAbs);
     all.mdMin = std::min(all.mdMin, p.mdMin);
     all.mdMax = std::max(all.mdMax, p.mdMax);
+    all.eigenMin = std::min(all.eigenMin, p.eigenMin);
+    all.eigenMax = std::max(all.eigenMax, p.eigenMax);
   }
   set.boundsMinWC = all.lo;
   set.boundsMaxWC = all.hi;
   set.maxAbsEigenvalue = all.maxAbs;
   set.mdMin = all.mdMin;
   set.mdMax = all.mdMax;
+  set.eigenvalueMin = all.eigenMin;
+  set.eigenvalueMax = all.eigenMax;
   groupTiles(set, chunks);
   return set;
 }

@@ -47,6 +47,7 @@ struct GlyphSet {
   glm::dvec3 boundsMinWC{0.0}, boundsMaxWC{0.0};  // of glyph centres
   double maxAbsEigenvalue = 0;
   double mdMin = 0, mdMax = 0;
+  double eigenvalueMin = 0, eigenvalueMax = 0;  // signed: a stress field's compression and tension
   // Totals over the tiles: three equal eigenvalues; definite (all positive
   // or all negative); the rest have eigenvalues of mixed sign or zero.
   std::size_t sphereCount = 0, definiteCount = 0;

@@ -135,3 +135,33 @@ TEST(ViewScript, MagnitudeAndClampResolveTheSizeAgainWithoutTheRecords) {
   }
   std::filesystem::remove_all(dir);
 }
+
+TEST(ViewScript, LegendCommandsSetTheLegendParameters) {
+  const auto dir = std::filesystem::temp_directory_path() / ("tg_view_legend_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto path = (dir / "s.txt").string();
+  std::ofstream(path) << "legend on\nlegend-corner top-left\nunits MPa\nlength-units mm\nlegend off\n";
+  const auto steps = app::parseScript(path);
+  ASSERT_EQ(steps.size(), 5u);
+  app::ViewState v{{}, app::OrbitCamera(start()), 1.0, 1.0};
+  EXPECT_FALSE(v.params.legend.enabled);  // off unless asked for
+  for (std::size_t k = 0; k < 4; ++k) app::applyStep(steps[k], v);
+  EXPECT_TRUE(v.params.legend.enabled);
+  EXPECT_EQ(v.params.legend.corner, render::LegendCorner::TopLeft);
+  EXPECT_EQ(v.params.legend.units, "MPa");
+  EXPECT_EQ(v.params.legend.lengthUnits, "mm");
+  app::applyStep(steps[4], v);
+  EXPECT_FALSE(v.params.legend.enabled);
+  for (const auto& [text, message] : {std::pair<std::string, std::string>{"legend maybe\n", "legend: on or off"},
+                                      {"legend-corner middle\n", "legend-corner: unknown corner \"middle\""},
+                                      {"units " + std::string(41, 'u') + "\n", "units: at most 40 characters"}}) {
+    std::ofstream(path) << text;
+    try {
+      app::parseScript(path);
+      ADD_FAILURE() << "no error for " << text;
+    } catch (const io::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(path + ":1: " + message), std::string::npos) << e.what();
+    }
+  }
+  std::filesystem::remove_all(dir);
+}
