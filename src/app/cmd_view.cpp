@@ -191,6 +191,7 @@ int cmdView(int argc, const char** argv) {
       status.drawn = renderer.latestDrawnCount().value_or(status.drawn);
       status.total = glyphCount;
       if (p.iterationStats) status.newton = renderer.iterationStats();
+      status.aoRadiusWC = renderer.aoRadiusWC(p);
       status.fps = ImGui::GetIO().Framerate;
       if (shot) saveScreenshot(renderer, cam, *target, *shot);
       api.BlitNamedFramebuffer(target->colorFramebuffer(), 0, 0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT,

@@ -18,6 +18,11 @@
 //   iterations N           superquadric Newton iterations at most
 //   epsilon E              superquadric hit tolerance
 //   stats on|off           count Newton iterations (status line)
+//   ao on|off              screen-space ambient occlusion
+//   ao-radius R            its radius in world units (> 0)
+//   ao-strength S          its weight, 0..4
+//   outlines on|off        silhouette and crease lines
+//   outline-width W        their width in pixels, 0.25..8
 //   frames N               render N frames unchanged (for timing)
 //   screenshot FILE        save the rendered view (without the panel)
 #include <string>
