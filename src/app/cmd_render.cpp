@@ -10,6 +10,7 @@
 
 #include "app/arg_parse.h"
 #include "app/cli_common.h"
+#include "app/effect_flags.h"
 #include "app/commands.h"
 #include "app/field_flags.h"
 #include "app/frame_size.h"
@@ -30,6 +31,7 @@ struct RenderOptions {
   std::string input, output, backend = "osmesa", glyph = "ellipsoid", color = "dec";
   FieldFlags field;
   LegendFlags legend;
+  EffectFlags effects;
   int width = 1024, height = 768;
   double gamma = 3.0;
   std::optional<double> faMin, fov, ortho;
@@ -85,6 +87,7 @@ RenderOptions parse(int argc, const char** argv) {
   ap.arg("--backend NAME").help("osmesa (default), egl, glfw or auto").action([&](auto&, Args a) { o.backend = a[1]; });
   o.field.addTo(ap, true);
   o.legend.addTo(ap);
+  o.effects.addTo(ap);
   ap.arg("--repeat N").help("render N more frames and report the median frame time").action([&](auto&, Args a) {
     o.repeat = parseIntIn("--repeat", a[1], 0, 10000);
   });
@@ -109,6 +112,7 @@ void validate(const RenderOptions& o) {
   if (!(o.epsilon >= 1e-9 && o.epsilon <= 0.5)) throw UsageError("--epsilon must be within 1e-9..0.5");
   o.field.validate();
   o.legend.validate();
+  o.effects.validate();
   if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
   if ((o.lookAt || o.up) && !o.eye) throw UsageError("--look-at and --up need --eye");
   if (!colorModeNamed(o.color))
@@ -172,6 +176,8 @@ int cmdRender(int argc, const char** argv) {
   params.tessellation = o.tessellate;
   params.background = o.background;
   params.legend = o.legend.params;
+  params.ao = o.effects.ao;
+  params.outline = o.effects.outline;
 
   const auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale, params.sizing);
   // The GPU works in single precision: a box beyond FLT_MAX draws nothing.
@@ -228,6 +234,12 @@ int cmdRender(int argc, const char** argv) {
                                 : scene.preferredCamera ? std::string("the built-in scene's own view")
                                                         : frame.why;
     std::fprintf(stderr, "  size: %s\n  framing: %s\n", sized.why.c_str(), framing.c_str());
+    if (params.ao.enabled)
+      std::fprintf(stderr, "  ambient occlusion: radius %.6g (%s), strength %.3g, %d samples\n",
+                   renderer.aoRadiusWC(params), params.ao.radius > 0 ? "--ao-radius" : "auto",
+                   params.ao.strength, params.ao.samples);
+    if (params.outline.enabled)
+      std::fprintf(stderr, "  outlines: width %.3g px, crease %.3g deg\n", params.outline.width, params.outline.creaseDeg);
   }
   return 0;
 }

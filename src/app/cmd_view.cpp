@@ -110,7 +110,7 @@ int cmdView(int argc, const char** argv) {
       tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids, 0, o.field.glyph);
   scene.field.releaseSamples();
 
-  ViewState v{{}, OrbitCamera(render::CameraDesc{}), 1.0, 1.0, o.field.scaleParams(),
+  ViewState v{render::FrameParams{}, OrbitCamera(render::CameraDesc{}), 1.0, 1.0, o.field.scaleParams(),
               tensor::sampleMagnitudes(glyphs, scene.field.sampleSpacing)};
   resize(v);
   render::FrameParams& p = v.params;
@@ -198,6 +198,7 @@ int cmdView(int argc, const char** argv) {
       status.drawn = renderer.latestDrawnCount().value_or(status.drawn);
       status.total = glyphCount;
       if (p.iterationStats) status.newton = renderer.iterationStats();
+      status.aoRadiusWC = renderer.aoRadiusWC(p);
       status.fps = ImGui::GetIO().Framerate;
       if (shot) saveScreenshot(renderer, cam, *target, *shot);
       api.BlitNamedFramebuffer(target->colorFramebuffer(), 0, 0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT,

@@ -35,6 +35,31 @@ void sizeControls(ViewState& v) {
   if (changed) resize(v);
 }
 
+void depthCues(render::FrameParams& p, const PanelStatus& s) {
+  if (!ImGui::CollapsingHeader("depth cues")) return;
+  ImGui::Checkbox("ambient occlusion", &p.ao.enabled);
+  if (p.ao.enabled) {
+    // Starts from the radius in use (auto until moved), in world units.
+    auto radius = float(s.aoRadiusWC);
+    if (ImGui::DragFloat("AO radius", &radius, 0.01f * radius, 0.0f, 1e30f, "%.4g", ImGuiSliderFlags_Logarithmic) &&
+        radius > 0.0f)
+      p.ao.radius = radius;
+    auto strength = float(p.ao.strength);
+    if (ImGui::SliderFloat("AO strength", &strength, 0.0f, float(render::AoParams::kMaxStrength), "%.2f"))
+      p.ao.strength = strength;
+    ImGui::SliderInt("AO samples", &p.ao.samples, render::AoParams::kMinSamples, render::AoParams::kMaxSamples);
+  }
+  ImGui::Checkbox("outlines", &p.outline.enabled);
+  if (p.outline.enabled) {
+    auto width = float(p.outline.width);
+    if (ImGui::SliderFloat("line width", &width, 0.25f, float(render::OutlineParams::kMaxWidth), "%.2f px"))
+      p.outline.width = width;
+    auto crease = float(p.outline.creaseDeg);
+    if (ImGui::SliderFloat("crease angle", &crease, 1.0f, 179.0f, "%.0f deg")) p.outline.creaseDeg = crease;
+    ImGui::ColorEdit4("line colour", &p.outline.color[0]);
+  }
+}
+
 void controls(ViewState& v, const tensor::GlyphSet& meta) {
   render::FrameParams& p = v.params;
   int kind = int(p.glyph);
@@ -121,6 +146,7 @@ PanelActions drawPanel(ViewState& v, const PanelStatus& s, const tensor::GlyphSe
   ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
   ImGui::Begin("tensorglyph");
   controls(v, meta);
+  depthCues(v.params, s);
   if (ImGui::Button("reset view (R)")) v.camera.reset();
   ImGui::SameLine();
   if (ImGui::Button("screenshot (S)")) act.screenshot = true;

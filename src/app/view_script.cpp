@@ -8,6 +8,7 @@
 
 #include "app/cli_common.h"
 #include "app/legend_flags.h"
+#include "app/effect_flags.h"
 #include "app/names.h"
 #include "io/tensor_field.h"
 
@@ -19,7 +20,8 @@ const std::map<std::string, int, std::less<>> kArity = {
     {"orbit", 2},  {"pan", 2},    {"zoom", 1},       {"reset", 0},   {"glyph", 1},  {"gamma", 1},
     {"fa-min", 1}, {"scale", 1},  {"color", 1},      {"slab", -1},   {"light", 2},  {"iterations", 1},
     {"epsilon", 1}, {"stats", 1}, {"frames", 1},     {"screenshot", 1}, {"magnitude", -2}, {"clamp", 1},
-    {"legend", 1},  {"legend-corner", 1}, {"units", 1}, {"length-units", 1}};
+    {"legend", 1},  {"legend-corner", 1}, {"units", 1}, {"length-units", 1},
+    {"ao", 1},      {"ao-radius", 1}, {"ao-strength", 1}, {"outlines", 1}, {"outline-width", 1}};
 
 double number(const ScriptStep& s, std::size_t k) { return parseDouble(s.verb, s.args[k]); }
 
@@ -74,6 +76,10 @@ void check(const ScriptStep& s) {
   if (v == "legend-corner" && !legendCornerNamed(s.args[0]))
     throw UsageError("legend-corner: unknown corner \"" + s.args[0] + "\"; choose " + kLegendCornerNames);
   if (v == "units" || v == "length-units") checkLegendText(v, s.args[0]);
+  if ((v == "ao" || v == "outlines") && s.args[0] != "on" && s.args[0] != "off") throw UsageError(v + ": on or off");
+  if (v == "ao-radius") parseAoRadius(v, s.args[0]);
+  if (v == "ao-strength") parseAoStrength(v, s.args[0]);
+  if (v == "outline-width") parseOutlineWidth(v, s.args[0]);
 }
 
 }  // namespace
@@ -134,6 +140,11 @@ void applyStep(const ScriptStep& s, ViewState& v) {
   else if (w == "legend-corner") p.legend.corner = *legendCornerNamed(s.args[0]);
   else if (w == "units") p.legend.units = s.args[0];
   else if (w == "length-units") p.legend.lengthUnits = s.args[0];
+  else if (w == "ao") p.ao.enabled = s.args[0] == "on";
+  else if (w == "ao-radius") p.ao.radius = number(s, 0);
+  else if (w == "ao-strength") p.ao.strength = number(s, 0);
+  else if (w == "outlines") p.outline.enabled = s.args[0] == "on";
+  else if (w == "outline-width") p.outline.width = number(s, 0);
   else if (w == "scale") {
     v.scaleFactor = number(s, 0);
     p.scale = v.baseScale * v.scaleFactor;

@@ -24,6 +24,11 @@
 //   legend-corner top-left|top-right|bottom-left|bottom-right
 //   units TEXT             units of the tensor values in the legend (one word)
 //   length-units TEXT      units of positions for the scale bar (one word)
+//   ao on|off              screen-space ambient occlusion
+//   ao-radius R            its radius in world units (> 0)
+//   ao-strength S          its weight, 0..4
+//   outlines on|off        silhouette and crease lines
+//   outline-width W        their width in pixels, 0.25..8
 //   frames N               render N frames unchanged (for timing)
 //   screenshot FILE        save the rendered view (without the panel)
 #include <string>

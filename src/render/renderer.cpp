@@ -8,11 +8,13 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render/legend_pass.h"
+#include "render/camera_uniforms.h"
 
 namespace tg::render {
 
 GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib)
     : gl_(gl),
+      lib_(lib),
       ellipsoid_(gl, lib, {{GL_VERTEX_SHADER, "ellipsoid.vert"}, {GL_FRAGMENT_SHADER, "ellipsoid.frag"}}),
       superquadric_(gl, lib, {{GL_VERTEX_SHADER, "superquadric.vert"}, {GL_FRAGMENT_SHADER, "superquadric.frag"}}),
       superquadricStats_(gl, lib, {{GL_VERTEX_SHADER, "superquadric.vert"}, {GL_FRAGMENT_SHADER, "superquadric.frag"}},
@@ -21,8 +23,7 @@ GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib)
       sprites_(gl),
       culling_(gl, lib),
       pyramid_(gl, lib),
-      tessellated_(gl, lib),
-      lib_(lib) {
+      tessellated_(gl, lib) {
   // The lighting pass's core-profile draw needs a vertex array object even
   // with no attributes.
   gl.CreateVertexArrays(1, &vao_);
@@ -48,6 +49,7 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   mdMax_ = float(set.mdMax);
   eigenMin_ = set.eigenvalueMin;
   eigenMax_ = set.eigenvalueMax;
+  typicalDiameter_ = 1.0 / tensor::defaultScale(set, 1.0);
   for (const gl::Program* prog : glyphPrograms()) prog->set("uMdRange", glm::vec2(mdMin_, mdMax_));
   if (count_ > 0) {
     gl_.CreateBuffers(1, &buffer_);
@@ -58,18 +60,7 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   gl::checkError(gl_, "GlyphRenderer::upload");
 }
 
-void GlyphRenderer::setCamera(const gl::Program& prog, const Camera& cam) const {
-  prog.set("uViewWCVC", glm::mat4(cam.viewWCVC));
-  prog.set("uProjVCCC", glm::mat4(cam.projVCCC));
-  prog.set("uViewportDC", glm::vec2(float(cam.width), float(cam.height)));
-  const bool ortho = cam.desc.projection == Projection::Orthographic;
-  prog.set("uOrtho", ortho ? 1 : 0);
-  const double aspect = double(cam.width) / cam.height;
-  const double h = ortho ? 0.5 * cam.desc.orthoHeight : std::tan(glm::radians(cam.desc.fovYDeg) * 0.5);
-  prog.set("uRayScaleVC", glm::vec2(float(h * aspect), float(h)));
-  prog.set("uNearVC", float(cam.nearVC));
-  prog.set("uFarVC", ortho ? float(cam.farVC) : std::numeric_limits<float>::max());
-}
+void GlyphRenderer::setCamera(const gl::Program& prog, const Camera& cam) const { setCameraUniforms(prog, cam); }
 
 std::array<const gl::Program*, 4> GlyphRenderer::glyphPrograms() const {
   return {&ellipsoid_, &superquadric_, &superquadricStats_, &tessellated_.program()};
@@ -105,13 +96,40 @@ void GlyphRenderer::setParams(const FrameParams& p) {
       prog->set("uEpsilon", float(p.march.epsilon));
     }
   }
-  if (changed(&FrameParams::background)) lighting_.set("uBackground", p.background);
+  if (changed(&FrameParams::background)) {
+    lighting_.set("uBackground", p.background);
+    if (lightingAo_) lightingAo_->set("uBackground", p.background);
+  }
   if (changed(&FrameParams::light)) {
-    lighting_.set("uKeyDirVC", p.light.keyDirVC);
-    lighting_.set("uLightMix", glm::vec4(p.light.ambient, p.light.head, p.light.key, p.light.specular));
-    lighting_.set("uShininess", p.light.shininess);
+    setLighting(lighting_, p);
+    if (lightingAo_) setLighting(*lightingAo_, p);
   }
   params_ = p;
+}
+
+void GlyphRenderer::setLighting(const gl::Program& prog, const FrameParams& p) const {
+  prog.set("uKeyDirVC", p.light.keyDirVC);
+  prog.set("uLightMix", glm::vec4(p.light.ambient, p.light.head, p.light.key, p.light.specular));
+  prog.set("uShininess", p.light.shininess);
+}
+
+// The plain program unless an effect needs a variant, which is compiled on
+// first use: with every effect off the frame runs main's exact shader.
+const gl::Program& GlyphRenderer::lightingFor(const FrameParams& p) {
+  if (!p.ao.enabled) return lighting_;
+  if (!lightingAo_) {
+    lightingAo_ = std::make_unique<gl::Program>(
+        gl_, lib_, std::initializer_list<gl::StageSource>{{GL_VERTEX_SHADER, "fullscreen.vert"},
+                                                          {GL_FRAGMENT_SHADER, "lighting.frag"}},
+        std::initializer_list<std::string_view>{"TG_AO"});
+    lightingAo_->set("uBackground", p.background);
+    setLighting(*lightingAo_, p);
+  }
+  return *lightingAo_;
+}
+
+double GlyphRenderer::aoRadiusWC(const FrameParams& p) const {
+  return p.ao.radius > 0.0 ? p.ao.radius : AoParams::kAutoRadius * typicalDiameter_ * p.scale;
 }
 
 void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffer& target) {
@@ -173,11 +191,22 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
     }
   }
   gl_.Disable(GL_DEPTH_TEST);
+  if (p.ao.enabled) {
+    if (!ao_) ao_ = std::make_unique<AoPass>(gl_, lib_);
+    ao_->run(cam, target, p.ao, aoRadiusWC(p));
+  }
+  const gl::Program& lighting = lightingFor(p);
   target.beginLighting();
-  setCamera(lighting_, cam);
-  gl_.UseProgram(lighting_.id());
+  setCamera(lighting, cam);
+  gl_.UseProgram(lighting.id());
   gl_.BindVertexArray(vao_);
   gl_.DrawArrays(GL_TRIANGLES, 0, 3);
+  if (p.outline.enabled) {
+    if (!outline_) outline_ = std::make_unique<OutlinePass>(gl_, lib_);
+    setCameraUniforms(outline_->program(), cam);
+    outline_->run(target, p.outline);
+  }
+  // Last before readback: the legend draws over every effect.
   if (p.legend.enabled) {
     if (!legend_) legend_ = std::make_unique<LegendPass>(gl_, lib_);
     legend_->draw(cam, p.legend, {p.color, p.scale, mdMin_, mdMax_, eigenMin_, eigenMax_});
@@ -202,7 +231,8 @@ void flipRows(std::vector<T>& v, int width, int height, int channels) {
 
 std::size_t GlyphRenderer::gpuBytes() const {
   return std::size_t(count_) * sizeof(tensor::GlyphRecord) + culling_.gpuBytes() + tessellated_.meshBytes() +
-         (legend_ ? legend_->gpuBytes() : 0);
+         (legend_ ? legend_->gpuBytes() : 0) +
+         (ao_ ? ao_->gpuBytes() : 0);
 }
 
 IterationStats GlyphRenderer::iterationStats() const {

@@ -10,12 +10,14 @@
 #include <glm/vec4.hpp>
 
 #include "gl/program.h"
+#include "render/ao_pass.h"
 #include "render/camera.h"
 #include "render/frame_image.h"
 #include "render/gbuffer.h"
 #include "render/legend_params.h"
 #include "render/occluder_pyramid.h"
 #include "render/glyph_culling.h"
+#include "render/outline_pass.h"
 #include "render/quad_sprites.h"
 #include "render/tessellated.h"
 #include "tensor/glyph.h"
@@ -70,6 +72,8 @@ struct FrameParams {
   glm::vec4 background{0.08f, 0.08f, 0.10f, 1.0f};
   Lighting light;
   LegendParams legend;
+  AoParams ao;            // deferred depth cues: off by default, and then
+  OutlineParams outline;  // no pass of theirs is built, run or allocated
   bool operator==(const FrameParams&) const = default;
 };
 
@@ -107,13 +111,25 @@ class GlyphRenderer {
   std::size_t gpuBytes() const;
   // The legend pass, while the last frame had one (null: nothing built or held).
   const LegendPass* legendPass() const { return legend_.get(); }
+  // The deferred effects' passes, created on the first frame that enables
+  // them (null before).
+  const AoPass* aoPass() const { return ao_.get(); }
+  const OutlinePass* outlinePass() const { return outline_.get(); }
+  // The occlusion radius a frame with `p` uses: p.ao.radius, or when 0,
+  // AoParams::kAutoRadius times the typical glyph diameter at p.scale (that
+  // of the 99th-percentile glyph, tensor::defaultScale's).
+  double aoRadiusWC(const FrameParams& p) const;
 
  private:
   void setCamera(const gl::Program& prog, const Camera& cam) const;
   // Programs that draw glyphs, and those of them that take the superquadric shape uniforms.
   std::array<const gl::Program*, 4> glyphPrograms() const;
   std::array<const gl::Program*, 3> shapePrograms() const;
+  // Sets the lighting uniforms of `p` on a lighting program.
+  void setLighting(const gl::Program& prog, const FrameParams& p) const;
+  const gl::Program& lightingFor(const FrameParams& p);
   const gl::Api& gl_;
+  const gl::ShaderLibrary& lib_;
   gl::Program ellipsoid_;
   gl::Program superquadric_;
   gl::Program superquadricStats_;
@@ -128,8 +144,11 @@ class GlyphRenderer {
   std::uint64_t occlusionPrepasses_ = 0;
   float mdMin_ = 0, mdMax_ = 0;
   double eigenMin_ = 0, eigenMax_ = 0;
+  double typicalDiameter_ = 1.0;  // in eigenvalue units
+  std::unique_ptr<AoPass> ao_;
+  std::unique_ptr<OutlinePass> outline_;
+  std::unique_ptr<gl::Program> lightingAo_;  // lighting.frag with TG_AO
   std::optional<FrameParams> params_;  // as last set
-  const gl::ShaderLibrary& lib_;
   std::unique_ptr<LegendPass> legend_;
 };
 

@@ -165,3 +165,41 @@ TEST(ViewScript, LegendCommandsSetTheLegendParameters) {
   }
   std::filesystem::remove_all(dir);
 }
+
+TEST(ViewScript, DepthCueCommandsSetTheirParametersWithinRange) {
+  const auto dir = std::filesystem::temp_directory_path() / ("tg_view_cues_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto path = (dir / "s.txt").string();
+  std::ofstream(path) << "ao on\nao-radius 0.25\nao-strength 2\noutlines on\noutline-width 3\nao off\n";
+  const auto steps = app::parseScript(path);
+  ASSERT_EQ(steps.size(), 6u);
+  app::ViewState v{{}, app::OrbitCamera(start()), 1.0, 1.0};
+  EXPECT_EQ(v.params.ao, render::AoParams{});
+  EXPECT_FALSE(v.params.ao.enabled);
+  EXPECT_FALSE(v.params.outline.enabled);
+  for (std::size_t k = 0; k < 5; ++k) app::applyStep(steps[k], v);
+  EXPECT_TRUE(v.params.ao.enabled);
+  EXPECT_DOUBLE_EQ(v.params.ao.radius, 0.25);
+  EXPECT_DOUBLE_EQ(v.params.ao.strength, 2.0);
+  EXPECT_TRUE(v.params.outline.enabled);
+  EXPECT_DOUBLE_EQ(v.params.outline.width, 3.0);
+  app::applyStep(steps[5], v);
+  EXPECT_FALSE(v.params.ao.enabled);
+  EXPECT_DOUBLE_EQ(v.params.ao.radius, 0.25) << "switching off keeps the tuning";
+
+  const std::pair<const char*, const char*> bad[] = {{"ao maybe\n", ":1: ao: on or off"},
+                                                     {"ao-radius 0\n", ":1: ao-radius must be positive (world units)"},
+                                                     {"ao-strength 9\n", ":1: ao-strength must be within 0..4"},
+                                                     {"outline-width 20\n", ":1: outline-width must be within 0.25..8"},
+                                                     {"outlines\n", ":1: outlines: wrong number of arguments"}};
+  for (const auto& [text, message] : bad) {
+    std::ofstream(path) << text;
+    try {
+      app::parseScript(path);
+      ADD_FAILURE() << text;
+    } catch (const io::InputError& e) {
+      EXPECT_EQ(std::string(e.what()), path + message) << text;
+    }
+  }
+  std::filesystem::remove_all(dir);
+}
