@@ -21,6 +21,7 @@
 #include "gl/shader_library.h"
 #include "io/image_writer.h"
 #include "io/readers.h"
+#include "render/legend_pass.h"
 #include "render/renderer.h"
 #include "tensor/glyph_scale.h"
 
@@ -191,7 +192,7 @@ int cmdRender(int argc, const char** argv) {
 
   auto ctx = createContext(o.backend, o.width, o.height);
   const gl::ShaderLibrary lib;
-  render::GlyphRenderer renderer(ctx->api(), lib);
+  render::GlyphRenderer renderer(ctx->api(), lib, render::makeLegendPass);
   render::GBuffer target(ctx->api(), o.width, o.height);
   const auto t2 = Clock::now();
   renderer.upload(glyphs);
