@@ -1,6 +1,8 @@
 #version 450 core
-// Deferred Blinn-Phong: ambient, a head light at the eye and one key light.
+// Deferred Blinn-Phong: ambient, a head light at the eye and one key light,
+// shadowed when compiled with TG_SHADOWS (lib/shadow.glsl).
 #include "lib/camera.glsl"
+#include "lib/shadow.glsl"
 
 layout(binding = 0) uniform sampler2D uAlbedo;
 layout(binding = 1) uniform sampler2D uNormalWC;
@@ -32,6 +34,14 @@ void main() {
   float key = max(dot(n, l), 0.0);
   float specHead = pow(head, uShininess);  // half vector of the head light is v
   float specKey = pow(max(dot(n, normalize(l + v)), 0.0), uShininess);
+#ifdef TG_SHADOWS
+  if (key > 0.0) {
+    vec3 pVC = originVC + viewDepthFromWindowDepth(texelFetch(uSceneDepth, p, 0).r) * dirVC;
+    float lit = mix(1.0, keyLightVisibility(pVC, n), uShadowStrength);
+    key *= lit;
+    specKey *= lit;
+  }
+#endif
   vec3 c = albedo * (uLightMix.x + uLightMix.y * head + uLightMix.z * key) +
            uLightMix.w * (uLightMix.y * specHead + uLightMix.z * specKey);
   oColor = vec4(c, 1.0);

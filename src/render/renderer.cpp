@@ -11,6 +11,7 @@ namespace tg::render {
 
 GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib)
     : gl_(gl),
+      lib_(lib),
       ellipsoid_(gl, lib, {{GL_VERTEX_SHADER, "ellipsoid.vert"}, {GL_FRAGMENT_SHADER, "ellipsoid.frag"}}),
       superquadric_(gl, lib, {{GL_VERTEX_SHADER, "superquadric.vert"}, {GL_FRAGMENT_SHADER, "superquadric.frag"}}),
       superquadricStats_(gl, lib, {{GL_VERTEX_SHADER, "superquadric.vert"}, {GL_FRAGMENT_SHADER, "superquadric.frag"}},
@@ -43,6 +44,9 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   hasOccluders_ = set.sphereCount + set.definiteCount > 0;
   mdMin_ = float(set.mdMin);
   mdMax_ = float(set.mdMax);
+  centresLoWC_ = set.boundsMinWC;
+  centresHiWC_ = set.boundsMaxWC;
+  maxAbsEigenvalue_ = set.maxAbsEigenvalue;
   for (const gl::Program* prog : glyphPrograms()) prog->set("uMdRange", glm::vec2(mdMin_, mdMax_));
   if (count_ > 0) {
     gl_.CreateBuffers(1, &buffer_);
@@ -95,19 +99,77 @@ void GlyphRenderer::setParams(const FrameParams& p) {
       prog->set("uEpsilon", float(p.march.epsilon));
     }
   }
-  if (changed(&FrameParams::background)) lighting_.set("uBackground", p.background);
-  if (changed(&FrameParams::light)) {
-    lighting_.set("uKeyDirVC", p.light.keyDirVC);
-    lighting_.set("uLightMix", glm::vec4(p.light.ambient, p.light.head, p.light.key, p.light.specular));
-    lighting_.set("uShininess", p.light.shininess);
-  }
+  setLightingUniforms(lighting_, p, old);
+  if (shadow_) setLightingUniforms(shadow_->lighting(), p, old);
   params_ = p;
+}
+
+// All of them when `old` is null.
+void GlyphRenderer::setLightingUniforms(const gl::Program& prog, const FrameParams& p, const FrameParams* old) const {
+  if (!old || old->background != p.background) prog.set("uBackground", p.background);
+  if (!old || !(old->light == p.light)) {
+    prog.set("uKeyDirVC", p.light.keyDirVC);
+    prog.set("uLightMix", glm::vec4(p.light.ambient, p.light.head, p.light.key, p.light.specular));
+    prog.set("uShininess", p.light.shininess);
+  }
+}
+
+Camera GlyphRenderer::renderShadowMap(const Camera& cam, const FrameParams& p, int split) {
+  if (!shadow_) {
+    shadow_ = std::make_unique<ShadowPass>(gl_, lib_);
+    setLightingUniforms(shadow_->lighting(), p, nullptr);
+  }
+  // Casters: the selected centres, grown by the largest glyph box's half
+  // diagonal (a superquadric reaches its box's corners).
+  glm::dvec3 lo = centresLoWC_, hi = centresHiWC_;
+  if (p.slab.axis >= 0) {
+    const int a = p.slab.axis;
+    lo[a] = std::max(lo[a], p.slab.lo);
+    hi[a] = std::max(lo[a], std::min(hi[a], p.slab.hi));
+  }
+  const double pad = std::sqrt(3.0) * p.scale * maxAbsEigenvalue_;
+  const glm::dvec3 keyWC = glm::transpose(glm::dmat3(cam.viewWCVC)) * glm::dvec3(p.light.keyDirVC);
+  const Camera light = lightCamera(cam, keyWC, lo - pad, hi + pad, p.shadow.mapSize);
+  const bool tessellated = p.tessellation > 0;
+  if (tessellated) culling_.bypass();
+  else culling_.prepare(light, p.scale, p.faMin, p.slab, p.frustumCulling);
+  shadow_->beginMap(p.shadow.mapSize);
+  gl_.Enable(GL_DEPTH_TEST);
+  gl_.DepthFunc(GL_GREATER);  // reversed Z
+  gl_.DepthMask(GL_TRUE);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer_);
+  // The glyph programs themselves, from the light: the same exact surfaces.
+  auto use = [&](const gl::Program& prog) {
+    setCamera(prog, light);
+    prog.set("uCompacted", culling_.compacted() ? 1 : 0);
+    gl_.UseProgram(prog.id());
+  };
+  if (tessellated) {
+    setCamera(tessellated_.program(), light);
+    tessellated_.draw(p.tessellation, std::size_t(count_));
+  } else {
+    use(ellipsoid_);
+    culling_.draw(sprites_, 0, split);
+    if (split < 3) {
+      superquadric_.set("uOccluders", 0);  // the pre-pass's pyramid is the view's
+      use(superquadric_);
+      culling_.draw(sprites_, split, 3);
+    }
+  }
+  ++shadowMapPasses_;
+  return light;
 }
 
 void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffer& target) {
   if (!params_ || !(*params_ == p)) setParams(p);
   gl_.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   const bool tessellated = p.tessellation > 0;
+  const bool sq = p.glyph == GlyphKind::Superquadric;
+  const int split = !sq ? 3 : p.gamma > 0.0 ? 1 : 2;
+  // The shadow map first, so that culling is left prepared for the view.
+  std::optional<Camera> light;
+  if (!p.shadow.enabled) shadow_.reset();
+  else if (count_ > 0) light = renderShadowMap(cam, p, split);
   if (tessellated) culling_.bypass();
   else culling_.prepare(cam, p.scale, p.faMin, p.slab, p.frustumCulling);
   if (count_ > 0) {
@@ -120,8 +182,6 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   // (tensor::GlyphGroup): the ellipsoid program draws groups [0, split),
   // the superquadric program the rest. At gamma 0 only mixed-sign glyphs
   // are not ellipsoids; at gamma > 0 only spheres are.
-  const bool sq = p.glyph == GlyphKind::Superquadric;
-  const int split = !sq ? 3 : p.gamma > 0.0 ? 1 : 2;
   auto use = [&](const gl::Program& prog) {
     setCamera(prog, cam);
     prog.set("uCompacted", culling_.compacted() ? 1 : 0);
@@ -164,8 +224,10 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   }
   gl_.Disable(GL_DEPTH_TEST);
   target.beginLighting();
-  setCamera(lighting_, cam);
-  gl_.UseProgram(lighting_.id());
+  const gl::Program& lit = light ? shadow_->lighting() : lighting_;
+  if (light) shadow_->bindForLighting(cam, *light, p.shadow, target);
+  setCamera(lit, cam);
+  gl_.UseProgram(lit.id());
   gl_.BindVertexArray(vao_);
   gl_.DrawArrays(GL_TRIANGLES, 0, 3);
   gl::checkError(gl_, "GlyphRenderer::render");
@@ -185,7 +247,8 @@ void flipRows(std::vector<T>& v, int width, int height, int channels) {
 }  // namespace
 
 std::size_t GlyphRenderer::gpuBytes() const {
-  return std::size_t(count_) * sizeof(tensor::GlyphRecord) + culling_.gpuBytes() + tessellated_.meshBytes();
+  return std::size_t(count_) * sizeof(tensor::GlyphRecord) + culling_.gpuBytes() + tessellated_.meshBytes() +
+         (shadow_ ? shadow_->gpuBytes() : 0);
 }
 
 IterationStats GlyphRenderer::iterationStats() const {

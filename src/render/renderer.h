@@ -16,6 +16,7 @@
 #include "render/occluder_pyramid.h"
 #include "render/glyph_culling.h"
 #include "render/quad_sprites.h"
+#include "render/shadow_pass.h"
 #include "render/tessellated.h"
 #include "tensor/glyph.h"
 
@@ -66,6 +67,7 @@ struct FrameParams {
   ColorMode color = ColorMode::DEC;
   glm::vec4 background{0.08f, 0.08f, 0.10f, 1.0f};
   Lighting light;
+  ShadowParams shadow;  // soft shadows from the key light (render/shadow_pass.h)
   bool operator==(const FrameParams&) const = default;
 };
 
@@ -95,9 +97,13 @@ class GlyphRenderer {
   const GlyphCulling& culling() const { return culling_; }
   // Frames that ran the superquadric occlusion pre-pass since construction.
   std::uint64_t occlusionPrepasses() const { return occlusionPrepasses_; }
+  // Frames that drew the shadow map since construction, and whether the
+  // shadow pass (its program and map) exists now: only while frames ask for it.
+  std::uint64_t shadowMapPasses() const { return shadowMapPasses_; }
+  bool shadowPassBuilt() const { return shadow_ != nullptr; }
   // GPU memory held for the uploaded glyphs: records, culling's ranges and
   // commands, the compacted indices once a threshold needed them, and the
-  // tessellated mesh once drawn.
+  // tessellated mesh once drawn, and the shadow map while shadows are on.
   std::size_t gpuBytes() const;
 
  private:
@@ -105,7 +111,11 @@ class GlyphRenderer {
   // Programs that draw glyphs, and those of them that take the superquadric shape uniforms.
   std::array<const gl::Program*, 4> glyphPrograms() const;
   std::array<const gl::Program*, 3> shapePrograms() const;
+  void setLightingUniforms(const gl::Program& prog, const FrameParams& p, const FrameParams* old) const;
+  // Draws the glyphs' depth from the key light into the shadow map; returns the light's camera.
+  Camera renderShadowMap(const Camera& cam, const FrameParams& p, int split);
   const gl::Api& gl_;
+  const gl::ShaderLibrary& lib_;
   gl::Program ellipsoid_;
   gl::Program superquadric_;
   gl::Program superquadricStats_;
@@ -114,10 +124,13 @@ class GlyphRenderer {
   GlyphCulling culling_;
   OccluderPyramid pyramid_;
   TessellatedGlyphs tessellated_;
+  std::unique_ptr<ShadowPass> shadow_;  // built on first use
   GLuint vao_ = 0, buffer_ = 0, stats_ = 0;
   GLsizei count_ = 0;
   bool hasOccluders_ = false;  // spheres or definite glyphs uploaded
-  std::uint64_t occlusionPrepasses_ = 0;
+  std::uint64_t occlusionPrepasses_ = 0, shadowMapPasses_ = 0;
+  glm::dvec3 centresLoWC_{0.0}, centresHiWC_{0.0};  // of the uploaded glyphs
+  double maxAbsEigenvalue_ = 0;
   float mdMin_ = 0, mdMax_ = 0;
   std::optional<FrameParams> params_;  // as last set
 };
