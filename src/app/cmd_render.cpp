@@ -16,6 +16,7 @@
 #include "app/names.h"
 #include "app/output_check.h"
 #include "app/scene.h"
+#include "app/shadow_flags.h"
 #include "gl/shader_library.h"
 #include "io/image_writer.h"
 #include "io/readers.h"
@@ -27,6 +28,7 @@ namespace {
 struct RenderOptions {
   std::string input, output, backend = "osmesa", glyph = "ellipsoid", color = "dec";
   FieldFlags field;
+  ShadowFlags shadow;
   int width = 1024, height = 768;
   double gamma = 3.0;
   std::optional<double> faMin, fov, ortho;
@@ -81,6 +83,7 @@ RenderOptions parse(int argc, const char** argv) {
   });
   ap.arg("--backend NAME").help("osmesa (default), egl, glfw or auto").action([&](auto&, Args a) { o.backend = a[1]; });
   o.field.addTo(ap, true);
+  o.shadow.addTo(ap);
   ap.arg("--repeat N").help("render N more frames and report the median frame time").action([&](auto&, Args a) {
     o.repeat = parseIntIn("--repeat", a[1], 0, 10000);
   });
@@ -104,6 +107,7 @@ void validate(const RenderOptions& o) {
   if (o.maxIterations < 1 || o.maxIterations > 1000) throw UsageError("--iterations must be within 1..1000");
   if (!(o.epsilon >= 1e-9 && o.epsilon <= 0.5)) throw UsageError("--epsilon must be within 1e-9..0.5");
   o.field.validate();
+  o.shadow.validate();
   if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
   if ((o.lookAt || o.up) && !o.eye) throw UsageError("--look-at and --up need --eye");
   if (!colorModeNamed(o.color))
@@ -160,6 +164,7 @@ int cmdRender(int argc, const char** argv) {
   params.iterationStats = o.stats;
   params.tessellation = o.tessellate;
   params.background = o.background;
+  params.shadow = o.shadow.params;
 
   const auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale);
   // The GPU works in single precision: a box beyond FLT_MAX draws nothing.

@@ -53,6 +53,15 @@ void controls(ViewState& v, const tensor::GlyphSet& meta) {
     ImGui::SliderFloat("specular", &p.light.specular, 0.0f, 1.0f);
     ImGui::SliderFloat("shininess", &p.light.shininess, 1.0f, 200.0f, "%.0f", ImGuiSliderFlags_Logarithmic);
   }
+  ImGui::Checkbox("shadows", &p.shadow.enabled);
+  if (p.shadow.enabled && ImGui::CollapsingHeader("shadow parameters")) {
+    ImGui::SliderFloat("penumbra", &p.shadow.penumbra, 0.0f, 0.05f, "%.4f", ImGuiSliderFlags_Logarithmic);
+    ImGui::SliderFloat("shadow strength", &p.shadow.strength, 0.0f, 1.0f);
+    ImGui::SliderFloat("shadow bias", &p.shadow.bias, 0.0f, 4.0f, "%.2f texels");
+    const int sizes[4] = {512, 1024, 2048, 4096};
+    int k = int(std::find(sizes, sizes + 4, p.shadow.mapSize) - sizes);  // 4: another size, from a script
+    if (ImGui::Combo("shadow map", &k, "512\0" "1024\0" "2048\0" "4096\0") && k < 4) p.shadow.mapSize = sizes[k];
+  }
   if (ImGui::CollapsingHeader("superquadric march")) {
     ImGui::SliderInt("iterations", &p.march.maxIterations, 1, 50);
     auto eps = float(p.march.epsilon);
