@@ -133,7 +133,6 @@ Camera GlyphRenderer::renderShadowMap(const Camera& cam, const FrameParams& p, i
   const bool tessellated = p.tessellation > 0;
   if (tessellated) culling_.bypass();
   else culling_.prepare(light, p.scale, p.faMin, p.slab, p.frustumCulling);
-  shadow_->beginMap(p.shadow.mapSize);
   gl_.Enable(GL_DEPTH_TEST);
   gl_.DepthFunc(GL_GREATER);  // reversed Z
   gl_.DepthMask(GL_TRUE);
@@ -144,6 +143,15 @@ Camera GlyphRenderer::renderShadowMap(const Camera& cam, const FrameParams& p, i
     prog.set("uCompacted", culling_.compacted() ? 1 : 0);
     gl_.UseProgram(prog.id());
   };
+  // The view's occlusion pre-pass, from the light: the march is most of the map's cost.
+  const bool occluders = !tessellated && split < 3 && p.occlusionPrepass && hasOccluders_;
+  if (occluders) {
+    shadow_->beginOccluders(p.shadow.mapSize);
+    use(ellipsoid_);
+    culling_.draw(sprites_, 0, 2);
+    shadow_->buildPyramid(pyramid_);
+  }
+  shadow_->beginMap(p.shadow.mapSize);
   if (tessellated) {
     setCamera(tessellated_.program(), light);
     tessellated_.draw(p.tessellation, std::size_t(count_));
@@ -151,7 +159,7 @@ Camera GlyphRenderer::renderShadowMap(const Camera& cam, const FrameParams& p, i
     use(ellipsoid_);
     culling_.draw(sprites_, 0, split);
     if (split < 3) {
-      superquadric_.set("uOccluders", 0);  // the pre-pass's pyramid is the view's
+      superquadric_.set("uOccluders", occluders ? 1 : 0);
       use(superquadric_);
       culling_.draw(sprites_, split, 3);
     }

@@ -88,7 +88,48 @@ ShadowPass::ShadowPass(const gl::Api& gl, const gl::ShaderLibrary& lib)
     : gl_(gl), lighting_(gl, lib, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "lighting.frag"}},
                          {"TG_SHADOWS"}) {}
 
-ShadowPass::~ShadowPass() { release(); }
+ShadowPass::~ShadowPass() {
+  release();
+  releaseOccluders();
+}
+
+void ShadowPass::releaseOccluders() {
+  if (occluderFbo_) gl_.DeleteFramebuffers(1, &occluderFbo_);
+  const GLuint tex[2] = {occluderDepth_, pyramid_};
+  if (occluderDepth_) gl_.DeleteTextures(2, tex);
+  occluderFbo_ = occluderDepth_ = pyramid_ = 0;
+  occluderSize_ = 0;
+}
+
+void ShadowPass::beginOccluders(int mapSize) {
+  if (mapSize != occluderSize_) {
+    releaseOccluders();
+    gl_.CreateTextures(GL_TEXTURE_2D, 1, &occluderDepth_);
+    gl_.TextureStorage2D(occluderDepth_, 1, GL_DEPTH_COMPONENT32F, mapSize, mapSize);
+    gl_.TextureParameteri(occluderDepth_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl_.TextureParameteri(occluderDepth_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl_.CreateTextures(GL_TEXTURE_2D, 1, &pyramid_);
+    const int half = (mapSize + 1) / 2;
+    gl_.TextureStorage2D(pyramid_, OccluderPyramid::levelsFor(mapSize, mapSize), GL_R32F, half, half);
+    gl_.CreateFramebuffers(1, &occluderFbo_);
+    gl_.NamedFramebufferTexture(occluderFbo_, GL_DEPTH_ATTACHMENT, occluderDepth_, 0);
+    const GLenum none = GL_NONE;
+    gl_.NamedFramebufferDrawBuffers(occluderFbo_, 1, &none);
+    if (gl_.CheckNamedFramebufferStatus(occluderFbo_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      throw std::runtime_error("ShadowPass: occluder framebuffer incomplete");
+    occluderSize_ = mapSize;
+  }
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, occluderFbo_);
+  gl_.Viewport(0, 0, occluderSize_, occluderSize_);
+  const float farDepth = 0.0f;
+  gl_.ClearNamedFramebufferfv(occluderFbo_, GL_DEPTH, 0, &farDepth);
+  gl::checkError(gl_, "ShadowPass::beginOccluders");
+}
+
+void ShadowPass::buildPyramid(const OccluderPyramid& pyramid) const {
+  pyramid.build(occluderDepth_, pyramid_, occluderSize_, occluderSize_,
+                OccluderPyramid::levelsFor(occluderSize_, occluderSize_));
+}
 
 void ShadowPass::release() {
   if (fbo_) gl_.DeleteFramebuffers(1, &fbo_);
@@ -142,6 +183,17 @@ void ShadowPass::bindForLighting(const Camera& view, const Camera& light, const 
   gl::checkError(gl_, "ShadowPass::bindForLighting");
 }
 
-std::size_t ShadowPass::gpuBytes() const { return std::size_t(size_) * std::size_t(size_) * 4; }
+std::size_t ShadowPass::gpuBytes() const {
+  std::size_t bytes = std::size_t(size_) * std::size_t(size_) * 4;
+  if (occluderSize_ > 0) {
+    const auto n = std::size_t(occluderSize_);
+    bytes += n * n * 4;
+    for (int l = 0; l < OccluderPyramid::levelsFor(occluderSize_, occluderSize_); ++l) {
+      const std::size_t side = std::max<std::size_t>(1, ((n + 1) / 2) >> l);
+      bytes += side * side * 4;
+    }
+  }
+  return bytes;
+}
 
 }  // namespace tg::render

@@ -3,8 +3,11 @@
 // map of the same exact glyphs, filtered by percentage closer filtering
 // (Reeves et al. 1987) in the deferred lighting pass.
 //
+//   Occluders   (superquadric frames, as the view's pre-pass) WRITES its own
+//                      DEPTH32F occluder depth and R32F pyramid at map size,
+//                      from the exact ellipsoids that superquadrics hold
 //   Map pass    READS  the glyph records (the glyph programs, drawn from the
-//                      light's orthographic camera; uOccluders off)
+//                      light's orthographic camera), the occluders above
 //               WRITES its own DEPTH32F map (reversed, window depth along the
 //                      key light), mapSize x mapSize
 //   Lighting    READS  G-buffer depth (unit kSceneDepthUnit), the map (unit
@@ -21,6 +24,7 @@
 #include "gl/program.h"
 #include "render/camera.h"
 #include "render/gbuffer.h"
+#include "render/occluder_pyramid.h"
 
 namespace tg::render {
 
@@ -67,6 +71,12 @@ class ShadowPass {
   // (Re)allocates the map for `mapSize`, clears it and binds its framebuffer
   // for the glyph programs to draw depth into.
   void beginMap(int mapSize);
+  // The occlusion pre-pass from the light (GlyphRenderer::render's, at map
+  // size): beginOccluders clears and binds a depth target for the exact
+  // ellipsoids, buildPyramid reduces it and leaves both bound where
+  // shaders/lib/occlusion.glsl reads them. Allocated on first use.
+  void beginOccluders(int mapSize);
+  void buildPyramid(const OccluderPyramid& pyramid) const;
   // Binds the map and target's depth, and sets the shadow uniforms of the
   // lighting variant (the caller sets its camera and light mix).
   void bindForLighting(const Camera& view, const Camera& light, const ShadowParams& p, const GBuffer& target) const;
@@ -76,10 +86,13 @@ class ShadowPass {
 
  private:
   void release();
+  void releaseOccluders();
   const gl::Api& gl_;
   gl::Program lighting_;
   GLuint map_ = 0, fbo_ = 0;
   int size_ = 0;
+  GLuint occluderDepth_ = 0, pyramid_ = 0, occluderFbo_ = 0;
+  int occluderSize_ = 0;
 };
 
 }  // namespace tg::render
