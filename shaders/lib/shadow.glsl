@@ -22,24 +22,22 @@ uniform float uShadowStrength;
 // below this), where the key light is at most 5% of its peak anyway.
 const float kMinShadowCos = 0.05;
 
-// 1 where the surface in texel i is not in front of the receiver, whose
-// depth there is dP plus its plane's rise from q (texel units) to the texel centre.
-float shadowTexelLit(ivec2 i, float dP, vec2 slope, vec2 q) {
-  if (any(lessThan(i, ivec2(0))) || any(greaterThanEqual(i, ivec2(uShadowMapSize)))) return 1.0;
-  float w = texelFetch(uShadowMap, i, 0).r;
-  if (!(w > 0.0)) return 1.0;
-  float dMap = uLightNearFar.y - w * (uLightNearFar.y - uLightNearFar.x);
-  return dMap >= dP + dot(slope, vec2(i) + 0.5 - q) - uShadowBias ? 1.0 : 0.0;
-}
-
-// The four texels around position t, bilinearly weighted.
+// The four texels around position t (texel units), one gather, each lit
+// (1) where its surface is not in front of the receiver: whose depth there
+// is dP plus its plane's rise from q to the texel's centre. Bilinearly
+// weighted. The map clamps to its edge, which the light camera's margin
+// leaves empty (window depth 0: nothing, lit).
 float shadowTap(vec2 t, float dP, vec2 slope, vec2 q) {
-  vec2 b = t - 0.5;
-  vec2 f = b - floor(b);
-  ivec2 i = ivec2(floor(b));
-  float l00 = shadowTexelLit(i, dP, slope, q), l10 = shadowTexelLit(i + ivec2(1, 0), dP, slope, q);
-  float l01 = shadowTexelLit(i + ivec2(0, 1), dP, slope, q), l11 = shadowTexelLit(i + ivec2(1, 1), dP, slope, q);
-  return mix(mix(l00, l10, f.x), mix(l01, l11, f.x), f.y);
+  vec2 b = floor(t - 0.5);
+  vec2 f = t - 0.5 - b;
+  // Gather order: (0, 1), (1, 1), (1, 0), (0, 0) from texel b.
+  vec4 w = textureGather(uShadowMap, (b + 1.0) / uShadowMapSize);
+  vec4 dMap = uLightNearFar.y - w * (uLightNearFar.y - uLightNearFar.x);
+  vec2 c = b + 0.5 - q;  // texel (0, 0)'s centre from q
+  vec4 rise = vec4(dot(slope, c + vec2(0, 1)), dot(slope, c + vec2(1, 1)), dot(slope, c + vec2(1, 0)), dot(slope, c));
+  vec4 lit = vec4(greaterThanEqual(dMap, dP + rise - uShadowBias)) + vec4(lessThanEqual(w, vec4(0.0)));
+  lit = min(lit, 1.0);
+  return mix(mix(lit.w, lit.z, f.x), mix(lit.x, lit.y, f.x), f.y);
 }
 
 // Visibility of the key light, 0..1, at the surface point pVC with unit

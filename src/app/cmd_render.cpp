@@ -216,6 +216,10 @@ int cmdRender(int argc, const char** argv) {
     std::fprintf(stderr, "\n  %llu glyphs drawn (after FA and frustum culling), scale %.6g, fa-min %.3g, peak RSS %.1f MiB\n",
                  static_cast<unsigned long long>(drawn), params.scale, params.faMin,
                  double(peakRssBytes()) / (1024.0 * 1024.0));
+    if (params.shadow.enabled)
+      std::fprintf(stderr, "  shadows: map %d x %d texels, penumbra %.3g, %.1f MiB of GPU memory in all\n",
+                   renderer.shadowMapSize(), renderer.shadowMapSize(), double(params.shadow.penumbra),
+                   double(renderer.gpuBytes()) / (1024.0 * 1024.0));
   }
   return 0;
 }

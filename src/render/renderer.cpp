@@ -129,7 +129,7 @@ Camera GlyphRenderer::renderShadowMap(const Camera& cam, const FrameParams& p, i
   }
   const double pad = std::sqrt(3.0) * p.scale * maxAbsEigenvalue_;
   const glm::dvec3 keyWC = glm::transpose(glm::dmat3(cam.viewWCVC)) * glm::dvec3(p.light.keyDirVC);
-  const Camera light = lightCamera(cam, keyWC, lo - pad, hi + pad, p.shadow.mapSize);
+  const Camera light = lightCamera(cam, keyWC, lo - pad, hi + pad, p.shadow);
   const bool tessellated = p.tessellation > 0;
   if (tessellated) culling_.bypass();
   else culling_.prepare(light, p.scale, p.faMin, p.slab, p.frustumCulling);
@@ -146,12 +146,12 @@ Camera GlyphRenderer::renderShadowMap(const Camera& cam, const FrameParams& p, i
   // The view's occlusion pre-pass, from the light: the march is most of the map's cost.
   const bool occluders = !tessellated && split < 3 && p.occlusionPrepass && hasOccluders_;
   if (occluders) {
-    shadow_->beginOccluders(p.shadow.mapSize);
+    shadow_->beginOccluders(light.width);
     use(ellipsoid_);
     culling_.draw(sprites_, 0, 2);
     shadow_->buildPyramid(pyramid_);
   }
-  shadow_->beginMap(p.shadow.mapSize);
+  shadow_->beginMap(light.width);
   if (tessellated) {
     setCamera(tessellated_.program(), light);
     tessellated_.draw(p.tessellation, std::size_t(count_));

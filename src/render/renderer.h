@@ -101,6 +101,7 @@ class GlyphRenderer {
   // shadow pass (its program and map) exists now: only while frames ask for it.
   std::uint64_t shadowMapPasses() const { return shadowMapPasses_; }
   bool shadowPassBuilt() const { return shadow_ != nullptr; }
+  int shadowMapSize() const { return shadow_ ? shadow_->mapSize() : 0; }  // texels a side, of the last map
   // GPU memory held for the uploaded glyphs: records, culling's ranges and
   // commands, the compacted indices once a threshold needed them, and the
   // tessellated mesh once drawn, and the shadow map while shadows are on.

@@ -41,13 +41,13 @@ std::array<glm::dvec3, 8> frustumCornersWC(const Camera& view, double zNear, dou
 }  // namespace
 
 Camera lightCamera(const Camera& view, const glm::dvec3& keyDirWC, const glm::dvec3& lo, const glm::dvec3& hi,
-                   int mapSize) {
+                   const ShadowParams& p) {
   const glm::dvec3 l = glm::normalize(keyDirWC);
   const glm::dvec3 centre = 0.5 * (lo + hi);
   const double r = std::max(0.5 * glm::length(hi - lo), 1e-30 + 1e-12 * glm::length(centre));
   const glm::dvec3 up = std::abs(l.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
   const glm::dmat4 lightView = glm::lookAt(centre + 2.0 * r * l, centre, up);
-  auto lightXY = [&](const glm::dvec3& p) { return glm::dvec2(lightView * glm::dvec4(p, 1.0)); };
+  auto lightXY = [&](const glm::dvec3& x) { return glm::dvec2(lightView * glm::dvec4(x, 1.0)); };
   Rect2 box, seen;
   double zMin = INFINITY, zMax = -INFINITY;
   for (int k = 0; k < 8; ++k) {
@@ -81,6 +81,15 @@ Camera lightCamera(const Camera& view, const glm::dvec3& keyDirWC, const glm::dv
   d.eyeWC = d.lookAtWC + 2.0 * r * l;
   d.upWC = up;
   d.orthoHeight = side;
+  int mapSize = p.mapSize;
+  if (p.mapDensity > 0.0f) {
+    // The view's pixel at the box centre's depth, in world units.
+    const double zc = std::max(view.nearVC, -(view.viewWCVC * glm::dvec4(centre, 1.0)).z);
+    const double pixel = (persp ? 2.0 * zc * std::tan(glm::radians(view.desc.fovYDeg) * 0.5)
+                                : view.desc.orthoHeight) / double(view.height);
+    const double texels = std::ceil(double(p.mapDensity) * side / pixel / 64.0) * 64.0;
+    if (texels < double(mapSize)) mapSize = std::max(kMinShadowMapSize, int(texels));
+  }
   return makeCamera(d, mapSize, mapSize, lo, hi);
 }
 
@@ -151,6 +160,8 @@ void ShadowPass::beginMap(int mapSize) {
     gl_.TextureStorage2D(map_, 1, GL_DEPTH_COMPONENT32F, mapSize, mapSize);
     gl_.TextureParameteri(map_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     gl_.TextureParameteri(map_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl_.TextureParameteri(map_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl_.TextureParameteri(map_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     gl_.CreateFramebuffers(1, &fbo_);
     gl_.NamedFramebufferTexture(fbo_, GL_DEPTH_ATTACHMENT, map_, 0);
     const GLenum none = GL_NONE;

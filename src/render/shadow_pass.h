@@ -33,7 +33,12 @@ namespace tg::render {
 // keep their meaning when the map is fitted to another region.
 struct ShadowParams {
   bool enabled = false;
-  int mapSize = 2048;  // texels per side of the square map
+  int mapSize = 2048;  // texels per side of the square map, at most (see mapDensity)
+  // Map texels per view pixel at the glyph box's centre: the map's side is
+  // that, in multiples of 64, up to mapSize. A map finer than the view
+  // resolves nothing more and costs as a second geometry pass at its size.
+  // 0: always mapSize.
+  float mapDensity = 1.0f;
   // Width of the soft edge (the PCF kernel) as a fraction of the map's side
   // in world units: independent of mapSize, which sets only its sharpness.
   float penumbra = 0.004f;
@@ -54,9 +59,10 @@ inline constexpr float kMaxShadowPenumbra = 0.1f, kMaxShadowBias = 64.0f;
 // its window covers the part of the caster box `lo..hi` (WC) that the view
 // can see, projected along the light (glyphs outside it cannot shadow a
 // visible point), and its depth range covers the whole box towards the
-// light, where casters of visible points lie. Square, mapSize texels a side.
+// light, where casters of visible points lie. Square, with p.mapSize texels
+// a side or fewer as p.mapDensity says.
 Camera lightCamera(const Camera& view, const glm::dvec3& keyDirWC, const glm::dvec3& lo, const glm::dvec3& hi,
-                   int mapSize);
+                   const ShadowParams& p);
 
 class ShadowPass {
  public:
@@ -83,6 +89,7 @@ class ShadowPass {
   // lighting.frag compiled with TG_SHADOWS.
   const gl::Program& lighting() const { return lighting_; }
   std::size_t gpuBytes() const;
+  int mapSize() const { return size_; }  // of the last map drawn
 
  private:
   void release();

@@ -134,6 +134,7 @@ TEST_F(Shadows, OffIsTodaysFrameBitForBitAndBuildsNothing) {
     r.upload(set);
     render::FrameParams p;
     p.glyph = glyph;
+    p.shadow.mapDensity = 0.0f;  // a map of mapSize, whatever the view
     r.render(cam, p, target);
     const render::FrameImage before = r.readback(cam, target);
     const std::size_t bytes = r.gpuBytes();
@@ -159,6 +160,28 @@ TEST_F(Shadows, OffIsTodaysFrameBitForBitAndBuildsNothing) {
     EXPECT_EQ(r.gpuBytes(), bytes);
     EXPECT_EQ(r.shadowMapPasses(), 1u);
   }
+}
+
+// The map's side follows the view: about a texel per pixel at the glyphs, in
+// multiples of 64, never above mapSize; a fixed size with density 0.
+TEST(ShadowMap, SizeFollowsTheViewResolution) {
+  const auto set = shadowScene();
+  const glm::dvec3 lo = set.boundsMinWC - 2.0, hi = set.boundsMaxWC + 2.0, key(-0.3, 0.5, 1.0);
+  render::ShadowParams p;
+  const render::Camera small = render::lightCamera(sceneCamera(160, 120), key, lo, hi, p);
+  const render::Camera large = render::lightCamera(sceneCamera(1280, 960), key, lo, hi, p);
+  EXPECT_EQ(small.width, small.height);
+  EXPECT_EQ(small.width % 64, 0);
+  EXPECT_EQ(large.width % 64, 0);
+  // Eight times the pixels across: eight times the texels, to within the rounding to 64.
+  EXPECT_NEAR(double(large.width), 8.0 * small.width, 8.0 * 64.0);
+  EXPECT_LE(large.width, p.mapSize);
+  EXPECT_GE(small.width, render::kMinShadowMapSize);
+  EXPECT_DOUBLE_EQ(small.desc.orthoHeight, large.desc.orthoHeight);  // the same region, finer
+  p.mapSize = 512;
+  EXPECT_EQ(render::lightCamera(sceneCamera(1280, 960), key, lo, hi, p).width, 512);
+  p.mapDensity = 0.0f;
+  EXPECT_EQ(render::lightCamera(sceneCamera(160, 120), key, lo, hi, p).width, 512);
 }
 
 // The light's occlusion pre-pass changes what the map costs, never the map:
@@ -216,13 +239,14 @@ TEST_F(Shadows, LitAndShadowedPixelsMatchTheShadowRayReference) {
     // scene filling a 1024-pixel-wide frame: a bias of B texels then shows
     // as it would there.
     p.shadow.mapSize = 256;
+    p.shadow.mapDensity = 0.0f;
     p.shadow.receiverPlane = m.receiverPlane;
     p.shadow.bias = m.bias;
     p.shadow.normalOffset = m.normalOffset;
     p.shadow.penumbra = m.penumbra;
     const auto on = frame(set, cam, p);
     const render::Camera light =
-        render::lightCamera(cam, key, set.boundsMinWC - pad, set.boundsMaxWC + pad, p.shadow.mapSize);
+        render::lightCamera(cam, key, set.boundsMinWC - pad, set.boundsMaxWC + pad, p.shadow);
     const double texel = light.desc.orthoHeight / p.shadow.mapSize;
     const double reach = 0.5 * p.shadow.penumbra * light.desc.orthoHeight * std::sqrt(2.0) + 2.0 * texel;
     const Classification c = classify(on, off, refImg, cam, rays, reach);
