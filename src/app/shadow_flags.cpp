@@ -32,11 +32,13 @@ void ShadowFlags::addTo(OIIO::ArgParse& ap) {
         p.penumbra = float(parseDoubleIn("--shadow-penumbra", a[1], 0.0, render::kMaxShadowPenumbra));
       });
   ap.arg("--shadow-map-size N")
-      .help("shadow map texels per side (" + number(render::kMinShadowMapSize) + ".." +
-            number(render::kMaxShadowMapSize) + ", default " + number(d.mapSize) + ")")
+      .help("shadow map texels per side, fixed (" + number(render::kMinShadowMapSize) + ".." +
+            number(render::kMaxShadowMapSize) + "; default: about " + number(d.mapDensity) +
+            " per image pixel at the glyphs, at most " + number(d.mapSize) + ")")
       .action([&p, given](auto&, Args a) {
         given("--shadow-map-size");
         p.mapSize = parseIntIn("--shadow-map-size", a[1], render::kMinShadowMapSize, render::kMaxShadowMapSize);
+        p.mapDensity = 0.0f;
       });
   ap.arg("--shadow-strength S")
       .help("share of the key light a full shadow removes (0..1, default " + number(d.strength) + ")")

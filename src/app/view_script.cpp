@@ -124,8 +124,10 @@ void applyStep(const ScriptStep& s, ViewState& v) {
   else if (w == "shadow") {
     const double value = shadowValue(s);
     const std::string& t = s.args[0];
-    if (t == "map-size") p.shadow.mapSize = int(value);
-    else (t == "penumbra" ? p.shadow.penumbra : t == "strength" ? p.shadow.strength : p.shadow.bias) = float(value);
+    if (t == "map-size") {
+      p.shadow.mapSize = int(value);
+      p.shadow.mapDensity = 0.0f;  // fixed, as render's --shadow-map-size
+    } else (t == "penumbra" ? p.shadow.penumbra : t == "strength" ? p.shadow.strength : p.shadow.bias) = float(value);
   }
   else if (w == "scale") {
     v.scaleFactor = number(s, 0);

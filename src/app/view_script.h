@@ -19,7 +19,7 @@
 //   epsilon E              superquadric hit tolerance
 //   stats on|off           count Newton iterations (status line)
 //   shadows on|off         soft shadows from the key light
-//   shadow penumbra|strength|bias|map-size V   (render's --shadow-* ranges)
+//   shadow penumbra|strength|bias|map-size V   (render's --shadow-* flags and ranges)
 //   frames N               render N frames unchanged (for timing)
 //   screenshot FILE        save the rendered view (without the panel)
 #include <string>

@@ -105,6 +105,7 @@ TEST(ViewScript, ShadowCommandsSetTheShadowParamsWithRenderRanges) {
   EXPECT_FLOAT_EQ(v.params.shadow.strength, 0.5f);
   EXPECT_FLOAT_EQ(v.params.shadow.bias, 2.0f);
   EXPECT_EQ(v.params.shadow.mapSize, 512);
+  EXPECT_EQ(v.params.shadow.mapDensity, 0.0f);  // a size given is fixed
   app::applyStep(steps[5], v);
   EXPECT_FALSE(v.params.shadow.enabled);
 
