@@ -482,7 +482,7 @@ TensorField readMif(const std::string& path, const ReadOptions& opt) {
   if (fileOrderIsIndexOrder(h)) {
     if (sel.selectsAll()) f.reserve(std::size_t(voxels));
     streamValues(path, im, 6, [&](const double* v, std::size_t m) {
-      for (std::size_t i = 0; i < m; i += 6) sink.push(v + i);
+      sink.pushVoxels(v, m);
     });
   } else {
     // Any other layout: the kept voxels' components are gathered first,

@@ -136,6 +136,37 @@ double loadULLong(const void* p) {
 
 double (*loaderFor(int type))(const void*) { return type == nrrdTypeULLong ? loadULLong : nrrdDLoad[type]; }
 
+template <class T>
+void widen(const char* src, std::size_t m, double* out) {
+  for (std::size_t i = 0; i < m; ++i) {
+    T v;
+    std::memcpy(&v, src + i * sizeof(T), sizeof v);
+    out[i] = double(v);
+  }
+}
+
+// A chunk of native-order values as doubles: one loop per type, which the
+// compiler vectorises, where Teem's loader is a call through a pointer for
+// every value (a third of a raw float load's time).
+void toDoubles(int type, const char* src, std::size_t m, double* out) {
+  switch (type) {
+    case nrrdTypeChar: return widen<signed char>(src, m, out);
+    case nrrdTypeUChar: return widen<unsigned char>(src, m, out);
+    case nrrdTypeShort: return widen<std::int16_t>(src, m, out);
+    case nrrdTypeUShort: return widen<std::uint16_t>(src, m, out);
+    case nrrdTypeInt: return widen<std::int32_t>(src, m, out);
+    case nrrdTypeUInt: return widen<std::uint32_t>(src, m, out);
+    case nrrdTypeLLong: return widen<std::int64_t>(src, m, out);
+    case nrrdTypeULLong: return widen<std::uint64_t>(src, m, out);
+    case nrrdTypeFloat: return widen<float>(src, m, out);
+    case nrrdTypeDouble: return widen<double>(src, m, out);
+    default: {
+      double (*load)(const void*) = loaderFor(type);
+      for (std::size_t i = 0; i < m; ++i) out[i] = load(src + i * nrrdTypeSize[type]);
+    }
+  }
+}
+
 // The data must fit in what follows the header: raw bytes as they are, text
 // at one byte a value at least (two a byte in hex), gzip within deflate's
 // ratio. Checked before anything is sized from the header.
@@ -279,11 +310,9 @@ void decode(const std::string& path, Header& h, std::uint64_t count, std::size_t
     const std::size_t got = read(buf.data(), want);
     if (got != want) truncated(done + got);
     const std::size_t m = want / tsize;
-    for (std::size_t i = 0; i < m; ++i) {
-      char* p = buf.data() + i * tsize;
-      if (swap) std::reverse(p, p + tsize);
-      vals[i] = load(p);
-    }
+    if (swap)
+      for (std::size_t i = 0; i < m; ++i) std::reverse(buf.data() + i * tsize, buf.data() + (i + 1) * tsize);
+    toDoubles(n->type, buf.data(), m, vals.data());
     consume(vals.data(), m);
     done += want;
   }
@@ -457,7 +486,7 @@ TensorField readNrrd(const std::string& path, const ReadOptions& opt) {
     f.reserve(std::size_t(voxels));
   VolumeSink sink(f, g, layout, sel, opt.selection.confidenceMin);
   decode(path, *h, values, std::size_t(layout.count), [&](const double* v, std::size_t m) {
-    for (std::size_t i = 0; i < m; i += std::size_t(layout.count)) sink.push(v + i);
+    sink.pushVoxels(v, m);
   });
   sink.finish();
   if (layout.full && sink.maxAsymmetry() > 1e-3)

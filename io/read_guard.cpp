@@ -1,7 +1,7 @@
 #include "io/read_guard.h"
 
 #include <fcntl.h>
-#include <sys/uio.h>
+#include <sys/socket.h>
 #include <poll.h>
 #include <signal.h>
 #include <sys/mman.h>
@@ -19,121 +19,12 @@
 #include <optional>
 #include <type_traits>
 
-#include "util/huge_pages.h"
+#include "io/guard_wire.h"
 
 namespace tg::io {
 namespace {
 
-// ---- The field on the wire: PODs, strings and arrays, in one fixed order --
-
-class WireOut {
- public:
-  explicit WireOut(int fd) : fd_(fd) {}
-  // Small items gather in a buffer; arrays go straight into the pipe.
-  void bytes(const void* p, std::size_t n) {
-    if (n < 4096) {
-      pending_.append(static_cast<const char*>(p), n);
-      return;
-    }
-    flush();
-    put(p, n, true);
-  }
-  // Written, not spliced: the buffer is reused while the pipe still holds it.
-  void flush() {
-    put(pending_.data(), pending_.size(), false);
-    pending_.clear();
-  }
-  template <class T>
-  void pod(const T& v) {
-    static_assert(std::is_trivially_copyable_v<T>);
-    bytes(&v, sizeof v);
-  }
-  void str(const std::string& s) {
-    pod(std::uint64_t(s.size()));
-    bytes(s.data(), s.size());
-  }
-  template <class T>
-  void array(const std::vector<T>& v) {
-    pod(std::uint64_t(v.size()));
-    bytes(v.data(), v.size() * sizeof(T));
-  }
-
- private:
-  // Arrays are spliced: the pipe takes references to the child's pages and
-  // the parent's read() is the one copy. The child does not touch them again.
-  void put(const void* p, std::size_t n, bool splice) {
-    const char* c = static_cast<const char*>(p);
-    while (n > 0) {
-      ssize_t w = -1;
-      if (splice) {
-        iovec io{const_cast<char*>(c), n};
-        w = ::vmsplice(fd_, &io, 1, 0);
-        if (w < 0 && errno == EINTR) continue;
-      }
-      if (w < 0) {  // small items, or a kernel without vmsplice for pipes
-        w = ::write(fd_, c, n);
-        if (w < 0 && errno == EINTR) continue;
-      }
-      if (w <= 0) _exit(3);  // the parent is gone
-      c += w;
-      n -= std::size_t(w);
-    }
-  }
-  int fd_;
-  std::string pending_;
-};
-
 using Clock = std::chrono::steady_clock;
-
-// The parent's end: exactly the bytes asked for, before a deadline, each
-// array straight into its final (huge-page) storage.
-class WireIn {
- public:
-  WireIn(int fd, Clock::time_point deadline, std::uint64_t maxBytes) : fd_(fd), deadline_(deadline), max_(maxBytes) {}
-  void bytes(void* dst, std::size_t n) {
-    char* c = static_cast<char*>(dst);
-    while (n > 0) {
-      const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline_ - Clock::now()).count();
-      if (left <= 0) throw std::runtime_error("the reader's result did not arrive in time");
-      pollfd p{fd_, POLLIN, 0};
-      const int r = ::poll(&p, 1, int(std::min<long long>(left, 1000)));
-      if (r <= 0) continue;
-      const ssize_t got = ::read(fd_, c, n);
-      if (got < 0 && errno == EINTR) continue;
-      if (got <= 0) throw std::runtime_error("the reader's result is short");
-      c += got;
-      n -= std::size_t(got);
-    }
-  }
-  template <class T>
-  T pod() {
-    T v;
-    bytes(&v, sizeof v);
-    return v;
-  }
-  std::string str() {
-    std::string s(count(1), '\0');
-    bytes(s.data(), s.size());
-    return s;
-  }
-  template <class T>
-  void array(std::vector<T>& v) {
-    const std::size_t n = count(sizeof(T));
-    util::reserveHuge(v, n);
-    v.resize(n);
-    bytes(v.data(), n * sizeof(T));
-  }
-
- private:
-  std::size_t count(std::size_t elementBytes) {
-    const auto n = pod<std::uint64_t>();
-    if (n > max_ / elementBytes) throw std::runtime_error("the reader's result is malformed");
-    return std::size_t(n);
-  }
-  int fd_;
-  Clock::time_point deadline_;
-  std::uint64_t max_;
-};
 
 constexpr std::uint32_t kWireMagic = 0x54474631;  // "TGF1"
 // Every member of TensorField crosses the process boundary in writeField and
@@ -181,7 +72,7 @@ TensorField readField(WireIn& r) {
 
 // ---- The status pipe: one letter, then the text -------------------------
 // 'P' + 8 bytes: a promise of decoded bytes; 'O': the field follows on the
-// data pipe; 'E' + text: the reader's InputError; 'M' + text: out of memory;
+// data socket; 'E' + text: the reader's InputError; 'M' + text: out of memory;
 // 'X' + text: any other exception, which the parent words with the file.
 
 std::string sizeText(std::uint64_t bytes) {
@@ -251,10 +142,7 @@ void sendAll(int fd, const void* p, std::size_t n) {
     sendAll(statusFd, "O", 1);
     WireOut w(dataFd);
     writeField(w, f);
-    w.flush();
-    // Now, with `f` alive: the pipe still refers to its pages, and freeing
-    // them could hand small arrays' heap memory to later allocations before
-    // the parent has read them.
+    w.finish();  // with `f` alive: the parent may be copying from it
     _exit(0);
   } catch (const InputError& e) {
     sendAll(statusFd, "E", 1);
@@ -316,9 +204,9 @@ TensorField readInChild(const std::string& who, const std::string& path, const R
   int statusFds[2], dataFds[2];
   if (::pipe2(statusFds, O_CLOEXEC) != 0) throw fail(std::string("cannot start the reader: ") + std::strerror(errno));
   Fd statusIn{statusFds[0]}, statusOut{statusFds[1]};
-  if (::pipe2(dataFds, O_CLOEXEC) != 0) throw fail(std::string("cannot start the reader: ") + std::strerror(errno));
+  if (::socketpair(AF_UNIX, SOCK_STREAM | SOCK_CLOEXEC, 0, dataFds) != 0)
+    throw fail(std::string("cannot start the reader: ") + std::strerror(errno));
   Fd dataIn{dataFds[0]}, dataOut{dataFds[1]};
-  ::fcntl(dataOut.fd, F_SETPIPE_SZ, 1 << 20);  // fewer round trips; the default 64 KiB works too
   std::fflush(nullptr);
   const pid_t pid = ::fork();
   if (pid < 0) throw fail(std::string("cannot start the reader: ") + std::strerror(errno));
@@ -360,8 +248,9 @@ TensorField readInChild(const std::string& who, const std::string& path, const R
     const auto until = Clock::now() + std::chrono::duration_cast<Clock::duration>(
                                           std::chrono::duration<double>(10.0 + double(limits.memoryBytes) / 1e8));
     try {
-      WireIn in(dataIn.fd, until, limits.memoryBytes + (std::uint64_t(1) << 20));
+      WireIn in(dataIn.fd, pid, until, limits.memoryBytes + (std::uint64_t(1) << 20));
       field = readField(in);
+      in.finish();
     } catch (const std::runtime_error& e) {
       transferError = e.what();
     } catch (const std::bad_alloc&) {

@@ -3,9 +3,9 @@
 // header parsers) run in a child process, so that a crash, a runaway
 // allocation or a hang inside them becomes one line naming the file instead
 // of taking the process (or the machine) down. The child has an address-space
-// limit, a CPU limit and a wall-clock deadline; its field comes back through
-// a pipe, its arrays spliced (vmsplice) so that the parent's read into its
-// own arrays is the one copy.
+// limit, a CPU limit and a wall-clock deadline. Its field comes back through
+// a socket, the arrays copied once, straight from the child's memory
+// (io/guard_wire.h).
 #include <cstdint>
 #include <functional>
 #include <string>

@@ -19,25 +19,6 @@ void TensorField::addFull(std::uint32_t id, const double p[3], const double t[9]
   addSym(id, p, sym);
 }
 
-void TensorField::addSym(std::uint32_t id, const double p[3], const double s[6]) {
-  ++totalPoints;
-  bool finite = std::isfinite(float(p[0])) && std::isfinite(float(p[1])) && std::isfinite(float(p[2]));
-  // Checked in float too: a finite double beyond FLT_MAX would be stored as Inf.
-  for (int k = 0; k < 6; ++k) finite = finite && std::isfinite(float(s[k]));
-  if (!finite) {
-    ++skippedNonFinite;
-    return;
-  }
-  const double norm2 = s[0] * s[0] + s[3] * s[3] + s[5] * s[5] + 2 * (s[1] * s[1] + s[2] * s[2] + s[4] * s[4]);
-  if (!(norm2 <= double(FLT_MAX) * double(FLT_MAX))) {
-    ++skippedOverflow;
-    return;
-  }
-  for (int k = 0; k < 3; ++k) positions.push_back(float(p[k]));
-  for (int k = 0; k < 6; ++k) tensors.push_back(float(s[k]));
-  ids.push_back(id);
-}
-
 void symmetricPart(const double t[9], double s[6]) {
   s[0] = t[0], s[1] = 0.5 * (t[1] + t[3]), s[2] = 0.5 * (t[2] + t[6]);
   s[3] = t[4], s[4] = 0.5 * (t[5] + t[7]), s[5] = t[8];
@@ -53,7 +34,7 @@ void congruence(const double t[9], const double s[6], double out[6]) {
   std::copy(w, w + 6, out);
 }
 
-double estimateSampleSpacing(const std::vector<float>& pos) {
+double estimateSampleSpacing(std::span<const float> pos) {
   const std::size_t n = pos.size() / 3;
   if (n < 2) return 0.0;
   // Points sorted by x; a query scans outwards until x alone exceeds its best.

@@ -1,15 +1,19 @@
 #pragma once
 // A tensor field as loaded from any format: points in WC and tensors already
 // in the world frame.
+#include <algorithm>
 #include <array>
+#include <cfloat>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "util/huge_pages.h"
+#include "util/mapped_array.h"
 
 namespace tg::io {
 
@@ -40,9 +44,10 @@ struct TensorField {
   std::optional<std::array<double, 9>> tensorToWC;  // row-major T
   bool hasConfidence = false;  // the format gives each tensor a confidence (masked NRRD)
   std::vector<std::string> warnings;  // one line each, without the file name
-  std::vector<float> positions;     // 3 per kept tensor, WC
-  std::vector<float> tensors;       // 6 per kept tensor: xx xy xz yy yz zz, WC
-  std::vector<std::uint32_t> ids;   // input index of each kept tensor
+  // In memfd storage: a guarded read hands them over without a copy.
+  util::MappedArray<float> positions;    // 3 per kept tensor, WC
+  util::MappedArray<float> tensors;      // 6 per kept tensor: xx xy xz yy yz zz, WC
+  util::MappedArray<std::uint32_t> ids;  // input index of each kept tensor
   std::size_t totalPoints = 0;
   std::size_t skippedNonFinite = 0;
   std::size_t skippedOverflow = 0;  // |D| beyond single precision: its eigenvalues would be infinite
@@ -56,12 +61,32 @@ struct TensorField {
   // (which bounds every |eigenvalue|) exceeds FLT_MAX; counts it skipped then.
   // t9 is a full row-major 3x3; it is symmetrised.
   void addFull(std::uint32_t id, const double p[3], const double t9[9]);
-  // The same for a symmetric tensor given as xx xy xz yy yz zz.
-  void addSym(std::uint32_t id, const double p[3], const double s6[6]);
+  // The same for a symmetric tensor given as xx xy xz yy yz zz. Inline: the
+  // volume readers call it once a voxel.
+  void addSym(std::uint32_t id, const double p[3], const double s6[6]) {
+    ++totalPoints;
+    // Checked in float: a finite double beyond FLT_MAX would be stored as Inf.
+    const float v[9] = {float(p[0]),  float(p[1]),  float(p[2]),  float(s6[0]), float(s6[1]),
+                        float(s6[2]), float(s6[3]), float(s6[4]), float(s6[5])};
+    bool finite = true;
+    for (float x : v) finite &= std::isfinite(x);
+    if (!finite) {
+      ++skippedNonFinite;
+      return;
+    }
+    const double norm2 = s6[0] * s6[0] + s6[3] * s6[3] + s6[5] * s6[5] + 2 * (s6[1] * s6[1] + s6[2] * s6[2] + s6[4] * s6[4]);
+    if (!(norm2 <= double(FLT_MAX) * double(FLT_MAX))) {
+      ++skippedOverflow;
+      return;
+    }
+    std::copy(v, v + 3, positions.extend(3));
+    std::copy(v + 3, v + 9, tensors.extend(6));
+    ids.push_back(id);
+  }
   void reserve(std::size_t n) {
-    util::reserveHuge(positions, 3 * n);
-    util::reserveHuge(tensors, 6 * n);
-    util::reserveHuge(ids, n);
+    positions.reserve(3 * n);
+    tensors.reserve(6 * n);
+    ids.reserve(n);
   }
   // Frees positions, tensors and ids once glyphs have been built from them;
   // the counts and grid stay.
@@ -79,6 +104,6 @@ void symmetricPart(const double t9[9], double s6[6]);
 void congruence(const double t[9], const double s6[6], double out6[6]);
 
 // Median nearest-neighbour distance over a sample of up to 512 points.
-double estimateSampleSpacing(const std::vector<float>& positions);
+double estimateSampleSpacing(std::span<const float> positions);
 
 }  // namespace tg::io

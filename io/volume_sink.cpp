@@ -28,6 +28,11 @@ void VolumeSink::push(const double* v) {
   if (sel_.admit(index, p, f_)) emit(index, p, v);
 }
 
+void VolumeSink::pushVoxels(const double* v, std::size_t values) {
+  const std::size_t step = std::size_t(layout_.count);
+  for (std::size_t i = 0; i < values; i += step) push(v + i);
+}
+
 void VolumeSink::positionOf(std::uint64_t index, double p[3]) const {
   const std::uint64_t nx = std::uint64_t(g_.dims[0]), ny = std::uint64_t(g_.dims[1]);
   const int ijk[3] = {int(index % nx), int(index / nx % ny), int(index / (nx * ny))};

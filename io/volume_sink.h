@@ -35,6 +35,8 @@ class VolumeSink {
              double confidenceMin);
   // The next voxel's `layout.count` values, in file order.
   void push(const double* v);
+  // The next `values / layout.count` voxels' values, in file order.
+  void pushVoxels(const double* v, std::size_t values);
   // For readers that learn a voxel's values out of order (NIfTI stores one
   // volume per component): accept() decides, before any data, whether voxel
   // `index` is kept, counting it if not; pushAccepted() then delivers a kept

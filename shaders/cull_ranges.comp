@@ -4,6 +4,9 @@
 // view frustum or the slab, else drawing the range's glyphs (all, or the compacted ones).
 // The box test mirrors tg::render::boxOutside.
 #include "lib/glyph_ranges.glsl"
+#include "lib/camera.glsl"
+#include "lib/ellipsoid.glsl"
+#include "lib/glyph_size.glsl"
 
 layout(local_size_x = 64) in;
 
@@ -18,7 +21,6 @@ layout(std430, binding = 5) writeonly buffer Commands { DrawCommand commands[]; 
 layout(std430, binding = 6) buffer Visible { uint visibleGlyphs; };
 
 uniform vec4 uFrustumWC[8];  // six frustum planes, then two slab planes
-uniform float uPadScale;  // sqrt(3) * scale
 uniform int uCompacted;
 uniform int uRangeCount;
 
@@ -30,7 +32,9 @@ void main() {
   vec3 centre = 0.5 * (lo + hi);
   // Grown by the glyphs' extent and a little more, so that float rounding of
   // the planes never culls a glyph that the exact test would keep.
-  vec3 halfWC = 0.5 * (hi - lo) + uPadScale * r.loWC_maxAbsEigenvalue.w;
+  // The largest glyph's radius bounds every glyph's (it is non-decreasing in
+  // the magnitude); sqrt(3) of it reaches a superquadric box's corner.
+  vec3 halfWC = 0.5 * (hi - lo) + 1.7320508 * glyphRadiusWC(r.loWC_maxAbsEigenvalue.w);
   halfWC += 1e-5 * (abs(centre) + halfWC);
   bool outside = false;
   for (int p = 0; p < 8; ++p) {

@@ -5,11 +5,11 @@
 #include "lib/camera.glsl"
 #include "lib/glyph_record.glsl"
 #include "lib/ellipsoid.glsl"
+#include "lib/glyph_size.glsl"
 #include "lib/color.glsl"
 #include "lib/selection.glsl"
 #include "lib/sprite.glsl"
 
-uniform float uScale;
 uniform int uColorMode;
 uniform vec2 uMdRange;
 
@@ -25,7 +25,7 @@ void main() {
   gl_Position = kSpriteCulledCC;
   GlyphRecord g = glyphs[spriteGlyphIndex()];
   if (!glyphSelected(g.posWC_fa)) return;
-  vec3 axes = ellipsoidAxes(g.eigenvalues_id.xyz, uScale);
+  vec3 axes = glyphAxes(g.eigenvalues_id.xyz);
   float radius = max(axes.x, max(axes.y, axes.z));
   if (!(radius > 0.0)) return;
 

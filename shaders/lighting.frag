@@ -13,6 +13,11 @@ uniform vec3 uKeyDirVC;    // towards the key light
 uniform vec4 uLightMix;    // ambient, head, key, specular
 uniform float uShininess;
 
+#pragma tg option TG_AO
+#ifdef TG_AO
+layout(binding = 6) uniform sampler2D uAo;  // render/ao_pass.h, AoPass::kAoUnit
+#endif
+
 out vec4 oColor;
 
 const uint kNoGlyph = 0xFFFFFFFFu;
@@ -42,7 +47,13 @@ void main() {
     specKey *= lit;
   }
 #endif
-  vec3 c = albedo * (uLightMix.x + uLightMix.y * head + uLightMix.z * key) +
+  // The share of ambient and head light that reaches the point: ambient
+  // occlusion dims both, as the head light is this renderer's fill light.
+  float fill = 1.0;
+#ifdef TG_AO
+  fill = texelFetch(uAo, p, 0).r;
+#endif
+  vec3 c = albedo * (fill * (uLightMix.x + uLightMix.y * head) + uLightMix.z * key) +
            uLightMix.w * (uLightMix.y * specHead + uLightMix.z * specKey);
   oColor = vec4(c, 1.0);
 }

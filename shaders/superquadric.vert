@@ -6,13 +6,13 @@
 #include "lib/camera.glsl"
 #include "lib/glyph_record.glsl"
 #include "lib/ellipsoid.glsl"
+#include "lib/glyph_size.glsl"
 #include "lib/superquadric.glsl"
 #include "lib/color.glsl"
 #include "lib/selection.glsl"
 #include "lib/sprite.glsl"
 #include "lib/occlusion.glsl"
 
-uniform float uScale;
 uniform int uColorMode;
 uniform vec2 uMdRange;
 uniform float uGamma;
@@ -31,7 +31,7 @@ void main() {
   gl_Position = kSpriteCulledCC;
   GlyphRecord g = glyphs[spriteGlyphIndex()];
   if (!glyphSelected(g.posWC_fa)) return;
-  vec3 axes = ellipsoidAxes(g.eigenvalues_id.xyz, uScale);
+  vec3 axes = glyphAxes(g.eigenvalues_id.xyz);
   if (!(max(axes.x, max(axes.y, axes.z)) > 0.0)) return;
   vec4 shape = superquadricShape(g.eigenvalues_id.xyz, uGamma);
 

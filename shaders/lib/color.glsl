@@ -49,9 +49,14 @@ vec3 signWeights(vec3 eigenvalues, vec3 axes) {
   return l > 0.0 ? eigenvalues / l * a * a : vec3(0.0);
 }
 
+// The diverging map over t in -1..1; the legend's sign bar draws it too.
+vec3 signRamp(float t) {
+  return t >= 0.0 ? mix(vec3(1.0), vec3(0.90, 0.42, 0.10), t) : mix(vec3(1.0), vec3(0.15, 0.40, 0.90), -t);
+}
+
 vec3 signColor(vec3 weightsGC, vec3 pGC) {
   vec3 p2 = pGC * pGC;
   float m = dot(abs(weightsGC), p2);
   float t = m > 0.0 ? dot(weightsGC, p2) / m : 0.0;
-  return t >= 0.0 ? mix(vec3(1.0), vec3(0.90, 0.42, 0.10), t) : mix(vec3(1.0), vec3(0.15, 0.40, 0.90), -t);
+  return signRamp(t);
 }

@@ -6,8 +6,8 @@
 // before their 64). Requires lib/camera.glsl.
 #pragma tg option TG_SHADOWS
 #ifdef TG_SHADOWS
-layout(binding = 6) uniform sampler2D uSceneDepth;  // the G-buffer's window depth (ShadowPass::kSceneDepthUnit)
-layout(binding = 7) uniform sampler2D uShadowMap;   // window depth along the light, reversed; 0: empty
+layout(binding = 7) uniform sampler2D uSceneDepth;  // the G-buffer's window depth (ShadowPass::kSceneDepthUnit)
+layout(binding = 8) uniform sampler2D uShadowMap;   // window depth along the light, reversed; 0: empty
 uniform mat4 uLightFromVC;       // camera VC -> the light camera's VC (rigid)
 uniform float uLightHalfExtent;  // half the map's side, world units
 uniform vec2 uLightNearFar;      // the light camera's depth range

@@ -157,23 +157,27 @@ int benchAccuracy(int argc, const char** argv) {
   const tensor::GlyphSet glyphs =
       tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids, 0, o.field.glyph);
   render::FrameParams params;
-  params.scale = o.field.scaleFor(glyphs, scene.field.sampleSpacing);
+  const tensor::ResolvedScale sized =
+      tensor::resolveScale(o.field.scaleParams(), tensor::sampleMagnitudes(glyphs, scene.field.sampleSpacing));
+  params.scale = sized.scale;
+  params.sizing = sized.mapping;
   params.faMin = o.faMin.value_or(scene.preferredFaMin.value_or(0.0));
   params.glyph = render::GlyphKind::Superquadric;
   params.gamma = o.gamma;
-  const auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale);
+  const auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale, params.sizing);
+  const tensor::FramingBox frame = tensor::framingBox(glyphs, !scene.field.grid, sized.typicalRadiusWC);
   const render::Camera cam = render::makeCamera(
-      sceneCamera(scene, lo, hi, render::Projection::Perspective, 30.0, double(o.width) / o.height), o.width, o.height,
-      lo, hi);
+      sceneCamera(scene, frame.lo, frame.hi, render::Projection::Perspective, 30.0, double(o.width) / o.height),
+      o.width, o.height, lo, hi);
 
   const auto tr = Clock::now();
-  const ref::RefImage reference = ref::renderSuperquadrics(cam, glyphs.glyphs, {params.scale, params.faMin}, o.gamma);
+  const ref::RefImage reference = ref::renderSuperquadrics(cam, glyphs.glyphs, {params.scale, params.faMin, params.sizing}, o.gamma);
   const double refMs = msSince(tr);
   // Depth errors in units of each glyph's largest semi-axis, the unit of epsilon.
   std::unordered_map<std::uint32_t, double> size;
   for (const auto& g : glyphs.glyphs)
-    size[g.id] = params.scale * std::max({std::abs(g.eigenvalues[0]), std::abs(g.eigenvalues[1]),
-                                          std::abs(g.eigenvalues[2])});
+    size[g.id] = tensor::glyphRadiusWC(params.scale, params.sizing,
+                                       std::max(std::abs(double(g.eigenvalues[0])), std::abs(double(g.eigenvalues[2]))));
   ref::DiffOptions diffOpt;
   diffOpt.depthUnit = [&](std::uint32_t id, double) { return size.at(id); };
 

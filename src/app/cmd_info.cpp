@@ -10,6 +10,7 @@
 #include "app/field_flags.h"
 #include "io/readers.h"
 #include "tensor/glyph.h"
+#include "tensor/glyph_scale.h"
 
 namespace tg::app {
 
@@ -19,7 +20,7 @@ int cmdInfo(int argc, const char** argv) {
   OIIO::ArgParse ap;
   ap.intro("tensorglyph info INPUT [selection flags]").exit_on_error(false);
   addInputArg(ap, input);
-  flags.addTo(ap, false);
+  flags.addTo(ap, true);  // the size flags change what info reports as the default render's size
   parseArgs(ap, argc, argv);
   if (input.empty()) throw UsageError("INPUT is required");
   flags.validate();
@@ -85,6 +86,11 @@ int cmdInfo(int argc, const char** argv) {
     std::printf("FA: [%g, %g]\nMD: [%g, %g]\n", faMin, faMax, g.mdMin, g.mdMax);
     std::printf("bounds: [%g %g %g] - [%g %g %g]\n", g.boundsMinWC.x, g.boundsMinWC.y, g.boundsMinWC.z,
                 g.boundsMaxWC.x, g.boundsMaxWC.y, g.boundsMaxWC.z);
+    // What `render` with the same flags would choose, and why.
+    const tensor::ResolvedScale sized =
+        tensor::resolveScale(flags.scaleParams(), tensor::sampleMagnitudes(g, f.sampleSpacing));
+    const tensor::FramingBox frame = tensor::framingBox(g, !f.grid, sized.typicalRadiusWC);
+    std::printf("size: %s\nframing: %s\n", sized.why.c_str(), frame.why.c_str());
   }
   // Load and eigen-decomposition both done, both buffers alive: the
   // streaming loader's peak (see README, "Memory").

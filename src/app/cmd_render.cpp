@@ -10,9 +10,11 @@
 
 #include "app/arg_parse.h"
 #include "app/cli_common.h"
+#include "app/effect_flags.h"
 #include "app/commands.h"
 #include "app/field_flags.h"
 #include "app/frame_size.h"
+#include "app/legend_flags.h"
 #include "app/names.h"
 #include "app/output_check.h"
 #include "app/scene.h"
@@ -21,6 +23,7 @@
 #include "io/image_writer.h"
 #include "io/readers.h"
 #include "render/renderer.h"
+#include "tensor/glyph_scale.h"
 
 namespace tg::app {
 namespace {
@@ -28,6 +31,8 @@ namespace {
 struct RenderOptions {
   std::string input, output, backend = "osmesa", glyph = "ellipsoid", color = "dec";
   FieldFlags field;
+  LegendFlags legend;
+  EffectFlags effects;
   ShadowFlags shadow;
   int width = 1024, height = 768;
   double gamma = 3.0;
@@ -83,6 +88,8 @@ RenderOptions parse(int argc, const char** argv) {
   });
   ap.arg("--backend NAME").help("osmesa (default), egl, glfw or auto").action([&](auto&, Args a) { o.backend = a[1]; });
   o.field.addTo(ap, true);
+  o.legend.addTo(ap);
+  o.effects.addTo(ap);
   o.shadow.addTo(ap);
   ap.arg("--repeat N").help("render N more frames and report the median frame time").action([&](auto&, Args a) {
     o.repeat = parseIntIn("--repeat", a[1], 0, 10000);
@@ -107,6 +114,8 @@ void validate(const RenderOptions& o) {
   if (o.maxIterations < 1 || o.maxIterations > 1000) throw UsageError("--iterations must be within 1..1000");
   if (!(o.epsilon >= 1e-9 && o.epsilon <= 0.5)) throw UsageError("--epsilon must be within 1e-9..0.5");
   o.field.validate();
+  o.legend.validate();
+  o.effects.validate();
   o.shadow.validate();
   if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
   if ((o.lookAt || o.up) && !o.eye) throw UsageError("--look-at and --up need --eye");
@@ -119,9 +128,12 @@ void validate(const RenderOptions& o) {
   refuseOutputsOverInputs({{"-o", o.output}}, {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath}});
 }
 
-render::CameraDesc chooseCamera(const RenderOptions& o, const Scene& s, const glm::dvec3& lo, const glm::dvec3& hi) {
+// Frames `frame` (the sample positions, tensor::framingBox), not the glyphs'
+// whole box: one singular glyph must not shrink the view.
+render::CameraDesc chooseCamera(const RenderOptions& o, const Scene& s, const tensor::FramingBox& frame) {
   const render::Projection proj = o.ortho ? render::Projection::Orthographic : render::Projection::Perspective;
   const double aspect = double(o.width) / o.height;
+  const glm::dvec3 lo = frame.lo, hi = frame.hi;
   render::CameraDesc d = sceneCamera(s, lo, hi, proj, o.fov.value_or(30.0), aspect);
   if (o.eye) {
     d.eyeWC = *o.eye;
@@ -155,7 +167,10 @@ int cmdRender(int argc, const char** argv) {
   // at most two copies of the glyphs (here the records and the GL buffer).
   scene.field.releaseSamples();
   render::FrameParams params;
-  params.scale = o.field.scaleFor(glyphs, scene.field.sampleSpacing);
+  const tensor::ResolvedScale sized =
+      tensor::resolveScale(o.field.scaleParams(), tensor::sampleMagnitudes(glyphs, scene.field.sampleSpacing));
+  params.scale = sized.scale;
+  params.sizing = sized.mapping;
   params.faMin = o.faMin.value_or(scene.preferredFaMin.value_or(0.0));
   params.color = *colorModeNamed(o.color);
   params.glyph = *glyphKindNamed(o.glyph);
@@ -164,16 +179,20 @@ int cmdRender(int argc, const char** argv) {
   params.iterationStats = o.stats;
   params.tessellation = o.tessellate;
   params.background = o.background;
+  params.legend = o.legend.params;
+  params.ao = o.effects.ao;
+  params.outline = o.effects.outline;
   params.shadow = o.shadow.params;
 
-  const auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale);
+  const auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale, params.sizing);
   // The GPU works in single precision: a box beyond FLT_MAX draws nothing.
   const double extent = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y),
                                   std::abs(hi.z)});
   if (!(extent <= double(FLT_MAX)))
     throw io::InputError("render: " + scene.field.path + ": the glyphs extend beyond the floating-point range (scale " +
                          std::to_string(params.scale) + ")");
-  const render::Camera cam = render::makeCamera(chooseCamera(o, scene, lo, hi), o.width, o.height, lo, hi);
+  const tensor::FramingBox frame = tensor::framingBox(glyphs, !scene.field.grid, sized.typicalRadiusWC);
+  const render::Camera cam = render::makeCamera(chooseCamera(o, scene, frame), o.width, o.height, lo, hi);
 
   auto ctx = createContext(o.backend, o.width, o.height);
   const gl::ShaderLibrary lib;
@@ -216,6 +235,16 @@ int cmdRender(int argc, const char** argv) {
     std::fprintf(stderr, "\n  %llu glyphs drawn (after FA and frustum culling), scale %.6g, fa-min %.3g, peak RSS %.1f MiB\n",
                  static_cast<unsigned long long>(drawn), params.scale, params.faMin,
                  double(peakRssBytes()) / (1024.0 * 1024.0));
+    const std::string framing = o.eye ? "--eye given; it looks by default at the centre of " + frame.why
+                                : scene.preferredCamera ? std::string("the built-in scene's own view")
+                                                        : frame.why;
+    std::fprintf(stderr, "  size: %s\n  framing: %s\n", sized.why.c_str(), framing.c_str());
+    if (params.ao.enabled)
+      std::fprintf(stderr, "  ambient occlusion: radius %.6g (%s), strength %.3g, %d samples\n",
+                   renderer.aoRadiusWC(params), params.ao.radius > 0 ? "--ao-radius" : "auto",
+                   params.ao.strength, params.ao.samples);
+    if (params.outline.enabled)
+      std::fprintf(stderr, "  outlines: width %.3g px, crease %.3g deg\n", params.outline.width, params.outline.creaseDeg);
     if (params.shadow.enabled)
       std::fprintf(stderr, "  shadows: map %d x %d texels, penumbra %.3g, %.1f MiB of GPU memory in all\n",
                    renderer.shadowMapSize(), renderer.shadowMapSize(), double(params.shadow.penumbra),

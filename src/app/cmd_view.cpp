@@ -19,6 +19,8 @@
 #include "app/commands.h"
 #include "app/field_flags.h"
 #include "app/frame_size.h"
+#include "app/legend_flags.h"
+#include "app/shadow_flags.h"
 #include "app/names.h"
 #include "app/output_check.h"
 #include "app/scene.h"
@@ -34,6 +36,8 @@ namespace {
 struct ViewOptions {
   std::string input, script, glyph = "ellipsoid", color = "dec", shotPrefix = "tensorglyph-view-";
   FieldFlags field;
+  LegendFlags legend;
+  ShadowFlags shadow;
   int width = 1280, height = 800;
   double gamma = 3.0;
   std::optional<double> faMin;
@@ -63,6 +67,8 @@ ViewOptions parse(int argc, const char** argv) {
   ap.arg("--screenshot-prefix P").help("key S saves P0000.png, P0001.png, ... (default tensorglyph-view-)")
       .action([&](auto&, Args a) { o.shotPrefix = a[1]; });
   o.field.addTo(ap, true);
+  o.legend.addTo(ap);
+  o.shadow.addTo(ap);
   parseArgs(ap, argc, argv);
   return o;
 }
@@ -73,6 +79,8 @@ void validate(const ViewOptions& o) {
   if (!colorModeNamed(o.color)) throw UsageError("--color: unknown mode \"" + o.color + "\"; choose " + kColorModeNames);
   if (!(o.gamma >= 0.0 && o.gamma <= 1e4)) throw UsageError("--gamma must be within 0..10000");
   o.field.validate();
+  o.legend.validate();
+  o.shadow.validate();
 }
 
 // The median of a sample, 0 for none.
@@ -106,17 +114,21 @@ int cmdView(int argc, const char** argv) {
       tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids, 0, o.field.glyph);
   scene.field.releaseSamples();
 
-  ViewState v{{}, OrbitCamera(render::CameraDesc{}), 1.0, 1.0};
-  v.baseScale = o.field.scaleFor(glyphs, scene.field.sampleSpacing);
+  ViewState v{render::FrameParams{}, OrbitCamera(render::CameraDesc{}), 1.0, 1.0, o.field.scaleParams(),
+              tensor::sampleMagnitudes(glyphs, scene.field.sampleSpacing)};
+  resize(v);
   render::FrameParams& p = v.params;
-  p.scale = v.baseScale;
   p.faMin = o.faMin.value_or(scene.preferredFaMin.value_or(0.0));
   p.color = *colorModeNamed(o.color);
   p.glyph = *glyphKindNamed(o.glyph);
   p.gamma = o.gamma;
+  p.legend = o.legend.params;
+  p.shadow = o.shadow.params;
   {
-    const auto [lo, hi] = tensor::glyphBoxWC(glyphs, p.scale);
-    v.camera = OrbitCamera(sceneCamera(scene, lo, hi, render::Projection::Perspective, 30.0,
+    // As render frames it: the sample positions (tensor::framingBox).
+    const double typical = tensor::resolveScale(v.sizing, v.magnitudes).typicalRadiusWC;
+    const tensor::FramingBox frame = tensor::framingBox(glyphs, !scene.field.grid, typical);
+    v.camera = OrbitCamera(sceneCamera(scene, frame.lo, frame.hi, render::Projection::Perspective, 30.0,
                                        double(o.width) / o.height));
   }
 
@@ -183,7 +195,7 @@ int cmdView(int argc, const char** argv) {
         status.lastChangeUs = us;
         applied = p;
       }
-      const auto [lo, hi] = tensor::glyphBoxWC(glyphs, p.scale);
+      const auto [lo, hi] = tensor::glyphBoxWC(glyphs, p.scale, p.sizing);
       const render::Camera cam = render::makeCamera(v.camera.desc(), w, h, lo, hi);
       renderer.render(cam, p, *target);
       // Never waits for the GPU: the status trails the frame by one or two.
@@ -191,6 +203,7 @@ int cmdView(int argc, const char** argv) {
       status.drawn = renderer.latestDrawnCount().value_or(status.drawn);
       status.total = glyphCount;
       if (p.iterationStats) status.newton = renderer.iterationStats();
+      status.aoRadiusWC = renderer.aoRadiusWC(p);
       status.fps = ImGui::GetIO().Framerate;
       if (shot) saveScreenshot(renderer, cam, *target, *shot);
       api.BlitNamedFramebuffer(target->colorFramebuffer(), 0, 0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT,

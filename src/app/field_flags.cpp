@@ -66,6 +66,20 @@ void FieldFlags::addTo(OIIO::ArgParse& ap, bool scaling) {
         else if (m == "spacing") scaleMode = tensor::ScaleMode::Spacing;
         else throw UsageError("--scale-mode: unknown mode \"" + m + "\"; choose absolute, max or spacing");
       });
+  ap.arg("--magnitude M").help("how a glyph's largest |eigenvalue| m sets its size, shape ratios and signs kept: "
+                               "linear (default), log (lambda0 ln(1 + m/lambda0)) or shape (every glyph the same size)")
+      .action([&](auto&, Args a) {
+        const auto m = tensor::magnitudeNamed(a[1]);
+        if (!m) throw UsageError(std::string("--magnitude: unknown mapping \"") + a[1] + "\"; choose " +
+                                 tensor::kMagnitudeNames);
+        sizing.magnitude = *m;
+      });
+  ap.arg("--lambda0 L").help("--magnitude log: the knee; shape: the size every glyph gets (default: the median "
+                             "|eigenvalue|)")
+      .action([&](auto&, Args a) { sizing.lambda0 = parseDouble("--lambda0", a[1]); });
+  ap.arg("--clamp N").help("no glyph wider than N sample spacings, its shape kept (vtkTensorGlyph's ClampScaling); "
+                           "0: off (default 2 with --scale-mode spacing or max, off with absolute)")
+      .action([&](auto&, Args a) { sizing.clampSpacings = parseDoubleIn("--clamp", a[1], 0.0, 1e6); });
 }
 
 void FieldFlags::validate() const {
@@ -78,11 +92,20 @@ void FieldFlags::validate() const {
   if (!(glyph.clMin >= 0 && glyph.clMin <= 1)) throw UsageError("--cl-min must be within 0..1");
   if (!(glyph.cpMin >= 0 && glyph.cpMin <= 1)) throw UsageError("--cp-min must be within 0..1");
   if (scale && !(*scale > 0.0)) throw UsageError("--scale must be positive");
+  if (sizing.lambda0 && !(*sizing.lambda0 > 0.0)) throw UsageError("--lambda0 must be positive");
+  if (sizing.lambda0 && sizing.magnitude == tensor::Magnitude::Linear)
+    throw UsageError("--lambda0 applies to --magnitude log or shape only");
 }
 
 double FieldFlags::scaleFor(const tensor::GlyphSet& set, double spacing) const {
-  const tensor::ScaleMode mode = scaleMode.value_or(scale ? tensor::ScaleMode::Absolute : tensor::ScaleMode::Spacing);
-  return tensor::resolveScale(mode, scale.value_or(1.0), set, spacing);
+  return tensor::resolveScale(scaleParams(), tensor::sampleMagnitudes(set, spacing)).scale;
+}
+
+tensor::ScaleParams FieldFlags::scaleParams() const {
+  tensor::ScaleParams p = sizing;
+  p.mode = scaleMode.value_or(scale ? tensor::ScaleMode::Absolute : tensor::ScaleMode::Spacing);
+  p.factor = scale.value_or(1.0);
+  return p;
 }
 
 void checkOptionsApply(const std::string& input, const io::ReadOptions& opt) {

@@ -8,6 +8,7 @@
 
 #include "io/readers.h"
 #include "tensor/glyph.h"
+#include "tensor/glyph_scale.h"
 
 namespace tg::app {
 
@@ -16,16 +17,19 @@ struct FieldFlags {
   tensor::GlyphOptions glyph;
   std::optional<double> scale;
   std::optional<tensor::ScaleMode> scaleMode;
+  tensor::ScaleParams sizing;  // --magnitude, --lambda0, --clamp; mode and factor from the two above
 
   // --array --layout --frame --mask --mask-min --confidence-min --slice --stride
   // --roi --cl-min --cp-min --min-eigenvalue, and with `scaling` also
-  // --scale and --scale-mode.
+  // --scale, --scale-mode, --magnitude, --lambda0 and --clamp.
   void addTo(OIIO::ArgParse& ap, bool scaling);
   // Throws UsageError; called before anything is loaded.
   void validate() const;
   // World units per eigenvalue unit. --scale alone is absolute (as Teem's
   // -gsc); no flag at all means the spacing mode with factor 1.
   double scaleFor(const tensor::GlyphSet& set, double sampleSpacing) const;
+  // The whole choice: mode, factor, magnitude mapping and clamp.
+  tensor::ScaleParams scaleParams() const;
 };
 
 // Before loading: UsageError naming the first option that `input`'s format

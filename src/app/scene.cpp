@@ -49,7 +49,7 @@ Scene loadScene(const std::string& input, const io::ReadOptions& opt) {
 
 render::CameraDesc sceneCamera(const Scene& s, const glm::dvec3& loWC, const glm::dvec3& hiWC, render::Projection p,
                                double fovYDeg, double aspect) {
-  render::CameraDesc d = render::frameBox(loWC, hiWC, p, fovYDeg, aspect);
+  render::CameraDesc d = render::fitBox(loWC, hiWC, p, fovYDeg, aspect);
   if (s.preferredCamera) {
     d.eyeWC = s.preferredCamera->eyeWC;
     d.lookAtWC = s.preferredCamera->lookAtWC;

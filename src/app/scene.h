@@ -24,7 +24,7 @@ Scene defaultScene();
 Scene loadScene(const std::string& input, const io::ReadOptions& opt);
 
 // The view used when no camera flag is given: the scene's preferred view if
-// it has one, else frameBox's default over the scene box.
+// it has one, else fitBox's default over the box (tensor::framingBox).
 render::CameraDesc sceneCamera(const Scene& s, const glm::dvec3& loWC, const glm::dvec3& hiWC, render::Projection p,
                                double fovYDeg, double aspect);
 

@@ -10,6 +10,56 @@
 namespace tg::app {
 namespace {
 
+// Magnitude mapping and clamp: resolved again from the kept magnitudes, so
+// a change is uniforms only (resize()).
+void sizeControls(ViewState& v) {
+  int mapping = int(v.sizing.magnitude);
+  bool changed = false;
+  if (ImGui::Combo("magnitude", &mapping, "linear\0log\0shape only\0")) {
+    v.sizing.magnitude = tensor::Magnitude(mapping);
+    changed = true;
+  }
+  bool clamped = v.params.sizing.maxRadiusWC > 0.0;
+  if (ImGui::Checkbox("clamp", &clamped)) {
+    v.sizing.clampSpacings = clamped ? tensor::ScaleParams::kDefaultClamp : 0.0;
+    changed = true;
+  }
+  if (clamped) {
+    ImGui::SameLine();
+    auto n = float(v.sizing.clampSpacings.value_or(tensor::ScaleParams::kDefaultClamp));
+    if (ImGui::SliderFloat("spacings", &n, 0.25f, 20.0f, "%.2f", ImGuiSliderFlags_Logarithmic)) {
+      v.sizing.clampSpacings = n;
+      changed = true;
+    }
+  }
+  if (changed) resize(v);
+}
+
+void depthCues(render::FrameParams& p, const PanelStatus& s) {
+  if (!ImGui::CollapsingHeader("depth cues")) return;
+  ImGui::Checkbox("ambient occlusion", &p.ao.enabled);
+  if (p.ao.enabled) {
+    // Starts from the radius in use (auto until moved), in world units.
+    auto radius = float(s.aoRadiusWC);
+    if (ImGui::DragFloat("AO radius", &radius, 0.01f * radius, 0.0f, 1e30f, "%.4g", ImGuiSliderFlags_Logarithmic) &&
+        radius > 0.0f)
+      p.ao.radius = radius;
+    auto strength = float(p.ao.strength);
+    if (ImGui::SliderFloat("AO strength", &strength, 0.0f, float(render::AoParams::kMaxStrength), "%.2f"))
+      p.ao.strength = strength;
+    ImGui::SliderInt("AO samples", &p.ao.samples, render::AoParams::kMinSamples, render::AoParams::kMaxSamples);
+  }
+  ImGui::Checkbox("outlines", &p.outline.enabled);
+  if (p.outline.enabled) {
+    auto width = float(p.outline.width);
+    if (ImGui::SliderFloat("line width", &width, 0.25f, float(render::OutlineParams::kMaxWidth), "%.2f px"))
+      p.outline.width = width;
+    auto crease = float(p.outline.creaseDeg);
+    if (ImGui::SliderFloat("crease angle", &crease, 1.0f, 179.0f, "%.0f deg")) p.outline.creaseDeg = crease;
+    ImGui::ColorEdit4("line colour", &p.outline.color[0]);
+  }
+}
+
 void controls(ViewState& v, const tensor::GlyphSet& meta) {
   render::FrameParams& p = v.params;
   int kind = int(p.glyph);
@@ -23,6 +73,7 @@ void controls(ViewState& v, const tensor::GlyphSet& meta) {
     v.scaleFactor = factor;
     p.scale = v.baseScale * factor;
   }
+  sizeControls(v);
   int color = int(p.color);
   if (ImGui::Combo("colour", &color, "DEC (principal direction)\0FA\0mean diffusivity\0cl\0cp\0sign\0"))
     p.color = render::ColorMode(color);
@@ -45,6 +96,15 @@ void controls(ViewState& v, const tensor::GlyphSet& meta) {
       p.slab.lo = std::min(range[0], range[1]);
       p.slab.hi = std::max(range[0], range[1]);
     }
+  }
+  if (ImGui::CollapsingHeader("legend")) {
+    ImGui::Checkbox("show legend", &p.legend.enabled);
+    int corner = int(p.legend.corner);
+    if (ImGui::Combo("corner", &corner, "top left\0top right\0bottom left\0bottom right\0"))
+      p.legend.corner = render::LegendCorner(corner);
+    ImGui::Checkbox("colour key", &p.legend.colorKey);
+    ImGui::SameLine();
+    ImGui::Checkbox("scale bar", &p.legend.scaleBar);
   }
   if (ImGui::CollapsingHeader("lighting")) {
     ImGui::SliderFloat("ambient", &p.light.ambient, 0.0f, 1.0f);
@@ -100,6 +160,7 @@ PanelActions drawPanel(ViewState& v, const PanelStatus& s, const tensor::GlyphSe
   ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
   ImGui::Begin("tensorglyph");
   controls(v, meta);
+  depthCues(v.params, s);
   if (ImGui::Button("reset view (R)")) v.camera.reset();
   ImGui::SameLine();
   if (ImGui::Button("screenshot (S)")) act.screenshot = true;

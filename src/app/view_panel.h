@@ -13,6 +13,7 @@ struct PanelStatus {
   double fps = 0, lastChangeUs = 0;
   std::uint64_t drawn = 0, total = 0;
   render::IterationStats newton;
+  double aoRadiusWC = 0;  // the radius ambient occlusion uses (GlyphRenderer::aoRadiusWC)
 };
 
 struct PanelActions {

@@ -7,17 +7,22 @@
 #include <sstream>
 
 #include "app/cli_common.h"
+#include "app/legend_flags.h"
+#include "app/effect_flags.h"
 #include "app/names.h"
 #include "io/tensor_field.h"
 
 namespace tg::app {
 namespace {
 
-// Argument counts; -1 for slab, which takes one or three.
+// Argument counts; -1 for slab, which takes one or three; -2 for magnitude, one or two.
 const std::map<std::string, int, std::less<>> kArity = {
     {"orbit", 2},  {"pan", 2},    {"zoom", 1},       {"reset", 0},   {"glyph", 1},  {"gamma", 1},
     {"fa-min", 1}, {"scale", 1},  {"color", 1},      {"slab", -1},   {"light", 2},  {"iterations", 1},
-    {"epsilon", 1}, {"stats", 1}, {"frames", 1},     {"screenshot", 1}, {"shadows", 1}, {"shadow", 2}};
+    {"epsilon", 1}, {"stats", 1}, {"frames", 1},     {"screenshot", 1}, {"magnitude", -2}, {"clamp", 1},
+    {"legend", 1},  {"legend-corner", 1}, {"units", 1}, {"length-units", 1},
+    {"ao", 1},      {"ao-radius", 1}, {"ao-strength", 1}, {"outlines", 1}, {"outline-width", 1},
+    {"shadows", 1}, {"shadow", 2}};
 
 double number(const ScriptStep& s, std::size_t k) { return parseDouble(s.verb, s.args[k]); }
 
@@ -39,7 +44,10 @@ void check(const ScriptStep& s) {
   const auto it = kArity.find(s.verb);
   if (it == kArity.end()) throw UsageError("unknown command \"" + s.verb + "\"");
   const std::size_t n = s.args.size();
-  if (it->second >= 0 ? n != std::size_t(it->second) : (n != 1 && n != 3))
+  const bool countOk = it->second >= 0 ? n == std::size_t(it->second)
+                       : it->second == -1 ? (n == 1 || n == 3)
+                                          : (n == 1 || n == 2);
+  if (!countOk)
     throw UsageError(s.verb + ": wrong number of arguments");
   const std::string& v = s.verb;
   auto positive = [&](std::size_t k) {
@@ -69,6 +77,21 @@ void check(const ScriptStep& s) {
     throw UsageError("epsilon: must be within 1e-9..0.5");
   if (v == "stats" && s.args[0] != "on" && s.args[0] != "off") throw UsageError("stats: on or off");
   if (v == "frames") parseIntIn(v, s.args[0], 1, 100000);
+  if (v == "magnitude") {
+    if (!tensor::magnitudeNamed(s.args[0]))
+      throw UsageError("magnitude: unknown mapping \"" + s.args[0] + "\"; choose " + tensor::kMagnitudeNames);
+    if (n == 2 && s.args[0] == "linear") throw UsageError("magnitude: LAMBDA0 applies to log or shape only");
+    if (n == 2) positive(1);
+  }
+  if (v == "clamp") parseDoubleIn(v, s.args[0], 0.0, 1e6);
+  if (v == "legend" && s.args[0] != "on" && s.args[0] != "off") throw UsageError("legend: on or off");
+  if (v == "legend-corner" && !legendCornerNamed(s.args[0]))
+    throw UsageError("legend-corner: unknown corner \"" + s.args[0] + "\"; choose " + kLegendCornerNames);
+  if (v == "units" || v == "length-units") checkLegendText(v, s.args[0]);
+  if ((v == "ao" || v == "outlines") && s.args[0] != "on" && s.args[0] != "off") throw UsageError(v + ": on or off");
+  if (v == "ao-radius") parseAoRadius(v, s.args[0]);
+  if (v == "ao-strength") parseAoStrength(v, s.args[0]);
+  if (v == "outline-width") parseOutlineWidth(v, s.args[0]);
   if (v == "shadows" && s.args[0] != "on" && s.args[0] != "off") throw UsageError("shadows: on or off");
   if (v == "shadow") shadowValue(s);
 }
@@ -106,6 +129,13 @@ std::vector<ScriptStep> parseScript(const std::string& path) {
   return steps;
 }
 
+void resize(ViewState& v) {
+  const tensor::ResolvedScale r = tensor::resolveScale(v.sizing, v.magnitudes);
+  v.baseScale = r.scale;
+  v.params.scale = r.scale * v.scaleFactor;
+  v.params.sizing = r.mapping;
+}
+
 void applyStep(const ScriptStep& s, ViewState& v) {
   const std::string& w = s.verb;
   render::FrameParams& p = v.params;
@@ -120,6 +150,15 @@ void applyStep(const ScriptStep& s, ViewState& v) {
   else if (w == "iterations") p.march.maxIterations = parseIntIn(w, s.args[0], 1, 1000);
   else if (w == "epsilon") p.march.epsilon = number(s, 0);
   else if (w == "stats") p.iterationStats = s.args[0] == "on";
+  else if (w == "legend") p.legend.enabled = s.args[0] == "on";
+  else if (w == "legend-corner") p.legend.corner = *legendCornerNamed(s.args[0]);
+  else if (w == "units") p.legend.units = s.args[0];
+  else if (w == "length-units") p.legend.lengthUnits = s.args[0];
+  else if (w == "ao") p.ao.enabled = s.args[0] == "on";
+  else if (w == "ao-radius") p.ao.radius = number(s, 0);
+  else if (w == "ao-strength") p.ao.strength = number(s, 0);
+  else if (w == "outlines") p.outline.enabled = s.args[0] == "on";
+  else if (w == "outline-width") p.outline.width = number(s, 0);
   else if (w == "shadows") p.shadow.enabled = s.args[0] == "on";
   else if (w == "shadow") {
     const double value = shadowValue(s);
@@ -132,6 +171,14 @@ void applyStep(const ScriptStep& s, ViewState& v) {
   else if (w == "scale") {
     v.scaleFactor = number(s, 0);
     p.scale = v.baseScale * v.scaleFactor;
+  } else if (w == "magnitude" || w == "clamp") {
+    if (w == "magnitude") {
+      v.sizing.magnitude = *tensor::magnitudeNamed(s.args[0]);
+      v.sizing.lambda0 = s.args.size() == 2 ? std::optional<double>(number(s, 1)) : std::nullopt;
+    } else {
+      v.sizing.clampSpacings = number(s, 0);
+    }
+    resize(v);
   } else if (w == "slab") {
     p.slab = s.args.size() == 1 ? render::Slab{} : render::Slab{axisNamed(s.args[0]), number(s, 1), number(s, 2)};
   } else if (w == "light") {

@@ -11,6 +11,8 @@
 //   gamma G                superquadric sharpness, >= 0
 //   fa-min F               hide glyphs with FA below F
 //   scale F                glyph size, F times the initial scale
+//   magnitude linear|log|shape [LAMBDA0]   size mapping (tensor/glyph_scale.h); LAMBDA0 default: the median
+//   clamp N                no glyph wider than N sample spacings; 0: off
 //   color dec|fa|md|cl|cp|sign
 //   slab x|y|z LO HI       only glyphs with centres in [LO, HI] along the axis (WC)
 //   slab off
@@ -18,6 +20,15 @@
 //   iterations N           superquadric Newton iterations at most
 //   epsilon E              superquadric hit tolerance
 //   stats on|off           count Newton iterations (status line)
+//   legend on|off          the colour key and scale bar (render --legend)
+//   legend-corner top-left|top-right|bottom-left|bottom-right
+//   units TEXT             units of the tensor values in the legend (one word)
+//   length-units TEXT      units of positions for the scale bar (one word)
+//   ao on|off              screen-space ambient occlusion
+//   ao-radius R            its radius in world units (> 0)
+//   ao-strength S          its weight, 0..4
+//   outlines on|off        silhouette and crease lines
+//   outline-width W        their width in pixels, 0.25..8
 //   shadows on|off         soft shadows from the key light
 //   shadow penumbra|strength|bias|map-size V   (render's --shadow-* flags and ranges)
 //   frames N               render N frames unchanged (for timing)
@@ -35,7 +46,15 @@ struct ViewState {
   OrbitCamera camera;
   double baseScale = 1.0;  // params.scale = baseScale * scaleFactor
   double scaleFactor = 1.0;
+  // The size choice and the field's magnitudes, kept so that a change of
+  // mapping or clamp is resolved again without the records (resize()).
+  tensor::ScaleParams sizing{};
+  tensor::MagnitudeSample magnitudes{};
 };
+
+// Resolves v.sizing over v.magnitudes into baseScale, params.scale and
+// params.sizing: uniforms only.
+void resize(ViewState& v);
 
 struct ScriptStep {
   int line = 0;

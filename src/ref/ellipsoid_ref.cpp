@@ -17,7 +17,7 @@ RefImage renderEllipsoids(const render::Camera& cam, std::span<const tensor::Gly
     const auto& g = glyphs[i];
     if (!(g.fa >= p.faMin)) continue;
     detail::Prepared q;
-    q.axes = tensor::ellipsoidAxes(g, p.scale);
+    q.axes = tensor::glyphAxes(g, p.scale, p.sizing);
     q.radius = std::max({q.axes.x, q.axes.y, q.axes.z});
     if (!(q.radius > 0.0)) continue;
     q.centre = glm::dvec3(g.posWC[0], g.posWC[1], g.posWC[2]);

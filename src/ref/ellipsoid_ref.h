@@ -11,6 +11,7 @@
 
 #include "render/camera.h"
 #include "tensor/glyph.h"
+#include "tensor/glyph_scale.h"
 
 namespace tg::ref {
 
@@ -25,8 +26,12 @@ struct RefImage {
 };
 
 struct RefParams {
-  double scale = 1.0;
-  double faMin = 0.0;
+  // A constructor, so that {scale, faMin} still reads as linear, unclamped glyphs.
+  RefParams(double scale_ = 1.0, double faMin_ = 0.0, const tensor::SizeMapping& sizing_ = {})
+      : scale(scale_), faMin(faMin_), sizing(sizing_) {}
+  double scale;
+  double faMin;
+  tensor::SizeMapping sizing;  // as render::FrameParams::sizing
 };
 
 // The visible point of a pixel is the first intersection along its ray at or

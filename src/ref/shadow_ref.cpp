@@ -15,7 +15,7 @@ ShadowRays::ShadowRays(std::span<const tensor::GlyphRecord> glyphs, const RefPar
   for (const tensor::GlyphRecord& g : glyphs) {
     if (!(g.fa >= p.faMin)) continue;
     Glyph q;
-    q.axes = tensor::ellipsoidAxes(g, p.scale);
+    q.axes = tensor::glyphAxes(g, p.scale, p.sizing);
     q.radius = std::max({q.axes.x, q.axes.y, q.axes.z});
     if (!(q.radius > 0.0)) continue;
     q.centre = glm::dvec3(g.posWC[0], g.posWC[1], g.posWC[2]);

@@ -126,7 +126,7 @@ RefImage renderSuperquadrics(const render::Camera& cam, std::span<const tensor::
   for (std::size_t i = 0; i < glyphs.size(); ++i) {
     const auto& g = glyphs[i];
     if (!(g.fa >= p.faMin)) continue;
-    const glm::dvec3 axes = tensor::ellipsoidAxes(g, p.scale);
+    const glm::dvec3 axes = tensor::glyphAxes(g, p.scale, p.sizing);
     if (!(std::max({axes.x, axes.y, axes.z}) > 0.0)) continue;
     detail::Prepared q;
     q.radius = glm::length(axes);  // the box's half diagonal

@@ -115,4 +115,17 @@ CameraDesc frameBox(const glm::dvec3& lo, const glm::dvec3& hi, Projection p, do
   return d;
 }
 
+CameraDesc fitBox(const glm::dvec3& lo, const glm::dvec3& hi, Projection p, double fovYDeg, double aspect) {
+  CameraDesc d = frameBox(lo, hi, p, fovYDeg, aspect);
+  const glm::dvec3 half = 0.5 * (hi - lo);
+  if (!(half.x > 0.0 || half.y > 0.0)) return d;  // a point or a line along z: the sphere's view
+  constexpr double kMargin = 1.05;
+  const double tanY = std::tan(glm::radians(fovYDeg) * 0.5), tanX = tanY * aspect;
+  // The near face's corners bound the view: they are the closest to the eye.
+  const double dist = half.z + kMargin * std::max(half.x / tanX, half.y / tanY);
+  d.eyeWC = d.lookAtWC + glm::dvec3(0, 0, dist);
+  d.orthoHeight = 2.0 * kMargin * std::max(half.y, half.x / aspect);
+  return d;
+}
+
 }  // namespace tg::render

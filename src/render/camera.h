@@ -53,4 +53,10 @@ Camera makeCamera(const CameraDesc& d, int width, int height, const glm::dvec3& 
 CameraDesc frameBox(const glm::dvec3& loWC, const glm::dvec3& hiWC, Projection p, double fovYDeg,
                     double aspect);
 
+// The default still view: looking down -Z at the box centre, +Y up, from the
+// distance at which the box's corners fill the narrower side of the frustum
+// with a 5% margin. Tighter than frameBox's bounding sphere, which leaves a
+// cubic field half the image height.
+CameraDesc fitBox(const glm::dvec3& loWC, const glm::dvec3& hiWC, Projection p, double fovYDeg, double aspect);
+
 }  // namespace tg::render

@@ -61,7 +61,8 @@ void GlyphCulling::dispatch(const gl::Program& prog, std::size_t workgroups) con
   gl_.DispatchCompute(GLuint(x), GLuint((workgroups + x - 1) / x), 1);
 }
 
-void GlyphCulling::prepare(const Camera& cam, double scale, double faMin, const Slab& slab, bool frustum) {
+void GlyphCulling::prepare(const Camera& cam, double scale, const tensor::SizeMapping& sizing, double faMin,
+                           const Slab& slab, bool frustum) {
   const std::size_t n = table_.ranges.size();
   compacted_ = indirect_ = false;
   if (n == 0) return;
@@ -88,7 +89,7 @@ void GlyphCulling::prepare(const Camera& cam, double scale, double faMin, const 
     }
   }
   const FrustumWC f = frustumPlanesWC(cam);
-  const double pad = std::sqrt(3.0) * scale * maxAbsEigenvalue_;
+  const double pad = std::sqrt(3.0) * tensor::glyphRadiusWC(scale, sizing, maxAbsEigenvalue_);
   // Whether any range could fall outside, judged on the four side planes:
   // cameras put the near plane at the scene's nearest point, so the grown box
   // always crosses it, and a range wholly in front of it costs only the
@@ -117,7 +118,10 @@ void GlyphCulling::prepare(const Camera& cam, double scale, double faMin, const 
   gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kCommandsBinding, commands_);
   gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kVisibleBinding, visible_);
   cull_.set("uFrustumWC", planes);
-  cull_.set("uPadScale", float(std::sqrt(3.0) * scale));
+  cull_.set("uScale", float(scale));
+  cull_.set("uMagnitude", int(sizing.magnitude));
+  cull_.set("uLambda0", float(sizing.lambda0));
+  cull_.set("uMaxRadiusWC", float(sizing.maxRadiusWC));
   cull_.set("uCompacted", compacted_ ? 1 : 0);
   cull_.set("uRangeCount", int(n));
   dispatch(cull_, (n + 63) / 64);

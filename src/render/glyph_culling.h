@@ -17,6 +17,7 @@
 #include "render/camera.h"
 #include "render/glyph_ranges.h"
 #include "render/quad_sprites.h"
+#include "tensor/glyph_scale.h"
 
 namespace tg::render {
 
@@ -44,7 +45,9 @@ class GlyphCulling {
   void upload(const tensor::GlyphSet& set, GLuint glyphBuffer);
   // Runs what this frame needs; `frustum` false keeps every range (to
   // measure the culling). A slab (axis >= 0) culls ranges wholly outside it.
-  void prepare(const Camera& cam, double scale, double faMin, const Slab& slab, bool frustum);
+  // Glyphs are sized by `scale` and `sizing` (tensor/glyph_scale.h).
+  void prepare(const Camera& cam, double scale, const tensor::SizeMapping& sizing, double faMin, const Slab& slab,
+               bool frustum);
   // Draws the glyphs of groups [g0, g1) (tensor::GlyphGroup) with the bound
   // program, whose uCompacted must be compacted().
   void draw(const QuadSprites& sprites, int g0, int g1) const;

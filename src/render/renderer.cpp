@@ -7,6 +7,9 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "render/legend_pass.h"
+#include "render/camera_uniforms.h"
+
 namespace tg::render {
 
 GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib)
@@ -47,6 +50,9 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   centresLoWC_ = set.boundsMinWC;
   centresHiWC_ = set.boundsMaxWC;
   maxAbsEigenvalue_ = set.maxAbsEigenvalue;
+  eigenMin_ = set.eigenvalueMin;
+  eigenMax_ = set.eigenvalueMax;
+  typicalDiameter_ = 1.0 / tensor::defaultScale(set, 1.0);
   for (const gl::Program* prog : glyphPrograms()) prog->set("uMdRange", glm::vec2(mdMin_, mdMax_));
   if (count_ > 0) {
     gl_.CreateBuffers(1, &buffer_);
@@ -57,18 +63,7 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   gl::checkError(gl_, "GlyphRenderer::upload");
 }
 
-void GlyphRenderer::setCamera(const gl::Program& prog, const Camera& cam) const {
-  prog.set("uViewWCVC", glm::mat4(cam.viewWCVC));
-  prog.set("uProjVCCC", glm::mat4(cam.projVCCC));
-  prog.set("uViewportDC", glm::vec2(float(cam.width), float(cam.height)));
-  const bool ortho = cam.desc.projection == Projection::Orthographic;
-  prog.set("uOrtho", ortho ? 1 : 0);
-  const double aspect = double(cam.width) / cam.height;
-  const double h = ortho ? 0.5 * cam.desc.orthoHeight : std::tan(glm::radians(cam.desc.fovYDeg) * 0.5);
-  prog.set("uRayScaleVC", glm::vec2(float(h * aspect), float(h)));
-  prog.set("uNearVC", float(cam.nearVC));
-  prog.set("uFarVC", ortho ? float(cam.farVC) : std::numeric_limits<float>::max());
-}
+void GlyphRenderer::setCamera(const gl::Program& prog, const Camera& cam) const { setCameraUniforms(prog, cam); }
 
 std::array<const gl::Program*, 4> GlyphRenderer::glyphPrograms() const {
   return {&ellipsoid_, &superquadric_, &superquadricStats_, &tessellated_.program()};
@@ -85,6 +80,11 @@ void GlyphRenderer::setParams(const FrameParams& p) {
   auto changed = [&](auto member) { return !old || !(old->*member == p.*member); };
   for (const gl::Program* prog : glyphPrograms()) {
     if (changed(&FrameParams::scale)) prog->set("uScale", float(p.scale));
+    if (changed(&FrameParams::sizing)) {
+      prog->set("uMagnitude", int(p.sizing.magnitude));
+      prog->set("uLambda0", float(p.sizing.lambda0));
+      prog->set("uMaxRadiusWC", float(p.sizing.maxRadiusWC));
+    }
     if (changed(&FrameParams::faMin)) prog->set("uFaMin", float(p.faMin));
     if (changed(&FrameParams::slab)) {
       prog->set("uSlabAxis", p.slab.axis);
@@ -99,25 +99,55 @@ void GlyphRenderer::setParams(const FrameParams& p) {
       prog->set("uEpsilon", float(p.march.epsilon));
     }
   }
-  setLightingUniforms(lighting_, p, old);
-  if (shadow_) setLightingUniforms(shadow_->lighting(), p, old);
+  if (changed(&FrameParams::background)) {
+    lighting_.set("uBackground", p.background);
+    if (lightingVariant_) lightingVariant_->set("uBackground", p.background);
+  }
+  if (changed(&FrameParams::light)) {
+    setLighting(lighting_, p);
+    if (lightingVariant_) setLighting(*lightingVariant_, p);
+  }
   params_ = p;
 }
 
-// All of them when `old` is null.
-void GlyphRenderer::setLightingUniforms(const gl::Program& prog, const FrameParams& p, const FrameParams* old) const {
-  if (!old || old->background != p.background) prog.set("uBackground", p.background);
-  if (!old || !(old->light == p.light)) {
-    prog.set("uKeyDirVC", p.light.keyDirVC);
-    prog.set("uLightMix", glm::vec4(p.light.ambient, p.light.head, p.light.key, p.light.specular));
-    prog.set("uShininess", p.light.shininess);
+void GlyphRenderer::setLighting(const gl::Program& prog, const FrameParams& p) const {
+  prog.set("uKeyDirVC", p.light.keyDirVC);
+  prog.set("uLightMix", glm::vec4(p.light.ambient, p.light.head, p.light.key, p.light.specular));
+  prog.set("uShininess", p.light.shininess);
+}
+
+// The plain program unless an effect needs a variant, which is compiled on
+// first use: with every effect off the frame runs main's exact shader. Only
+// the variant in use is kept, so that an effect switched off holds nothing.
+const gl::Program& GlyphRenderer::lightingFor(const FrameParams& p, bool shadows) {
+  const int key = (p.ao.enabled ? 1 : 0) | (shadows ? 2 : 0);
+  if (key == 0) {
+    lightingVariant_.reset();
+    return lighting_;
   }
+  if (!lightingVariant_ || lightingVariantKey_ != key) {
+    // Each list lives as long as the call that reads it.
+    auto make = [&](std::initializer_list<std::string_view> defines) {
+      return std::make_unique<gl::Program>(
+          gl_, lib_, std::initializer_list<gl::StageSource>{{GL_VERTEX_SHADER, "fullscreen.vert"},
+                                                            {GL_FRAGMENT_SHADER, "lighting.frag"}},
+          defines);
+    };
+    lightingVariant_ = key == 1 ? make({"TG_AO"}) : key == 2 ? make({"TG_SHADOWS"}) : make({"TG_AO", "TG_SHADOWS"});
+    lightingVariantKey_ = key;
+    lightingVariant_->set("uBackground", p.background);
+    setLighting(*lightingVariant_, p);
+  }
+  return *lightingVariant_;
+}
+
+double GlyphRenderer::aoRadiusWC(const FrameParams& p) const {
+  return p.ao.radius > 0.0 ? p.ao.radius : AoParams::kAutoRadius * typicalDiameter_ * p.scale;
 }
 
 Camera GlyphRenderer::renderShadowMap(const Camera& cam, const FrameParams& p, int split) {
   if (!shadow_) {
-    shadow_ = std::make_unique<ShadowPass>(gl_, lib_);
-    setLightingUniforms(shadow_->lighting(), p, nullptr);
+    shadow_ = std::make_unique<ShadowPass>(gl_);
   }
   // Casters: the selected centres, grown by the largest glyph box's half
   // diagonal (a superquadric reaches its box's corners).
@@ -127,12 +157,12 @@ Camera GlyphRenderer::renderShadowMap(const Camera& cam, const FrameParams& p, i
     lo[a] = std::max(lo[a], p.slab.lo);
     hi[a] = std::max(lo[a], std::min(hi[a], p.slab.hi));
   }
-  const double pad = std::sqrt(3.0) * p.scale * maxAbsEigenvalue_;
+  const double pad = std::sqrt(3.0) * tensor::glyphRadiusWC(p.scale, p.sizing, maxAbsEigenvalue_);
   const glm::dvec3 keyWC = glm::transpose(glm::dmat3(cam.viewWCVC)) * glm::dvec3(p.light.keyDirVC);
   const Camera light = lightCamera(cam, keyWC, lo - pad, hi + pad, p.shadow);
   const bool tessellated = p.tessellation > 0;
   if (tessellated) culling_.bypass();
-  else culling_.prepare(light, p.scale, p.faMin, p.slab, p.frustumCulling);
+  else culling_.prepare(light, p.scale, p.sizing, p.faMin, p.slab, p.frustumCulling);
   gl_.Enable(GL_DEPTH_TEST);
   gl_.DepthFunc(GL_GREATER);  // reversed Z
   gl_.DepthMask(GL_TRUE);
@@ -179,7 +209,7 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   if (!p.shadow.enabled) shadow_.reset();
   else if (count_ > 0) light = renderShadowMap(cam, p, split);
   if (tessellated) culling_.bypass();
-  else culling_.prepare(cam, p.scale, p.faMin, p.slab, p.frustumCulling);
+  else culling_.prepare(cam, p.scale, p.sizing, p.faMin, p.slab, p.frustumCulling);
   if (count_ > 0) {
     gl_.Enable(GL_DEPTH_TEST);
     gl_.DepthFunc(GL_GREATER);  // reversed Z
@@ -231,13 +261,29 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
     }
   }
   gl_.Disable(GL_DEPTH_TEST);
+  if (p.ao.enabled) {
+    if (!ao_) ao_ = std::make_unique<AoPass>(gl_, lib_);
+    ao_->run(cam, target, p.ao, aoRadiusWC(p));
+  }
+  const gl::Program& lighting = lightingFor(p, light.has_value());
   target.beginLighting();
-  const gl::Program& lit = light ? shadow_->lighting() : lighting_;
-  if (light) shadow_->bindForLighting(cam, *light, p.shadow, target);
-  setCamera(lit, cam);
-  gl_.UseProgram(lit.id());
+  setCamera(lighting, cam);
+  if (light) shadow_->bindForLighting(lighting, cam, *light, p.shadow, target);
+  gl_.UseProgram(lighting.id());
   gl_.BindVertexArray(vao_);
   gl_.DrawArrays(GL_TRIANGLES, 0, 3);
+  if (p.outline.enabled) {
+    if (!outline_) outline_ = std::make_unique<OutlinePass>(gl_, lib_);
+    setCameraUniforms(outline_->program(), cam);
+    outline_->run(target, p.outline);
+  }
+  // Last before readback: the legend draws over every effect.
+  if (p.legend.enabled) {
+    if (!legend_) legend_ = std::make_unique<LegendPass>(gl_, lib_);
+    legend_->draw(cam, p.legend, {p.color, p.scale, mdMin_, mdMax_, eigenMin_, eigenMax_});
+  } else {
+    legend_.reset();
+  }
   gl::checkError(gl_, "GlyphRenderer::render");
 }
 
@@ -256,7 +302,8 @@ void flipRows(std::vector<T>& v, int width, int height, int channels) {
 
 std::size_t GlyphRenderer::gpuBytes() const {
   return std::size_t(count_) * sizeof(tensor::GlyphRecord) + culling_.gpuBytes() + tessellated_.meshBytes() +
-         (shadow_ ? shadow_->gpuBytes() : 0);
+         (legend_ ? legend_->gpuBytes() : 0) +
+         (ao_ ? ao_->gpuBytes() : 0) + (shadow_ ? shadow_->gpuBytes() : 0);
 }
 
 IterationStats GlyphRenderer::iterationStats() const {

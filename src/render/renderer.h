@@ -10,15 +10,19 @@
 #include <glm/vec4.hpp>
 
 #include "gl/program.h"
+#include "render/ao_pass.h"
 #include "render/camera.h"
 #include "render/frame_image.h"
 #include "render/gbuffer.h"
+#include "render/legend_params.h"
 #include "render/occluder_pyramid.h"
 #include "render/glyph_culling.h"
+#include "render/outline_pass.h"
 #include "render/quad_sprites.h"
 #include "render/shadow_pass.h"
 #include "render/tessellated.h"
 #include "tensor/glyph.h"
+#include "tensor/glyph_scale.h"
 
 namespace tg::render {
 
@@ -51,6 +55,7 @@ struct IterationStats {
 
 struct FrameParams {
   double scale = 1.0;  // world units per eigenvalue unit
+  tensor::SizeMapping sizing;  // magnitude mapping and clamp (tensor/glyph_scale.h); default: none
   double faMin = 0.0;
   Slab slab;
   GlyphKind glyph = GlyphKind::Ellipsoid;
@@ -67,9 +72,14 @@ struct FrameParams {
   ColorMode color = ColorMode::DEC;
   glm::vec4 background{0.08f, 0.08f, 0.10f, 1.0f};
   Lighting light;
-  ShadowParams shadow;  // soft shadows from the key light (render/shadow_pass.h)
+  LegendParams legend;
+  AoParams ao;            // deferred depth cues: off by default, and then
+  OutlineParams outline;  // no pass of theirs is built, run or allocated
+  ShadowParams shadow;    // soft shadows from the key light (render/shadow_pass.h)
   bool operator==(const FrameParams&) const = default;
 };
+
+class LegendPass;
 
 class GlyphRenderer {
  public:
@@ -106,13 +116,27 @@ class GlyphRenderer {
   // commands, the compacted indices once a threshold needed them, and the
   // tessellated mesh once drawn, and the shadow map while shadows are on.
   std::size_t gpuBytes() const;
+  // The legend pass, while the last frame had one (null: nothing built or held).
+  const LegendPass* legendPass() const { return legend_.get(); }
+  // The deferred effects' passes, created on the first frame that enables
+  // them (null before).
+  const AoPass* aoPass() const { return ao_.get(); }
+  const OutlinePass* outlinePass() const { return outline_.get(); }
+  // The occlusion radius a frame with `p` uses: p.ao.radius, or when 0,
+  // AoParams::kAutoRadius times the typical glyph diameter at p.scale (that
+  // of the 99th-percentile glyph, tensor::defaultScale's).
+  double aoRadiusWC(const FrameParams& p) const;
 
  private:
   void setCamera(const gl::Program& prog, const Camera& cam) const;
   // Programs that draw glyphs, and those of them that take the superquadric shape uniforms.
   std::array<const gl::Program*, 4> glyphPrograms() const;
   std::array<const gl::Program*, 3> shapePrograms() const;
-  void setLightingUniforms(const gl::Program& prog, const FrameParams& p, const FrameParams* old) const;
+  // Sets the lighting uniforms of `p` on a lighting program.
+  void setLighting(const gl::Program& prog, const FrameParams& p) const;
+  // lighting_, or the variant the frame's effects need (`shadows`: the key
+  // light's map was drawn), compiled on first use; only the last is kept.
+  const gl::Program& lightingFor(const FrameParams& p, bool shadows);
   // Draws the glyphs' depth from the key light into the shadow map; returns the light's camera.
   Camera renderShadowMap(const Camera& cam, const FrameParams& p, int split);
   const gl::Api& gl_;
@@ -133,7 +157,14 @@ class GlyphRenderer {
   glm::dvec3 centresLoWC_{0.0}, centresHiWC_{0.0};  // of the uploaded glyphs
   double maxAbsEigenvalue_ = 0;
   float mdMin_ = 0, mdMax_ = 0;
+  double eigenMin_ = 0, eigenMax_ = 0;
+  double typicalDiameter_ = 1.0;  // in eigenvalue units
+  std::unique_ptr<AoPass> ao_;
+  std::unique_ptr<OutlinePass> outline_;
+  std::unique_ptr<gl::Program> lightingVariant_;  // lighting.frag with TG_AO and/or TG_SHADOWS
+  int lightingVariantKey_ = 0;                    // 1: TG_AO, 2: TG_SHADOWS, 3: both
   std::optional<FrameParams> params_;  // as last set
+  std::unique_ptr<LegendPass> legend_;
 };
 
 }  // namespace tg::render

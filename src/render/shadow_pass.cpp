@@ -93,9 +93,7 @@ Camera lightCamera(const Camera& view, const glm::dvec3& keyDirWC, const glm::dv
   return makeCamera(d, mapSize, mapSize, lo, hi);
 }
 
-ShadowPass::ShadowPass(const gl::Api& gl, const gl::ShaderLibrary& lib)
-    : gl_(gl), lighting_(gl, lib, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "lighting.frag"}},
-                         {"TG_SHADOWS"}) {}
+ShadowPass::ShadowPass(const gl::Api& gl) : gl_(gl) {}
 
 ShadowPass::~ShadowPass() {
   release();
@@ -177,20 +175,20 @@ void ShadowPass::beginMap(int mapSize) {
   gl::checkError(gl_, "ShadowPass::beginMap");
 }
 
-void ShadowPass::bindForLighting(const Camera& view, const Camera& light, const ShadowParams& p,
-                                 const GBuffer& target) const {
+void ShadowPass::bindForLighting(const gl::Program& prog, const Camera& view, const Camera& light,
+                                 const ShadowParams& p, const GBuffer& target) const {
   gl_.BindTextureUnit(kSceneDepthUnit, target.depth());
   gl_.BindTextureUnit(kMapUnit, map_);
   const double texel = light.desc.orthoHeight / double(size_);
-  lighting_.set("uLightFromVC", glm::mat4(light.viewWCVC * glm::inverse(view.viewWCVC)));
-  lighting_.set("uLightHalfExtent", float(0.5 * light.desc.orthoHeight));
-  lighting_.set("uLightNearFar", glm::vec2(float(light.nearVC), float(light.farVC)));
-  lighting_.set("uShadowMapSize", float(size_));
-  lighting_.set("uShadowKernel", p.penumbra * float(size_));
-  lighting_.set("uShadowBias", float(p.bias * texel));
-  lighting_.set("uShadowNormalOffset", float(p.normalOffset * texel));
-  lighting_.set("uShadowReceiverPlane", p.receiverPlane ? 1 : 0);
-  lighting_.set("uShadowStrength", p.strength);
+  prog.set("uLightFromVC", glm::mat4(light.viewWCVC * glm::inverse(view.viewWCVC)));
+  prog.set("uLightHalfExtent", float(0.5 * light.desc.orthoHeight));
+  prog.set("uLightNearFar", glm::vec2(float(light.nearVC), float(light.farVC)));
+  prog.set("uShadowMapSize", float(size_));
+  prog.set("uShadowKernel", p.penumbra * float(size_));
+  prog.set("uShadowBias", float(p.bias * texel));
+  prog.set("uShadowNormalOffset", float(p.normalOffset * texel));
+  prog.set("uShadowReceiverPlane", p.receiverPlane ? 1 : 0);
+  prog.set("uShadowStrength", p.strength);
   gl::checkError(gl_, "ShadowPass::bindForLighting");
 }
 

@@ -16,7 +16,8 @@
 //                      are scaled by the filtered visibility (shaders/lib/shadow.glsl)
 //
 // Built on the first frame that asks for shadows and released by the first
-// frame that does not, so that a frame without them allocates nothing.
+// frame that does not, so that a frame without them allocates nothing (the
+// renderer likewise keeps its TG_SHADOWS lighting variant only while used).
 #include <cstddef>
 
 #include <glm/vec3.hpp>
@@ -66,10 +67,10 @@ Camera lightCamera(const Camera& view, const glm::dvec3& keyDirWC, const glm::dv
 
 class ShadowPass {
  public:
-  // Mirrored by shaders/lib/shadow.glsl; above the occlusion pre-pass's 3 and 4.
-  static constexpr GLuint kSceneDepthUnit = 6, kMapUnit = 7;
+  // Mirrored by shaders/lib/shadow.glsl; above the occlusion pre-pass's 3 and 4 and AoPass::kAoUnit 6.
+  static constexpr GLuint kSceneDepthUnit = 7, kMapUnit = 8;
 
-  ShadowPass(const gl::Api& gl, const gl::ShaderLibrary& lib);
+  explicit ShadowPass(const gl::Api& gl);
   ~ShadowPass();
   ShadowPass(const ShadowPass&) = delete;
   ShadowPass& operator=(const ShadowPass&) = delete;
@@ -83,11 +84,11 @@ class ShadowPass {
   // shaders/lib/occlusion.glsl reads them. Allocated on first use.
   void beginOccluders(int mapSize);
   void buildPyramid(const OccluderPyramid& pyramid) const;
-  // Binds the map and target's depth, and sets the shadow uniforms of the
-  // lighting variant (the caller sets its camera and light mix).
-  void bindForLighting(const Camera& view, const Camera& light, const ShadowParams& p, const GBuffer& target) const;
-  // lighting.frag compiled with TG_SHADOWS.
-  const gl::Program& lighting() const { return lighting_; }
+  // Binds the map and target's depth, and sets the shadow uniforms of
+  // `lighting`, lighting.frag compiled with TG_SHADOWS (the caller sets its
+  // camera and light mix).
+  void bindForLighting(const gl::Program& lighting, const Camera& view, const Camera& light, const ShadowParams& p,
+                       const GBuffer& target) const;
   std::size_t gpuBytes() const;
   int mapSize() const { return size_; }  // of the last map drawn
 
@@ -95,7 +96,6 @@ class ShadowPass {
   void release();
   void releaseOccluders();
   const gl::Api& gl_;
-  gl::Program lighting_;
   GLuint map_ = 0, fbo_ = 0;
   int size_ = 0;
   GLuint occluderDepth_ = 0, pyramid_ = 0, occluderFbo_ = 0;

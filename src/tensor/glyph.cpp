@@ -12,7 +12,6 @@
 #include "tensor/anisotropy.h"
 #include "tensor/eigen.h"
 #include "tensor/lanes.h"
-#include "util/huge_pages.h"
 
 namespace tg::tensor {
 namespace {
@@ -23,6 +22,8 @@ struct Partial {
   double maxAbs = 0;
   double mdMin = std::numeric_limits<double>::infinity();
   double mdMax = -std::numeric_limits<double>::infinity();
+  double eigenMin = std::numeric_limits<double>::infinity();
+  double eigenMax = -std::numeric_limits<double>::infinity();
 };
 
 // The unit quaternion (x, y, z, w) of the rotation whose columns are the
@@ -107,6 +108,8 @@ TG_LANE_CLONES void buildRange(std::span<const float> pos, std::span<const float
       p.maxAbs = std::max({p.maxAbs, std::abs(eb.values[0][k]), std::abs(eb.values[2][k])});
       p.mdMin = std::min(p.mdMin, md[k]);
       p.mdMax = std::max(p.mdMax, md[k]);
+      p.eigenMin = std::min(p.eigenMin, eb.values[2][k]);
+      p.eigenMax = std::max(p.eigenMax, eb.values[0][k]);
     }
   }
 }
@@ -164,8 +167,7 @@ GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> te
   if (positions.size() != 3 * n || tensors.size() != 6 * n || (!ids.empty() && ids.size() != n))
     throw std::invalid_argument("buildGlyphs: positions, tensors and ids disagree in count");
   GlyphSet set;
-  util::reserveHuge(set.glyphs, n);
-  set.glyphs.resize(n);
+  set.glyphs.extend(n);  // every record is written by buildRange
   const bool filtering = opt.clMin > 0 || opt.cpMin > 0;
   std::vector<char> dropped(filtering ? n : 0);
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
@@ -197,12 +199,16 @@ GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> te
     all.maxAbs = std::max(all.maxAbs, p.maxAbs);
     all.mdMin = std::min(all.mdMin, p.mdMin);
     all.mdMax = std::max(all.mdMax, p.mdMax);
+    all.eigenMin = std::min(all.eigenMin, p.eigenMin);
+    all.eigenMax = std::max(all.eigenMax, p.eigenMax);
   }
   set.boundsMinWC = all.lo;
   set.boundsMaxWC = all.hi;
   set.maxAbsEigenvalue = all.maxAbs;
   set.mdMin = all.mdMin;
   set.mdMax = all.mdMax;
+  set.eigenvalueMin = all.eigenMin;
+  set.eigenvalueMax = all.eigenMax;
   groupTiles(set, chunks);
   return set;
 }
@@ -227,31 +233,6 @@ glm::dvec3 ellipsoidAxes(const GlyphRecord& g, double scale) {
 }  // namespace tg::tensor
 
 namespace tg::tensor {
-
-double defaultScale(const GlyphSet& set, double spacing) {
-  const std::size_t n = set.glyphs.size();
-  if (n == 0 || !(spacing > 0.0)) return 1.0;
-  // A strided sample of at most 65536 glyphs estimates the percentile.
-  const std::size_t step = std::max<std::size_t>(1, n / 65536);
-  std::vector<double> m;
-  for (std::size_t i = 0; i < n; i += step) {
-    const float* l = set.glyphs[i].eigenvalues;
-    m.push_back(std::max(std::abs(double(l[0])), std::abs(double(l[2]))));
-  }
-  const std::size_t k = std::min(m.size() - 1, std::size_t(0.99 * double(m.size())));
-  std::nth_element(m.begin(), m.begin() + std::ptrdiff_t(k), m.end());
-  return m[k] > 0.0 ? 0.5 * spacing / m[k] : 1.0;
-}
-
-double resolveScale(ScaleMode mode, double factor, const GlyphSet& set, double spacing) {
-  switch (mode) {
-    case ScaleMode::Absolute: return factor;
-    case ScaleMode::Max:
-      return set.maxAbsEigenvalue > 0.0 && spacing > 0.0 ? factor * 0.5 * spacing / set.maxAbsEigenvalue : factor;
-    case ScaleMode::Spacing: return factor * defaultScale(set, spacing);
-  }
-  return factor;
-}
 
 BoxWC glyphBoxWC(const GlyphSet& set, double scale) {
   const double pad = scale * set.maxAbsEigenvalue;

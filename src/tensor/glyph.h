@@ -6,6 +6,8 @@
 #include <span>
 #include <vector>
 
+#include "util/mapped_array.h"
+
 #include <glm/vec3.hpp>
 
 namespace tg::tensor {
@@ -40,11 +42,12 @@ struct GlyphTile {
 };
 
 struct GlyphSet {
-  std::vector<GlyphRecord> glyphs;
+  util::MappedArray<GlyphRecord> glyphs;  // untouched until built: no zeroing pass
   std::vector<GlyphTile> tiles;  // ceil(glyphs / kTileGlyphs)
   glm::dvec3 boundsMinWC{0.0}, boundsMaxWC{0.0};  // of glyph centres
   double maxAbsEigenvalue = 0;
   double mdMin = 0, mdMax = 0;
+  double eigenvalueMin = 0, eigenvalueMax = 0;  // signed: a stress field's compression and tension
   // Totals over the tiles: three equal eigenvalues; definite (all positive
   // or all negative); the rest have eigenvalues of mixed sign or zero.
   std::size_t sphereCount = 0, definiteCount = 0;
@@ -89,21 +92,12 @@ glm::dvec3 ellipsoidAxes(const GlyphRecord& g, double scale);
 
 namespace tg::tensor {
 
-// The default --scale: the largest glyphs (the 99th percentile of each
-// glyph's largest |eigenvalue|, so that a few outliers do not shrink the
-// rest) get a diameter of one sample spacing. 1 when undefined.
-double defaultScale(const GlyphSet& set, double sampleSpacing);
-
-// --scale-mode: how `factor` (--scale) becomes world units per eigenvalue unit.
-//   absolute: factor itself.
-//   max:      the field's largest |eigenvalue| gets a diameter of `factor`
-//             sample spacings (exact maximum: one outlier shrinks every glyph).
-//   spacing:  the 99th percentile does (defaultScale times factor).
+// --scale-mode: how --scale becomes world units per eigenvalue unit
+// (tensor/glyph_scale.h, ScaleParams, resolves it).
 enum class ScaleMode { Absolute, Max, Spacing };
-double resolveScale(ScaleMode mode, double factor, const GlyphSet& set, double sampleSpacing);
 
-// The box cameras frame: the glyph centres' bounds widened by the largest
-// semi-axis at `scale` (scale * max |eigenvalue|).
+// The glyph centres' bounds widened by the largest semi-axis at `scale`
+// (scale * max |eigenvalue|): the depth range of linear, unclamped glyphs.
 struct BoxWC {
   glm::dvec3 lo, hi;
 };

@@ -89,6 +89,121 @@ TEST(ViewScript, ParsesAppliesAndNamesTheLineOfAMistake) {
   std::filesystem::remove_all(dir);
 }
 
+TEST(ViewScript, MagnitudeAndClampResolveTheSizeAgainWithoutTheRecords) {
+  const auto dir = std::filesystem::temp_directory_path() / ("tg_view_size_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto path = (dir / "s.txt").string();
+  std::ofstream(path) << "magnitude log\nclamp 0\nmagnitude shape 2.5\nscale 3\nclamp 1.5\nmagnitude linear\n";
+  const auto steps = app::parseScript(path);
+  ASSERT_EQ(steps.size(), 6u);
+  // Magnitudes 1, 2, ..., 100 at sample spacing 0.5, as the viewer keeps them.
+  app::ViewState v{{}, app::OrbitCamera(start()), 1.0, 1.0};
+  v.magnitudes.spacing = 0.5;
+  for (int k = 1; k <= 100; ++k) v.magnitudes.sorted.push_back(k);
+  v.magnitudes.maxAbs = 100;
+  app::resize(v);
+  EXPECT_DOUBLE_EQ(v.params.scale * 90.0, 0.25);  // the 90th percentile is one spacing across
+  EXPECT_DOUBLE_EQ(v.params.sizing.maxRadiusWC, 0.5);  // the default clamp: 2 spacings
+  app::applyStep(steps[0], v);
+  EXPECT_EQ(v.params.sizing.magnitude, tensor::Magnitude::Log);
+  EXPECT_DOUBLE_EQ(v.params.sizing.lambda0, 51.0);  // the median
+  app::applyStep(steps[1], v);
+  EXPECT_EQ(v.params.sizing.maxRadiusWC, 0.0);
+  app::applyStep(steps[2], v);
+  EXPECT_EQ(v.params.sizing.magnitude, tensor::Magnitude::Shape);
+  EXPECT_DOUBLE_EQ(v.params.sizing.lambda0, 2.5);
+  EXPECT_DOUBLE_EQ(v.params.scale * 2.5, 0.25);
+  app::applyStep(steps[3], v);
+  EXPECT_DOUBLE_EQ(v.params.scale * 2.5, 0.75);  // the scale factor stays on top of the mapping
+  app::applyStep(steps[4], v);
+  EXPECT_DOUBLE_EQ(v.params.sizing.maxRadiusWC, 0.375);
+  EXPECT_DOUBLE_EQ(v.params.scale * 2.5, 0.75);
+  app::applyStep(steps[5], v);
+  EXPECT_EQ(v.params.sizing.magnitude, tensor::Magnitude::Linear);
+
+  for (const auto& [line, what] : {std::pair{"magnitude cubic\n", "unknown mapping"},
+                                   std::pair{"magnitude linear 2\n", "LAMBDA0 applies to log or shape only"},
+                                   std::pair{"magnitude log 0\n", "must be positive"},
+                                   std::pair{"clamp -1\n", "clamp must be within"}}) {
+    std::ofstream(path) << line;
+    try {
+      app::parseScript(path);
+      ADD_FAILURE() << line;
+    } catch (const io::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(ViewScript, LegendCommandsSetTheLegendParameters) {
+  const auto dir = std::filesystem::temp_directory_path() / ("tg_view_legend_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto path = (dir / "s.txt").string();
+  std::ofstream(path) << "legend on\nlegend-corner top-left\nunits MPa\nlength-units mm\nlegend off\n";
+  const auto steps = app::parseScript(path);
+  ASSERT_EQ(steps.size(), 5u);
+  app::ViewState v{{}, app::OrbitCamera(start()), 1.0, 1.0};
+  EXPECT_FALSE(v.params.legend.enabled);  // off unless asked for
+  for (std::size_t k = 0; k < 4; ++k) app::applyStep(steps[k], v);
+  EXPECT_TRUE(v.params.legend.enabled);
+  EXPECT_EQ(v.params.legend.corner, render::LegendCorner::TopLeft);
+  EXPECT_EQ(v.params.legend.units, "MPa");
+  EXPECT_EQ(v.params.legend.lengthUnits, "mm");
+  app::applyStep(steps[4], v);
+  EXPECT_FALSE(v.params.legend.enabled);
+  for (const auto& [text, message] : {std::pair<std::string, std::string>{"legend maybe\n", "legend: on or off"},
+                                      {"legend-corner middle\n", "legend-corner: unknown corner \"middle\""},
+                                      {"units " + std::string(41, 'u') + "\n", "units: at most 40 characters"}}) {
+    std::ofstream(path) << text;
+    try {
+      app::parseScript(path);
+      ADD_FAILURE() << "no error for " << text;
+    } catch (const io::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(path + ":1: " + message), std::string::npos) << e.what();
+    }
+  }
+  std::filesystem::remove_all(dir);
+}
+
+TEST(ViewScript, DepthCueCommandsSetTheirParametersWithinRange) {
+  const auto dir = std::filesystem::temp_directory_path() / ("tg_view_cues_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto path = (dir / "s.txt").string();
+  std::ofstream(path) << "ao on\nao-radius 0.25\nao-strength 2\noutlines on\noutline-width 3\nao off\n";
+  const auto steps = app::parseScript(path);
+  ASSERT_EQ(steps.size(), 6u);
+  app::ViewState v{{}, app::OrbitCamera(start()), 1.0, 1.0};
+  EXPECT_EQ(v.params.ao, render::AoParams{});
+  EXPECT_FALSE(v.params.ao.enabled);
+  EXPECT_FALSE(v.params.outline.enabled);
+  for (std::size_t k = 0; k < 5; ++k) app::applyStep(steps[k], v);
+  EXPECT_TRUE(v.params.ao.enabled);
+  EXPECT_DOUBLE_EQ(v.params.ao.radius, 0.25);
+  EXPECT_DOUBLE_EQ(v.params.ao.strength, 2.0);
+  EXPECT_TRUE(v.params.outline.enabled);
+  EXPECT_DOUBLE_EQ(v.params.outline.width, 3.0);
+  app::applyStep(steps[5], v);
+  EXPECT_FALSE(v.params.ao.enabled);
+  EXPECT_DOUBLE_EQ(v.params.ao.radius, 0.25) << "switching off keeps the tuning";
+
+  const std::pair<const char*, const char*> bad[] = {{"ao maybe\n", ":1: ao: on or off"},
+                                                     {"ao-radius 0\n", ":1: ao-radius must be positive (world units)"},
+                                                     {"ao-strength 9\n", ":1: ao-strength must be within 0..4"},
+                                                     {"outline-width 20\n", ":1: outline-width must be within 0.25..8"},
+                                                     {"outlines\n", ":1: outlines: wrong number of arguments"}};
+  for (const auto& [text, message] : bad) {
+    std::ofstream(path) << text;
+    try {
+      app::parseScript(path);
+      ADD_FAILURE() << text;
+    } catch (const io::InputError& e) {
+      EXPECT_EQ(std::string(e.what()), path + message) << text;
+    }
+  }
+  std::filesystem::remove_all(dir);
+}
+
 TEST(ViewScript, ShadowCommandsSetTheShadowParamsWithRenderRanges) {
   const auto dir = std::filesystem::temp_directory_path() / ("tg_view_shadow_" + std::to_string(::getpid()));
   std::filesystem::create_directories(dir);

@@ -130,7 +130,7 @@ TEST(CliData, ScaleModes) {
   EXPECT_NEAR(scaleOf("--scale-mode max"), 0.5 * 3.125 / 0.00497547, 0.01);
   EXPECT_NEAR(scaleOf("--scale-mode max --scale 2"), 3.125 / 0.00497547, 0.02);
   const double spacing = scaleOf("--scale-mode spacing");
-  EXPECT_GT(spacing, scaleOf("--scale-mode max"));  // the 99th percentile is below the maximum
+  EXPECT_GT(spacing, scaleOf("--scale-mode max"));  // the 90th percentile is below the maximum
   EXPECT_NEAR(scaleOf(""), spacing, 1e-3 * spacing);
 }
 

@@ -162,6 +162,34 @@ TEST_F(Shadows, OffIsTodaysFrameBitForBitAndBuildsNothing) {
   }
 }
 
+// With ambient occlusion, the lighting variant takes both: shadows still
+// darken, and switched off leave AO's own frame bit for bit.
+TEST_F(Shadows, ComposeWithAmbientOcclusion) {
+  const auto set = shadowScene();
+  const auto cam = sceneCamera(160, 120);
+  render::FrameParams p;
+  p.ao.enabled = true;
+  const auto aoOnly = frame(set, cam, p);
+  p.shadow.enabled = true;
+  const auto both = frame(set, cam, p);
+  std::size_t darker = 0, lighter = 0;
+  for (std::size_t k = 0; k < both.rgba.size(); k += 4) {
+    darker += both.rgba[k] + 1e-3f < aoOnly.rgba[k];
+    lighter += both.rgba[k] > aoOnly.rgba[k] + 1e-5f;
+  }
+  EXPECT_GT(darker, 200u);
+  EXPECT_EQ(lighter, 0u);
+  ctx_->makeCurrent();
+  render::GlyphRenderer r(ctx_->api(), *lib_);
+  render::GBuffer target(ctx_->api(), cam.width, cam.height);
+  r.upload(set);
+  r.render(cam, p, target);
+  p.shadow.enabled = false;
+  r.render(cam, p, target);
+  EXPECT_TRUE(sameBits(aoOnly, r.readback(cam, target)));
+  EXPECT_FALSE(r.shadowPassBuilt());
+}
+
 // The map's side follows the view: about a texel per pixel at the glyphs, in
 // multiples of 64, never above mapSize; a fixed size with density 0.
 TEST(ShadowMap, SizeFollowsTheViewResolution) {

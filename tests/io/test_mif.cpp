@@ -93,8 +93,8 @@ TEST(Mif, EveryLayoutGivesTheSameTensorsAtTheSamePositions) {
       // The selection keeps the same voxels whatever the order on file.
       const io::TensorField s = read(p, sliced);
       if (firstIds.empty()) {
-        firstIds = s.ids;
-        firstTensors = s.tensors;
+        firstIds.assign(s.ids.begin(), s.ids.end());
+        firstTensors.assign(s.tensors.begin(), s.tensors.end());
         EXPECT_EQ(firstIds, (std::vector<std::uint32_t>{12, 16}));  // k = 2, stride 2: (0,0,2), (0,2,2)
       }
       EXPECT_EQ(s.ids, firstIds) << name;

@@ -1,7 +1,7 @@
-// Tier 2: the guarded read (a child process, the field back through a pipe
-// with its arrays spliced) gives exactly what the same read gives in process,
-// for every format and for fields small enough to live on the child's heap,
-// where freeing them early once let later allocations overwrite them.
+// Tier 2: the guarded read (a child process, the field back through a socket
+// with its arrays as memfd descriptors) gives exactly what the same read gives
+// in process, for every format and for small fields, which an earlier
+// spliced-pipe version let the child overwrite before the parent read them.
 #include <gtest/gtest.h>
 
 #include <filesystem>

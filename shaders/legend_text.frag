@@ -1,0 +1,11 @@
+#version 450 core
+// Coverage from the font atlas (its white texel for lines and fills).
+layout(binding = 0) uniform sampler2D uAtlas;
+
+in vec2 vUV;
+in vec4 vColor;
+out vec4 oColor;
+
+void main() {
+  oColor = vec4(vColor.rgb, vColor.a * texture(uAtlas, vUV).r);
+}

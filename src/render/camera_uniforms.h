@@ -1,0 +1,11 @@
+#pragma once
+// The camera uniforms of shaders/lib/camera.glsl, for every program that
+// includes it: the glyph passes and the deferred ones.
+#include "gl/program.h"
+#include "render/camera.h"
+
+namespace tg::render {
+
+void setCameraUniforms(const gl::Program& prog, const Camera& cam);
+
+}  // namespace tg::render

@@ -1,0 +1,44 @@
+#pragma once
+// The legend pass: a colour key, an orientation key for dec and a scale bar,
+// drawn over the lit image (render/legend_layout.h places them).
+//
+//   READS   nothing of the G-buffer: the camera, LegendParams and
+//           LegendInputs (the md range and scale the glyphs were drawn with).
+//   WRITES  GBuffer::color (RGB blended over the lit colour; alpha kept),
+//           after the lighting pass and before readback.
+//
+// GlyphRenderer builds it on the first frame with LegendParams::enabled and
+// drops it on the first frame without: a frame without a legend runs and
+// holds none of this (no programs, no font texture, no buffers).
+#include <cstddef>
+#include <memory>
+
+#include "gl/program.h"
+#include "render/legend_layout.h"
+
+namespace tg::render {
+
+class LegendPass {
+ public:
+  LegendPass(const gl::Api& gl, const gl::ShaderLibrary& lib);
+  ~LegendPass();
+  LegendPass(const LegendPass&) = delete;
+  LegendPass& operator=(const LegendPass&) = delete;
+
+  // Draws into the framebuffer bound for lighting (GBuffer::beginLighting).
+  void draw(const Camera& cam, const LegendParams& p, const LegendInputs& in);
+  const LegendLayout& layout() const { return layout_; }  // of the last draw
+  std::size_t gpuBytes() const;
+
+ private:
+  void ensureFont(int textScale);
+  const gl::Api& gl_;
+  gl::Program swatch_;
+  gl::Program text_;
+  std::unique_ptr<LegendFont> font_;
+  LegendLayout layout_;
+  GLuint vao_ = 0, atlas_ = 0, vertices_ = 0;
+  std::size_t vertexCapacity_ = 0;  // bytes
+};
+
+}  // namespace tg::render

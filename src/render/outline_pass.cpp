@@ -1,0 +1,35 @@
+#include "render/outline_pass.h"
+
+#include <cmath>
+
+#include <glm/trigonometric.hpp>
+
+namespace tg::render {
+
+OutlinePass::OutlinePass(const gl::Api& gl, const gl::ShaderLibrary& lib)
+    : gl_(gl), program_(gl, lib, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "outline.frag"}}) {
+  gl.CreateVertexArrays(1, &vao_);
+}
+
+OutlinePass::~OutlinePass() { gl_.DeleteVertexArrays(1, &vao_); }
+
+void OutlinePass::run(const GBuffer& target, const OutlineParams& p) const {
+  program_.set("uWidth", float(p.width));
+  program_.set("uColor", p.color);
+  program_.set("uCosCrease", float(std::cos(glm::radians(p.creaseDeg))));
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, target.colorFramebuffer());
+  gl_.Viewport(0, 0, target.width(), target.height());
+  gl_.Disable(GL_DEPTH_TEST);
+  gl_.BindTextureUnit(0, target.depth());
+  gl_.BindTextureUnit(1, target.normalWC());
+  gl_.BindTextureUnit(2, target.id());
+  gl_.Enable(GL_BLEND);
+  gl_.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+  gl_.UseProgram(program_.id());
+  gl_.BindVertexArray(vao_);
+  gl_.DrawArrays(GL_TRIANGLES, 0, 3);
+  gl_.Disable(GL_BLEND);
+  gl::checkError(gl_, "OutlinePass::run");
+}
+
+}  // namespace tg::render
