@@ -22,6 +22,7 @@
 #include "gl/shader_library.h"
 #include "io/image_writer.h"
 #include "io/readers.h"
+#include "render/legend_pass.h"
 #include "render/renderer.h"
 #include "tensor/glyph_scale.h"
 
@@ -196,7 +197,7 @@ int cmdRender(int argc, const char** argv) {
 
   auto ctx = createContext(o.backend, o.width, o.height);
   const gl::ShaderLibrary lib;
-  render::GlyphRenderer renderer(ctx->api(), lib);
+  render::GlyphRenderer renderer(ctx->api(), lib, render::makeLegendPass);
   render::GBuffer target(ctx->api(), o.width, o.height);
   const auto t2 = Clock::now();
   renderer.upload(glyphs);

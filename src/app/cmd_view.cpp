@@ -29,6 +29,7 @@
 #include "gl/context_glfw.h"
 #include "gl/shader_library.h"
 #include "io/image_writer.h"
+#include "render/legend_pass.h"
 
 namespace tg::app {
 namespace {
@@ -137,7 +138,7 @@ int cmdView(int argc, const char** argv) {
   glfwSwapInterval(script.empty() ? 1 : 0);  // a script runs as fast as it can
   const gl::Api& api = ctx->api();
   const gl::ShaderLibrary lib;
-  render::GlyphRenderer renderer(api, lib);
+  render::GlyphRenderer renderer(api, lib, render::makeLegendPass);
   renderer.upload(glyphs);
   const std::size_t glyphCount = glyphs.glyphs.size();
   glyphs.glyphs = {};  // the box and counts stay for the camera

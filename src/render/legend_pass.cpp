@@ -90,4 +90,8 @@ std::size_t LegendPass::gpuBytes() const {
   return atlas + vertexCapacity_;
 }
 
+std::unique_ptr<OverlayPass> makeLegendPass(const gl::Api& gl, const gl::ShaderLibrary& lib) {
+  return std::make_unique<LegendPass>(gl, lib);
+}
+
 }  // namespace tg::render

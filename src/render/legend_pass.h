@@ -7,18 +7,20 @@
 //   WRITES  GBuffer::color (RGB blended over the lit colour; alpha kept),
 //           after the lighting pass and before readback.
 //
-// GlyphRenderer builds it on the first frame with LegendParams::enabled and
-// drops it on the first frame without: a frame without a legend runs and
-// holds none of this (no programs, no font texture, no buffers).
+// GlyphRenderer builds it (through makeLegendPass, handed to its
+// constructor) on the first frame with LegendParams::enabled and drops it on
+// the first frame without: a frame without a legend runs and holds none of
+// this (no programs, no font texture, no buffers).
 #include <cstddef>
 #include <memory>
 
 #include "gl/program.h"
 #include "render/legend_layout.h"
+#include "render/renderer.h"
 
 namespace tg::render {
 
-class LegendPass {
+class LegendPass final : public OverlayPass {
  public:
   LegendPass(const gl::Api& gl, const gl::ShaderLibrary& lib);
   ~LegendPass();
@@ -27,8 +29,11 @@ class LegendPass {
 
   // Draws into the framebuffer bound for lighting (GBuffer::beginLighting).
   void draw(const Camera& cam, const LegendParams& p, const LegendInputs& in);
+  void draw(const Camera& cam, const FrameParams& p, const UploadedRanges& r) override {
+    draw(cam, p.legend, {p.color, p.scale, r.mdMin, r.mdMax, r.eigenMin, r.eigenMax});
+  }
   const LegendLayout& layout() const { return layout_; }  // of the last draw
-  std::size_t gpuBytes() const;
+  std::size_t gpuBytes() const override;
 
  private:
   void ensureFont(int textScale);
@@ -40,5 +45,8 @@ class LegendPass {
   GLuint vao_ = 0, atlas_ = 0, vertices_ = 0;
   std::size_t vertexCapacity_ = 0;  // bytes
 };
+
+// The factory GlyphRenderer takes (render/renderer.h, OverlayFactory).
+std::unique_ptr<OverlayPass> makeLegendPass(const gl::Api& gl, const gl::ShaderLibrary& lib);
 
 }  // namespace tg::render

@@ -7,12 +7,11 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
-#include "render/legend_pass.h"
 #include "render/camera_uniforms.h"
 
 namespace tg::render {
 
-GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib)
+GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib, OverlayFactory legend)
     : gl_(gl),
       lib_(lib),
       ellipsoid_(gl, lib, {{GL_VERTEX_SHADER, "ellipsoid.vert"}, {GL_FRAGMENT_SHADER, "ellipsoid.frag"}}),
@@ -23,7 +22,8 @@ GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib)
       sprites_(gl),
       culling_(gl, lib),
       pyramid_(gl, lib),
-      tessellated_(gl, lib) {
+      tessellated_(gl, lib),
+      makeLegend_(legend) {
   // The lighting pass's core-profile draw needs a vertex array object even
   // with no attributes.
   gl.CreateVertexArrays(1, &vao_);
@@ -279,8 +279,9 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   }
   // Last before readback: the legend draws over every effect.
   if (p.legend.enabled) {
-    if (!legend_) legend_ = std::make_unique<LegendPass>(gl_, lib_);
-    legend_->draw(cam, p.legend, {p.color, p.scale, mdMin_, mdMax_, eigenMin_, eigenMax_});
+    if (!makeLegend_) throw std::invalid_argument("GlyphRenderer::render: this program has no legend pass");
+    if (!legend_) legend_ = makeLegend_(gl_, lib_);
+    legend_->draw(cam, p, {mdMin_, mdMax_, eigenMin_, eigenMax_});
   } else {
     legend_.reset();
   }

@@ -79,11 +79,30 @@ struct FrameParams {
   bool operator==(const FrameParams&) const = default;
 };
 
-class LegendPass;
+// What an overlay shows of the uploaded glyphs: the ranges they are coloured by.
+struct UploadedRanges {
+  float mdMin = 0, mdMax = 0;         // the uMdRange uniform
+  double eigenMin = 0, eigenMax = 0;  // signed, over the glyphs
+};
+
+// A pass drawn over the lit image, last before readback: the legend
+// (render/legend_pass.h). The application hands the renderer a factory for
+// it, so that the renderer links no font library and the EGL-only GPU
+// benchmark needs nothing but libEGL and the C library.
+class OverlayPass {
+ public:
+  virtual ~OverlayPass() = default;
+  // Draws into the framebuffer bound for lighting (GBuffer::beginLighting).
+  virtual void draw(const Camera& cam, const FrameParams& p, const UploadedRanges& ranges) = 0;
+  virtual std::size_t gpuBytes() const = 0;
+};
+using OverlayFactory = std::unique_ptr<OverlayPass> (*)(const gl::Api&, const gl::ShaderLibrary&);
 
 class GlyphRenderer {
  public:
-  GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib);
+  // `legend` builds the pass for FrameParams::legend; without it, a frame
+  // that asks for a legend throws.
+  GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib, OverlayFactory legend = nullptr);
   ~GlyphRenderer();
   GlyphRenderer(const GlyphRenderer&) = delete;
   GlyphRenderer& operator=(const GlyphRenderer&) = delete;
@@ -117,14 +136,14 @@ class GlyphRenderer {
   // tessellated mesh once drawn, and the shadow map while shadows are on.
   std::size_t gpuBytes() const;
   // The legend pass, while the last frame had one (null: nothing built or held).
-  const LegendPass* legendPass() const { return legend_.get(); }
+  const OverlayPass* legendPass() const { return legend_.get(); }
   // The deferred effects' passes, created on the first frame that enables
   // them (null before).
   const AoPass* aoPass() const { return ao_.get(); }
   const OutlinePass* outlinePass() const { return outline_.get(); }
   // The occlusion radius a frame with `p` uses: p.ao.radius, or when 0,
   // AoParams::kAutoRadius times the typical glyph diameter at p.scale (that
-  // of the 99th-percentile glyph, tensor::defaultScale's).
+  // of the glyph the default scale sizes, tensor::defaultScale).
   double aoRadiusWC(const FrameParams& p) const;
 
  private:
@@ -164,7 +183,8 @@ class GlyphRenderer {
   std::unique_ptr<gl::Program> lightingVariant_;  // lighting.frag with TG_AO and/or TG_SHADOWS
   int lightingVariantKey_ = 0;                    // 1: TG_AO, 2: TG_SHADOWS, 3: both
   std::optional<FrameParams> params_;  // as last set
-  std::unique_ptr<LegendPass> legend_;
+  OverlayFactory makeLegend_;
+  std::unique_ptr<OverlayPass> legend_;
 };
 
 }  // namespace tg::render

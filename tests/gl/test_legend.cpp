@@ -107,12 +107,12 @@ class Legend : public GlFixture {
   };
   Frame drawWithLegend(const tensor::GlyphSet& set, const render::Camera& cam, const render::FrameParams& p) {
     ctx_->makeCurrent();
-    render::GlyphRenderer r(ctx_->api(), *lib_);
+    render::GlyphRenderer r(ctx_->api(), *lib_, render::makeLegendPass);
     render::GBuffer target(ctx_->api(), cam.width, cam.height);
     r.upload(set);
     r.render(cam, p, target);
     EXPECT_NE(r.legendPass(), nullptr);
-    return {r.readback(cam, target, render::Channels::Color), r.legendPass()->layout()};
+    return {r.readback(cam, target, render::Channels::Color), static_cast<const render::LegendPass*>(r.legendPass())->layout()};
   }
 };
 
@@ -172,7 +172,7 @@ TEST_F(Legend, OffBuildsNothingAndLeavesTheFrameBitIdentical) {
   render::FrameParams p = albedoOnly(render::ColorMode::FA);
   p.legend.enabled = false;
   ctx_->makeCurrent();
-  render::GlyphRenderer r(ctx_->api(), *lib_);
+  render::GlyphRenderer r(ctx_->api(), *lib_, render::makeLegendPass);
   render::GBuffer target(ctx_->api(), cam.width, cam.height);
   r.upload(set);
   r.render(cam, p, target);
@@ -184,7 +184,7 @@ TEST_F(Legend, OffBuildsNothingAndLeavesTheFrameBitIdentical) {
   r.render(cam, p, target);
   ASSERT_NE(r.legendPass(), nullptr);
   EXPECT_GT(r.gpuBytes(), bytesOff);  // the font atlas and the vertex buffer
-  const render::LegendRect panel = r.legendPass()->layout().panel;
+  const render::LegendRect panel = static_cast<const render::LegendPass*>(r.legendPass())->layout().panel;
   const render::FrameImage on = r.readback(cam, target, render::Channels::Color);
   std::size_t changedInside = 0, changedOutside = 0;
   for (int y = 0; y < cam.height; ++y)
