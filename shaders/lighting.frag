@@ -1,6 +1,8 @@
 #version 450 core
-// Deferred Blinn-Phong: ambient, a head light at the eye and one key light.
+// Deferred Blinn-Phong: ambient, a head light at the eye and one key light,
+// shadowed when compiled with TG_SHADOWS (lib/shadow.glsl).
 #include "lib/camera.glsl"
+#include "lib/shadow.glsl"
 
 layout(binding = 0) uniform sampler2D uAlbedo;
 layout(binding = 1) uniform sampler2D uNormalWC;
@@ -37,6 +39,14 @@ void main() {
   float key = max(dot(n, l), 0.0);
   float specHead = pow(head, uShininess);  // half vector of the head light is v
   float specKey = pow(max(dot(n, normalize(l + v)), 0.0), uShininess);
+#ifdef TG_SHADOWS
+  if (key > 0.0) {
+    vec3 pVC = originVC + viewDepthFromWindowDepth(texelFetch(uSceneDepth, p, 0).r) * dirVC;
+    float lit = mix(1.0, keyLightVisibility(pVC, n), uShadowStrength);
+    key *= lit;
+    specKey *= lit;
+  }
+#endif
   // The share of ambient and head light that reaches the point: ambient
   // occlusion dims both, as the head light is this renderer's fill light.
   float fill = 1.0;

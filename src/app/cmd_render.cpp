@@ -18,6 +18,7 @@
 #include "app/names.h"
 #include "app/output_check.h"
 #include "app/scene.h"
+#include "app/shadow_flags.h"
 #include "gl/shader_library.h"
 #include "io/image_writer.h"
 #include "io/readers.h"
@@ -33,6 +34,7 @@ struct RenderOptions {
   FieldFlags field;
   LegendFlags legend;
   EffectFlags effects;
+  ShadowFlags shadow;
   int width = 1024, height = 768;
   double gamma = 3.0;
   std::optional<double> faMin, fov, ortho;
@@ -89,6 +91,7 @@ RenderOptions parse(int argc, const char** argv) {
   o.field.addTo(ap, true);
   o.legend.addTo(ap);
   o.effects.addTo(ap);
+  o.shadow.addTo(ap);
   ap.arg("--repeat N").help("render N more frames and report the median frame time").action([&](auto&, Args a) {
     o.repeat = parseIntIn("--repeat", a[1], 0, 10000);
   });
@@ -114,6 +117,7 @@ void validate(const RenderOptions& o) {
   o.field.validate();
   o.legend.validate();
   o.effects.validate();
+  o.shadow.validate();
   if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
   if ((o.lookAt || o.up) && !o.eye) throw UsageError("--look-at and --up need --eye");
   if (!colorModeNamed(o.color))
@@ -179,6 +183,7 @@ int cmdRender(int argc, const char** argv) {
   params.legend = o.legend.params;
   params.ao = o.effects.ao;
   params.outline = o.effects.outline;
+  params.shadow = o.shadow.params;
 
   const auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale, params.sizing);
   // The GPU works in single precision: a box beyond FLT_MAX draws nothing.
@@ -241,6 +246,10 @@ int cmdRender(int argc, const char** argv) {
                    params.ao.strength, params.ao.samples);
     if (params.outline.enabled)
       std::fprintf(stderr, "  outlines: width %.3g px, crease %.3g deg\n", params.outline.width, params.outline.creaseDeg);
+    if (params.shadow.enabled)
+      std::fprintf(stderr, "  shadows: map %d x %d texels, penumbra %.3g, %.1f MiB of GPU memory in all\n",
+                   renderer.shadowMapSize(), renderer.shadowMapSize(), double(params.shadow.penumbra),
+                   double(renderer.gpuBytes()) / (1024.0 * 1024.0));
   }
   return 0;
 }

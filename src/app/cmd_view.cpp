@@ -20,6 +20,7 @@
 #include "app/field_flags.h"
 #include "app/frame_size.h"
 #include "app/legend_flags.h"
+#include "app/shadow_flags.h"
 #include "app/names.h"
 #include "app/output_check.h"
 #include "app/scene.h"
@@ -37,6 +38,7 @@ struct ViewOptions {
   std::string input, script, glyph = "ellipsoid", color = "dec", shotPrefix = "tensorglyph-view-";
   FieldFlags field;
   LegendFlags legend;
+  ShadowFlags shadow;
   int width = 1280, height = 800;
   double gamma = 3.0;
   std::optional<double> faMin;
@@ -67,6 +69,7 @@ ViewOptions parse(int argc, const char** argv) {
       .action([&](auto&, Args a) { o.shotPrefix = a[1]; });
   o.field.addTo(ap, true);
   o.legend.addTo(ap);
+  o.shadow.addTo(ap);
   parseArgs(ap, argc, argv);
   return o;
 }
@@ -78,6 +81,7 @@ void validate(const ViewOptions& o) {
   if (!(o.gamma >= 0.0 && o.gamma <= 1e4)) throw UsageError("--gamma must be within 0..10000");
   o.field.validate();
   o.legend.validate();
+  o.shadow.validate();
 }
 
 // The median of a sample, 0 for none.
@@ -120,6 +124,7 @@ int cmdView(int argc, const char** argv) {
   p.glyph = *glyphKindNamed(o.glyph);
   p.gamma = o.gamma;
   p.legend = o.legend.params;
+  p.shadow = o.shadow.params;
   {
     // As render frames it: the sample positions (tensor::framingBox).
     const double typical = tensor::resolveScale(v.sizing, v.magnitudes).typicalRadiusWC;

@@ -113,6 +113,20 @@ void controls(ViewState& v, const tensor::GlyphSet& meta) {
     ImGui::SliderFloat("specular", &p.light.specular, 0.0f, 1.0f);
     ImGui::SliderFloat("shininess", &p.light.shininess, 1.0f, 200.0f, "%.0f", ImGuiSliderFlags_Logarithmic);
   }
+  ImGui::Checkbox("shadows", &p.shadow.enabled);
+  if (p.shadow.enabled && ImGui::CollapsingHeader("shadow parameters")) {
+    ImGui::SliderFloat("penumbra", &p.shadow.penumbra, 0.0f, 0.05f, "%.4f", ImGuiSliderFlags_Logarithmic);
+    ImGui::SliderFloat("shadow strength", &p.shadow.strength, 0.0f, 1.0f);
+    ImGui::SliderFloat("shadow bias", &p.shadow.bias, 0.0f, 4.0f, "%.2f texels");
+    // 0: follow the view (ShadowParams::mapDensity); then fixed sizes; 5: another, from a script.
+    const int sizes[5] = {0, 512, 1024, 2048, 4096};
+    int k = p.shadow.mapDensity > 0.0f ? 0 : int(std::find(sizes + 1, sizes + 5, p.shadow.mapSize) - sizes);
+    if (ImGui::Combo("shadow map", &k, "follow the view\0" "512\0" "1024\0" "2048\0" "4096\0") && k < 5) {
+      const render::ShadowParams d;
+      p.shadow.mapDensity = k == 0 ? d.mapDensity : 0.0f;
+      p.shadow.mapSize = k == 0 ? d.mapSize : sizes[k];
+    }
+  }
   if (ImGui::CollapsingHeader("superquadric march")) {
     ImGui::SliderInt("iterations", &p.march.maxIterations, 1, 50);
     auto eps = float(p.march.epsilon);

@@ -21,11 +21,23 @@ const std::map<std::string, int, std::less<>> kArity = {
     {"fa-min", 1}, {"scale", 1},  {"color", 1},      {"slab", -1},   {"light", 2},  {"iterations", 1},
     {"epsilon", 1}, {"stats", 1}, {"frames", 1},     {"screenshot", 1}, {"magnitude", -2}, {"clamp", 1},
     {"legend", 1},  {"legend-corner", 1}, {"units", 1}, {"length-units", 1},
-    {"ao", 1},      {"ao-radius", 1}, {"ao-strength", 1}, {"outlines", 1}, {"outline-width", 1}};
+    {"ao", 1},      {"ao-radius", 1}, {"ao-strength", 1}, {"outlines", 1}, {"outline-width", 1},
+    {"shadows", 1}, {"shadow", 2}};
 
 double number(const ScriptStep& s, std::size_t k) { return parseDouble(s.verb, s.args[k]); }
 
 int axisNamed(const std::string& a) { return a == "x" ? 0 : a == "y" ? 1 : a == "z" ? 2 : -1; }
+
+// `shadow TERM V`, range-checked as render's --shadow-* flags are.
+double shadowValue(const ScriptStep& s) {
+  const std::string& t = s.args[0];
+  if (t == "penumbra") return parseDoubleIn("shadow penumbra", s.args[1], 0.0, render::kMaxShadowPenumbra);
+  if (t == "strength") return parseDoubleIn("shadow strength", s.args[1], 0.0, 1.0);
+  if (t == "bias") return parseDoubleIn("shadow bias", s.args[1], 0.0, render::kMaxShadowBias);
+  if (t == "map-size")
+    return parseIntIn("shadow map-size", s.args[1], render::kMinShadowMapSize, render::kMaxShadowMapSize);
+  throw UsageError("shadow: unknown parameter \"" + t + "\"; choose penumbra, strength, bias or map-size");
+}
 
 // Every value check, so that applyStep cannot fail.
 void check(const ScriptStep& s) {
@@ -80,6 +92,8 @@ void check(const ScriptStep& s) {
   if (v == "ao-radius") parseAoRadius(v, s.args[0]);
   if (v == "ao-strength") parseAoStrength(v, s.args[0]);
   if (v == "outline-width") parseOutlineWidth(v, s.args[0]);
+  if (v == "shadows" && s.args[0] != "on" && s.args[0] != "off") throw UsageError("shadows: on or off");
+  if (v == "shadow") shadowValue(s);
 }
 
 }  // namespace
@@ -145,6 +159,15 @@ void applyStep(const ScriptStep& s, ViewState& v) {
   else if (w == "ao-strength") p.ao.strength = number(s, 0);
   else if (w == "outlines") p.outline.enabled = s.args[0] == "on";
   else if (w == "outline-width") p.outline.width = number(s, 0);
+  else if (w == "shadows") p.shadow.enabled = s.args[0] == "on";
+  else if (w == "shadow") {
+    const double value = shadowValue(s);
+    const std::string& t = s.args[0];
+    if (t == "map-size") {
+      p.shadow.mapSize = int(value);
+      p.shadow.mapDensity = 0.0f;  // fixed, as render's --shadow-map-size
+    } else (t == "penumbra" ? p.shadow.penumbra : t == "strength" ? p.shadow.strength : p.shadow.bias) = float(value);
+  }
   else if (w == "scale") {
     v.scaleFactor = number(s, 0);
     p.scale = v.baseScale * v.scaleFactor;

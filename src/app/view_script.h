@@ -29,6 +29,8 @@
 //   ao-strength S          its weight, 0..4
 //   outlines on|off        silhouette and crease lines
 //   outline-width W        their width in pixels, 0.25..8
+//   shadows on|off         soft shadows from the key light
+//   shadow penumbra|strength|bias|map-size V   (render's --shadow-* flags and ranges)
 //   frames N               render N frames unchanged (for timing)
 //   screenshot FILE        save the rendered view (without the panel)
 #include <string>

@@ -8,14 +8,24 @@ OccluderPyramid::OccluderPyramid(const gl::Api& gl, const gl::ShaderLibrary& lib
     : gl_(gl), build_(gl, lib, {{GL_COMPUTE_SHADER, "occluder_pyramid.comp"}}) {}
 
 void OccluderPyramid::build(const GBuffer& target) const {
-  gl_.BindTextureUnit(kDepthUnit, target.occluderDepth());
+  build(target.occluderDepth(), target.occluderPyramid(), target.width(), target.height(), target.pyramidLevels());
+}
+
+int OccluderPyramid::levelsFor(int width, int height) {
+  int levels = 1;  // down to 1 x 1, from half size
+  while ((std::max((width + 1) / 2, (height + 1) / 2) >> levels) > 0) ++levels;
+  return levels;
+}
+
+void OccluderPyramid::build(GLuint depth, GLuint pyramid, int width, int height, int levels) const {
+  gl_.BindTextureUnit(kDepthUnit, depth);
   gl_.UseProgram(build_.id());
-  const GLuint pyramid = target.occluderPyramid();
-  for (int level = 0; level < target.pyramidLevels(); ++level) {
+  const int pyramidWidth = (width + 1) / 2, pyramidHeight = (height + 1) / 2;
+  for (int level = 0; level < levels; ++level) {
     build_.set("uFromDepth", level == 0 ? 1 : 0);
     if (level > 0) gl_.BindImageTexture(0, pyramid, level - 1, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
     gl_.BindImageTexture(1, pyramid, level, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
-    const int w = std::max(1, target.pyramidWidth() >> level), h = std::max(1, target.pyramidHeight() >> level);
+    const int w = std::max(1, pyramidWidth >> level), h = std::max(1, pyramidHeight >> level);
     gl_.DispatchCompute(GLuint((w + 7) / 8), GLuint((h + 7) / 8), 1);
     gl_.MemoryBarrier(GL_SHADER_IMAGE_ACCESS_BARRIER_BIT | GL_TEXTURE_FETCH_BARRIER_BIT);
   }

@@ -15,6 +15,10 @@ class OccluderPyramid {
   // From target's occluder depth, every level; leaves the pyramid bound to
   // texture unit kPyramidUnit and the depth to kDepthUnit.
   void build(const GBuffer& target) const;
+  // The same for any occluder depth texture (`width` x `height`) and a
+  // pyramid of `levels` levels at half its size (the shadow pass's own).
+  void build(GLuint depth, GLuint pyramid, int width, int height, int levels) const;
+  static int levelsFor(int width, int height);
 
   // Mirrored by shaders/lib/occlusion.glsl.
   static constexpr GLuint kDepthUnit = 3, kPyramidUnit = 4;

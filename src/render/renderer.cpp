@@ -47,6 +47,9 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   hasOccluders_ = set.sphereCount + set.definiteCount > 0;
   mdMin_ = float(set.mdMin);
   mdMax_ = float(set.mdMax);
+  centresLoWC_ = set.boundsMinWC;
+  centresHiWC_ = set.boundsMaxWC;
+  maxAbsEigenvalue_ = set.maxAbsEigenvalue;
   eigenMin_ = set.eigenvalueMin;
   eigenMax_ = set.eigenvalueMax;
   typicalDiameter_ = 1.0 / tensor::defaultScale(set, 1.0);
@@ -98,11 +101,11 @@ void GlyphRenderer::setParams(const FrameParams& p) {
   }
   if (changed(&FrameParams::background)) {
     lighting_.set("uBackground", p.background);
-    if (lightingAo_) lightingAo_->set("uBackground", p.background);
+    if (lightingVariant_) lightingVariant_->set("uBackground", p.background);
   }
   if (changed(&FrameParams::light)) {
     setLighting(lighting_, p);
-    if (lightingAo_) setLighting(*lightingAo_, p);
+    if (lightingVariant_) setLighting(*lightingVariant_, p);
   }
   params_ = p;
 }
@@ -114,28 +117,97 @@ void GlyphRenderer::setLighting(const gl::Program& prog, const FrameParams& p) c
 }
 
 // The plain program unless an effect needs a variant, which is compiled on
-// first use: with every effect off the frame runs main's exact shader.
-const gl::Program& GlyphRenderer::lightingFor(const FrameParams& p) {
-  if (!p.ao.enabled) return lighting_;
-  if (!lightingAo_) {
-    lightingAo_ = std::make_unique<gl::Program>(
-        gl_, lib_, std::initializer_list<gl::StageSource>{{GL_VERTEX_SHADER, "fullscreen.vert"},
-                                                          {GL_FRAGMENT_SHADER, "lighting.frag"}},
-        std::initializer_list<std::string_view>{"TG_AO"});
-    lightingAo_->set("uBackground", p.background);
-    setLighting(*lightingAo_, p);
+// first use: with every effect off the frame runs main's exact shader. Only
+// the variant in use is kept, so that an effect switched off holds nothing.
+const gl::Program& GlyphRenderer::lightingFor(const FrameParams& p, bool shadows) {
+  const int key = (p.ao.enabled ? 1 : 0) | (shadows ? 2 : 0);
+  if (key == 0) {
+    lightingVariant_.reset();
+    return lighting_;
   }
-  return *lightingAo_;
+  if (!lightingVariant_ || lightingVariantKey_ != key) {
+    // Each list lives as long as the call that reads it.
+    auto make = [&](std::initializer_list<std::string_view> defines) {
+      return std::make_unique<gl::Program>(
+          gl_, lib_, std::initializer_list<gl::StageSource>{{GL_VERTEX_SHADER, "fullscreen.vert"},
+                                                            {GL_FRAGMENT_SHADER, "lighting.frag"}},
+          defines);
+    };
+    lightingVariant_ = key == 1 ? make({"TG_AO"}) : key == 2 ? make({"TG_SHADOWS"}) : make({"TG_AO", "TG_SHADOWS"});
+    lightingVariantKey_ = key;
+    lightingVariant_->set("uBackground", p.background);
+    setLighting(*lightingVariant_, p);
+  }
+  return *lightingVariant_;
 }
 
 double GlyphRenderer::aoRadiusWC(const FrameParams& p) const {
   return p.ao.radius > 0.0 ? p.ao.radius : AoParams::kAutoRadius * typicalDiameter_ * p.scale;
 }
 
+Camera GlyphRenderer::renderShadowMap(const Camera& cam, const FrameParams& p, int split) {
+  if (!shadow_) {
+    shadow_ = std::make_unique<ShadowPass>(gl_);
+  }
+  // Casters: the selected centres, grown by the largest glyph box's half
+  // diagonal (a superquadric reaches its box's corners).
+  glm::dvec3 lo = centresLoWC_, hi = centresHiWC_;
+  if (p.slab.axis >= 0) {
+    const int a = p.slab.axis;
+    lo[a] = std::max(lo[a], p.slab.lo);
+    hi[a] = std::max(lo[a], std::min(hi[a], p.slab.hi));
+  }
+  const double pad = std::sqrt(3.0) * tensor::glyphRadiusWC(p.scale, p.sizing, maxAbsEigenvalue_);
+  const glm::dvec3 keyWC = glm::transpose(glm::dmat3(cam.viewWCVC)) * glm::dvec3(p.light.keyDirVC);
+  const Camera light = lightCamera(cam, keyWC, lo - pad, hi + pad, p.shadow);
+  const bool tessellated = p.tessellation > 0;
+  if (tessellated) culling_.bypass();
+  else culling_.prepare(light, p.scale, p.sizing, p.faMin, p.slab, p.frustumCulling);
+  gl_.Enable(GL_DEPTH_TEST);
+  gl_.DepthFunc(GL_GREATER);  // reversed Z
+  gl_.DepthMask(GL_TRUE);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer_);
+  // The glyph programs themselves, from the light: the same exact surfaces.
+  auto use = [&](const gl::Program& prog) {
+    setCamera(prog, light);
+    prog.set("uCompacted", culling_.compacted() ? 1 : 0);
+    gl_.UseProgram(prog.id());
+  };
+  // The view's occlusion pre-pass, from the light: the march is most of the map's cost.
+  const bool occluders = !tessellated && split < 3 && p.occlusionPrepass && hasOccluders_;
+  if (occluders) {
+    shadow_->beginOccluders(light.width);
+    use(ellipsoid_);
+    culling_.draw(sprites_, 0, 2);
+    shadow_->buildPyramid(pyramid_);
+  }
+  shadow_->beginMap(light.width);
+  if (tessellated) {
+    setCamera(tessellated_.program(), light);
+    tessellated_.draw(p.tessellation, std::size_t(count_));
+  } else {
+    use(ellipsoid_);
+    culling_.draw(sprites_, 0, split);
+    if (split < 3) {
+      superquadric_.set("uOccluders", occluders ? 1 : 0);
+      use(superquadric_);
+      culling_.draw(sprites_, split, 3);
+    }
+  }
+  ++shadowMapPasses_;
+  return light;
+}
+
 void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffer& target) {
   if (!params_ || !(*params_ == p)) setParams(p);
   gl_.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   const bool tessellated = p.tessellation > 0;
+  const bool sq = p.glyph == GlyphKind::Superquadric;
+  const int split = !sq ? 3 : p.gamma > 0.0 ? 1 : 2;
+  // The shadow map first, so that culling is left prepared for the view.
+  std::optional<Camera> light;
+  if (!p.shadow.enabled) shadow_.reset();
+  else if (count_ > 0) light = renderShadowMap(cam, p, split);
   if (tessellated) culling_.bypass();
   else culling_.prepare(cam, p.scale, p.sizing, p.faMin, p.slab, p.frustumCulling);
   if (count_ > 0) {
@@ -148,8 +220,6 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   // (tensor::GlyphGroup): the ellipsoid program draws groups [0, split),
   // the superquadric program the rest. At gamma 0 only mixed-sign glyphs
   // are not ellipsoids; at gamma > 0 only spheres are.
-  const bool sq = p.glyph == GlyphKind::Superquadric;
-  const int split = !sq ? 3 : p.gamma > 0.0 ? 1 : 2;
   auto use = [&](const gl::Program& prog) {
     setCamera(prog, cam);
     prog.set("uCompacted", culling_.compacted() ? 1 : 0);
@@ -195,9 +265,10 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
     if (!ao_) ao_ = std::make_unique<AoPass>(gl_, lib_);
     ao_->run(cam, target, p.ao, aoRadiusWC(p));
   }
-  const gl::Program& lighting = lightingFor(p);
+  const gl::Program& lighting = lightingFor(p, light.has_value());
   target.beginLighting();
   setCamera(lighting, cam);
+  if (light) shadow_->bindForLighting(lighting, cam, *light, p.shadow, target);
   gl_.UseProgram(lighting.id());
   gl_.BindVertexArray(vao_);
   gl_.DrawArrays(GL_TRIANGLES, 0, 3);
@@ -233,7 +304,7 @@ void flipRows(std::vector<T>& v, int width, int height, int channels) {
 std::size_t GlyphRenderer::gpuBytes() const {
   return std::size_t(count_) * sizeof(tensor::GlyphRecord) + culling_.gpuBytes() + tessellated_.meshBytes() +
          (legend_ ? legend_->gpuBytes() : 0) +
-         (ao_ ? ao_->gpuBytes() : 0);
+         (ao_ ? ao_->gpuBytes() : 0) + (shadow_ ? shadow_->gpuBytes() : 0);
 }
 
 IterationStats GlyphRenderer::iterationStats() const {

@@ -19,6 +19,7 @@
 #include "render/glyph_culling.h"
 #include "render/outline_pass.h"
 #include "render/quad_sprites.h"
+#include "render/shadow_pass.h"
 #include "render/tessellated.h"
 #include "tensor/glyph.h"
 #include "tensor/glyph_scale.h"
@@ -74,6 +75,7 @@ struct FrameParams {
   LegendParams legend;
   AoParams ao;            // deferred depth cues: off by default, and then
   OutlineParams outline;  // no pass of theirs is built, run or allocated
+  ShadowParams shadow;    // soft shadows from the key light (render/shadow_pass.h)
   bool operator==(const FrameParams&) const = default;
 };
 
@@ -124,9 +126,14 @@ class GlyphRenderer {
   const GlyphCulling& culling() const { return culling_; }
   // Frames that ran the superquadric occlusion pre-pass since construction.
   std::uint64_t occlusionPrepasses() const { return occlusionPrepasses_; }
+  // Frames that drew the shadow map since construction, and whether the
+  // shadow pass (its program and map) exists now: only while frames ask for it.
+  std::uint64_t shadowMapPasses() const { return shadowMapPasses_; }
+  bool shadowPassBuilt() const { return shadow_ != nullptr; }
+  int shadowMapSize() const { return shadow_ ? shadow_->mapSize() : 0; }  // texels a side, of the last map
   // GPU memory held for the uploaded glyphs: records, culling's ranges and
   // commands, the compacted indices once a threshold needed them, and the
-  // tessellated mesh once drawn.
+  // tessellated mesh once drawn, and the shadow map while shadows are on.
   std::size_t gpuBytes() const;
   // The legend pass, while the last frame had one (null: nothing built or held).
   const OverlayPass* legendPass() const { return legend_.get(); }
@@ -146,7 +153,11 @@ class GlyphRenderer {
   std::array<const gl::Program*, 3> shapePrograms() const;
   // Sets the lighting uniforms of `p` on a lighting program.
   void setLighting(const gl::Program& prog, const FrameParams& p) const;
-  const gl::Program& lightingFor(const FrameParams& p);
+  // lighting_, or the variant the frame's effects need (`shadows`: the key
+  // light's map was drawn), compiled on first use; only the last is kept.
+  const gl::Program& lightingFor(const FrameParams& p, bool shadows);
+  // Draws the glyphs' depth from the key light into the shadow map; returns the light's camera.
+  Camera renderShadowMap(const Camera& cam, const FrameParams& p, int split);
   const gl::Api& gl_;
   const gl::ShaderLibrary& lib_;
   gl::Program ellipsoid_;
@@ -157,16 +168,20 @@ class GlyphRenderer {
   GlyphCulling culling_;
   OccluderPyramid pyramid_;
   TessellatedGlyphs tessellated_;
+  std::unique_ptr<ShadowPass> shadow_;  // built on first use
   GLuint vao_ = 0, buffer_ = 0, stats_ = 0;
   GLsizei count_ = 0;
   bool hasOccluders_ = false;  // spheres or definite glyphs uploaded
-  std::uint64_t occlusionPrepasses_ = 0;
+  std::uint64_t occlusionPrepasses_ = 0, shadowMapPasses_ = 0;
+  glm::dvec3 centresLoWC_{0.0}, centresHiWC_{0.0};  // of the uploaded glyphs
+  double maxAbsEigenvalue_ = 0;
   float mdMin_ = 0, mdMax_ = 0;
   double eigenMin_ = 0, eigenMax_ = 0;
   double typicalDiameter_ = 1.0;  // in eigenvalue units
   std::unique_ptr<AoPass> ao_;
   std::unique_ptr<OutlinePass> outline_;
-  std::unique_ptr<gl::Program> lightingAo_;  // lighting.frag with TG_AO
+  std::unique_ptr<gl::Program> lightingVariant_;  // lighting.frag with TG_AO and/or TG_SHADOWS
+  int lightingVariantKey_ = 0;                    // 1: TG_AO, 2: TG_SHADOWS, 3: both
   std::optional<FrameParams> params_;  // as last set
   OverlayFactory makeLegend_;
   std::unique_ptr<OverlayPass> legend_;

@@ -203,3 +203,41 @@ TEST(ViewScript, DepthCueCommandsSetTheirParametersWithinRange) {
   }
   std::filesystem::remove_all(dir);
 }
+
+TEST(ViewScript, ShadowCommandsSetTheShadowParamsWithRenderRanges) {
+  const auto dir = std::filesystem::temp_directory_path() / ("tg_view_shadow_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto path = (dir / "s.txt").string();
+  std::ofstream(path) << "shadows on\nshadow penumbra 0.01\nshadow strength 0.5\nshadow bias 2\nshadow map-size 512\n"
+                         "shadows off\n";
+  const auto steps = app::parseScript(path);
+  ASSERT_EQ(steps.size(), 6u);
+  app::ViewState v{{}, app::OrbitCamera(start()), 1.0, 1.0};
+  EXPECT_FALSE(v.params.shadow.enabled);  // off unless asked for
+  for (std::size_t k = 0; k < 5; ++k) app::applyStep(steps[k], v);
+  EXPECT_TRUE(v.params.shadow.enabled);
+  EXPECT_FLOAT_EQ(v.params.shadow.penumbra, 0.01f);
+  EXPECT_FLOAT_EQ(v.params.shadow.strength, 0.5f);
+  EXPECT_FLOAT_EQ(v.params.shadow.bias, 2.0f);
+  EXPECT_EQ(v.params.shadow.mapSize, 512);
+  EXPECT_EQ(v.params.shadow.mapDensity, 0.0f);  // a size given is fixed
+  app::applyStep(steps[5], v);
+  EXPECT_FALSE(v.params.shadow.enabled);
+
+  const std::pair<const char*, const char*> bad[] = {
+      {"shadows maybe\n", ":1: shadows: on or off"},
+      {"shadow strength 1.5\n", ":1: shadow strength must be within 0..1"},
+      {"shadow map-size 100000\n", ":1: shadow map-size: \"100000\" is not an integer within 64..8192"},
+      {"shadow softness 1\n", ":1: shadow: unknown parameter \"softness\""},
+      {"shadow penumbra\n", ":1: shadow: wrong number of arguments"}};
+  for (const auto& [text, what] : bad) {
+    std::ofstream(path) << text;
+    try {
+      app::parseScript(path);
+      ADD_FAILURE() << "no error for " << text;
+    } catch (const io::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  }
+  std::filesystem::remove_all(dir);
+}

@@ -264,3 +264,39 @@ TEST(Cli, FaMinOutsideZeroToOneIsAUsageError) {
   }
   EXPECT_EQ(tg::test::runBinary("render -o " + out.string() + " --fa-min 1 --size 32 24", dir()).code, 0);
 }
+
+// --shadows draws a different picture of the same glyphs; its parameter flags
+// are range-checked and refused without it (exit 2, no output).
+TEST(Cli, ShadowsChangeThePictureAndTheirFlagsAreChecked) {
+  const fs::path plain = dir() / "plain.png", shadowed = dir() / "shadowed.png";
+  ASSERT_EQ(run("render -o " + plain.string() + " --size 160 120").code, 0);
+  const CmdResult r = run("render -o " + shadowed.string() + " --size 160 120 --shadows --shadow-penumbra 0.01 "
+                          "--shadow-map-size 1024 --shadow-strength 0.8 --shadow-bias 1");
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::vector<unsigned char> a(160 * 120 * 4), b(a.size());
+  auto ia = OIIO::ImageInput::open(plain.string()), ib = OIIO::ImageInput::open(shadowed.string());
+  ASSERT_TRUE(ia && ib);
+  ASSERT_TRUE(ia->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, a.data()));
+  ASSERT_TRUE(ib->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, b.data()));
+  std::size_t darker = 0, lighter = 0;
+  for (std::size_t k = 0; k < a.size(); k += 4) {
+    const int sa = a[k] + a[k + 1] + a[k + 2], sb = b[k] + b[k + 1] + b[k + 2];
+    darker += sb + 6 < sa;
+    lighter += sb > sa + 6;
+  }
+  EXPECT_GT(darker, 100u);  // shadows only ever take light away
+  EXPECT_EQ(lighter, 0u);
+
+  const fs::path out = dir() / "bad-shadow.png";
+  const std::pair<std::string, std::string> cases[] = {
+      {"--shadow-penumbra 0.01", "--shadow-penumbra needs --shadows"},
+      {"--shadows --shadow-map-size 32", "is not an integer within 64..8192"},
+      {"--shadows --shadow-map-size 4294967360", "is not an integer within 64..8192"},
+      {"--shadows --shadow-penumbra -0.1", "--shadow-penumbra must be within 0..0.1"},
+      {"--shadows --shadow-strength 2", "--shadow-strength must be within 0..1"},
+      {"--shadows --shadow-bias nan", "--shadow-bias"}};
+  for (const auto& [args, what] : cases) {
+    tg::test::expectFailsCleanly("render -o " + out.string() + " " + args, what, out, dir(), 1);
+    EXPECT_EQ(run("render -o " + out.string() + " " + args).code, 2) << args;
+  }
+}

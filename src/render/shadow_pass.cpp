@@ -1,0 +1,208 @@
+#include "render/shadow_pass.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include <glm/geometric.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+#include <glm/matrix.hpp>
+#include <glm/trigonometric.hpp>
+
+namespace tg::render {
+namespace {
+
+struct Rect2 {
+  glm::dvec2 lo{INFINITY}, hi{-INFINITY};
+  void add(const glm::dvec2& p) {
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  bool empty() const { return !(lo.x <= hi.x && lo.y <= hi.y); }
+};
+
+// The view frustum's corners (WC) between view depths zNear and zFar.
+std::array<glm::dvec3, 8> frustumCornersWC(const Camera& view, double zNear, double zFar) {
+  const glm::dmat4 wcFromVC = glm::inverse(view.viewWCVC);
+  const double aspect = double(view.width) / double(view.height);
+  const bool persp = view.desc.projection == Projection::Perspective;
+  const double t = persp ? std::tan(glm::radians(view.desc.fovYDeg) * 0.5) : 0.5 * view.desc.orthoHeight;
+  std::array<glm::dvec3, 8> out;
+  for (int k = 0; k < 8; ++k) {
+    const double z = (k & 4) ? zFar : zNear, s = persp ? z : 1.0;
+    const glm::dvec3 pVC((k & 1 ? 1 : -1) * t * aspect * s, (k & 2 ? 1 : -1) * t * s, -z);
+    out[std::size_t(k)] = glm::dvec3(wcFromVC * glm::dvec4(pVC, 1.0));
+  }
+  return out;
+}
+
+}  // namespace
+
+Camera lightCamera(const Camera& view, const glm::dvec3& keyDirWC, const glm::dvec3& lo, const glm::dvec3& hi,
+                   const ShadowParams& p) {
+  const glm::dvec3 l = glm::normalize(keyDirWC);
+  const glm::dvec3 centre = 0.5 * (lo + hi);
+  const double r = std::max(0.5 * glm::length(hi - lo), 1e-30 + 1e-12 * glm::length(centre));
+  const glm::dvec3 up = std::abs(l.y) < 0.9 ? glm::dvec3(0, 1, 0) : glm::dvec3(1, 0, 0);
+  const glm::dmat4 lightView = glm::lookAt(centre + 2.0 * r * l, centre, up);
+  auto lightXY = [&](const glm::dvec3& x) { return glm::dvec2(lightView * glm::dvec4(x, 1.0)); };
+  Rect2 box, seen;
+  double zMin = INFINITY, zMax = -INFINITY;
+  for (int k = 0; k < 8; ++k) {
+    const glm::dvec3 c((k & 1) ? hi.x : lo.x, (k & 2) ? hi.y : lo.y, (k & 4) ? hi.z : lo.z);
+    box.add(lightXY(c));
+    const double z = -(view.viewWCVC * glm::dvec4(c, 1.0)).z;
+    zMin = std::min(zMin, z);
+    zMax = std::max(zMax, z);
+  }
+  // Receivers are what the view sees of the box: within its frustum, cut at
+  // the box's far side (a perspective frustum has no far plane).
+  const bool persp = view.desc.projection == Projection::Perspective;
+  const double zNear = persp ? std::max(view.nearVC, zMin) : view.nearVC;
+  const double zFar = persp ? zMax : view.farVC;
+  Rect2 region = box;
+  if (zFar > zNear) {
+    for (const glm::dvec3& c : frustumCornersWC(view, zNear, zFar)) seen.add(lightXY(c));
+    Rect2 cut{glm::max(box.lo, seen.lo), glm::min(box.hi, seen.hi)};
+    if (!cut.empty()) region = cut;
+  }
+  // 2% more on each side, so that the PCF taps of receivers at the edge of
+  // the view still fall on the map.
+  const glm::dvec2 mid = 0.5 * (region.lo + region.hi);
+  const double side = std::max(1.04 * std::max(region.hi.x - region.lo.x, region.hi.y - region.lo.y), 1e-12 * r);
+  const glm::dvec3 xAxis(lightView[0][0], lightView[1][0], lightView[2][0]);
+  const glm::dvec3 yAxis(lightView[0][1], lightView[1][1], lightView[2][1]);
+  const glm::dvec3 shift = mid.x * xAxis + mid.y * yAxis;
+  CameraDesc d;
+  d.projection = Projection::Orthographic;
+  d.lookAtWC = centre + shift;
+  d.eyeWC = d.lookAtWC + 2.0 * r * l;
+  d.upWC = up;
+  d.orthoHeight = side;
+  int mapSize = p.mapSize;
+  if (p.mapDensity > 0.0f) {
+    // The view's pixel at the box centre's depth, in world units.
+    const double zc = std::max(view.nearVC, -(view.viewWCVC * glm::dvec4(centre, 1.0)).z);
+    const double pixel = (persp ? 2.0 * zc * std::tan(glm::radians(view.desc.fovYDeg) * 0.5)
+                                : view.desc.orthoHeight) / double(view.height);
+    const double texels = std::ceil(double(p.mapDensity) * side / pixel / 64.0) * 64.0;
+    if (texels < double(mapSize)) mapSize = std::max(kMinShadowMapSize, int(texels));
+  }
+  return makeCamera(d, mapSize, mapSize, lo, hi);
+}
+
+ShadowPass::ShadowPass(const gl::Api& gl) : gl_(gl) {}
+
+ShadowPass::~ShadowPass() {
+  release();
+  releaseOccluders();
+}
+
+void ShadowPass::releaseOccluders() {
+  if (occluderFbo_) gl_.DeleteFramebuffers(1, &occluderFbo_);
+  const GLuint tex[2] = {occluderDepth_, pyramid_};
+  if (occluderDepth_) gl_.DeleteTextures(2, tex);
+  occluderFbo_ = occluderDepth_ = pyramid_ = 0;
+  occluderSize_ = 0;
+}
+
+void ShadowPass::beginOccluders(int mapSize) {
+  if (mapSize != occluderSize_) {
+    releaseOccluders();
+    gl_.CreateTextures(GL_TEXTURE_2D, 1, &occluderDepth_);
+    gl_.TextureStorage2D(occluderDepth_, 1, GL_DEPTH_COMPONENT32F, mapSize, mapSize);
+    gl_.TextureParameteri(occluderDepth_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl_.TextureParameteri(occluderDepth_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl_.CreateTextures(GL_TEXTURE_2D, 1, &pyramid_);
+    const int half = (mapSize + 1) / 2;
+    gl_.TextureStorage2D(pyramid_, OccluderPyramid::levelsFor(mapSize, mapSize), GL_R32F, half, half);
+    gl_.CreateFramebuffers(1, &occluderFbo_);
+    gl_.NamedFramebufferTexture(occluderFbo_, GL_DEPTH_ATTACHMENT, occluderDepth_, 0);
+    const GLenum none = GL_NONE;
+    gl_.NamedFramebufferDrawBuffers(occluderFbo_, 1, &none);
+    if (gl_.CheckNamedFramebufferStatus(occluderFbo_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      throw std::runtime_error("ShadowPass: occluder framebuffer incomplete");
+    occluderSize_ = mapSize;
+  }
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, occluderFbo_);
+  gl_.Viewport(0, 0, occluderSize_, occluderSize_);
+  const float farDepth = 0.0f;
+  gl_.ClearNamedFramebufferfv(occluderFbo_, GL_DEPTH, 0, &farDepth);
+  gl::checkError(gl_, "ShadowPass::beginOccluders");
+}
+
+void ShadowPass::buildPyramid(const OccluderPyramid& pyramid) const {
+  pyramid.build(occluderDepth_, pyramid_, occluderSize_, occluderSize_,
+                OccluderPyramid::levelsFor(occluderSize_, occluderSize_));
+}
+
+void ShadowPass::release() {
+  if (fbo_) gl_.DeleteFramebuffers(1, &fbo_);
+  if (map_) gl_.DeleteTextures(1, &map_);
+  fbo_ = map_ = 0;
+  size_ = 0;
+}
+
+void ShadowPass::beginMap(int mapSize) {
+  if (mapSize != size_) {
+    release();
+    GLint maxSize = 0;
+    gl_.GetIntegerv(GL_MAX_TEXTURE_SIZE, &maxSize);
+    if (mapSize < kMinShadowMapSize || mapSize > std::min(maxSize, kMaxShadowMapSize))
+      throw std::runtime_error("ShadowPass: shadow map size " + std::to_string(mapSize) + " outside " +
+                               std::to_string(kMinShadowMapSize) + ".." +
+                               std::to_string(std::min(maxSize, kMaxShadowMapSize)));
+    gl_.CreateTextures(GL_TEXTURE_2D, 1, &map_);
+    gl_.TextureStorage2D(map_, 1, GL_DEPTH_COMPONENT32F, mapSize, mapSize);
+    gl_.TextureParameteri(map_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl_.TextureParameteri(map_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    gl_.TextureParameteri(map_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    gl_.TextureParameteri(map_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    gl_.CreateFramebuffers(1, &fbo_);
+    gl_.NamedFramebufferTexture(fbo_, GL_DEPTH_ATTACHMENT, map_, 0);
+    const GLenum none = GL_NONE;
+    gl_.NamedFramebufferDrawBuffers(fbo_, 1, &none);
+    if (gl_.CheckNamedFramebufferStatus(fbo_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+      throw std::runtime_error("ShadowPass: framebuffer incomplete");
+    size_ = mapSize;
+  }
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
+  gl_.Viewport(0, 0, size_, size_);
+  const float farDepth = 0.0f;  // reversed Z: nothing there
+  gl_.ClearNamedFramebufferfv(fbo_, GL_DEPTH, 0, &farDepth);
+  gl::checkError(gl_, "ShadowPass::beginMap");
+}
+
+void ShadowPass::bindForLighting(const gl::Program& prog, const Camera& view, const Camera& light,
+                                 const ShadowParams& p, const GBuffer& target) const {
+  gl_.BindTextureUnit(kSceneDepthUnit, target.depth());
+  gl_.BindTextureUnit(kMapUnit, map_);
+  const double texel = light.desc.orthoHeight / double(size_);
+  prog.set("uLightFromVC", glm::mat4(light.viewWCVC * glm::inverse(view.viewWCVC)));
+  prog.set("uLightHalfExtent", float(0.5 * light.desc.orthoHeight));
+  prog.set("uLightNearFar", glm::vec2(float(light.nearVC), float(light.farVC)));
+  prog.set("uShadowMapSize", float(size_));
+  prog.set("uShadowKernel", p.penumbra * float(size_));
+  prog.set("uShadowBias", float(p.bias * texel));
+  prog.set("uShadowNormalOffset", float(p.normalOffset * texel));
+  prog.set("uShadowReceiverPlane", p.receiverPlane ? 1 : 0);
+  prog.set("uShadowStrength", p.strength);
+  gl::checkError(gl_, "ShadowPass::bindForLighting");
+}
+
+std::size_t ShadowPass::gpuBytes() const {
+  std::size_t bytes = std::size_t(size_) * std::size_t(size_) * 4;
+  if (occluderSize_ > 0) {
+    const auto n = std::size_t(occluderSize_);
+    bytes += n * n * 4;
+    for (int l = 0; l < OccluderPyramid::levelsFor(occluderSize_, occluderSize_); ++l) {
+      const std::size_t side = std::max<std::size_t>(1, ((n + 1) / 2) >> l);
+      bytes += side * side * 4;
+    }
+  }
+  return bytes;
+}
+
+}  // namespace tg::render
