@@ -36,7 +36,9 @@ class WireOut {
   void array(const util::MappedArray<T>& v) {
     pod(std::uint64_t(v.size()));
     pod(std::uint64_t(reinterpret_cast<std::uintptr_t>(v.data())));
-    arrays_.push_back({v.data(), v.size() * sizeof(T)});
+    // As WireIn::array: an empty array has nothing to fetch, so that both
+    // ends agree on whether the child waits for a reply.
+    if (!v.empty()) arrays_.push_back({v.data(), v.size() * sizeof(T)});
   }
   // Sends what is pending, waits for the parent's reply and, if it could not
   // read the arrays itself, writes them. The arrays must stay alive until then.

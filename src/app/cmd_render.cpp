@@ -15,6 +15,7 @@
 #include "app/field_flags.h"
 #include "app/frame_size.h"
 #include "app/legend_flags.h"
+#include "app/look_flags.h"
 #include "app/names.h"
 #include "app/output_check.h"
 #include "app/scene.h"
@@ -35,6 +36,7 @@ struct RenderOptions {
   LegendFlags legend;
   EffectFlags effects;
   ShadowFlags shadow;
+  LookFlags look;
   int width = 1024, height = 768;
   double gamma = 3.0;
   std::optional<double> faMin, fov, ortho;
@@ -58,7 +60,10 @@ RenderOptions parse(int argc, const char** argv) {
     o.width = parseIntIn("--size", a[1], 1, kMaxFrameSide);
     o.height = parseIntIn("--size", a[2], 1, kMaxFrameSide);
   });
-  ap.arg("--glyph KIND").help("ellipsoid (default) or superquadric").action([&](auto&, Args a) { o.glyph = a[1]; });
+  ap.arg("--glyph KIND").help("ellipsoid (default; the built-in scene: superquadric) or superquadric").action([&](auto&, Args a) {
+    o.glyph = a[1];
+    o.look.glyphGiven = true;
+  });
   ap.arg("--iterations N").help("superquadric Newton iterations at most (default 10)").action([&](auto&, Args a) {
     o.maxIterations = parseIntIn("--iterations", a[1], 1, 1000);
   });
@@ -92,6 +97,7 @@ RenderOptions parse(int argc, const char** argv) {
   o.legend.addTo(ap);
   o.effects.addTo(ap);
   o.shadow.addTo(ap);
+  o.look.addTo(ap);
   ap.arg("--repeat N").help("render N more frames and report the median frame time").action([&](auto&, Args a) {
     o.repeat = parseIntIn("--repeat", a[1], 0, 10000);
   });
@@ -118,6 +124,7 @@ void validate(const RenderOptions& o) {
   o.legend.validate();
   o.effects.validate();
   o.shadow.validate();
+  o.look.validate(o.shadow.params.enabled, o.effects.ao.enabled, o.effects.outline.enabled, o.legend.params.enabled);
   if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
   if ((o.lookAt || o.up) && !o.eye) throw UsageError("--look-at and --up need --eye");
   if (!colorModeNamed(o.color))
@@ -184,6 +191,7 @@ int cmdRender(int argc, const char** argv) {
   params.ao = o.effects.ao;
   params.outline = o.effects.outline;
   params.shadow = o.shadow.params;
+  if (scene.preferredLook) o.look.apply(*scene.preferredLook, params);
 
   const auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale, params.sizing);
   // The GPU works in single precision: a box beyond FLT_MAX draws nothing.

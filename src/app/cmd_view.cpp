@@ -19,7 +19,9 @@
 #include "app/commands.h"
 #include "app/field_flags.h"
 #include "app/frame_size.h"
+#include "app/effect_flags.h"
 #include "app/legend_flags.h"
+#include "app/look_flags.h"
 #include "app/shadow_flags.h"
 #include "app/names.h"
 #include "app/output_check.h"
@@ -39,6 +41,8 @@ struct ViewOptions {
   FieldFlags field;
   LegendFlags legend;
   ShadowFlags shadow;
+  EffectFlags effects;
+  LookFlags look;
   int width = 1280, height = 800;
   double gamma = 3.0;
   std::optional<double> faMin;
@@ -57,7 +61,10 @@ ViewOptions parse(int argc, const char** argv) {
     o.width = parseIntIn("--size", a[1], 64, kMaxFrameSide);
     o.height = parseIntIn("--size", a[2], 64, kMaxFrameSide);
   });
-  ap.arg("--glyph KIND").help("ellipsoid (default) or superquadric").action([&](auto&, Args a) { o.glyph = a[1]; });
+  ap.arg("--glyph KIND").help("ellipsoid (default; the built-in scene: superquadric) or superquadric").action([&](auto&, Args a) {
+    o.glyph = a[1];
+    o.look.glyphGiven = true;
+  });
   ap.arg("--gamma G").help("superquadric sharpness, >= 0 (default 3)").action([&](auto&, Args a) {
     o.gamma = parseDouble("--gamma", a[1]);
   });
@@ -70,6 +77,8 @@ ViewOptions parse(int argc, const char** argv) {
   o.field.addTo(ap, true);
   o.legend.addTo(ap);
   o.shadow.addTo(ap);
+  o.effects.addTo(ap);
+  o.look.addTo(ap);
   parseArgs(ap, argc, argv);
   return o;
 }
@@ -82,6 +91,8 @@ void validate(const ViewOptions& o) {
   o.field.validate();
   o.legend.validate();
   o.shadow.validate();
+  o.effects.validate();
+  o.look.validate(o.shadow.params.enabled, o.effects.ao.enabled, o.effects.outline.enabled, o.legend.params.enabled);
 }
 
 // The median of a sample, 0 for none.
@@ -125,6 +136,9 @@ int cmdView(int argc, const char** argv) {
   p.gamma = o.gamma;
   p.legend = o.legend.params;
   p.shadow = o.shadow.params;
+  p.ao = o.effects.ao;
+  p.outline = o.effects.outline;
+  if (scene.preferredLook) o.look.apply(*scene.preferredLook, p);
   {
     // As render frames it: the sample positions (tensor::framingBox).
     const double typical = tensor::resolveScale(v.sizing, v.magnitudes).typicalRadiusWC;

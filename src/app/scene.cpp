@@ -26,11 +26,12 @@ Scene defaultScene() {
   }
   const double r = 0.5 * glm::length(hi - lo);
   cam.lookAtWC = 0.5 * (lo + hi);
-  cam.eyeWC = cam.lookAtWC + glm::normalize(glm::dvec3(0.9, -1.6, 1.25)) * (0.55 * r / std::sin(glm::radians(15.0)));  // the helix fills ~half the box
+  cam.eyeWC = cam.lookAtWC + glm::normalize(glm::dvec3(0.9, -1.6, 1.25)) * (0.42 * r / std::sin(glm::radians(15.0)));  // the helix fills ~half the box
   cam.upWC = glm::dvec3(0, 0, 1);
   cam.fovYDeg = 30.0;
   s.preferredCamera = cam;
   s.preferredFaMin = 0.25;
+  s.preferredLook = SceneLook{};
   return s;
 }
 

@@ -3,6 +3,7 @@
 #include <optional>
 #include <string>
 
+#include "app/look_flags.h"
 #include "io/readers.h"
 #include "render/camera.h"
 
@@ -12,10 +13,12 @@ struct Scene {
   io::TensorField field;
   std::optional<render::CameraDesc> preferredCamera;  // used when no camera flag is given
   std::optional<double> preferredFaMin;
+  std::optional<SceneLook> preferredLook;  // applied where the flags are silent
 };
 
 // The built-in default scene: the helix phantom, seen obliquely, with the
-// isotropic background hidden by an FA threshold.
+// isotropic background hidden by an FA threshold, drawn as superquadrics with
+// every depth cue and a legend.
 Scene defaultScene();
 
 // The built-in scene when `input` is empty, else the file; the selection in

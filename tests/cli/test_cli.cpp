@@ -140,12 +140,14 @@ TEST(Cli, BadInputFailsWithOneLineAndNoOutput) {
 // The README's default image doubles as a golden image for the default scene.
 TEST(Cli, DefaultSceneMatchesGoldenImage) {
   const fs::path out = dir() / "golden-check.png";
-  const CmdResult r = run("render -o " + out.string() + " --size 320 240");
+  // 800 x 600: the README's first image. The legend's text is whole multiples
+  // of a 13-pixel font, so a smaller image would be mostly legend.
+  const CmdResult r = run("render -o " + out.string() + " --size 800 600");
   ASSERT_EQ(r.code, 0) << r.err;
   auto a = OIIO::ImageInput::open(out.string());
   auto b = OIIO::ImageInput::open(std::string(TG_SOURCE_DIR) + "/tests/golden/default-scene.png");
   ASSERT_TRUE(a && b);
-  std::vector<unsigned char> pa(320 * 240 * 4), pb(320 * 240 * 4);
+  std::vector<unsigned char> pa(800 * 600 * 4), pb(800 * 600 * 4);
   ASSERT_TRUE(a->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, pa.data()));
   ASSERT_TRUE(b->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, pb.data()));
   double sum = 0;
@@ -162,6 +164,41 @@ TEST(Cli, DefaultSceneMatchesGoldenImage) {
   // mode shifts it by tens.
   EXPECT_LE(worst, 40);
   EXPECT_LE(sum / double(pa.size()), 0.6);
+}
+
+// The built-in scene draws its look (superquadrics, shadows, occlusion,
+// outlines, legend) where the flags are silent; --no-* and --glyph change it,
+// and a file renders with no effect unless asked.
+TEST(Cli, BuiltInSceneHasItsLookAndFilesDoNot) {
+  const fs::path out = dir() / "look.png";
+  auto effects = [&](const std::string& args) {
+    const CmdResult r = run("render -o " + out.string() + " --size 160 120 --verbose " + args);
+    EXPECT_EQ(r.code, 0) << r.err;
+    std::string on;
+    for (const char* e : {"shadows: map", "ambient occlusion:", "outlines:"})
+      if (r.err.find(e) != std::string::npos) on += e;
+    return on;
+  };
+  EXPECT_EQ(effects(""), "shadows: mapambient occlusion:outlines:");
+  EXPECT_EQ(effects("--no-shadows --no-outlines"), "ambient occlusion:");
+  EXPECT_EQ(effects("--no-shadows --no-ao --no-outlines --no-legend"), "");
+  const fs::path helix = dir() / "look-helix.vtk";
+  ASSERT_EQ(run("synth helix --n 6 -o " + helix.string()).code, 0);
+  EXPECT_EQ(effects(helix.string()), "");
+  EXPECT_EQ(effects(helix.string() + " --ao"), "ambient occlusion:");
+  // The look's glyph kind: the built-in scene and its plain twin differ.
+  const fs::path a = dir() / "look-a.png", b = dir() / "look-b.png";
+  const std::string plain = " --size 160 120 --no-shadows --no-ao --no-outlines --no-legend";
+  ASSERT_EQ(run("render -o " + a.string() + plain).code, 0);
+  ASSERT_EQ(run("render -o " + b.string() + plain + " --glyph ellipsoid").code, 0);
+  std::ifstream fa(a, std::ios::binary), fb(b, std::ios::binary);
+  EXPECT_NE(std::string(std::istreambuf_iterator<char>(fa), {}), std::string(std::istreambuf_iterator<char>(fb), {}))
+      << "the built-in scene draws superquadrics unless --glyph says otherwise";
+  for (const std::string e : {"shadows", "ao", "outlines", "legend"}) {
+    const std::string args = "render -o " + out.string() + " --" + e + " --no-" + e;
+    tg::test::expectFailsCleanly(args, "--" + e + " and --no-" + e + " exclude each other", out, dir(), 1);
+    EXPECT_EQ(run(args).code, 2) << args;
+  }
 }
 
 // `bench accuracy` on the built-in scene, two settings: one row per setting
@@ -269,8 +306,10 @@ TEST(Cli, FaMinOutsideZeroToOneIsAUsageError) {
 // are range-checked and refused without it (exit 2, no output).
 TEST(Cli, ShadowsChangeThePictureAndTheirFlagsAreChecked) {
   const fs::path plain = dir() / "plain.png", shadowed = dir() / "shadowed.png";
-  ASSERT_EQ(run("render -o " + plain.string() + " --size 160 120").code, 0);
-  const CmdResult r = run("render -o " + shadowed.string() + " --size 160 120 --shadows --shadow-penumbra 0.01 "
+  // The built-in scene without the rest of its look, with and without shadows.
+  const std::string others = " --size 160 120 --no-ao --no-outlines --no-legend";
+  ASSERT_EQ(run("render -o " + plain.string() + others + " --no-shadows").code, 0);
+  const CmdResult r = run("render -o " + shadowed.string() + others + " --shadows --shadow-penumbra 0.01 "
                           "--shadow-map-size 1024 --shadow-strength 0.8 --shadow-bias 1");
   ASSERT_EQ(r.code, 0) << r.err;
   std::vector<unsigned char> a(160 * 120 * 4), b(a.size());

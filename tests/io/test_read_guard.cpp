@@ -74,3 +74,19 @@ TEST(ReadGuard, ASelectionAndItsCountsCrossTheBoundary) {
   EXPECT_GT(guarded.unselected, 0u);
   expectSame(guarded, io::readTensorFieldInProcess(p.string(), o), p.string());
 }
+
+// A selection that keeps nothing: the field crosses with empty arrays, and
+// both ends agree that no array is fetched. (They once disagreed, and the
+// child waited for a reply the parent never sent: `info` hung.)
+TEST(ReadGuard, AnEmptyFieldCrossesWithoutWaiting) {
+  const fs::path d = test::scratchDir("read_guard");
+  const double identity[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};
+  const fs::path p = d / "none.nrrd";
+  io::writeNrrd(synth::helixPhantom(5, 4, 3).field, p.string(), identity);
+  io::ReadOptions o;
+  o.selection.roiWC = std::array<double, 6>{1e6, 1e6, 1e6, 2e6, 2e6, 2e6};
+  const io::TensorField guarded = io::readTensorField(p.string(), o);
+  EXPECT_EQ(guarded.size(), 0u);
+  EXPECT_EQ(guarded.unselected, 60u);
+  expectSame(guarded, io::readTensorFieldInProcess(p.string(), o), p.string());
+}

@@ -1,0 +1,35 @@
+#include "app/look_flags.h"
+
+#include <string>
+
+#include "app/cli_values.h"
+
+namespace tg::app {
+
+void LookFlags::addTo(OIIO::ArgParse& ap) {
+  using Args = OIIO::cspan<const char*>;
+  ap.arg("--no-shadows").help("the built-in scene without its shadows").action([this](auto&, Args) { noShadows = true; });
+  ap.arg("--no-ao").help("... without its ambient occlusion").action([this](auto&, Args) { noAo = true; });
+  ap.arg("--no-outlines").help("... without its outlines").action([this](auto&, Args) { noOutlines = true; });
+  ap.arg("--no-legend").help("... without its legend").action([this](auto&, Args) { noLegend = true; });
+}
+
+void LookFlags::validate(bool shadows, bool ao, bool outlines, bool legend) const {
+  const struct {
+    bool on, off;
+    const char* name;
+  } effects[] = {{shadows, noShadows, "shadows"}, {ao, noAo, "ao"}, {outlines, noOutlines, "outlines"},
+                 {legend, noLegend, "legend"}};
+  for (const auto& e : effects)
+    if (e.on && e.off) throw UsageError(std::string("--") + e.name + " and --no-" + e.name + " exclude each other");
+}
+
+void LookFlags::apply(const SceneLook& look, render::FrameParams& p) const {
+  if (!glyphGiven) p.glyph = look.glyph;
+  p.shadow.enabled = p.shadow.enabled || (look.shadows && !noShadows);
+  p.ao.enabled = p.ao.enabled || (look.ao && !noAo);
+  p.outline.enabled = p.outline.enabled || (look.outlines && !noOutlines);
+  p.legend.enabled = p.legend.enabled || (look.legend && !noLegend);
+}
+
+}  // namespace tg::app

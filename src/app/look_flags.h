@@ -1,0 +1,30 @@
+#pragma once
+// The built-in scene's look: superquadrics with shadows, occlusion, outlines
+// and a legend, what the product shows first (Scene::preferredLook). It
+// applies where the command line is silent; --glyph chooses the kind, and
+// --no-shadows, --no-ao, --no-outlines and --no-legend turn an effect off.
+// A field read from a file has no preferred look: every effect is off unless
+// asked for (README, "Depth cues and legends", says why).
+#include <OpenImageIO/argparse.h>
+
+#include "render/renderer.h"
+
+namespace tg::app {
+
+struct SceneLook {
+  render::GlyphKind glyph = render::GlyphKind::Superquadric;
+  bool shadows = true, ao = true, outlines = true, legend = true;
+};
+
+struct LookFlags {
+  bool glyphGiven = false;  // set by the command's own --glyph action
+  bool noShadows = false, noAo = false, noOutlines = false, noLegend = false;
+
+  void addTo(OIIO::ArgParse& ap);
+  // UsageError for an effect both asked for and refused (--ao --no-ao).
+  void validate(bool shadows, bool ao, bool outlines, bool legend) const;
+  // `p` holds what the flags asked for; the look fills in the rest.
+  void apply(const SceneLook& look, render::FrameParams& p) const;
+};
+
+}  // namespace tg::app
