@@ -24,6 +24,20 @@ struct Prepared {
   std::size_t index;    // into the caller's per-glyph data
 };
 
+// Glyph `g` (input index `index`) at p's scale and sizing: false where the
+// FA threshold hides it or its size is zero or not finite.
+inline bool prepareGlyph(const tensor::GlyphRecord& g, const RefParams& p, std::size_t index, Prepared& q) {
+  if (!(g.fa >= p.faMin)) return false;
+  q.axes = tensor::glyphAxes(g, p.scale, p.sizing);
+  q.radius = std::max({q.axes.x, q.axes.y, q.axes.z});
+  if (!(q.radius > 0.0)) return false;
+  q.centre = glm::dvec3(g.posWC[0], g.posWC[1], g.posWC[2]);
+  tensor::frameAxes(g, q.frame);
+  q.id = g.id;
+  q.index = index;
+  return true;
+}
+
 // Roots of |o + t d|^2 = 1 (a ray against the unit sphere), from the closest
 // approach to the centre so that neither root suffers cancellation.
 inline bool unitSphereRoots(const glm::dvec3& o, const glm::dvec3& d, double& t0, double& t1) {

@@ -12,17 +12,10 @@ namespace tg::ref {
 
 ShadowRays::ShadowRays(std::span<const tensor::GlyphRecord> glyphs, const RefParams& p, const glm::dvec3& keyDirWC)
     : l_(glm::normalize(keyDirWC)) {
-  for (const tensor::GlyphRecord& g : glyphs) {
-    if (!(g.fa >= p.faMin)) continue;
-    Glyph q;
-    q.axes = tensor::glyphAxes(g, p.scale, p.sizing);
-    q.radius = std::max({q.axes.x, q.axes.y, q.axes.z});
-    if (!(q.radius > 0.0)) continue;
-    q.centre = glm::dvec3(g.posWC[0], g.posWC[1], g.posWC[2]);
-    tensor::frameAxes(g, q.frame);
-    q.id = g.id;
-    glyphs_.push_back(q);
-  }
+  // The same glyphs the reference image casts rays at (ref::renderEllipsoids).
+  for (std::size_t i = 0; i < glyphs.size(); ++i)
+    if (detail::Prepared q; detail::prepareGlyph(glyphs[i], p, i, q))
+      glyphs_.push_back({q.centre, q.axes, {q.frame[0], q.frame[1], q.frame[2]}, q.radius, q.id});
 }
 
 bool ShadowRays::blocked(const glm::dvec3& p, std::uint32_t self) const {

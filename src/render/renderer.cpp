@@ -163,39 +163,54 @@ Camera GlyphRenderer::renderShadowMap(const Camera& cam, const FrameParams& p, i
   const bool tessellated = p.tessellation > 0;
   if (tessellated) culling_.bypass();
   else culling_.prepare(light, p.scale, p.sizing, p.faMin, p.slab, p.frustumCulling);
-  gl_.Enable(GL_DEPTH_TEST);
-  gl_.DepthFunc(GL_GREATER);  // reversed Z
-  gl_.DepthMask(GL_TRUE);
-  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer_);
-  // The glyph programs themselves, from the light: the same exact surfaces.
-  auto use = [&](const gl::Program& prog) {
-    setCamera(prog, light);
-    prog.set("uCompacted", culling_.compacted() ? 1 : 0);
-    gl_.UseProgram(prog.id());
-  };
+  beginGlyphs();
   // The view's occlusion pre-pass, from the light: the march is most of the map's cost.
   const bool occluders = !tessellated && split < 3 && p.occlusionPrepass && hasOccluders_;
   if (occluders) {
     shadow_->beginOccluders(light.width);
-    use(ellipsoid_);
+    useGlyphProgram(ellipsoid_, light);
     culling_.draw(sprites_, 0, 2);
     shadow_->buildPyramid(pyramid_);
   }
   shadow_->beginMap(light.width);
-  if (tessellated) {
-    setCamera(tessellated_.program(), light);
-    tessellated_.draw(p.tessellation, std::size_t(count_));
-  } else {
-    use(ellipsoid_);
-    culling_.draw(sprites_, 0, split);
-    if (split < 3) {
-      superquadric_.set("uOccluders", occluders ? 1 : 0);
-      use(superquadric_);
-      culling_.draw(sprites_, split, 3);
-    }
-  }
+  // The glyph programs themselves, from the light: the same exact surfaces.
+  drawGlyphs(light, p, split, superquadric_, occluders);
   ++shadowMapPasses_;
   return light;
+}
+
+void GlyphRenderer::beginGlyphs() const {
+  gl_.Enable(GL_DEPTH_TEST);
+  gl_.DepthFunc(GL_GREATER);  // reversed Z
+  gl_.DepthMask(GL_TRUE);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer_);
+}
+
+void GlyphRenderer::useGlyphProgram(const gl::Program& prog, const Camera& cam) const {
+  setCamera(prog, cam);
+  prog.set("uCompacted", culling_.compacted() ? 1 : 0);
+  gl_.UseProgram(prog.id());
+}
+
+// Dispatch (README, "How glyphs are dispatched") over the groups
+// (tensor::GlyphGroup): the ellipsoid program draws groups [0, split), the
+// marching program the rest. At gamma 0 only mixed-sign glyphs are not
+// ellipsoids; at gamma > 0 only spheres are.
+void GlyphRenderer::drawGlyphs(const Camera& cam, const FrameParams& p, int split, const gl::Program& march,
+                               bool occluders) {
+  if (p.tessellation > 0) {
+    setCamera(tessellated_.program(), cam);
+    tessellated_.draw(p.tessellation, std::size_t(count_));
+    return;
+  }
+  useGlyphProgram(ellipsoid_, cam);
+  culling_.draw(sprites_, 0, split);
+  if (split < 3) {
+    // Per pass, from what ran: the shaders never read a stale pre-pass.
+    march.set("uOccluders", occluders ? 1 : 0);
+    useGlyphProgram(march, cam);
+    culling_.draw(sprites_, split, 3);
+  }
 }
 
 void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffer& target) {
@@ -210,21 +225,7 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   else if (count_ > 0) light = renderShadowMap(cam, p, split);
   if (tessellated) culling_.bypass();
   else culling_.prepare(cam, p.scale, p.sizing, p.faMin, p.slab, p.frustumCulling);
-  if (count_ > 0) {
-    gl_.Enable(GL_DEPTH_TEST);
-    gl_.DepthFunc(GL_GREATER);  // reversed Z
-    gl_.DepthMask(GL_TRUE);
-    gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, buffer_);
-  }
-  // Dispatch (README, "How glyphs are dispatched") over the groups
-  // (tensor::GlyphGroup): the ellipsoid program draws groups [0, split),
-  // the superquadric program the rest. At gamma 0 only mixed-sign glyphs
-  // are not ellipsoids; at gamma > 0 only spheres are.
-  auto use = [&](const gl::Program& prog) {
-    setCamera(prog, cam);
-    prog.set("uCompacted", culling_.compacted() ? 1 : 0);
-    gl_.UseProgram(prog.id());
-  };
+  if (count_ > 0) beginGlyphs();
   const bool marching = count_ > 0 && !tessellated && split < 3;
   // Only mixed-sign glyphs (a stress field) give no occluders: no pre-pass.
   const bool occluders = marching && p.occlusionPrepass && hasOccluders_;
@@ -235,30 +236,19 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
     // culled, and pixels whose box entry is behind it skip the march
     // (shaders/lib/occlusion.glsl).
     target.beginOccluders();
-    use(ellipsoid_);
+    useGlyphProgram(ellipsoid_, cam);
     culling_.draw(sprites_, 0, 2);
     pyramid_.build(target);
     ++occlusionPrepasses_;
   }
   target.beginGeometry();
-  if (count_ > 0 && tessellated) {
-    setCamera(tessellated_.program(), cam);
-    tessellated_.draw(p.tessellation, std::size_t(count_));
-  } else if (count_ > 0) {
-    if (p.iterationStats) {
+  if (count_ > 0) {
+    if (p.iterationStats && !tessellated) {
       const GLuint zero[3] = {0, 0, 0};
       gl_.NamedBufferSubData(stats_, 0, sizeof(zero), zero);
+      gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, stats_);
     }
-    use(ellipsoid_);
-    culling_.draw(sprites_, 0, split);
-    if (marching) {
-      if (p.iterationStats) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, stats_);
-      const gl::Program& prog = p.iterationStats ? superquadricStats_ : superquadric_;
-      // Per frame, from what ran: the shaders never read a stale pre-pass.
-      prog.set("uOccluders", occluders ? 1 : 0);
-      use(prog);
-      culling_.draw(sprites_, split, 3);
-    }
+    drawGlyphs(cam, p, split, p.iterationStats ? superquadricStats_ : superquadric_, occluders);
   }
   gl_.Disable(GL_DEPTH_TEST);
   if (p.ao.enabled) {

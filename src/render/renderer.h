@@ -148,6 +148,12 @@ class GlyphRenderer {
 
  private:
   void setCamera(const gl::Program& prog, const Camera& cam) const;
+  // Depth test and the records bound: what every glyph pass needs.
+  void beginGlyphs() const;
+  void useGlyphProgram(const gl::Program& prog, const Camera& cam) const;
+  // Every glyph `cam` sees, into the bound framebuffer; groups from `split`
+  // on by the marching program `march` (superquadrics).
+  void drawGlyphs(const Camera& cam, const FrameParams& p, int split, const gl::Program& march, bool occluders);
   // Programs that draw glyphs, and those of them that take the superquadric shape uniforms.
   std::array<const gl::Program*, 4> glyphPrograms() const;
   std::array<const gl::Program*, 3> shapePrograms() const;
