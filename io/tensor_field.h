@@ -65,13 +65,20 @@ struct TensorField {
   // volume readers call it once a voxel.
   void addSym(std::uint32_t id, const double p[3], const double s6[6]) {
     ++totalPoints;
-    // Checked in float: a finite double beyond FLT_MAX would be stored as Inf.
-    const float v[9] = {float(p[0]),  float(p[1]),  float(p[2]),  float(s6[0]), float(s6[1]),
-                        float(s6[2]), float(s6[3]), float(s6[4]), float(s6[5])};
-    bool finite = true;
-    for (float x : v) finite &= std::isfinite(x);
+    bool finite = std::isfinite(p[0]) & std::isfinite(p[1]) & std::isfinite(p[2]);
+    for (int k = 0; k < 6; ++k) finite &= std::isfinite(s6[k]);
     if (!finite) {
       ++skippedNonFinite;
+      return;
+    }
+    // Checked in float too: a finite double beyond FLT_MAX would be stored as
+    // Inf, which is overflow, not a NaN/Inf in the file.
+    const float v[9] = {float(p[0]),  float(p[1]),  float(p[2]),  float(s6[0]), float(s6[1]),
+                        float(s6[2]), float(s6[3]), float(s6[4]), float(s6[5])};
+    bool fits = true;
+    for (float x : v) fits &= std::isfinite(x);
+    if (!fits) {
+      ++skippedOverflow;
       return;
     }
     const double norm2 = s6[0] * s6[0] + s6[3] * s6[3] + s6[5] * s6[5] + 2 * (s6[1] * s6[1] + s6[2] * s6[2] + s6[4] * s6[4]);

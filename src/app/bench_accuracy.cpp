@@ -156,6 +156,7 @@ int benchAccuracy(int argc, const char** argv) {
   reportLoad(scene.field, "bench accuracy");
   const tensor::GlyphSet glyphs =
       tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids, 0, o.field.glyph);
+  checkDrawable(glyphs, scene.field.path);
   render::FrameParams params;
   const tensor::ResolvedScale sized =
       tensor::resolveScale(o.field.scaleParams(), tensor::sampleMagnitudes(glyphs, scene.field.sampleSpacing));

@@ -170,6 +170,7 @@ int cmdRender(int argc, const char** argv) {
   const auto t1 = Clock::now();
   tensor::GlyphSet glyphs =
       tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids, 0, o.field.glyph);
+  checkDrawable(glyphs, scene.field.path);
   const double buildMs = msSince(t1);
   // Each stage frees what the next no longer needs, so that peak memory holds
   // at most two copies of the glyphs (here the records and the GL buffer).
@@ -191,7 +192,7 @@ int cmdRender(int argc, const char** argv) {
   params.ao = o.effects.ao;
   params.outline = o.effects.outline;
   params.shadow = o.shadow.params;
-  if (scene.preferredLook) o.look.apply(*scene.preferredLook, params);
+  if (scene.preferredLook) o.look.apply(*scene.preferredLook, params, o.height);
 
   const auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale, params.sizing);
   // The GPU works in single precision: a box beyond FLT_MAX draws nothing.
@@ -217,6 +218,14 @@ int cmdRender(int argc, const char** argv) {
   renderer.render(cam, params, target);
   ctx->api().Finish();
   const double frameMs = msSince(t3);
+  if (const auto* legend = static_cast<const render::LegendPass*>(renderer.legendPass())) {
+    const render::LegendRect& r = legend->layout().panel;
+    if (r.x1 > float(o.width) || r.y1 > float(o.height))
+      std::fprintf(stderr,
+                   "tensorglyph render: --legend: the legend needs %.0f x %.0f pixels and is cut off by the %d x %d "
+                   "image; use a larger --size, or --legend-text-scale 1\n",
+                   double(r.x1 - r.x0), double(r.y1 - r.y0), o.width, o.height);
+  }
   std::vector<double> times;
   for (int k = 0; k < o.repeat; ++k) {
     const auto tk = Clock::now();

@@ -124,6 +124,7 @@ int cmdView(int argc, const char** argv) {
   reportLoad(scene.field, "view");
   tensor::GlyphSet glyphs =
       tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids, 0, o.field.glyph);
+  checkDrawable(glyphs, scene.field.path);
   scene.field.releaseSamples();
 
   ViewState v{render::FrameParams{}, OrbitCamera(render::CameraDesc{}), 1.0, 1.0, o.field.scaleParams(),
@@ -138,7 +139,7 @@ int cmdView(int argc, const char** argv) {
   p.shadow = o.shadow.params;
   p.ao = o.effects.ao;
   p.outline = o.effects.outline;
-  if (scene.preferredLook) o.look.apply(*scene.preferredLook, p);
+  if (scene.preferredLook) o.look.apply(*scene.preferredLook, p, o.height);
   {
     // As render frames it: the sample positions (tensor::framingBox).
     const double typical = tensor::resolveScale(v.sizing, v.magnitudes).typicalRadiusWC;

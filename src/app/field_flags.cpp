@@ -129,6 +129,14 @@ void checkLoaded(const io::TensorField& f, const io::ReadOptions& opt) {
                          " masked, " + std::to_string(f.unselected) + " outside the selection");
 }
 
+void checkDrawable(const tensor::GlyphSet& g, const std::string& path) {
+  // Zero eigenvalues everywhere (or values below single precision's range)
+  // give glyphs of size zero: an empty image, and a scale with no meaning.
+  if (!g.glyphs.empty() && !(g.maxAbsEigenvalue > 0.0))
+    throw io::InputError("checkDrawable: " + path + ": every tensor is zero (" + std::to_string(g.glyphs.size()) +
+                         " of them, after single-precision rounding): no glyph has a size to draw");
+}
+
 void reportLoad(const io::TensorField& f, const char* command) {
   for (const std::string& w : f.warnings) std::fprintf(stderr, "tensorglyph %s: %s: %s\n", command, f.path.c_str(), w.c_str());
   if (f.skippedNonFinite)
@@ -136,7 +144,7 @@ void reportLoad(const io::TensorField& f, const char* command) {
                  f.skippedNonFinite);
   if (f.skippedOverflow)
     std::fprintf(stderr,
-                 "tensorglyph %s: %s: skipped %zu tensors whose eigenvalues overflow single precision (|D| > 3.4e38)\n",
+                 "tensorglyph %s: %s: skipped %zu tensors whose values overflow single precision (beyond 3.4e38)\n",
                  command, f.path.c_str(), f.skippedOverflow);
 }
 

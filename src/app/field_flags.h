@@ -39,6 +39,8 @@ void checkOptionsApply(const std::string& input, const io::ReadOptions& opt);
 // confidence; InputError naming the file when no tensor is left to draw
 // (all skipped, masked or outside the selection).
 void checkLoaded(const io::TensorField& f, const io::ReadOptions& opt);
+// InputError when every glyph has zero size: nothing would be drawn.
+void checkDrawable(const tensor::GlyphSet& g, const std::string& path);
 
 // Prints a loaded field's warnings and skipped count on stderr,
 // "tensorglyph COMMAND: FILE: ...", one line each.

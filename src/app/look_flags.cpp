@@ -24,12 +24,12 @@ void LookFlags::validate(bool shadows, bool ao, bool outlines, bool legend) cons
     if (e.on && e.off) throw UsageError(std::string("--") + e.name + " and --no-" + e.name + " exclude each other");
 }
 
-void LookFlags::apply(const SceneLook& look, render::FrameParams& p) const {
+void LookFlags::apply(const SceneLook& look, render::FrameParams& p, int imageHeight) const {
   if (!glyphGiven) p.glyph = look.glyph;
   p.shadow.enabled = p.shadow.enabled || (look.shadows && !noShadows);
   p.ao.enabled = p.ao.enabled || (look.ao && !noAo);
   p.outline.enabled = p.outline.enabled || (look.outlines && !noOutlines);
-  p.legend.enabled = p.legend.enabled || (look.legend && !noLegend);
+  p.legend.enabled = p.legend.enabled || (look.legend && !noLegend && imageHeight >= look.legendMinHeight);
 }
 
 }  // namespace tg::app

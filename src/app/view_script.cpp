@@ -1,5 +1,7 @@
 #include "app/view_script.h"
 
+#include <OpenImageIO/imageio.h>
+
 #include <sys/stat.h>
 
 #include <fstream>
@@ -77,6 +79,9 @@ void check(const ScriptStep& s) {
     throw UsageError("epsilon: must be within 1e-9..0.5");
   if (v == "stats" && s.args[0] != "on" && s.args[0] != "off") throw UsageError("stats: on or off");
   if (v == "frames") parseIntIn(v, s.args[0], 1, 100000);
+  // As render's -o: a format OpenImageIO cannot write is known before the window opens.
+  if (v == "screenshot" && !OIIO::ImageOutput::create(s.args[0]))
+    throw UsageError("screenshot: no image format for \"" + s.args[0] + "\"");
   if (v == "magnitude") {
     if (!tensor::magnitudeNamed(s.args[0]))
       throw UsageError("magnitude: unknown mapping \"" + s.args[0] + "\"; choose " + tensor::kMagnitudeNames);

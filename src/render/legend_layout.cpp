@@ -216,19 +216,45 @@ void decKey(Builder& b, LegendLayout& out, const LegendFont& font, const Camera&
   b.line("|e1| as RGB, FA 1");
 }
 
+// What the bar's length means for the glyphs, under the magnitude mapping
+// (tensor::mappedMagnitude, inverted) and the clamp.
+std::string barMeaning(const ScaleBarChoice& c, const LegendInputs& in, const std::string& units) {
+  const tensor::SizeMapping& s = in.sizing;
+  if (s.maxRadiusWC > 0.0 && 0.5 * c.lengthWC > s.maxRadiusWC)
+    return "glyphs at most " + number(2.0 * s.maxRadiusWC) + " across";  // the clamp
+  const double mapped = c.eigenvalue;  // the mapped size f(m) whose glyph is the bar
+  switch (s.magnitude) {
+    case tensor::Magnitude::Linear: break;
+    case tensor::Magnitude::Log: {
+      const double m = s.lambda0 * std::expm1(mapped / s.lambda0);  // f(m) = l0 ln(1 + m/l0)
+      if (!std::isfinite(m)) return "no glyph is this long (log sizes)";
+      return withUnits("bar = glyph of eigenvalue " + number(m) + " (log sizes)", units);
+    }
+    case tensor::Magnitude::Shape:
+      return "shape only: every glyph " + number(2.0 * in.scale * s.lambda0) + " across";
+  }
+  return withUnits("bar = glyph of eigenvalue " + number(mapped), units);
+}
+
 void scaleBar(Builder& b, LegendLayout& out, const LegendParams& p, const LegendInputs& in, const Camera& cam,
               float barLen) {
-  const ScaleBarChoice c = chooseScaleBar(cam, in.scale, barLen);
+  // Under a clamp, a bar no glyph can reach says little: at most the
+  // clamped diameter, where that still leaves a bar to see.
+  float len = barLen;
+  if (const double clampPx = 2.0 * in.sizing.maxRadiusWC * pixelsPerWorldUnit(cam); clampPx >= 24.0)
+    len = float(std::min(double(barLen), clampPx));
+  const ScaleBarChoice c = chooseScaleBar(cam, in.scale, len);
   if (!(c.lengthWC > 0.0)) return;
   const float k = b.k();
-  b.line(number(c.lengthWC) + " " + (p.lengthUnits.empty() ? std::string("world units") : p.lengthUnits));
+  const std::string unit = c.lengthWC == 1.0 ? "world unit" : "world units";
+  b.line(number(c.lengthWC) + " " + (p.lengthUnits.empty() ? unit : p.lengthUnits));
   b.skip(3 * k);
   out.hasScaleBar = true;
   out.scale = c;
   out.scaleBar = {0, b.y(), float(std::round(c.pixels)), b.y() + 8 * k};
   b.widen(out.scaleBar.x1);
   b.skip(out.scaleBar.height() + 3 * k);
-  b.line(withUnits("bar = glyph of eigenvalue " + number(c.eigenvalue), p.units));
+  b.line(barMeaning(c, in, p.units));
 }
 
 }  // namespace

@@ -14,6 +14,7 @@
 
 #include "render/camera.h"
 #include "render/legend_params.h"
+#include "tensor/glyph_scale.h"
 
 namespace tg::render {
 
@@ -26,6 +27,7 @@ struct LegendInputs {
   double scale = 1.0;             // world units per eigenvalue unit (FrameParams::scale)
   float mdMin = 0, mdMax = 0;     // the uMdRange uniform
   double eigenMin = 0, eigenMax = 0;  // over the glyphs: the stress range for sign
+  tensor::SizeMapping sizing{};       // FrameParams::sizing: magnitude mapping and clamp
 };
 
 struct LegendRect {

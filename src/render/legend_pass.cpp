@@ -51,8 +51,9 @@ void LegendPass::draw(const Camera& cam, const LegendParams& p, const LegendInpu
 
   const glm::vec2 viewport(float(cam.width), float(cam.height));
   gl_.Enable(GL_BLEND);
-  // Straight alpha over the colour; the target's alpha (coverage 1) is kept.
-  gl_.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+  // Straight alpha over the colour, and "over" for alpha itself: on a
+  // transparent --background the legend must not vanish from the image.
+  gl_.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
   gl_.BindVertexArray(vao_);
 
   swatch_.set("uViewportDC", viewport);

@@ -81,6 +81,7 @@ void expectRefused(const std::string& file, const std::string& what, double maxS
 }
 
 const std::string kNrrdTensor = "kinds: 3D-symmetric-matrix domain domain domain\nencoding: raw\nendian: little\n";
+const std::string kNrrdAsciiTensor = "kinds: 3D-symmetric-matrix domain domain domain\nencoding: ascii\n";
 
 std::string legacyHeader(const char* format) {
   return std::string("# vtk DataFile Version 3.0\nhostile\n") + format + "\nDATASET POLYDATA\n";
@@ -350,10 +351,28 @@ TEST(Hostile, OverflowingTensorsAreSkippedAndNamed) {
   const fs::path out = dir() / "huge.png";
   const Limited l = runLimited("render " + (dir() / "huge.nrrd").string() + " -o " + out.string());
   EXPECT_EQ(l.r.code, 0) << l.r.err;
-  EXPECT_NE(l.r.err.find("skipped 1 tensors whose eigenvalues overflow"), std::string::npos) << l.r.err;
+  EXPECT_NE(l.r.err.find("skipped 1 tensors whose values overflow"), std::string::npos) << l.r.err;
   EXPECT_NE(l.r.err.find((dir() / "huge.nrrd").string()), std::string::npos) << l.r.err;
   // Finite eigenvalues scaled past the float range: an input error, not a usage error.
   write(dir() / "big.nrrd", "NRRD0004\ntype: float\ndimension: 4\nsizes: 6 1 1 1\n" + kNrrdTensor + "\n" +
                                 bin({1e38f, 0, 0, 1e38f, 0, 1e38f}));
   expectRefused("big.nrrd", "floating-point range", 20, " --scale 1e10", {"render"});
+  // Finite doubles beyond single precision are overflow, not NaN/Inf.
+  write(dir() / "max.nrrd", "NRRD0004\ntype: double\ndimension: 4\nsizes: 6 2 1 1\n" + kNrrdAsciiTensor +
+                                "\n1e308 0 0 1e308 0 1e308\n1 0 0 1 0 1\n");
+  const Limited m = runLimited("render " + (dir() / "max.nrrd").string() + " -o " + out.string());
+  EXPECT_EQ(m.r.code, 0) << m.r.err;
+  EXPECT_NE(m.r.err.find("skipped 1 tensors whose values overflow"), std::string::npos) << m.r.err;
+  EXPECT_EQ(m.r.err.find("NaN/Inf"), std::string::npos) << m.r.err;
+}
+
+// Every tensor zero (or below single precision's range): glyphs of size
+// zero draw an empty image, so the file is refused as having nothing to draw.
+TEST(Hostile, AllZeroTensorsHaveNothingToDraw) {
+  write(dir() / "zero.nrrd", "NRRD0004\ntype: float\ndimension: 4\nsizes: 6 2 1 1\n" + kNrrdTensor + "\n" +
+                                 bin({0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0}));
+  write(dir() / "subnormal.nrrd", "NRRD0004\ntype: double\ndimension: 4\nsizes: 6 1 1 1\n" + kNrrdAsciiTensor +
+                                      "\n1e-320 0 0 1e-320 0 1e-320\n");
+  for (const char* f : {"zero.nrrd", "subnormal.nrrd"})
+    expectRefused(f, "every tensor is zero", 20, " --shadows --legend", {"render"});
 }

@@ -74,3 +74,19 @@ TEST(LegendCli, BadLegendFlagsAreUsageErrors) {
     EXPECT_EQ(r.code, 2) << flags;
   }
 }
+
+// On a transparent background the legend is in the alpha channel too (it
+// once kept the target's alpha, 0 there, and vanished from the image), and a
+// legend the image cannot hold is said to be cut off.
+TEST(LegendCli, LegendIsOpaqueOnATransparentBackgroundAndSaysWhenCutOff) {
+  const auto px = renderRgba("--color fa --no-shadows --no-ao --background 0 0 0 0 --legend", "alpha.png");
+  ASSERT_FALSE(px.empty());
+  const auto alpha = [&](int x, int y) { return int(px[4 * (std::size_t(y) * 320 + x) + 3]); };
+  EXPECT_EQ(alpha(2, 2), 0);        // the background, far from glyphs and legend
+  EXPECT_GT(alpha(300, 225), 150);  // inside the legend's panel (bottom right, 8 px in)
+  const fs::path out = dir() / "tiny.png";
+  const auto r = tg::test::runBinary("render -o " + out.string() + " --size 120 90 --legend", dir());
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("--legend: the legend needs"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("is cut off by the 120 x 90 image"), std::string::npos) << r.err;
+}

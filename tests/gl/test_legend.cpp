@@ -164,6 +164,50 @@ TEST(LegendLayout, TickLabelsDoNotOverlap) {
   }
 }
 
+// The scale bar's last line reads through the magnitude mapping: the
+// eigenvalue whose glyph is the bar's length (tensor::mappedMagnitude
+// inverted), what shape-only draws, and a clamp that no glyph can pass.
+TEST(LegendLayout, ScaleBarReadsThroughTheMagnitudeMapping) {
+  const render::LegendFont font(1);
+  render::CameraDesc d;
+  const auto cam = render::makeCamera(d, 640, 480, glm::dvec3(-1), glm::dvec3(1));
+  render::LegendParams p;
+  p.enabled = true;
+  p.colorKey = false;
+  auto last = [&](const tensor::SizeMapping& s, double scale) {
+    const render::LegendInputs in{render::ColorMode::FA, scale, 0, 0, 0.0, 0.0, s};
+    const render::LegendLayout l = render::layoutLegend(p, in, cam, font);
+    EXPECT_TRUE(l.hasScaleBar);
+    return std::pair{l.labels.empty() ? std::string() : l.labels.back().text, l.scale};
+  };
+  tensor::SizeMapping lin;
+  const auto [linText, linBar] = last(lin, 0.5);
+  EXPECT_NE(linText.find("eigenvalue"), std::string::npos) << linText;
+  EXPECT_DOUBLE_EQ(linBar.eigenvalue, linBar.lengthWC);  // diameter 2 * 0.5 * |l|
+
+  tensor::SizeMapping log = lin;
+  log.magnitude = tensor::Magnitude::Log;
+  log.lambda0 = 0.25;
+  const auto [logText, logBar] = last(log, 0.5);
+  // f(m) = l0 ln(1 + m / l0) is the bar's mapped size lengthWC: m = l0 (e^(f/l0) - 1).
+  const double m = 0.25 * std::expm1(logBar.lengthWC / 0.25);
+  char want[64];
+  std::snprintf(want, sizeof want, "eigenvalue %.3g (log sizes)", m);
+  EXPECT_NE(logText.find(want), std::string::npos) << logText << " / " << want;
+  EXPECT_NEAR(tensor::mappedMagnitude(log, m), logBar.lengthWC, 1e-9 * logBar.lengthWC);
+
+  tensor::SizeMapping shape = lin;
+  shape.magnitude = tensor::Magnitude::Shape;
+  shape.lambda0 = 2.0;
+  EXPECT_NE(last(shape, 0.5).first.find("shape only: every glyph 2 across"), std::string::npos)
+      << last(shape, 0.5).first;
+
+  tensor::SizeMapping clamped = lin;
+  clamped.maxRadiusWC = 1e-6;  // far below a pixel: the bar keeps its length and says so
+  EXPECT_NE(last(clamped, 0.5).first.find("glyphs at most 2e-06 across"), std::string::npos)
+      << last(clamped, 0.5).first;
+}
+
 // Off: no pass, no bytes, and the frame bit-identical to one that never had a
 // legend. On: the legend changes pixels in its panel and nowhere else.
 TEST_F(Legend, OffBuildsNothingAndLeavesTheFrameBitIdentical) {
