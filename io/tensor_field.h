@@ -65,7 +65,8 @@ struct TensorField {
   // volume readers call it once a voxel.
   void addSym(std::uint32_t id, const double p[3], const double s6[6]) {
     ++totalPoints;
-    bool finite = std::isfinite(p[0]) & std::isfinite(p[1]) & std::isfinite(p[2]);
+    bool finite = true;
+    for (int k = 0; k < 3; ++k) finite &= std::isfinite(p[k]);
     for (int k = 0; k < 6; ++k) finite &= std::isfinite(s6[k]);
     if (!finite) {
       ++skippedNonFinite;
