@@ -44,7 +44,7 @@ struct TensorField {
   std::optional<std::array<double, 9>> tensorToWC;  // row-major T
   bool hasConfidence = false;  // the format gives each tensor a confidence (masked NRRD)
   std::vector<std::string> warnings;  // one line each, without the file name
-  // In memfd storage: a guarded read hands them over without a copy.
+  // Huge-page storage that grows without copies (util::MappedArray).
   util::MappedArray<float> positions;    // 3 per kept tensor, WC
   util::MappedArray<float> tensors;      // 6 per kept tensor: xx xy xz yy yz zz, WC
   util::MappedArray<std::uint32_t> ids;  // input index of each kept tensor

@@ -98,7 +98,7 @@ void loadAndEigen(benchmark::State& st) {
 }
 
 // The same through readTensorField: the read runs in a child process under
-// limits (io/read_guard.h) and the field comes back through a memfd. The
+// limits (io/read_guard.h) and its arrays are copied out of it. The
 // difference to loadAndEigen is the guard's cost.
 void loadAndEigenGuarded(benchmark::State& st) {
   const std::string& path = fileFor(st.range(0));
@@ -112,7 +112,7 @@ void loadAndEigenGuarded(benchmark::State& st) {
   st.SetItemsProcessed(std::int64_t(st.iterations()) * std::int64_t(n));
 }
 
-// The guard's fixed cost per file: fork, limits, memfd and wait, on one tensor.
+// The guard's fixed cost per file: fork, limits, the socket and wait, on one tensor.
 void guardPerFile(benchmark::State& st) {
   const std::string& path = fileFor(1);
   for (auto _ : st) benchmark::DoNotOptimize(io::readTensorField(path, {}).size());

@@ -1,7 +1,8 @@
-// Tier 2: the guarded read (a child process, the field back through a socket
-// with its arrays as memfd descriptors) gives exactly what the same read gives
-// in process, for every format and for small fields, which an earlier
-// spliced-pipe version let the child overwrite before the parent read them.
+// Tier 2: the guarded read (a child process, the field back through a socket,
+// its arrays copied out of the child's memory) gives exactly what the same
+// read gives in process, for every format and for small fields, which an
+// earlier spliced-pipe version let the child overwrite before the parent
+// read them.
 #include <gtest/gtest.h>
 
 #include <filesystem>
