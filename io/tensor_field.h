@@ -65,21 +65,18 @@ struct TensorField {
   // volume readers call it once a voxel.
   void addSym(std::uint32_t id, const double p[3], const double s6[6]) {
     ++totalPoints;
-    bool finite = true;
-    for (int k = 0; k < 3; ++k) finite &= std::isfinite(p[k]);
-    for (int k = 0; k < 6; ++k) finite &= std::isfinite(s6[k]);
-    if (!finite) {
-      ++skippedNonFinite;
-      return;
-    }
-    // Checked in float too: a finite double beyond FLT_MAX would be stored as
-    // Inf, which is overflow, not a NaN/Inf in the file.
+    // Checked in float: a finite double beyond FLT_MAX would be stored as Inf.
+    // Only a failure asks the doubles whether the file held the NaN/Inf
+    // or the value overflowed.
     const float v[9] = {float(p[0]),  float(p[1]),  float(p[2]),  float(s6[0]), float(s6[1]),
                         float(s6[2]), float(s6[3]), float(s6[4]), float(s6[5])};
     bool fits = true;
     for (float x : v) fits &= std::isfinite(x);
     if (!fits) {
-      ++skippedOverflow;
+      bool finite = true;
+      for (int k = 0; k < 3; ++k) finite &= std::isfinite(p[k]);
+      for (int k = 0; k < 6; ++k) finite &= std::isfinite(s6[k]);
+      ++(finite ? skippedOverflow : skippedNonFinite);
       return;
     }
     const double norm2 = s6[0] * s6[0] + s6[3] * s6[3] + s6[5] * s6[5] + 2 * (s6[1] * s6[1] + s6[2] * s6[2] + s6[4] * s6[4]);

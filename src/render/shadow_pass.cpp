@@ -38,6 +38,28 @@ std::array<glm::dvec3, 8> frustumCornersWC(const Camera& view, double zNear, dou
   return out;
 }
 
+// A square DEPTH32F texture, nearest-filtered, as the only attachment of a
+// depth-only framebuffer: the map and the light's occluder depth alike.
+void createDepthTarget(const gl::Api& gl, int size, GLuint& tex, GLuint& fbo, const char* what) {
+  gl.CreateTextures(GL_TEXTURE_2D, 1, &tex);
+  gl.TextureStorage2D(tex, 1, GL_DEPTH_COMPONENT32F, size, size);
+  gl.TextureParameteri(tex, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+  gl.TextureParameteri(tex, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  gl.CreateFramebuffers(1, &fbo);
+  gl.NamedFramebufferTexture(fbo, GL_DEPTH_ATTACHMENT, tex, 0);
+  const GLenum none = GL_NONE;
+  gl.NamedFramebufferDrawBuffers(fbo, 1, &none);
+  if (gl.CheckNamedFramebufferStatus(fbo, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
+    throw std::runtime_error(std::string("ShadowPass: ") + what + " framebuffer incomplete");
+}
+
+void bindAndClearDepth(const gl::Api& gl, GLuint fbo, int size) {
+  gl.BindFramebuffer(GL_FRAMEBUFFER, fbo);
+  gl.Viewport(0, 0, size, size);
+  const float farDepth = 0.0f;  // reversed Z: nothing there
+  gl.ClearNamedFramebufferfv(fbo, GL_DEPTH, 0, &farDepth);
+}
+
 }  // namespace
 
 Camera lightCamera(const Camera& view, const glm::dvec3& keyDirWC, const glm::dvec3& lo, const glm::dvec3& hi,
@@ -111,25 +133,13 @@ void ShadowPass::releaseOccluders() {
 void ShadowPass::beginOccluders(int mapSize) {
   if (mapSize != occluderSize_) {
     releaseOccluders();
-    gl_.CreateTextures(GL_TEXTURE_2D, 1, &occluderDepth_);
-    gl_.TextureStorage2D(occluderDepth_, 1, GL_DEPTH_COMPONENT32F, mapSize, mapSize);
-    gl_.TextureParameteri(occluderDepth_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    gl_.TextureParameteri(occluderDepth_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    createDepthTarget(gl_, mapSize, occluderDepth_, occluderFbo_, "occluder");
     gl_.CreateTextures(GL_TEXTURE_2D, 1, &pyramid_);
     const int half = (mapSize + 1) / 2;
     gl_.TextureStorage2D(pyramid_, OccluderPyramid::levelsFor(mapSize, mapSize), GL_R32F, half, half);
-    gl_.CreateFramebuffers(1, &occluderFbo_);
-    gl_.NamedFramebufferTexture(occluderFbo_, GL_DEPTH_ATTACHMENT, occluderDepth_, 0);
-    const GLenum none = GL_NONE;
-    gl_.NamedFramebufferDrawBuffers(occluderFbo_, 1, &none);
-    if (gl_.CheckNamedFramebufferStatus(occluderFbo_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-      throw std::runtime_error("ShadowPass: occluder framebuffer incomplete");
     occluderSize_ = mapSize;
   }
-  gl_.BindFramebuffer(GL_FRAMEBUFFER, occluderFbo_);
-  gl_.Viewport(0, 0, occluderSize_, occluderSize_);
-  const float farDepth = 0.0f;
-  gl_.ClearNamedFramebufferfv(occluderFbo_, GL_DEPTH, 0, &farDepth);
+  bindAndClearDepth(gl_, occluderFbo_, occluderSize_);
   gl::checkError(gl_, "ShadowPass::beginOccluders");
 }
 
@@ -154,24 +164,12 @@ void ShadowPass::beginMap(int mapSize) {
       throw std::runtime_error("ShadowPass: shadow map size " + std::to_string(mapSize) + " outside " +
                                std::to_string(kMinShadowMapSize) + ".." +
                                std::to_string(std::min(maxSize, kMaxShadowMapSize)));
-    gl_.CreateTextures(GL_TEXTURE_2D, 1, &map_);
-    gl_.TextureStorage2D(map_, 1, GL_DEPTH_COMPONENT32F, mapSize, mapSize);
-    gl_.TextureParameteri(map_, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    gl_.TextureParameteri(map_, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    createDepthTarget(gl_, mapSize, map_, fbo_, "shadow map");
     gl_.TextureParameteri(map_, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     gl_.TextureParameteri(map_, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    gl_.CreateFramebuffers(1, &fbo_);
-    gl_.NamedFramebufferTexture(fbo_, GL_DEPTH_ATTACHMENT, map_, 0);
-    const GLenum none = GL_NONE;
-    gl_.NamedFramebufferDrawBuffers(fbo_, 1, &none);
-    if (gl_.CheckNamedFramebufferStatus(fbo_, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
-      throw std::runtime_error("ShadowPass: framebuffer incomplete");
     size_ = mapSize;
   }
-  gl_.BindFramebuffer(GL_FRAMEBUFFER, fbo_);
-  gl_.Viewport(0, 0, size_, size_);
-  const float farDepth = 0.0f;  // reversed Z: nothing there
-  gl_.ClearNamedFramebufferfv(fbo_, GL_DEPTH, 0, &farDepth);
+  bindAndClearDepth(gl_, fbo_, size_);
   gl::checkError(gl_, "ShadowPass::beginMap");
 }
 
