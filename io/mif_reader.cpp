@@ -339,7 +339,7 @@ Image openImage(const std::string& path, Shape&& shape) {
 
 std::uint64_t spatialVoxels(const std::string& path, const Header& h) {
   const std::uint64_t v = h.dim[0] * h.dim[1] * h.dim[2];  // each < 2^31: no overflow
-  if (v > UINT32_MAX) fail(path, "more than 2^32-1 voxels");
+  if (v > kMaxInputs) fail(path, "more than 2^32-256 voxels");
   return v;
 }
 

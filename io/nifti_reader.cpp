@@ -226,7 +226,7 @@ std::uint64_t spatialVoxels(const std::string& path, const nifti_image& nim, Vol
     g.dims[k] = int(d);
     n *= std::uint64_t(d);
   }
-  if (n > UINT32_MAX) fail(path, "more than 2^32-1 voxels");
+  if (n > kMaxInputs) fail(path, "more than 2^32-256 voxels");
   return n;
 }
 

@@ -337,7 +337,7 @@ std::uint64_t gridDims(const std::string& path, const Nrrd* n, unsigned first, i
     dims[k] = int(size);
     voxels *= size;
   }
-  if (voxels > UINT32_MAX) fail(path, "more than 2^32-1 voxels");
+  if (voxels > kMaxInputs) fail(path, "more than 2^32-256 voxels");
   return voxels;
 }
 

@@ -17,6 +17,10 @@
 
 namespace tg::io {
 
+// Input indices run below this: the id channel's values from here up name
+// context items and "nothing drawn" (render/context_item.h).
+inline constexpr std::uint64_t kMaxInputs = 0xFFFFFF00u;
+
 // Bad input. what() is one line: "function: file: problem".
 class InputError : public std::runtime_error {
  public:

@@ -449,7 +449,7 @@ TensorField readVtk(const std::string& path, const ReadOptions& opt) {
   vtkDataSet* ds = read.data;
   const vtkIdType n = ds->GetNumberOfPoints();
   if (n <= 0) fail(path, "no points");
-  if (n > vtkIdType(UINT32_MAX)) fail(path, "more than 2^32-1 points");
+  if (n > vtkIdType(kMaxInputs)) fail(path, "more than 2^32-256 points");
   // A legacy file without point tensors may carry 3D-TSV's stress trailer.
   std::vector<double> trailer;
   vtkDataArray* arr = nullptr;

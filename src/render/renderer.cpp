@@ -141,6 +141,29 @@ const gl::Program& GlyphRenderer::lightingFor(const FrameParams& p, bool shadows
   return *lightingVariant_;
 }
 
+ContextItem& GlyphRenderer::addContext(std::unique_ptr<ContextItem> item) {
+  if (!item) throw std::invalid_argument("GlyphRenderer::addContext: no item");
+  if (context_.size() >= kMaxContextItems)
+    throw std::invalid_argument("GlyphRenderer::addContext: at most " + std::to_string(kMaxContextItems) +
+                                " context items");
+  context_.push_back(std::move(item));
+  return *context_.back();
+}
+
+ContextItem* GlyphRenderer::contextItem(std::uint32_t id) const {
+  if (!isContextId(id) || id - kContextIdBase >= context_.size()) return nullptr;
+  return context_[id - kContextIdBase].get();
+}
+
+void GlyphRenderer::drawContext(const Camera& cam, const FrameParams& p, ContextTarget target) const {
+  if (context_.empty()) return;
+  gl_.Enable(GL_DEPTH_TEST);
+  gl_.DepthFunc(GL_GREATER);  // reversed Z
+  gl_.DepthMask(GL_TRUE);
+  for (std::size_t i = 0; i < context_.size(); ++i)
+    if (context_[i]->visible()) context_[i]->drawOpaque(cam, p, kContextIdBase + std::uint32_t(i), target);
+}
+
 double GlyphRenderer::aoRadiusWC(const FrameParams& p) const {
   return p.ao.radius > 0.0 ? p.ao.radius : AoParams::kAutoRadius * typicalDiameter_ * p.scale;
 }
@@ -158,8 +181,17 @@ Camera GlyphRenderer::renderShadowMap(const Camera& cam, const FrameParams& p, i
     hi[a] = std::max(lo[a], std::min(hi[a], p.slab.hi));
   }
   const double pad = std::sqrt(3.0) * tensor::glyphRadiusWC(p.scale, p.sizing, maxAbsEigenvalue_);
+  lo -= pad;
+  hi += pad;
+  // Context both casts and receives: the map covers it too.
+  for (const auto& item : context_)
+    if (item->visible()) {
+      const auto [itemLo, itemHi] = item->boundsWC();
+      lo = glm::min(lo, itemLo);
+      hi = glm::max(hi, itemHi);
+    }
   const glm::dvec3 keyWC = glm::transpose(glm::dmat3(cam.viewWCVC)) * glm::dvec3(p.light.keyDirVC);
-  const Camera light = lightCamera(cam, keyWC, lo - pad, hi + pad, p.shadow);
+  const Camera light = lightCamera(cam, keyWC, lo, hi, p.shadow);
   const bool tessellated = p.tessellation > 0;
   if (tessellated) culling_.bypass();
   else culling_.prepare(light, p.scale, p.sizing, p.faMin, p.slab, p.frustumCulling);
@@ -174,7 +206,8 @@ Camera GlyphRenderer::renderShadowMap(const Camera& cam, const FrameParams& p, i
   }
   shadow_->beginMap(light.width);
   // The glyph programs themselves, from the light: the same exact surfaces.
-  drawGlyphs(light, p, split, superquadric_, occluders);
+  if (count_ > 0) drawGlyphs(light, p, split, superquadric_, occluders);
+  drawContext(light, p, ContextTarget::ShadowMap);
   ++shadowMapPasses_;
   return light;
 }
@@ -222,7 +255,7 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   // The shadow map first, so that culling is left prepared for the view.
   std::optional<Camera> light;
   if (!p.shadow.enabled) shadow_.reset();
-  else if (count_ > 0) light = renderShadowMap(cam, p, split);
+  else if (count_ > 0 || !context_.empty()) light = renderShadowMap(cam, p, split);
   if (tessellated) culling_.bypass();
   else culling_.prepare(cam, p.scale, p.sizing, p.faMin, p.slab, p.frustumCulling);
   if (count_ > 0) beginGlyphs();
@@ -250,6 +283,7 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
     }
     drawGlyphs(cam, p, split, p.iterationStats ? superquadricStats_ : superquadric_, occluders);
   }
+  drawContext(cam, p, ContextTarget::View);
   gl_.Disable(GL_DEPTH_TEST);
   if (p.ao.enabled) {
     if (!ao_) ao_ = std::make_unique<AoPass>(gl_, lib_);
@@ -262,6 +296,8 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   gl_.UseProgram(lighting.id());
   gl_.BindVertexArray(vao_);
   gl_.DrawArrays(GL_TRIANGLES, 0, 3);
+  for (const auto& item : context_)
+    if (item->visible() && item->translucent()) item->drawTranslucent(cam, p, target);
   if (p.outline.enabled) {
     if (!outline_) outline_ = std::make_unique<OutlinePass>(gl_, lib_);
     setCameraUniforms(outline_->program(), cam);
@@ -294,7 +330,13 @@ void flipRows(std::vector<T>& v, int width, int height, int channels) {
 std::size_t GlyphRenderer::gpuBytes() const {
   return std::size_t(count_) * sizeof(tensor::GlyphRecord) + culling_.gpuBytes() + tessellated_.meshBytes() +
          (legend_ ? legend_->gpuBytes() : 0) +
-         (ao_ ? ao_->gpuBytes() : 0) + (shadow_ ? shadow_->gpuBytes() : 0);
+         (ao_ ? ao_->gpuBytes() : 0) + (shadow_ ? shadow_->gpuBytes() : 0) + contextBytes();
+}
+
+std::size_t GlyphRenderer::contextBytes() const {
+  std::size_t bytes = 0;
+  for (const auto& item : context_) bytes += item->gpuBytes();
+  return bytes;
 }
 
 IterationStats GlyphRenderer::iterationStats() const {

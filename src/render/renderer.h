@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
+#include <vector>
 
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
@@ -12,6 +14,7 @@
 #include "gl/program.h"
 #include "render/ao_pass.h"
 #include "render/camera.h"
+#include "render/context_item.h"
 #include "render/frame_image.h"
 #include "render/gbuffer.h"
 #include "render/legend_params.h"
@@ -133,10 +136,21 @@ class GlyphRenderer {
   int shadowMapSize() const { return shadow_ ? shadow_->mapSize() : 0; }  // texels a side, of the last map
   // GPU memory held for the uploaded glyphs: records, culling's ranges and
   // commands, the compacted indices once a threshold needed them, and the
-  // tessellated mesh once drawn, and the shadow map while shadows are on.
+  // tessellated mesh once drawn, the shadow map while shadows are on, and
+  // the context items.
   std::size_t gpuBytes() const;
+  std::size_t contextBytes() const;  // of the context items alone
   // The legend pass, while the last frame had one (null: nothing built or held).
   const OverlayPass* legendPass() const { return legend_.get(); }
+  // Scene context (render/context_item.h): drawn into the same G-buffer and
+  // shadow map as the glyphs, in every frame, in the order added; an item's
+  // id is kContextIdBase + its slot. With none added a frame runs no context
+  // code. Throws past kMaxContextItems.
+  ContextItem& addContext(std::unique_ptr<ContextItem> item);
+  void clearContext() { context_.clear(); }
+  std::span<const std::unique_ptr<ContextItem>> context() const { return context_; }
+  // The item an id-channel value names, or null for a glyph or nothing.
+  ContextItem* contextItem(std::uint32_t id) const;
   // The deferred effects' passes, created on the first frame that enables
   // them (null before).
   const AoPass* aoPass() const { return ao_.get(); }
@@ -162,6 +176,8 @@ class GlyphRenderer {
   // lighting_, or the variant the frame's effects need (`shadows`: the key
   // light's map was drawn), compiled on first use; only the last is kept.
   const gl::Program& lightingFor(const FrameParams& p, bool shadows);
+  // The visible context items' opaque surfaces into the bound target.
+  void drawContext(const Camera& cam, const FrameParams& p, ContextTarget target) const;
   // Draws the glyphs' depth from the key light into the shadow map; returns the light's camera.
   Camera renderShadowMap(const Camera& cam, const FrameParams& p, int split);
   const gl::Api& gl_;
@@ -189,6 +205,7 @@ class GlyphRenderer {
   std::unique_ptr<gl::Program> lightingVariant_;  // lighting.frag with TG_AO and/or TG_SHADOWS
   int lightingVariantKey_ = 0;                    // 1: TG_AO, 2: TG_SHADOWS, 3: both
   std::optional<FrameParams> params_;  // as last set
+  std::vector<std::unique_ptr<ContextItem>> context_;
   OverlayFactory makeLegend_;
   std::unique_ptr<OverlayPass> legend_;
 };
