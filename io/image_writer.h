@@ -1,10 +1,9 @@
 #pragma once
-// Frame output through OpenImageIO, chosen by extension:
-//   .png            8-bit RGBA
-//   .exr            float R G B A Z N.X N.Y N.Z and uint32 id
-//   any other OIIO  RGBA in the format's default depth
-#include <OpenImageIO/imageio.h>
-
+// Frame output, chosen by extension:
+//   .png            8-bit RGBA through libpng (io/png_writer.h)
+//   .exr            float R G B A Z N.X N.Y N.Z and uint32 id, through OpenImageIO
+//   any other OIIO  RGBA in the format's default depth, through OpenImageIO
+// OpenImageIO is loaded only for the formats that need it (io/oiio_module.h).
 #include <string>
 
 #include "render/frame_image.h"
@@ -15,11 +14,10 @@ namespace tg::io {
 // never leaves a partial or temporary file.
 void writeImage(const render::FrameImage& img, const std::string& path);
 
-// Any image through OpenImageIO with the same guarantees: `pixels` in
-// `format` laid out as `spec`, written as `spec` says, by path's extension.
-// Every write is checked (through an I/O proxy where the format has one, else
-// by decoding the file again) before it is renamed into place.
-void writeOiioImage(const std::string& path, const OIIO::ImageSpec& spec, OIIO::TypeDesc format, const void* pixels);
+// Whether writeImage can write `path`: PNG always; other extensions when
+// OpenImageIO has a writer for them (loading its module). Throws when the
+// module is needed and cannot be loaded.
+bool canWriteImage(const std::string& path);
 
 // Whether writeImage(…, path) writes depth, normal and id (EXR) and so needs
 // them read back.

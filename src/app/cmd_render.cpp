@@ -1,5 +1,3 @@
-#include <OpenImageIO/imageio.h>
-
 #include <chrono>
 #include <algorithm>
 #include <cfloat>
@@ -131,7 +129,7 @@ void validate(const RenderOptions& o) {
     throw UsageError("--color: unknown mode \"" + o.color + "\"; choose " + kColorModeNames);
   if (o.repeat < 0 || o.repeat > 10000) throw UsageError("--repeat must be within 0..10000");
   checkBackend(o.backend);
-  if (!OIIO::ImageOutput::create(o.output))
+  if (!io::canWriteImage(o.output))
     throw UsageError("-o: no image format for \"" + o.output + "\"");
   refuseOutputsOverInputs({{"-o", o.output}}, {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath}});
 }

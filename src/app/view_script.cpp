@@ -1,7 +1,5 @@
 #include "app/view_script.h"
 
-#include <OpenImageIO/imageio.h>
-
 #include <sys/stat.h>
 
 #include <fstream>
@@ -12,6 +10,7 @@
 #include "app/legend_flags.h"
 #include "app/effect_flags.h"
 #include "app/names.h"
+#include "io/image_writer.h"
 #include "io/tensor_field.h"
 
 namespace tg::app {
@@ -79,8 +78,8 @@ void check(const ScriptStep& s) {
     throw UsageError("epsilon: must be within 1e-9..0.5");
   if (v == "stats" && s.args[0] != "on" && s.args[0] != "off") throw UsageError("stats: on or off");
   if (v == "frames") parseIntIn(v, s.args[0], 1, 100000);
-  // As render's -o: a format OpenImageIO cannot write is known before the window opens.
-  if (v == "screenshot" && !OIIO::ImageOutput::create(s.args[0]))
+  // As render's -o: a format that cannot be written is known before the window opens.
+  if (v == "screenshot" && !io::canWriteImage(s.args[0]))
     throw UsageError("screenshot: no image format for \"" + s.args[0] + "\"");
   if (v == "magnitude") {
     if (!tensor::magnitudeNamed(s.args[0]))

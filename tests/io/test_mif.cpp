@@ -233,7 +233,7 @@ TEST(Mif, BadInputFailsWithOneLineNamingFileAndProblem) {
       {"header-only", goodBytes.substr(0, goodBytes.find("END")), "no END line"},
       {"not-mrtrix", "P5\n2 2\n255\n", "not an MRtrix image"},
       {"binary", std::string("\x89PNG\r\n\x1a\n") + std::string(2 << 20, 'x'), "not an MRtrix image"},
-      {"huge-dims", withHeaderLine("dim: 2,3,4,6", "dim: 100000,100000,1000,6"), "more than 2^32-1 voxels"},
+      {"huge-dims", withHeaderLine("dim: 2,3,4,6", "dim: 100000,100000,1000,6"), "more than 2^32-256 voxels"},
       {"overflow", withHeaderLine("dim: 2,3,4,6", "dim: 2147483647,2147483647,2147483647,2147483647"), "overflows"},
       {"dim-zero", withHeaderLine("dim: 2,3,4,6", "dim: 2,0,4,6"), "dim: size 0"},
       {"dim-negative", withHeaderLine("dim: 2,3,4,6", "dim: 2,-3,4,6"), "not a non-negative integer"},
