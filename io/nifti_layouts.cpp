@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "io/volume_sink.h"
+
 namespace tg::io {
 
 const std::vector<NiftiLayout>& niftiLayouts() {
@@ -90,6 +92,28 @@ std::string implausibleLayoutWarning(const std::vector<float>& values, std::size
                 tensorFrameName(l.frame) + " (" + std::to_string(other.indefinite) + " indefinite)";
   }
   return msg + (better.empty() ? "; no other layout reads them as diffusion tensors" : "; try " + better);
+}
+
+FrameMap tensorFrameMap(TensorFrame frame, const double axesWC[9], bool fromAffine) {
+  FrameMap m;
+  if (frame == TensorFrame::World) {
+    m.description = "the affine's world axes, not rotated";
+    return m;
+  }
+  std::array<double, 9> t = orthogonalPart(axesWC);
+  // FSL's voxel frame is radiological: x runs opposite to i when the
+  // sform (else qform) keeps handedness (det > 0). Without either FSL
+  // takes the image as radiological already (newimage's left_right_order).
+  const bool mirror = frame == TensorFrame::Fsl && determinant3(axesWC) > 0 && fromAffine;
+  if (mirror)
+    for (int r = 0; r < 3; ++r) t[std::size_t(3 * r)] = -t[std::size_t(3 * r)];
+  m.tensorToWC = t;
+  m.description = frame == TensorFrame::Voxel ? "the voxel axes"
+                  : mirror                    ? "FSL's voxel axes, i reversed as the affine's det > 0"
+                  : fromAffine                ? "FSL's voxel axes, the voxel axes as the affine's det < 0"
+                                              : "FSL's voxel axes, the voxel axes as there is no sform or qform";
+  m.description += ", rotated by the affine's orthogonal part";
+  return m;
 }
 
 }  // namespace tg::io

@@ -31,6 +31,17 @@ std::optional<TensorFrame> tensorFrameNamed(std::string_view name);
 const char* tensorFrameName(TensorFrame f);
 inline constexpr const char* kTensorFrameChoices = "voxel, fsl or world";
 
+// Where tensors stored in `frame` point in WC, for a volume whose index axes
+// in WC are `axesWC` (row-major; column k is one step along index k), placed
+// by an affine or (`fromAffine` false) by voxel sizes alone. tensorToWC is T
+// in D_WC = T D Tᵀ, none for World; the description says which axes, for
+// `info`. The caller refuses a singular `axesWC` first.
+struct FrameMap {
+  std::optional<std::array<double, 9>> tensorToWC;
+  std::string description;
+};
+FrameMap tensorFrameMap(TensorFrame frame, const double axesWC[9], bool fromAffine);
+
 // How many of up to `maxSamples` non-zero voxels, spread evenly over the
 // `voxels` voxels of `values` (six per voxel, in file order), are not
 // positive semi-definite when read in order `sym`. A rotation or mirror of

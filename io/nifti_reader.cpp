@@ -290,26 +290,11 @@ TensorField readNifti(const std::string& path, const ReadOptions& opt) {
   std::copy(g.axesWC, g.axesWC + 9, a);
   const double det = determinant3(a);
   if (!(std::abs(det) > 0) || !std::isfinite(det)) fail(path, "the affine is singular");
-  f.frame = std::string(tensorFrameName(conv.frame)) + " (" + conv.frameSource + "): ";
-  if (conv.frame == TensorFrame::World) {
-    f.frame += "the affine's world axes, not rotated";
-  } else {
-    std::array<double, 9> t = orthogonalPart(a);
-    // FSL's voxel frame is radiological: x runs opposite to i when the
-    // sform (else qform) keeps handedness (det > 0). Without either FSL
-    // takes the image as radiological already (newimage's left_right_order).
-    const bool affine = nim->sform_code > 0 || nim->qform_code > 0;
-    const bool mirror = conv.frame == TensorFrame::Fsl && det > 0 && affine;
-    if (mirror)
-      for (int r = 0; r < 3; ++r) t[3 * r] = -t[3 * r];
-    g.tensorToWC = t;
-    f.tensorToWC = t;
-    f.frame += conv.frame == TensorFrame::Voxel ? "the voxel axes"
-               : mirror  ? "FSL's voxel axes, i reversed as the affine's det > 0"
-               : affine  ? "FSL's voxel axes, the voxel axes as the affine's det < 0"
-                         : "FSL's voxel axes, the voxel axes as there is no sform or qform";
-    f.frame += ", rotated by the affine's orthogonal part";
-  }
+  const bool affine = nim->sform_code > 0 || nim->qform_code > 0;
+  const FrameMap map = tensorFrameMap(conv.frame, a, affine);
+  g.tensorToWC = map.tensorToWC;
+  f.tensorToWC = map.tensorToWC;
+  f.frame = std::string(tensorFrameName(conv.frame)) + " (" + conv.frameSource + "): " + map.description;
   f.description = "NIfTI-" + std::to_string(niftiVersion(path)) + " volume, " + std::to_string(g.dims[0]) +
                   "x" + std::to_string(g.dims[1]) + "x" + std::to_string(g.dims[2]) + ", " +
                   nifti_datatype_string(nim->datatype);

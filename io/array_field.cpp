@@ -1,0 +1,188 @@
+#include "io/array_field.h"
+
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+#include "io/volume_sink.h"
+
+namespace tg::io {
+namespace {
+
+[[noreturn]] void fail(std::string_view arg, const std::string& what) {
+  throw std::invalid_argument(std::string(arg) + ": " + what);
+}
+
+std::string shapeText(const ArrayRef& a) {
+  std::string s = "(";
+  for (std::size_t k = 0; k < a.shape.size(); ++k) s += (k ? ", " : "") + std::to_string(a.shape[k]);
+  return s + (a.shape.size() == 1 ? ",)" : ")");
+}
+
+void checkView(std::string_view arg, const ArrayRef& a) {
+  if (a.itemBytes != 4 && a.itemBytes != 8)
+    throw std::domain_error(std::string(arg) + ": values must be float32 or float64");
+  if (a.shape.size() != a.strides.size()) fail(arg, "shape and strides disagree");
+  for (std::int64_t n : a.shape)
+    if (n < 0) fail(arg, "negative extent in shape " + shapeText(a));
+  if (!a.data && !a.shape.empty() && a.shape[0] > 0) fail(arg, "no data");
+}
+
+double valueAt(const ArrayRef& a, std::int64_t offsetBytes) {
+  const char* p = static_cast<const char*>(a.data) + offsetBytes;
+  if (a.itemBytes == 4) {
+    float f;
+    std::memcpy(&f, p, 4);
+    return f;
+  }
+  double d;
+  std::memcpy(&d, p, 8);
+  return d;
+}
+
+// The values of the element at `base` along the axes from `firstInner` on
+// (one or two), in row-major order; false if one is NaN/Inf.
+bool readElement(const ArrayRef& a, std::int64_t base, std::size_t firstInner, double* out) {
+  std::size_t n = 0;
+  if (a.shape.size() - firstInner == 2) {
+    for (std::int64_t r = 0; r < a.shape[firstInner]; ++r)
+      for (std::int64_t c = 0; c < a.shape[firstInner + 1]; ++c)
+        out[n++] = valueAt(a, base + r * a.strides[firstInner] + c * a.strides[firstInner + 1]);
+  } else {
+    for (std::int64_t c = 0; c < a.shape[firstInner]; ++c) out[n++] = valueAt(a, base + c * a.strides[firstInner]);
+  }
+  bool finite = true;
+  for (std::size_t k = 0; k < n; ++k) finite &= std::isfinite(out[k]);
+  return finite;
+}
+
+// Symmetric input only: (D + Dᵀ)/2 hides nothing below this relative asymmetry.
+constexpr double kMaxAsymmetry = 1e-4;
+
+bool symmetric(const double t[9]) {
+  const double asym = std::abs(t[1] - t[3]) + std::abs(t[2] - t[6]) + std::abs(t[5] - t[7]);
+  double norm = 0;
+  for (int k = 0; k < 9; ++k) norm += std::abs(t[k]);
+  return asym <= kMaxAsymmetry * norm;
+}
+
+const NiftiLayout& layoutNamed(std::string_view layout) {
+  const NiftiLayout* l = niftiLayoutNamed(layout);
+  if (!l) fail("layout", "unknown order \"" + std::string(layout) + "\"; choose fsl, nifti, mrtrix or vtk");
+  return *l;
+}
+
+void refuseOverflow(std::string_view arg, const TensorField& f) {
+  if (f.skippedOverflow > 0)
+    fail(arg, std::to_string(f.skippedOverflow) + " tensors lie beyond single precision (|D| > 3.4e38)");
+}
+
+}  // namespace
+
+TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, const ArrayRef& positions) {
+  checkView("tensors", tensors);
+  checkView("positions", positions);
+  const bool full = tensors.shape.size() == 3 && tensors.shape[1] == 3 && tensors.shape[2] == 3;
+  const bool six = tensors.shape.size() == 2 && tensors.shape[1] == 6;
+  if (!full && !six) fail("tensors", "shape " + shapeText(tensors) + " is neither (N, 3, 3) nor (N, 6)");
+  const std::int64_t n = tensors.shape[0];
+  if (positions.shape.size() != 2 || positions.shape[1] != 3 || positions.shape[0] != n)
+    fail("positions", "shape " + shapeText(positions) + " is not (" + std::to_string(n) + ", 3)");
+  if (std::uint64_t(n) > kMaxInputs) fail("tensors", "more than 2^32-256 tensors");
+  if (full && !layout.empty()) fail("layout", "applies to (N, 6) tensors, not (N, 3, 3)");
+  const NiftiLayout* l = six ? &layoutNamed(layout.empty() ? "fsl" : layout) : nullptr;
+  TensorField f;
+  f.path = "<array>";
+  f.description = "points from arrays, " + std::to_string(n) + " tensors";
+  f.layout = six ? std::string(l->name) + ": " + l->order : "3x3";
+  f.frame = "world: the tensors are given in WC";
+  f.reserve(std::size_t(n));
+  for (std::int64_t i = 0; i < n; ++i) {
+    const auto where = [i] { return "index " + std::to_string(i); };
+    double p[3], v[9], s6[6];
+    if (!readElement(positions, i * positions.strides[0], 1, p)) fail("positions", "NaN or Inf at " + where());
+    if (!readElement(tensors, i * tensors.strides[0], 1, v)) fail("tensors", "NaN or Inf at " + where());
+    if (full) {
+      if (!symmetric(v)) fail("tensors", "the 3x3 tensor at " + where() + " is not symmetric");
+      symmetricPart(v, s6);
+    } else {
+      for (int k = 0; k < 6; ++k) s6[k] = v[l->sym[std::size_t(k)]];
+    }
+    f.addSym(std::uint32_t(i), p, s6);
+  }
+  refuseOverflow("tensors", f);
+  return f;
+}
+
+TensorField fieldFromVolume(const ArrayRef& tensors, std::string_view layout, const double affine[16],
+                            std::string_view frame, const Selection& selection) {
+  checkView("tensors", tensors);
+  const std::size_t rank = tensors.shape.size();
+  const bool full = rank == 5 && tensors.shape[3] == 3 && tensors.shape[4] == 3;
+  const bool six = rank == 4 && tensors.shape[3] == 6;
+  if (!full && !six) fail("tensors", "shape " + shapeText(tensors) + " is neither (X, Y, Z, 6) nor (X, Y, Z, 3, 3)");
+  if (full && !layout.empty()) fail("layout", "applies to (X, Y, Z, 6) tensors, not (X, Y, Z, 3, 3)");
+  std::uint64_t voxels = 1;
+  VolumeGeometry g;
+  for (int k = 0; k < 3; ++k) {
+    if (tensors.shape[std::size_t(k)] < 1 || tensors.shape[std::size_t(k)] > INT32_MAX)
+      fail("tensors", "shape " + shapeText(tensors) + " has an empty or too large axis");
+    g.dims[k] = int(tensors.shape[std::size_t(k)]);
+    voxels *= std::uint64_t(g.dims[k]);
+  }
+  if (voxels > kMaxInputs) fail("tensors", "more than 2^32-256 voxels");
+  for (int k = 0; k < 16; ++k)
+    if (!std::isfinite(affine[k])) fail("affine", "non-finite value");
+  if (affine[12] != 0 || affine[13] != 0 || affine[14] != 0 || affine[15] != 1)
+    fail("affine", "the last row must be 0 0 0 1");
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) g.axesWC[3 * r + c] = affine[4 * r + c];
+    g.originWC[r] = affine[4 * r + 3];
+  }
+  const double det = determinant3(g.axesWC);
+  if (!(std::abs(det) > 0) || !std::isfinite(det)) fail("affine", "singular");
+  const NiftiLayout* l = six ? &layoutNamed(layout.empty() ? "fsl" : layout) : nullptr;
+  std::optional<TensorFrame> named;
+  if (!frame.empty()) {
+    named = tensorFrameNamed(frame);
+    if (!named) fail("frame", "unknown frame \"" + std::string(frame) + "\"; choose " + kTensorFrameChoices);
+  } else if (l) {
+    named = l->frame;
+  } else {
+    fail("frame", "name the axes of (X, Y, Z, 3, 3) tensors: " + std::string(kTensorFrameChoices));
+  }
+  const FrameMap map = tensorFrameMap(*named, g.axesWC, true);
+  g.tensorToWC = map.tensorToWC;
+  TensorField f;
+  f.path = "<array>";
+  f.description = "volume from arrays, " + std::to_string(g.dims[0]) + "x" + std::to_string(g.dims[1]) + "x" +
+                  std::to_string(g.dims[2]);
+  f.layout = six ? std::string(l->name) + ": " + l->order : "3x3";
+  f.tensorToWC = map.tensorToWC;
+  f.frame = std::string(tensorFrameName(*named)) + ": " + map.description;
+  ComponentLayout cl;
+  cl.count = six ? 6 : 9;
+  cl.full = full;
+  if (six) cl.sym = l->sym;
+  const GridPlacement placed = placementOf(g);
+  const Selector sel(selection, f.path, g.dims, &placed);
+  VolumeSink sink(f, g, cl, sel, 0.0);
+  double v[9];
+  for (int k = 0; k < g.dims[2]; ++k)
+    for (int j = 0; j < g.dims[1]; ++j)
+      for (int i = 0; i < g.dims[0]; ++i) {
+        const std::int64_t base = i * tensors.strides[0] + j * tensors.strides[1] + k * tensors.strides[2];
+        const auto where = [&] {
+          return "voxel (" + std::to_string(i) + ", " + std::to_string(j) + ", " + std::to_string(k) + ")";
+        };
+        if (!readElement(tensors, base, 3, v)) fail("tensors", "NaN or Inf at " + where());
+        if (full && !symmetric(v)) fail("tensors", "the 3x3 tensor at " + where() + " is not symmetric");
+        sink.push(v);
+      }
+  sink.finish();
+  refuseOverflow("tensors", f);
+  return f;
+}
+
+}  // namespace tg::io

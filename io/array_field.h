@@ -1,0 +1,41 @@
+#pragma once
+// Tensor fields from arrays in memory: what the Python module hands over from
+// NumPy, nibabel or DIPY, read with the CLI's conventions (the component
+// orders and frames of io/nifti_layouts.h, the selection of io/selection.h).
+// Unlike a file, an array with NaN/Inf is refused, not skipped: the caller
+// made it and can mask it. Every error is std::invalid_argument, or
+// std::domain_error for a wrong dtype, beginning with the argument's name
+// ("tensors: shape (4, 5) is ...").
+#include <cstdint>
+#include <optional>
+#include <string_view>
+#include <vector>
+
+#include "io/nifti_layouts.h"
+#include "io/selection.h"
+#include "io/tensor_field.h"
+
+namespace tg::io {
+
+// A strided view of float32 or float64 values; strides in bytes.
+struct ArrayRef {
+  const void* data = nullptr;
+  int itemBytes = 8;  // 4: float32, 8: float64; anything else is a dtype error
+  std::vector<std::int64_t> shape, strides;
+};
+
+// Points in WC: `tensors` (N, 3, 3), or (N, 6) in `layout` ("fsl", "nifti",
+// "mrtrix" or "vtk": the orders of nifti_layouts.h); `positions` (N, 3).
+// The tensors are in WC: a point set has no voxel axes to be in.
+TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, const ArrayRef& positions);
+
+// A volume: `tensors` (X, Y, Z, 6) in `layout`, or (X, Y, Z, 3, 3);
+// `affine` a row-major 4x4 from voxel index (i, j, k) to WC, as nibabel's
+// `img.affine`; `frame` the tensors' axes ("voxel", "fsl" or "world", as
+// --frame), by default the layout's (a (…, 3, 3) volume has none: it must be
+// named). Voxels are visited i fastest, as the file readers do, so ids are
+// i + X (j + Y k).
+TensorField fieldFromVolume(const ArrayRef& tensors, std::string_view layout, const double affine[16],
+                            std::string_view frame, const Selection& selection = {});
+
+}  // namespace tg::io

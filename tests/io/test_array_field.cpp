@@ -1,0 +1,148 @@
+// Tensor fields from arrays in memory (io/array_field.h), the Python module's
+// input: the same conventions as the file readers, and every bad array
+// refused with its argument named.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+#include <stdexcept>
+#include <vector>
+
+#include "io/array_field.h"
+#include "io/nifti_fixture.h"
+#include "io/readers.h"
+
+namespace {
+
+using tg::io::ArrayRef;
+
+// A C-contiguous float64 view of `v` with `shape`.
+ArrayRef view(const std::vector<double>& v, std::vector<std::int64_t> shape) {
+  ArrayRef a;
+  a.data = v.data();
+  a.itemBytes = 8;
+  a.shape = shape;
+  a.strides.assign(shape.size(), 8);
+  for (int k = int(shape.size()) - 2; k >= 0; --k)
+    a.strides[std::size_t(k)] = a.strides[std::size_t(k) + 1] * shape[std::size_t(k) + 1];
+  return a;
+}
+
+template <class E = std::invalid_argument, class F>
+std::string errorOf(F&& f) {
+  try {
+    f();
+  } catch (const E& e) {
+    return e.what();
+  }
+  return "(no error)";
+}
+
+std::vector<float> tensorsOf(const tg::io::TensorField& f) { return {f.tensors.begin(), f.tensors.end()}; }
+
+TEST(ArrayField, PointsReadEachLayoutsOrder) {
+  // One tensor xx=1 xy=2 xz=3 yy=4 yz=5 zz=6, in each order.
+  const std::vector<double> pos = {1, 2, 3};
+  const std::vector<std::pair<const char*, std::vector<double>>> orders = {
+      {"fsl", {1, 2, 3, 4, 5, 6}}, {"nifti", {1, 2, 4, 3, 5, 6}}, {"mrtrix", {1, 4, 6, 2, 3, 5}},
+      {"vtk", {1, 4, 6, 2, 5, 3}}};
+  for (const auto& [name, values] : orders) {
+    const auto f = tg::io::fieldFromPoints(view(values, {1, 6}), name, view(pos, {1, 3}));
+    ASSERT_EQ(f.size(), 1u) << name;
+    EXPECT_EQ(tensorsOf(f), (std::vector<float>{1, 2, 3, 4, 5, 6})) << name;
+    EXPECT_EQ(std::vector<float>(f.positions.begin(), f.positions.end()), (std::vector<float>{1, 2, 3}));
+  }
+  const std::vector<double> full = {1, 2, 3, 2, 4, 5, 3, 5, 6};
+  EXPECT_EQ(tensorsOf(tg::io::fieldFromPoints(view(full, {1, 3, 3}), "", view(pos, {1, 3}))),
+            (std::vector<float>{1, 2, 3, 4, 5, 6}));
+}
+
+TEST(ArrayField, StridedFloat32ViewsReadLikeContiguousOnes) {
+  // Two tensors stored as columns of a (6, 2) float32 array: a transposed view.
+  std::vector<float> cols = {1, 10, 2, 20, 3, 30, 4, 40, 5, 50, 6, 60};
+  ArrayRef t{cols.data(), 4, {2, 6}, {4, 8}};
+  const std::vector<double> pos = {0, 0, 0, 1, 1, 1};
+  const auto f = tg::io::fieldFromPoints(t, "fsl", view(pos, {2, 3}));
+  EXPECT_EQ(tensorsOf(f), (std::vector<float>{1, 2, 3, 4, 5, 6, 10, 20, 30, 40, 50, 60}));
+  EXPECT_EQ(std::vector<std::uint32_t>(f.ids.begin(), f.ids.end()), (std::vector<std::uint32_t>{0, 1}));
+}
+
+TEST(ArrayField, BadArraysNameTheirArgument) {
+  const std::vector<double> six(12, 1.0), pos(6, 0.0), pos3(9, 0.0);
+  auto points = [&](const ArrayRef& t, const char* layout, const ArrayRef& p) {
+    return [&, layout] { tg::io::fieldFromPoints(t, layout, p); };
+  };
+  EXPECT_EQ(errorOf(points(view(six, {2, 5, 1, 1}), "", view(pos, {2, 3}))).rfind("tensors: shape (2, 5, 1, 1)", 0), 0u);
+  EXPECT_EQ(errorOf(points(view(six, {2, 6}), "", view(pos3, {3, 3}))).rfind("positions: shape (3, 3)", 0), 0u);
+  EXPECT_EQ(errorOf(points(view(six, {2, 6}), "lower", view(pos, {2, 3}))).rfind("layout: unknown order", 0), 0u);
+  std::vector<double> nan = six;
+  nan[7] = std::numeric_limits<double>::quiet_NaN();
+  EXPECT_EQ(errorOf(points(view(nan, {2, 6}), "", view(pos, {2, 3}))), "tensors: NaN or Inf at index 1");
+  std::vector<double> huge = six;
+  huge[0] = 1e39;
+  EXPECT_EQ(errorOf(points(view(huge, {2, 6}), "", view(pos, {2, 3}))).rfind("tensors: 1 tensors lie beyond", 0), 0u);
+  const std::vector<double> asym = {1, 2, 0, 0, 1, 0, 0, 0, 1};
+  const std::vector<double> one(3, 0.0);
+  EXPECT_EQ(errorOf(points(view(asym, {1, 3, 3}), "", view(one, {1, 3}))),
+            "tensors: the 3x3 tensor at index 0 is not symmetric");
+  ArrayRef halves = view(six, {2, 6});
+  halves.itemBytes = 2;
+  EXPECT_EQ(errorOf<std::domain_error>(points(halves, "", view(pos, {2, 3}))),
+            "tensors: values must be float32 or float64");
+}
+
+// The volume path against the NIfTI reader on the same voxels, affine,
+// layout and frame: positions, ids and tensors agree exactly.
+TEST(ArrayField, VolumesMatchTheNiftiReader) {
+  tg::test::NiftiTensors fx;
+  fx.dims[0] = 3, fx.dims[1] = 2, fx.dims[2] = 2;
+  // A rotation about z by 30 degrees, anisotropic voxels, an offset.
+  const double c = std::cos(M_PI / 6), s = std::sin(M_PI / 6);
+  // Rounded to float: a NIfTI-1 file stores its sform in single precision.
+  const double aff[3][4] = {{double(float(2 * c)), double(float(-1.5 * s)), 0, 10},
+                            {double(float(2 * s)), double(float(1.5 * c)), 0, -4},
+                            {0, 0, 3, 7}};
+  std::copy(&aff[0][0], &aff[0][0] + 12, &fx.affine[0][0]);
+  std::vector<double> values;  // (X, Y, Z, 6), C order: the last axis fastest
+  values.resize(12 * 6);
+  for (int v = 0; v < 12; ++v) {
+    const std::array<float, 6> t = {float(3 + v), 0.5f, -0.25f, float(2 + 0.1 * v), 0.125f, 1.0f};
+    fx.voxels.push_back(t);
+    const int i = v % 3, j = (v / 3) % 2, k = v / 6;
+    for (int q = 0; q < 6; ++q) values[std::size_t(((i * 2 + j) * 2 + k) * 6 + q)] = t[std::size_t(q)];
+  }
+  const auto dir = std::filesystem::temp_directory_path() / ("tg_array_field_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  tg::test::writeNifti(dir / "t.nii", fx);
+  double affine[16] = {0};
+  for (int r = 0; r < 3; ++r)
+    for (int q = 0; q < 4; ++q) affine[4 * r + q] = aff[r][q];
+  affine[15] = 1;
+  for (const char* frame : {"", "voxel", "fsl", "world"}) {
+    tg::io::ReadOptions opt;
+    opt.layout = "fsl";
+    opt.frame = frame;
+    const auto fromFile = tg::io::readNifti((dir / "t.nii").string(), opt);
+    const auto fromArray = tg::io::fieldFromVolume(view(values, {3, 2, 2, 6}), "fsl", affine, frame);
+    ASSERT_EQ(fromArray.size(), fromFile.size()) << frame;
+    EXPECT_EQ(tensorsOf(fromArray), tensorsOf(fromFile)) << frame;
+    EXPECT_EQ(std::vector<float>(fromArray.positions.begin(), fromArray.positions.end()),
+              std::vector<float>(fromFile.positions.begin(), fromFile.positions.end()))
+        << frame;
+    EXPECT_EQ(std::vector<std::uint32_t>(fromArray.ids.begin(), fromArray.ids.end()),
+              std::vector<std::uint32_t>(fromFile.ids.begin(), fromFile.ids.end()))
+        << frame;
+    ASSERT_TRUE(fromArray.grid.has_value());
+  }
+  std::filesystem::remove_all(dir);
+  // A (…, 3, 3) volume has no layout to take a frame from.
+  const std::vector<double> full(9, 1.0);
+  EXPECT_EQ(errorOf([&] { tg::io::fieldFromVolume(view(full, {1, 1, 1, 3, 3}), "", affine, ""); }).rfind("frame: ", 0),
+            0u);
+  double singular[16] = {0};
+  singular[15] = 1;
+  EXPECT_EQ(errorOf([&] { tg::io::fieldFromVolume(view(values, {3, 2, 2, 6}), "", singular, ""); }), "affine: singular");
+}
+
+}  // namespace
