@@ -58,7 +58,8 @@ RenderOptions parse(int argc, const char** argv) {
     o.width = parseIntIn("--size", a[1], 1, kMaxFrameSide);
     o.height = parseIntIn("--size", a[2], 1, kMaxFrameSide);
   });
-  ap.arg("--glyph KIND").help("ellipsoid (default; the built-in scene: superquadric) or superquadric").action([&](auto&, Args a) {
+  ap.arg("--glyph KIND").help("ellipsoid (default; the built-in scene: superquadric), superquadric, "
+                                  "or Teem's cylinder or box").action([&](auto&, Args a) {
     o.glyph = a[1];
     o.look.glyphGiven = true;
   });
@@ -109,7 +110,7 @@ void validate(const RenderOptions& o) {
   if (o.output.empty()) throw UsageError("-o OUT is required");
   checkFrameSize("--size", o.width, o.height);
   if (!glyphKindNamed(o.glyph))
-    throw UsageError("--glyph: unknown kind \"" + o.glyph + "\"; choose ellipsoid or superquadric");
+    throw UsageError("--glyph: unknown kind \"" + o.glyph + "\"; choose " + kGlyphKindNames);
   if (!(o.gamma >= 0.0 && o.gamma <= 1e4)) throw UsageError("--gamma must be within 0..10000");
   if (o.tessellate != 0 && (o.tessellate < render::TessellatedGlyphs::kMinResolution ||
                             o.tessellate > render::TessellatedGlyphs::kMaxResolution))

@@ -61,7 +61,8 @@ ViewOptions parse(int argc, const char** argv) {
     o.width = parseIntIn("--size", a[1], 64, kMaxFrameSide);
     o.height = parseIntIn("--size", a[2], 64, kMaxFrameSide);
   });
-  ap.arg("--glyph KIND").help("ellipsoid (default; the built-in scene: superquadric) or superquadric").action([&](auto&, Args a) {
+  ap.arg("--glyph KIND").help("ellipsoid (default; the built-in scene: superquadric), superquadric, "
+                                  "or Teem's cylinder or box").action([&](auto&, Args a) {
     o.glyph = a[1];
     o.look.glyphGiven = true;
   });
@@ -85,7 +86,7 @@ ViewOptions parse(int argc, const char** argv) {
 
 void validate(const ViewOptions& o) {
   checkFrameSize("--size", o.width, o.height);
-  if (!glyphKindNamed(o.glyph)) throw UsageError("--glyph: unknown kind \"" + o.glyph + "\"; choose ellipsoid or superquadric");
+  if (!glyphKindNamed(o.glyph)) throw UsageError("--glyph: unknown kind \"" + o.glyph + "\"; choose " + kGlyphKindNames);
   if (!colorModeNamed(o.color)) throw UsageError("--color: unknown mode \"" + o.color + "\"; choose " + kColorModeNames);
   if (!(o.gamma >= 0.0 && o.gamma <= 1e4)) throw UsageError("--gamma must be within 0..10000");
   o.field.validate();

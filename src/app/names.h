@@ -19,9 +19,13 @@ inline std::optional<render::ColorMode> colorModeNamed(std::string_view c) {
   return std::nullopt;
 }
 
+inline constexpr const char* kGlyphKindNames = "ellipsoid, superquadric, cylinder or box";
+
 inline std::optional<render::GlyphKind> glyphKindNamed(std::string_view k) {
   if (k == "ellipsoid") return render::GlyphKind::Ellipsoid;
   if (k == "superquadric") return render::GlyphKind::Superquadric;
+  if (k == "cylinder") return render::GlyphKind::Cylinder;
+  if (k == "box") return render::GlyphKind::Box;
   return std::nullopt;
 }
 

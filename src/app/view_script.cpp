@@ -59,7 +59,7 @@ void check(const ScriptStep& s) {
   if (v == "gamma" && !(number(s, 0) >= 0.0 && number(s, 0) <= 1e4)) throw UsageError("gamma: must be within 0..10000");
   if (v == "fa-min") number(s, 0);
   if (v == "glyph" && !glyphKindNamed(s.args[0]))
-    throw UsageError("glyph: unknown kind \"" + s.args[0] + "\"; choose ellipsoid or superquadric");
+    throw UsageError("glyph: unknown kind \"" + s.args[0] + "\"; choose " + kGlyphKindNames);
   if (v == "color" && !colorModeNamed(s.args[0]))
     throw UsageError("color: unknown mode \"" + s.args[0] + "\"; choose " + kColorModeNames);
   if (v == "slab") {

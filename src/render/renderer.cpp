@@ -23,6 +23,7 @@ GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib, Ov
       culling_(gl, lib),
       pyramid_(gl, lib),
       tessellated_(gl, lib),
+      prisms_(gl, lib),
       makeLegend_(legend) {
   // The lighting pass's core-profile draw needs a vertex array object even
   // with no attributes.
@@ -54,6 +55,7 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   eigenMax_ = set.eigenvalueMax;
   typicalDiameter_ = 1.0 / tensor::defaultScale(set, 1.0);
   for (const gl::Program* prog : glyphPrograms()) prog->set("uMdRange", glm::vec2(mdMin_, mdMax_));
+  prisms_.setMdRange(glm::vec2(mdMin_, mdMax_));
   if (count_ > 0) {
     gl_.CreateBuffers(1, &buffer_);
     gl_.NamedBufferStorage(buffer_, GLsizeiptr(set.glyphs.size() * sizeof(tensor::GlyphRecord)),
@@ -74,24 +76,10 @@ std::array<const gl::Program*, 3> GlyphRenderer::shapePrograms() const {
 }
 
 void GlyphRenderer::setParams(const FrameParams& p) {
-  // Only what changed: a slider moves one value, and each uniform update
-  // costs a driver call (the viewer reports the total per change).
   const FrameParams* old = params_ ? &*params_ : nullptr;
   auto changed = [&](auto member) { return !old || !(old->*member == p.*member); };
-  for (const gl::Program* prog : glyphPrograms()) {
-    if (changed(&FrameParams::scale)) prog->set("uScale", float(p.scale));
-    if (changed(&FrameParams::sizing)) {
-      prog->set("uMagnitude", int(p.sizing.magnitude));
-      prog->set("uLambda0", float(p.sizing.lambda0));
-      prog->set("uMaxRadiusWC", float(p.sizing.maxRadiusWC));
-    }
-    if (changed(&FrameParams::faMin)) prog->set("uFaMin", float(p.faMin));
-    if (changed(&FrameParams::slab)) {
-      prog->set("uSlabAxis", p.slab.axis);
-      prog->set("uSlabWC", glm::vec2(float(p.slab.lo), float(p.slab.hi)));
-    }
-    if (changed(&FrameParams::color)) prog->set("uColorMode", int(p.color));
-  }
+  for (const gl::Program* prog : glyphPrograms()) setGlyphUniforms(*prog, p, old);
+  prisms_.setParams(p, old);
   for (const gl::Program* prog : shapePrograms()) {
     if (changed(&FrameParams::gamma)) prog->set("uGamma", float(p.gamma));
     if (changed(&FrameParams::march)) {
@@ -236,6 +224,12 @@ void GlyphRenderer::drawGlyphs(const Camera& cam, const FrameParams& p, int spli
     tessellated_.draw(p.tessellation, std::size_t(count_));
     return;
   }
+  if (isPrismKind(p.glyph)) {
+    // Every group by the kind's own program: no ellipsoid, no march.
+    useGlyphProgram(prisms_.program(p.glyph, p), cam);
+    culling_.draw(sprites_, 0, 3);
+    return;
+  }
   useGlyphProgram(ellipsoid_, cam);
   culling_.draw(sprites_, 0, split);
   if (split < 3) {
@@ -251,6 +245,7 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   gl_.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   const bool tessellated = p.tessellation > 0;
   const bool sq = p.glyph == GlyphKind::Superquadric;
+  // split 3: nothing marches (ellipsoids, and the prism kinds: no pre-pass).
   const int split = !sq ? 3 : p.gamma > 0.0 ? 1 : 2;
   // The shadow map first, so that culling is left prepared for the view.
   std::optional<Camera> light;

@@ -21,6 +21,7 @@
 #include "render/occluder_pyramid.h"
 #include "render/glyph_culling.h"
 #include "render/outline_pass.h"
+#include "render/prism_kinds.h"
 #include "render/quad_sprites.h"
 #include "render/shadow_pass.h"
 #include "render/tessellated.h"
@@ -40,7 +41,9 @@ struct Lighting {
   bool operator==(const Lighting&) const = default;
 };
 
-enum class GlyphKind { Ellipsoid, Superquadric };
+// Cylinder and box: Teem's glyphs of those names, exact closed-form ray
+// casts of their own (render/prism_kinds.h); gamma does not apply to them.
+enum class GlyphKind { Ellipsoid, Superquadric, Cylinder, Box };
 
 // Newton march settings; the defaults come from `tensorglyph bench accuracy`
 // (README, "Speed against accuracy of the superquadric march").
@@ -129,6 +132,8 @@ class GlyphRenderer {
   const GlyphCulling& culling() const { return culling_; }
   // Frames that ran the superquadric occlusion pre-pass since construction.
   std::uint64_t occlusionPrepasses() const { return occlusionPrepasses_; }
+  // Whether kind k's program exists (cylinder and box: built on first use).
+  bool kindBuilt(GlyphKind k) const { return prisms_.built(k); }
   // Frames that drew the shadow map since construction, and whether the
   // shadow pass (its program and map) exists now: only while frames ask for it.
   std::uint64_t shadowMapPasses() const { return shadowMapPasses_; }
@@ -190,6 +195,7 @@ class GlyphRenderer {
   GlyphCulling culling_;
   OccluderPyramid pyramid_;
   TessellatedGlyphs tessellated_;
+  PrismKinds prisms_;
   std::unique_ptr<ShadowPass> shadow_;  // built on first use
   GLuint vao_ = 0, buffer_ = 0, stats_ = 0;
   GLsizei count_ = 0;

@@ -340,3 +340,24 @@ TEST(Cli, ShadowsChangeThePictureAndTheirFlagsAreChecked) {
     EXPECT_EQ(run("render -o " + out.string() + " " + args).code, 2) << args;
   }
 }
+
+TEST(Cli, CylinderAndBoxGlyphsRenderAndNonsenseKindsFailWithUsage) {
+  const fs::path d = dir();
+  for (const char* kind : {"cylinder", "box"}) {
+    const fs::path out = d / (std::string(kind) + ".png");
+    fs::remove(out);
+    const CmdResult r = run("render -o " + out.string() + " --size 96 72 --glyph " + std::string(kind));
+    EXPECT_EQ(r.code, 0) << kind << ": " << r.err;
+    EXPECT_TRUE(fs::exists(out)) << kind;
+  }
+  const fs::path out = d / "never.png";
+  const std::pair<std::string, std::string> cases[] = {
+      {"--glyph cone", "--glyph: unknown kind \"cone\""},
+      {"--glyph Box", "unknown kind"},
+      {"--glyph box --tessellate 8", "--tessellate needs --glyph superquadric"},
+      {"--glyph", "--glyph"}};
+  for (const auto& [args, what] : cases) {
+    tg::test::expectFailsCleanly("render -o " + out.string() + " " + args, what, out, d, 1);
+    EXPECT_EQ(run("render -o " + out.string() + " " + args).code, 2) << args;
+  }
+}

@@ -299,8 +299,10 @@ TEST_F(Shadows, LitAndShadowedPixelsMatchTheShadowRayReference) {
 TEST_F(Shadows, GoldenImages) {
   const auto set = shadowScene();
   const auto cam = sceneCamera(128, 96);
-  for (auto glyph : {render::GlyphKind::Ellipsoid, render::GlyphKind::Superquadric}) {
-    const std::string name = glyph == render::GlyphKind::Ellipsoid ? "shadows-ellipsoid" : "shadows-superquadric";
+  const char* names[] = {"shadows-ellipsoid", "shadows-superquadric", "shadows-cylinder", "shadows-box"};
+  for (auto glyph : {render::GlyphKind::Ellipsoid, render::GlyphKind::Superquadric, render::GlyphKind::Cylinder,
+                     render::GlyphKind::Box}) {
+    const std::string name = names[int(glyph)];
     SCOPED_TRACE(name);
     render::FrameParams p;
     p.glyph = glyph;
