@@ -8,7 +8,7 @@
 namespace tg::ref {
 
 void addPlane(RefImage& img, const render::Camera& cam, const render::PlaneQuad& q, std::uint32_t id,
-              double offsetWC) {
+              double offsetWC, const render::UnderlayVolume* volume) {
   const glm::dmat4 wcFromVC = glm::inverse(cam.viewWCVC);
   const glm::dvec3 n = q.normalWC, c0 = q.cornersWC[0];
   const glm::dvec3 e1 = q.cornersWC[1] - c0, e3 = q.cornersWC[3] - c0;
@@ -26,6 +26,7 @@ void addPlane(RefImage& img, const render::Camera& cam, const render::PlaneQuad&
       const double a = glm::dot(h, e1), b = glm::dot(h, e3);
       const double s = (g33 * a - g13 * b) / det, u = (g11 * b - g13 * a) / det;
       if (!(s >= 0 && s <= 1 && u >= 0 && u <= 1)) continue;
+      if (volume && !volume->sample(h + c0, false)) continue;
       // The ray meets the plane from the side its normal faces when n·d < 0.
       const glm::dvec3 facing = nd < 0 ? n : -n;
       const double depth = t + offsetWC / std::abs(nd);

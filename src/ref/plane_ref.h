@@ -12,8 +12,10 @@
 namespace tg::ref {
 
 // Where the quad is nearer than what `img` holds (+inf where empty), the
-// pixel takes `id`, the offset depth and the normal facing the eye.
+// pixel takes `id`, the offset depth and the normal facing the eye. With
+// `volume`, only where the plane lies inside its voxel cells (an oblique
+// quad is the rectangle around its cut).
 void addPlane(RefImage& img, const render::Camera& cam, const render::PlaneQuad& quad, std::uint32_t id,
-              double offsetWC);
+              double offsetWC, const render::UnderlayVolume* volume = nullptr);
 
 }  // namespace tg::ref

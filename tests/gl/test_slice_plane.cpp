@@ -63,9 +63,9 @@ class SlicePlanes : public GlFixture {
   }
 };
 
-render::Camera topCamera(int w, int h, render::Projection proj, double dist = 12) {
+render::Camera topCamera(int w, int h, render::Projection proj, double dist = 12, double height = 12) {
   render::CameraDesc d;
-  d.eyeWC = {1.5, -2.0, dist};
+  d.eyeWC = {1.5, -dist / 6, height};
   d.lookAtWC = {0, 0, 0};
   d.projection = proj;
   d.fovYDeg = 40;
@@ -106,6 +106,10 @@ TEST_F(SlicePlanes, AnUnderlayOnAnotherGridLinesUpInWorldCoordinates) {
   double worst = 0, control = 0;
   for (std::size_t k = 0; k < ia.id.size(); ++k) {
     if (ia.id[k] != render::kContextIdBase || ib.id[k] != render::kContextIdBase) continue;
+    // Inside the first grid's voxel centres: its outer half cell holds the edge value.
+    const auto ray = cam.rayThroughPixel(double(k % std::size_t(cam.width)) + 0.5, double(k / std::size_t(cam.width)) + 0.5);
+    const glm::dvec3 at = ray.origin + (0.3 - ray.origin.z) / ray.direction.z * ray.direction;
+    if (std::abs(at.x) > 3.9 || std::abs(at.y) > 3.9) continue;
     ++both;
     for (int c = 0; c < 3; ++c) {
       worst = std::max(worst, double(std::abs(ia.rgba[4 * k + c] - ib.rgba[4 * k + c])));
@@ -126,10 +130,12 @@ TEST_F(SlicePlanes, AnUnderlayOnAnotherGridLinesUpInWorldCoordinates) {
 }
 
 // A glyph centred on the plane is whole with the default offset (one largest
-// glyph radius); at offset 0 the plane cuts its lower half away; a glyph
+// glyph radius); at offset 0 the plane cuts away the part below it that a
+// low view sees; a glyph
 // three radii behind the plane is hidden by it.
 TEST_F(SlicePlanes, GlyphsOnThePlaneAreWholeAndThoseBehindItHidden) {
-  const auto cam = topCamera(120, 90, render::Projection::Perspective);
+  // Low, so that the view sees below the glyph's equator.
+  const auto cam = topCamera(120, 90, render::Projection::Perspective, 30, 6);
   const render::UnderlayVolume v = linearVolume(17, 0.5, glm::dmat4(1.0));
   render::PlaneSpec mid;  // z:8 is z = 0
   mid.axis = 2;
@@ -143,9 +149,9 @@ TEST_F(SlicePlanes, GlyphsOnThePlaneAreWholeAndThoseBehindItHidden) {
   render::SliceParams trueDepth;
   trueDepth.depthOffsetRadii = 0;
   const std::size_t cut = countId(drawWith(onPlane, cam, p, &v, &mid, trueDepth), 0);
-  EXPECT_LT(double(cut), 0.8 * double(alone));
+  EXPECT_LT(double(cut), 0.95 * double(alone));  // about sin(11 deg) of the disc lies below the plane
   const auto behind = sphereAt({0, 0, -3}, 1.0f);
-  ASSERT_GT(countId(drawWith(behind, cam, p, nullptr, nullptr), 0), 300u);
+  ASSERT_GT(countId(drawWith(behind, cam, p, nullptr, nullptr), 0), 100u);
   EXPECT_EQ(countId(drawWith(behind, cam, p, &v, &mid), 0), 0u);
 }
 
@@ -172,7 +178,7 @@ TEST_F(SlicePlanes, AGlyphHalfThroughAPlaneMatchesTheReference) {
       const auto gpu = drawWith(set, cam, p, &v, &plane, sp);
       ref::RefImage want = ref::renderEllipsoids(cam, set.glyphs, {1.0});
       const double offsetWC = radii * tensor::glyphRadiusWC(1.0, {}, set.maxAbsEigenvalue);
-      ref::addPlane(want, cam, render::planeQuad(v, plane), render::kContextIdBase, offsetWC);
+      ref::addPlane(want, cam, render::planeQuad(v, plane), render::kContextIdBase, offsetWC, &v);
       const auto c = compare(gpu, want, cam);
       std::size_t glyphPixels = 0, planePixels = 0;
       for (std::uint32_t id : want.id) (id == 0 ? glyphPixels : planePixels) += id == 0 || id == render::kContextIdBase;
