@@ -1,5 +1,6 @@
 // --underlay and --plane through the real binary: the bad-input contract and
 // an underlay file on its own grid.
+#include <cmath>
 #include <fstream>
 
 #include "cli/cli_run.h"
