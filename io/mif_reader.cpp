@@ -531,7 +531,7 @@ std::string mifDataFile(const std::string& path) {
 
 ScalarVolume readMifScalar(const std::string& path, const int dims[3]) {
   const Image im = openImage(path, [&](const Header& h) {
-    if (h.dim.size() != 3) fail(path, "a mask must have 3 axes, this has " + std::to_string(h.dim.size()));
+    if (h.dim.size() != 3) fail(path, "a mask or underlay must have 3 axes, this has " + std::to_string(h.dim.size()));
     spatialVoxels(path, h);
     const int got[3] = {int(h.dim[0]), int(h.dim[1]), int(h.dim[2])};
     if (const std::string m = maskGridMismatch(got, dims); !m.empty()) fail(path, m);

@@ -350,7 +350,7 @@ ScalarVolume readNiftiScalar(const std::string& path, const int dims[3]) {
   const Image nim = readHeader(path);
   VolumeGeometry g;
   const std::uint64_t voxels = spatialVoxels(path, *nim, g);
-  if (std::uint64_t(nim->nvox) != voxels) fail(path, "a mask must be a single 3D volume");
+  if (std::uint64_t(nim->nvox) != voxels) fail(path, "a mask or underlay must be a single 3D volume");
   if (const std::string m = maskGridMismatch(g.dims, dims); !m.empty()) fail(path, m);
   ScalarVolume s;
   std::copy(g.dims, g.dims + 3, s.dims);

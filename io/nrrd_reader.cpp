@@ -498,7 +498,7 @@ TensorField readNrrd(const std::string& path, const ReadOptions& opt) {
 ScalarVolume readNrrdScalar(const std::string& path, const int dims[3]) {
   const auto h = readHeader(path);
   Nrrd* n = h->nrrd;
-  if (n->dim != 3) fail(path, "a mask must have 3 axes, this has " + std::to_string(n->dim));
+  if (n->dim != 3) fail(path, "a mask or underlay must have 3 axes, this has " + std::to_string(n->dim));
   ScalarVolume v;
   const std::uint64_t voxels = gridDims(path, n, 0, v.dims);
   if (const std::string m = maskGridMismatch(v.dims, dims); !m.empty()) fail(path, m);

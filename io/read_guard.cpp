@@ -9,6 +9,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
+#include <array>
 #include <cerrno>
 #include <chrono>
 #include <cmath>
@@ -110,8 +112,33 @@ void sendAll(int fd, const void* p, std::size_t n) {
   }
 }
 
+// A scalar volume (an underlay) on the wire: its values travel as one string.
+void writeField(WireOut& w, const ScalarVolume& v) {
+  w.pod(kWireMagic);
+  w.pod(std::array<int, 3>{v.dims[0], v.dims[1], v.dims[2]});
+  w.str(std::string(reinterpret_cast<const char*>(v.values.data()), v.values.size() * sizeof(float)));
+  w.pod(v.placement.has_value());
+  if (v.placement) w.pod(*v.placement);
+}
+
+void readBack(WireIn& r, ScalarVolume& v) {
+  if (r.pod<std::uint32_t>() != kWireMagic) throw std::runtime_error("the reader's result is malformed");
+  const auto dims = r.pod<std::array<int, 3>>();
+  const std::string bytes = r.str();
+  std::uint64_t voxels = 1;
+  for (int d : dims) voxels *= std::uint64_t(d >= 0 ? d : 0);
+  if (bytes.size() != voxels * sizeof(float)) throw std::runtime_error("the reader's result is malformed");
+  std::copy(dims.begin(), dims.end(), v.dims);
+  v.values.resize(std::size_t(voxels));
+  std::memcpy(v.values.data(), bytes.data(), bytes.size());
+  if (r.pod<bool>()) v.placement = r.pod<GridPlacement>();
+}
+
+void readBack(WireIn& r, TensorField& f) { f = readField(r); }
+
+template <class Result>
 [[noreturn]] void childMain(int statusFd, int dataFd, const ReadLimits& limits,
-                            const std::function<TensorField(const PromiseFn&)>& read) {
+                            const std::function<Result(const PromiseFn&)>& read) {
   // Messages of third-party libraries never reach the user; ours go through the pipe.
   if (const int null = ::open("/dev/null", O_WRONLY); null >= 0) {
     ::dup2(null, 1);
@@ -131,7 +158,7 @@ void sendAll(int fd, const void* p, std::size_t n) {
   int code = 0;
   std::uint64_t promised = 0;
   try {
-    const TensorField f = read([statusFd, &promised](std::uint64_t bytes, std::uint64_t memory) {
+    const Result f = read([statusFd, &promised](std::uint64_t bytes, std::uint64_t memory) {
       promised += memory;
       limitAddressSpace(mappedBytes() + memory + kSlackBytes);
       const char tag = 'P';
@@ -198,8 +225,11 @@ ReadLimits limitsFor(std::uint64_t fileBytes, std::uint64_t memoryBudget) {
   return l;
 }
 
-TensorField readInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
-                        const std::function<TensorField(const PromiseFn&)>& read) {
+namespace {
+
+template <class Result>
+Result guardedRead(const std::string& who, const std::string& path, const ReadLimits& limits,
+                   const std::function<Result(const PromiseFn&)>& read) {
   auto fail = [&](const std::string& what) -> InputError { return InputError(who + ": " + path + ": " + what); };
   int statusFds[2], dataFds[2];
   if (::pipe2(statusFds, O_CLOEXEC) != 0) throw fail(std::string("cannot start the reader: ") + std::strerror(errno));
@@ -241,7 +271,7 @@ TensorField readInChild(const std::string& who, const std::string& path, const R
       deadline += std::chrono::duration<double>(double(bytes) / limits.bytesPerSecond);
     }
   }
-  std::optional<TensorField> field;
+  std::optional<Result> field;
   std::string transferError;
   if (status == "O") {
     // Memory bandwidth, not the reader, sets this pace: 10 s and 100 MB/s.
@@ -249,7 +279,8 @@ TensorField readInChild(const std::string& who, const std::string& path, const R
                                           std::chrono::duration<double>(10.0 + double(limits.memoryBytes) / 1e8));
     try {
       WireIn in(dataIn.fd, pid, until, limits.memoryBytes + (std::uint64_t(1) << 20));
-      field = readField(in);
+      field.emplace();
+      readBack(in, *field);
       in.finish();
     } catch (const std::runtime_error& e) {
       transferError = e.what();
@@ -274,6 +305,18 @@ TensorField readInChild(const std::string& who, const std::string& path, const R
   if (!status.empty() && status[0] == 'M') throw fail(status.substr(1));
   if (!status.empty() && status[0] == 'X') throw fail("the reader failed (" + status.substr(1) + "): the file is corrupt");
   throw fail("the reader ended without a result (exit status " + std::to_string(WEXITSTATUS(ws)) + ")");
+}
+
+}  // namespace
+
+TensorField readInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
+                        const std::function<TensorField(const PromiseFn&)>& read) {
+  return guardedRead(who, path, limits, read);
+}
+
+ScalarVolume readScalarInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
+                               const std::function<ScalarVolume(const PromiseFn&)>& read) {
+  return guardedRead(who, path, limits, read);
 }
 
 }  // namespace tg::io

@@ -10,6 +10,7 @@
 #include <functional>
 #include <string>
 
+#include "io/selection.h"
 #include "io/tensor_field.h"
 
 namespace tg::io {
@@ -42,5 +43,9 @@ ReadLimits limitsFor(std::uint64_t fileBytes, std::uint64_t memoryBudget);
 using PromiseFn = std::function<void(std::uint64_t decodedBytes, std::uint64_t memoryBytes)>;
 TensorField readInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
                         const std::function<TensorField(const PromiseFn&)>& read);
+
+// The same for a scalar volume (an underlay).
+ScalarVolume readScalarInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
+                               const std::function<ScalarVolume(const PromiseFn&)>& read);
 
 }  // namespace tg::io

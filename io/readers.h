@@ -87,11 +87,17 @@ TensorField readMif(const std::string& path, const ReadOptions& opt);
 std::string mifDataFile(const std::string& path);
 
 // Scalar volumes, for masks: refused before any data is decoded unless their
-// grid is `dims`.
+// grid is `dims`. dims null (underlays): any grid that fits in memory.
 ScalarVolume readNrrdScalar(const std::string& path, const int dims[3]);
 ScalarVolume readNiftiScalar(const std::string& path, const int dims[3]);
 ScalarVolume readVtiScalar(const std::string& path, const int dims[3]);
 ScalarVolume readMifScalar(const std::string& path, const int dims[3]);
+
+// `--underlay FILE`: a scalar volume on any grid (NRRD, NIfTI, MRtrix or
+// .vti), read in a child process (io/read_guard.h). Refuses a file that does
+// not say where its voxels lie (it could not be lined up with the tensors)
+// and one without a finite value. Non-finite values stay: they are holes.
+ScalarVolume readUnderlay(const std::string& path);
 
 // The format a path names, by its extension.
 enum class InputFormat { Vtk, Nrrd, Nifti, Mif, Unknown };

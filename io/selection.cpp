@@ -9,6 +9,7 @@
 
 #include <sys/stat.h>
 
+#include "io/read_guard.h"
 #include "io/readers.h"
 
 namespace tg::io {
@@ -43,12 +44,22 @@ std::string gridText(const int d[3]) {
   return std::to_string(d[0]) + "x" + std::to_string(d[1]) + "x" + std::to_string(d[2]);
 }
 
-std::string maskGridMismatch(const int got[3], const int want[3]) {
+std::string maskGridMismatch(const int got[3], const int* want) {
+  if (!want) {
+    // An underlay, on a grid of its own: its values, the wire's copy and the
+    // caller's must fit in this load's memory.
+    const long double bytes = (long double)got[0] * got[1] * got[2] * sizeof(float) * 3;
+    const std::uint64_t budget = defaultMemoryBudget();
+    if (bytes > (long double)budget)
+      return "grid " + gridText(got) + " would need " + std::to_string(std::uint64_t(bytes / (1 << 20))) +
+             " MiB, more than the " + std::to_string(budget >> 20) + " MiB this load may use";
+    return "";
+  }
   if (std::equal(got, got + 3, want)) return "";
   return "mask grid " + gridText(got) + " differs from the tensor grid " + gridText(want);
 }
 
-ScalarVolume readScalarVolume(const std::string& path, const int dims[3]) {
+ScalarVolume readScalarVolume(const std::string& path, const int* dims) {
   struct stat st {};
   if (::stat(path.c_str(), &st) != 0) throw InputError("readScalarVolume: " + path + ": no such file");
   if (!S_ISREG(st.st_mode)) throw InputError("readScalarVolume: " + path + ": not a regular file");

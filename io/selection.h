@@ -50,13 +50,15 @@ struct ScalarVolume {
   std::optional<GridPlacement> placement;
 };
 // A regular file only (a FIFO would block), on the grid `dims`: a mask of
-// another grid is refused before any of its data is decoded.
-ScalarVolume readScalarVolume(const std::string& path, const int dims[3]);
+// another grid is refused before any of its data is decoded. dims null: any
+// grid that fits in memory (an underlay).
+ScalarVolume readScalarVolume(const std::string& path, const int* dims);
 // "AxBxC", for messages.
 std::string gridText(const int dims[3]);
 // "" when a mask's grid `got` is the tensors' `want`; else the message that
-// every mask reader gives before decoding anything.
-std::string maskGridMismatch(const int got[3], const int want[3]);
+// every mask reader gives before decoding anything. want null (an underlay):
+// "" when its values fit in the memory a load may use.
+std::string maskGridMismatch(const int got[3], const int* want);
 
 // The per-sample decision, built once per read after the header is known.
 class Selector {

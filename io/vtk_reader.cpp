@@ -29,6 +29,7 @@
 #include <vtkXMLDataParser.h>
 #include <vtkXMLReader.h>
 
+#include "io/read_guard.h"
 #include "io/readers.h"
 #include "io/selection.h"
 #include "io/volume_sink.h"
@@ -206,7 +207,7 @@ ReadResult runReader(vtkAlgorithm* reader, const std::string& path, std::uint64_
     if (dims) {
       int e[6];
       vtkInformation* info = reader->GetOutputInformation(0);
-      if (!info || !info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT())) fail(path, "a mask must be image data");
+      if (!info || !info->Has(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT())) fail(path, "a mask or underlay must be image data");
       info->Get(vtkStreamingDemandDrivenPipeline::WHOLE_EXTENT(), e);
       const int got[3] = {e[1] - e[0] + 1, e[3] - e[2] + 1, e[5] - e[4] + 1};
       if (const std::string m = maskGridMismatch(got, dims); !m.empty()) fail(path, m);
@@ -425,14 +426,17 @@ void checkVtkXmlHeader(const std::string& path) {
 }
 
 ScalarVolume readVtiScalar(const std::string& path, const int dims[3]) {
-  const ReadResult read = readDataSet(path, ReadOptions{}, dims);
+  // An underlay (no dims) is held to the load's memory before VTK decodes it.
+  ReadOptions opt;
+  if (!dims) opt.memoryBudget = defaultMemoryBudget();
+  const ReadResult read = readDataSet(path, opt, dims);
   if (!read.vtkSaid.empty()) fail(path, read.vtkSaid);
   vtkDataSet* ds = read.data;
   auto* img = vtkImageData::SafeDownCast(ds);
-  if (!img) fail(path, "a mask must be image data");
+  if (!img) fail(path, "a mask or underlay must be image data");
   vtkDataArray* a = img->GetPointData()->GetScalars();
   if (!a && img->GetPointData()->GetNumberOfArrays() > 0) a = img->GetPointData()->GetArray(0);
-  if (!a || a->GetNumberOfComponents() != 1) fail(path, "no one-component point array to use as a mask");
+  if (!a || a->GetNumberOfComponents() != 1) fail(path, "no one-component point array to use as a mask or underlay");
   ScalarVolume v;
   img->GetDimensions(v.dims);
   v.placement = imagePlacement(img);

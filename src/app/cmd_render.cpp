@@ -18,6 +18,7 @@
 #include "app/output_check.h"
 #include "app/scene.h"
 #include "app/shadow_flags.h"
+#include "app/slice_flags.h"
 #include "gl/shader_library.h"
 #include "io/image_writer.h"
 #include "io/readers.h"
@@ -34,6 +35,7 @@ struct RenderOptions {
   LegendFlags legend;
   EffectFlags effects;
   ShadowFlags shadow;
+  SliceFlags slices;
   LookFlags look;
   int width = 1024, height = 768;
   double gamma = 3.0;
@@ -96,6 +98,7 @@ RenderOptions parse(int argc, const char** argv) {
   o.legend.addTo(ap);
   o.effects.addTo(ap);
   o.shadow.addTo(ap);
+  o.slices.addTo(ap);
   o.look.addTo(ap);
   ap.arg("--repeat N").help("render N more frames and report the median frame time").action([&](auto&, Args a) {
     o.repeat = parseIntIn("--repeat", a[1], 0, 10000);
@@ -123,6 +126,7 @@ void validate(const RenderOptions& o) {
   o.legend.validate();
   o.effects.validate();
   o.shadow.validate();
+  o.slices.validate();
   o.look.validate(o.shadow.params.enabled, o.effects.ao.enabled, o.effects.outline.enabled, o.legend.params.enabled);
   if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
   if ((o.lookAt || o.up) && !o.eye) throw UsageError("--look-at and --up need --eye");
@@ -132,7 +136,8 @@ void validate(const RenderOptions& o) {
   checkBackend(o.backend);
   if (!io::canWriteImage(o.output))
     throw UsageError("-o: no image format for \"" + o.output + "\"");
-  refuseOutputsOverInputs({{"-o", o.output}}, {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath}});
+  refuseOutputsOverInputs({{"-o", o.output}}, {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath},
+                                                   {"--underlay", o.slices.fromField() ? "" : o.slices.underlay}});
 }
 
 // Frames `frame` (the sample positions, tensor::framingBox), not the glyphs'
@@ -171,6 +176,8 @@ int cmdRender(int argc, const char** argv) {
       tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids, 0, o.field.glyph);
   checkDrawable(glyphs, scene.field.path);
   const double buildMs = msSince(t1);
+  std::optional<render::UnderlayVolume> underlay;
+  if (o.slices.any()) underlay = loadUnderlay(o.slices, scene.field);
   // Each stage frees what the next no longer needs, so that peak memory holds
   // at most two copies of the glyphs (here the records and the GL buffer).
   scene.field.releaseSamples();
@@ -193,7 +200,13 @@ int cmdRender(int argc, const char** argv) {
   params.shadow = o.shadow.params;
   if (scene.preferredLook) o.look.apply(*scene.preferredLook, params, o.height);
 
-  const auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale, params.sizing);
+  auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale, params.sizing);
+  if (underlay) {
+    // The camera's depth range holds the planes too (framing stays on the glyphs).
+    const auto [ulo, uhi] = underlay->boundsWC();
+    lo = glm::min(lo, ulo);
+    hi = glm::max(hi, uhi);
+  }
   // The GPU works in single precision: a box beyond FLT_MAX draws nothing.
   const double extent = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y),
                                   std::abs(hi.z)});
@@ -207,6 +220,7 @@ int cmdRender(int argc, const char** argv) {
   const gl::ShaderLibrary lib;
   render::GlyphRenderer renderer(ctx->api(), lib, render::makeLegendPass);
   render::GBuffer target(ctx->api(), o.width, o.height);
+  if (underlay) addSlicePlanes(renderer, ctx->api(), lib, o.slices, std::move(*underlay), glyphs.maxAbsEigenvalue);
   const auto t2 = Clock::now();
   renderer.upload(glyphs);
   ctx->api().Finish();

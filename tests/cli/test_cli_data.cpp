@@ -148,7 +148,7 @@ TEST(CliData, BadSelectionFailsBeforeRendering) {
       {"render " + in + " -o " + out.string() + " --cl-min 2", "--cl-min"},
       {"render " + in + " -o " + out.string() + " --layout zyx", "--layout"},
       {"render " + otherGrid + " -o " + out.string() + " --mask " + faMap, "differs from the tensor grid"},
-      {"render " + in + " -o " + out.string() + " --mask " + otherGrid, "a mask must have 3 axes"},
+      {"render " + in + " -o " + out.string() + " --mask " + otherGrid, "a mask or underlay must have 3 axes"},
       {"render " + tg::test::realData("slicer-fiber-tensors/fiber_vtk.vtk") + " -o " + out.string() + " --slice z:1",
        "needs a grid"}};
   for (const auto& [args, what] : cases) tg::test::expectFailsCleanly(args, what, out, dir(), 1);

@@ -1,0 +1,166 @@
+#include "app/slice_flags.h"
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "app/cli_values.h"
+#include "io/readers.h"
+#include "render/slice_plane.h"
+#include "tensor/anisotropy.h"
+#include "tensor/eigen.h"
+
+namespace tg::app {
+namespace {
+
+constexpr const char* kFieldScalars[] = {"fa", "md", "cl", "cp"};
+
+std::string formatNumber(double v) {
+  char b[32];
+  std::snprintf(b, sizeof b, "%g", v);
+  return b;
+}
+
+render::PlaneSpec parsePlane(const std::string& text) {
+  io::SliceSpec s;
+  try {
+    s = io::parseSlice(text);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(std::string("--plane: ") + e.what());
+  }
+  if (text.find(':') != text.rfind(':')) throw UsageError("--plane: expected x|y|z:INDEX, got \"" + text + "\"");
+  render::PlaneSpec p;
+  p.axis = s.axis;
+  p.index = s.index;
+  return p;
+}
+
+}  // namespace
+
+void SliceFlags::addTo(OIIO::ArgParse& ap) {
+  using Args = OIIO::cspan<const char*>;
+  const render::SliceParams d;
+  auto param = [this](const char* flag) {
+    if (firstParameterFlag.empty()) firstParameterFlag = flag;
+  };
+  ap.arg("--underlay SOURCE")
+      .help("scalar volume under the glyphs: .nrrd .nhdr .nii .nii.gz .mif .mih .vti on any grid, placed by its "
+            "own index-to-world map; or fa, md, cl, cp of the field itself (default fa when only --plane is given)")
+      .action([this](auto&, Args a) { underlay = a[1]; });
+  ap.arg("--plane SLICE")
+      .help("a slice plane of the underlay's grid, SLICE = x|y|z:INDEX (repeatable; default with --underlay: the middle z slice)")
+      .action([this](auto&, Args a) { planes.push_back(parsePlane(a[1])); });
+  ap.arg("--plane-at PX PY PZ NX NY NZ")
+      .help("an oblique slice plane through point P with normal N, in world coordinates (repeatable)")
+      .action([this](auto&, Args a) {
+        render::PlaneSpec p;
+        p.axis = -1;
+        p.pointWC = parseVec3("--plane-at", std::span<const char* const>(a.data() + 1, 3));
+        p.normalWC = parseVec3("--plane-at", std::span<const char* const>(a.data() + 4, 3));
+        if (!(p.normalWC != glm::dvec3(0.0))) throw UsageError("--plane-at: the normal must not be zero");
+        planes.push_back(p);
+      });
+  ap.arg("--underlay-colormap NAME")
+      .help(std::string("gray (default) or viridis"))
+      .action([this, param](auto&, Args a) {
+        param("--underlay-colormap");
+        const auto c = render::colormapNamed(a[1]);
+        if (!c) throw UsageError(std::string("--underlay-colormap: unknown colormap \"") + a[1] + "\"; choose " +
+                                 render::kColormapNames);
+        params.colormap = *c;
+      });
+  ap.arg("--underlay-window LO HI")
+      .help("values mapped onto the colormap's ends (default: the " + formatNumber(d.percentileLo) + "th to " +
+            formatNumber(d.percentileHi) + "th percentile of the volume's finite values)")
+      .action([this, param](auto&, Args a) {
+        param("--underlay-window");
+        const double lo = parseDouble("--underlay-window", a[1]), hi = parseDouble("--underlay-window", a[2]);
+        if (!(lo < hi)) throw UsageError("--underlay-window: LO must be below HI");
+        params.window = std::pair(lo, hi);
+      });
+  ap.arg("--underlay-nearest")
+      .help("sample the nearest voxel (for masks and labels) instead of trilinear interpolation (the default)")
+      .action([this, param](auto&, Args) {
+        param("--underlay-nearest");
+        params.linear = false;
+      });
+  ap.arg("--plane-offset R")
+      .help("draw planes R largest glyph radii behind themselves, away from the viewer, so glyphs centred on "
+            "them are not cut; 0: true depth (default " + formatNumber(d.depthOffsetRadii) + ")")
+      .action([this, param](auto&, Args a) {
+        param("--plane-offset");
+        params.depthOffsetRadii = parseDoubleIn("--plane-offset", a[1], 0.0, 100.0);
+      });
+}
+
+void SliceFlags::validate() const {
+  if (!firstParameterFlag.empty() && !any())
+    throw UsageError(firstParameterFlag + " needs --underlay or --plane");
+}
+
+bool SliceFlags::fromField() const {
+  if (underlay.empty()) return true;
+  for (const char* s : kFieldScalars)
+    if (underlay == s) return true;
+  return false;
+}
+
+std::vector<render::PlaneSpec> SliceFlags::planesFor(const render::UnderlayVolume& v) const {
+  if (!planes.empty()) return planes;
+  render::PlaneSpec p;
+  p.axis = 2;
+  p.index = v.dims[2] / 2;
+  return {p};
+}
+
+render::UnderlayVolume loadUnderlay(const SliceFlags& f, const io::TensorField& field) {
+  render::UnderlayVolume v;
+  if (!f.fromField()) {
+    io::ScalarVolume s = io::readUnderlay(f.underlay);
+    v.name = f.underlay;
+    std::copy(s.dims, s.dims + 3, v.dims);
+    v.values = std::move(s.values);
+    const io::GridPlacement& p = *s.placement;
+    for (int c = 0; c < 3; ++c)
+      for (int r = 0; r < 3; ++r) v.indexToWC[c][r] = p.axesWC[3 * r + c];
+    v.indexToWC[3] = glm::dvec4(p.originWC[0], p.originWC[1], p.originWC[2], 1.0);
+    return v;
+  }
+  const std::string scalar = f.underlay.empty() ? "fa" : f.underlay;
+  const std::string who = field.path.empty() ? "the built-in scene" : field.path;
+  if (!field.grid)
+    throw io::InputError("render: " + who + ": --underlay " + scalar +
+                         " needs a field on a grid; this is a point set (give --underlay FILE)");
+  const io::GridInfo& g = *field.grid;
+  v.name = scalar;
+  std::copy(g.dims, g.dims + 3, v.dims);
+  for (int c = 0; c < 3; ++c)
+    for (int r = 0; r < 3; ++r) v.indexToWC[c][r] = g.directions[3 * r + c] * g.spacing[c];
+  v.indexToWC[3] = glm::dvec4(g.origin[0], g.origin[1], g.origin[2], 1.0);
+  // Voxels without a kept tensor (masked, unselected, not finite) are holes.
+  v.values.assign(v.voxels(), NAN);
+  for (std::size_t k = 0; k < field.size(); ++k) {
+    const float* t = &field.tensors[6 * k];
+    const tensor::Eigensystem e = tensor::eigensolve({t[0], t[1], t[2], t[3], t[4], t[5]});
+    const tensor::Anisotropy a = tensor::anisotropy(e.values);
+    const double x = scalar == "fa" ? a.fa : scalar == "md" ? a.md : scalar == "cl" ? a.cl : a.cp;
+    if (field.ids[k] < v.values.size()) v.values[field.ids[k]] = float(x);
+  }
+  return v;
+}
+
+void addSlicePlanes(render::GlyphRenderer& r, const gl::Api& gl, const gl::ShaderLibrary& lib, const SliceFlags& f,
+                    render::UnderlayVolume volume, double maxAbsEigenvalue) {
+  if (!f.any()) return;
+  const std::string name = volume.name;
+  const std::vector<render::PlaneSpec> planes = f.planesFor(volume);
+  try {
+    auto shared = std::make_shared<const render::SliceVolume>(gl, lib, std::move(volume));
+    for (const render::PlaneSpec& p : planes)
+      r.addContext(std::make_unique<render::SlicePlane>(shared, p, f.params, maxAbsEigenvalue));
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError("render: " + name + ": " + e.what());
+  }
+}
+
+}  // namespace tg::app

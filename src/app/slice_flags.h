@@ -1,0 +1,43 @@
+#pragma once
+// The command-line face of slice planes (render/slice_plane.h): --underlay,
+// --plane, --plane-at and render::SliceParams' flags, whose help quotes the
+// struct's defaults.
+#include <string>
+#include <vector>
+
+#include <OpenImageIO/argparse.h>
+
+#include "io/tensor_field.h"
+#include "render/renderer.h"
+#include "render/underlay.h"
+
+namespace tg::app {
+
+struct SliceFlags {
+  std::string underlay;  // a file, or fa|md|cl|cp (the field's own); empty: fa when planes are given
+  std::vector<render::PlaneSpec> planes;
+  render::SliceParams params;
+  std::string firstParameterFlag;  // an --underlay-* flag given, for validate()
+
+  void addTo(OIIO::ArgParse& ap);
+  // UsageError for a parameter flag without a plane or an underlay.
+  void validate() const;
+  bool any() const { return !underlay.empty() || !planes.empty(); }
+  // The underlay is one of the field's own scalars, not a file.
+  bool fromField() const;
+  // The planes to draw: those given, else the middle index plane along z.
+  std::vector<render::PlaneSpec> planesFor(const render::UnderlayVolume& v) const;
+};
+
+// The underlay a render draws: the file (read guarded, io::readUnderlay) or
+// the field's scalar on its grid, NaN where no tensor was kept. Call before
+// the field's samples are released. Throws io::InputError naming the file.
+render::UnderlayVolume loadUnderlay(const SliceFlags& f, const io::TensorField& field);
+
+// Adds the planes as context items of `r` (nothing at all when f.any() is
+// false). `maxAbsEigenvalue`: the glyphs', for the depth offset. Throws
+// io::InputError for a plane outside the volume, naming the underlay.
+void addSlicePlanes(render::GlyphRenderer& r, const gl::Api& gl, const gl::ShaderLibrary& lib, const SliceFlags& f,
+                    render::UnderlayVolume volume, double maxAbsEigenvalue);
+
+}  // namespace tg::app

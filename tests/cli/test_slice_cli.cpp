@@ -1,0 +1,52 @@
+// --underlay and --plane through the real binary: the bad-input contract and
+// an underlay file on its own grid.
+#include <cmath>
+#include <fstream>
+
+#include "cli/cli_run.h"
+
+namespace tg::test {
+namespace {
+
+// A 4x3x2 float NRRD, with or without a placement, one voxel NaN.
+std::string writeUnderlay(const std::filesystem::path& dir, const std::string& name, bool placed) {
+  const auto path = dir / name;
+  std::ofstream out(path, std::ios::binary);
+  out << "NRRD0004\ntype: float\ndimension: 3\nsizes: 4 3 2\nencoding: raw\nendian: little\n";
+  if (placed) out << "space: RAS\nspace directions: (0.5,0,0) (0,0.5,0) (0,0,1)\nspace origin: (-1,-1,-1)\n";
+  else out << "spacings: 1 1 1\n";
+  out << "\n";
+  for (int k = 0; k < 24; ++k) {
+    const float v = k == 5 ? NAN : float(k);
+    out.write(reinterpret_cast<const char*>(&v), sizeof v);
+  }
+  return path.string();
+}
+
+TEST(SliceCli, RendersAnUnderlayFileAndRefusesBadOnesInOneLine) {
+  const auto dir = cliDir("slice");
+  const auto out = dir / "out.png";
+  const std::string good = writeUnderlay(dir, "under.nrrd", true);
+  const CmdResult ok = runBinary("render -o " + out.string() + " --size 64 48 --underlay " + good + " --plane z:1", dir);
+  EXPECT_EQ(ok.code, 0) << ok.err;
+  EXPECT_TRUE(std::filesystem::exists(out));
+  expectFailsCleanly("render -o " + out.string() + " --underlay " + (dir / "missing.nrrd").string(),
+                     "missing.nrrd: no such file", out, dir, 1);
+  expectFailsCleanly("render -o " + out.string() + " --underlay " + writeUnderlay(dir, "unplaced.nrrd", false),
+                     "unplaced.nrrd: the file does not say where its voxels lie", out, dir, 1);
+  expectFailsCleanly("render -o " + out.string() + " --underlay " + good + " --plane z:2",
+                     "plane z:2 is outside the underlay's grid (0..1)", out, dir, 1);
+  expectFailsCleanly("render -o " + out.string() + " --underlay fa --plane q:1", "--plane", out, dir, 1);
+  expectFailsCleanly("render -o " + out.string() + " --underlay-window 0 1", "needs --underlay or --plane", out, dir, 1);
+  expectFailsCleanly("render -o " + out.string() + " --underlay fa --underlay-window 1 0", "LO must be below HI", out,
+                     dir, 1);
+  EXPECT_EQ(runBinary("render -o " + out.string() + " --underlay fa --underlay-window 1 0", dir).code, 2);
+  EXPECT_EQ(runBinary("render -o " + out.string() + " --underlay " + (dir / "missing.nrrd").string(), dir).code, 1);
+  // A point set has no grid for its own FA.
+  const auto points = dir / "points.vtk";
+  ASSERT_EQ(runBinary("synth random -o " + points.string() + " --n 10", dir).code, 0);
+  expectFailsCleanly("render " + points.string() + " -o " + out.string() + " --underlay fa", "point set", out, dir, 1);
+}
+
+}  // namespace
+}  // namespace tg::test
