@@ -16,6 +16,8 @@
 #include "app/look_flags.h"
 #include "app/names.h"
 #include "app/output_check.h"
+#include "app/pick_flags.h"
+#include "app/pick_json.h"
 #include "app/scene.h"
 #include "app/shadow_flags.h"
 #include "app/slice_flags.h"
@@ -37,6 +39,7 @@ struct RenderOptions {
   ShadowFlags shadow;
   SliceFlags slices;
   LookFlags look;
+  PickFlags pick;
   int width = 1024, height = 768;
   double gamma = 3.0;
   std::optional<double> faMin, fov, ortho;
@@ -100,6 +103,7 @@ RenderOptions parse(int argc, const char** argv) {
   o.shadow.addTo(ap);
   o.slices.addTo(ap);
   o.look.addTo(ap);
+  o.pick.addTo(ap);
   ap.arg("--repeat N").help("render N more frames and report the median frame time").action([&](auto&, Args a) {
     o.repeat = parseIntIn("--repeat", a[1], 0, 10000);
   });
@@ -112,6 +116,7 @@ RenderOptions parse(int argc, const char** argv) {
 void validate(const RenderOptions& o) {
   if (o.output.empty()) throw UsageError("-o OUT is required");
   checkFrameSize("--size", o.width, o.height);
+  o.pick.validate(o.width, o.height);
   if (!glyphKindNamed(o.glyph))
     throw UsageError("--glyph: unknown kind \"" + o.glyph + "\"; choose " + kGlyphKindNames);
   if (!(o.gamma >= 0.0 && o.gamma <= 1e4)) throw UsageError("--gamma must be within 0..10000");
@@ -180,6 +185,9 @@ int cmdRender(int argc, const char** argv) {
   if (o.slices.any()) underlay = loadUnderlay(o.slices, scene.field);
   // Each stage frees what the next no longer needs, so that peak memory holds
   // at most two copies of the glyphs (here the records and the GL buffer).
+  // --pick keeps the samples instead (app/pick.h): 40 bytes a tensor.
+  std::optional<PickTable> pickTable;
+  if (!o.pick.pixels.empty()) pickTable.emplace(scene.field, o.field.glyph);
   scene.field.releaseSamples();
   render::FrameParams params;
   const tensor::ResolvedScale sized =
@@ -254,7 +262,12 @@ int cmdRender(int argc, const char** argv) {
   const std::uint64_t drawn = renderer.drawnGlyphs();
   const render::FrameImage img = renderer.readback(
       cam, target, io::writesGeometryChannels(o.output) ? render::Channels::All : render::Channels::Color);
+  std::vector<std::string> picks;
+  for (const PixelIJ& px : o.pick.pixels)
+    picks.push_back(pickJson(pickPixel(ctx->api(), renderer, cam, target, *pickTable, px)));
   io::writeImage(img, o.output);
+  // After the image: a failed write prints no picks.
+  for (const std::string& line : picks) std::printf("%s\n", line.c_str());
   if (o.verbose || o.repeat > 0) {
     std::sort(times.begin(), times.end());
     std::fprintf(stderr,

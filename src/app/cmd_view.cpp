@@ -25,6 +25,8 @@
 #include "app/shadow_flags.h"
 #include "app/names.h"
 #include "app/output_check.h"
+#include "app/pick.h"
+#include "app/pick_json.h"
 #include "app/scene.h"
 #include "app/view_panel.h"
 #include "app/view_script.h"
@@ -119,6 +121,11 @@ int cmdView(int argc, const char** argv) {
   std::vector<NamedPath> scriptShots;
   for (const ScriptStep& s : script)
     if (s.verb == "screenshot") scriptShots.push_back({o.script + ":" + std::to_string(s.line) + ": screenshot", s.args[0]});
+  for (const ScriptStep& s : script)
+    if (s.verb == "pick" && (parseIntIn("pick", s.args[0], 0, kMaxFrameSide) >= o.width ||
+                             parseIntIn("pick", s.args[1], 0, kMaxFrameSide) >= o.height))
+      throw io::InputError(o.script + ":" + std::to_string(s.line) + ": pick: the pixel is outside the " +
+                           std::to_string(o.width) + " x " + std::to_string(o.height) + " window");
   refuseOutputsOverInputs(scriptShots,
                           {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath}, {"--script", o.script}});
   Scene scene = loadScene(o.input, o.field.read);
@@ -126,6 +133,8 @@ int cmdView(int argc, const char** argv) {
   tensor::GlyphSet glyphs =
       tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids, 0, o.field.glyph);
   checkDrawable(glyphs, scene.field.path);
+  // Clicks pick at any time: the samples stay (app/pick.h), 40 bytes a tensor.
+  const PickTable pickTable(scene.field, o.field.glyph);
   scene.field.releaseSamples();
 
   ViewState v{render::FrameParams{}, OrbitCamera(render::CameraDesc{}), 1.0, 1.0, o.field.scaleParams(),
@@ -182,12 +191,16 @@ int cmdView(int argc, const char** argv) {
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     std::optional<std::string> shot;
+    std::optional<PixelIJ> scriptPick;
     if (!o.script.empty()) {
       if (framesLeft > 0) {
         --framesLeft;
       } else if (step < script.size()) {
         const ScriptStep& s = script[step++];
         if (s.verb == "screenshot") shot = s.args[0];
+        else if (s.verb == "pick")
+          scriptPick = PixelIJ{parseIntIn("pick", s.args[0], 0, kMaxFrameSide - 1),
+                               parseIntIn("pick", s.args[1], 0, kMaxFrameSide - 1)};
         else if (s.verb == "frames") framesLeft = parseIntIn("frames", s.args[0], 1, 100000) - 1;
         else applyStep(s, v);
       } else {
@@ -223,6 +236,17 @@ int cmdView(int argc, const char** argv) {
       status.aoRadiusWC = renderer.aoRadiusWC(p);
       status.fps = ImGui::GetIO().Framerate;
       if (shot) saveScreenshot(renderer, cam, *target, *shot);
+      if (act.pick && act.pick->i < w && act.pick->j < h)
+        status.picked = describePick(pickPixel(api, renderer, cam, *target, pickTable, *act.pick));
+      if (scriptPick) {
+        if (scriptPick->i >= w || scriptPick->j >= h)
+          throw io::InputError(o.script + ": pick: pixel (" + std::to_string(scriptPick->i) + ", " +
+                               std::to_string(scriptPick->j) + ") is outside the " + std::to_string(w) + " x " +
+                               std::to_string(h) + " framebuffer");
+        const Pick picked = pickPixel(api, renderer, cam, *target, pickTable, *scriptPick);
+        std::printf("%s\n", pickJson(picked).c_str());
+        status.picked = describePick(picked);
+      }
       api.BlitNamedFramebuffer(target->colorFramebuffer(), 0, 0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT,
                                GL_NEAREST);
       api.BindFramebuffer(GL_FRAMEBUFFER, 0);

@@ -145,6 +145,14 @@ void navigate(ViewState& v, PanelActions& act) {
     else if (io.MouseDown[0]) v.camera.orbit(0.3 * io.MouseDelta.x, 0.3 * io.MouseDelta.y);
     if (io.MouseWheel != 0.0f) v.camera.zoom(std::pow(1.1, double(io.MouseWheel)));
   }
+  // A left click that did not drag (an orbit of nothing) picks; one that
+  // began on the panel belongs to the panel.
+  const float slop = io.MouseDragThreshold;
+  if (io.MouseReleased[0] && !io.MouseDownOwned[0] && !io.KeyShift && io.MouseDragMaxDistanceSqr[0] < slop * slop) {
+    const int i = int(std::floor(io.MousePos.x * io.DisplayFramebufferScale.x));
+    const int j = int(std::floor(io.MousePos.y * io.DisplayFramebufferScale.y));
+    if (i >= 0 && j >= 0) act.pick = PixelIJ{i, j};
+  }
   if (!io.WantCaptureKeyboard) {
     if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) v.camera.reset();
     if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) act.screenshot = true;
@@ -171,6 +179,8 @@ PanelActions drawPanel(ViewState& v, const PanelStatus& s, const tensor::GlyphSe
     ImGui::Text("Newton: mean %.2f, max %u over %llu pixels", s.newton.mean, s.newton.max,
                 static_cast<unsigned long long>(s.newton.pixels));
   ImGui::Text("last change: %.1f us CPU", s.lastChangeUs);
+  if (ImGui::CollapsingHeader("picked (click a glyph)", ImGuiTreeNodeFlags_DefaultOpen))
+    ImGui::TextUnformatted(s.picked ? s.picked->c_str() : "nothing yet");
   ImGui::End();
   navigate(v, act);
   return act;

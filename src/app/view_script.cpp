@@ -9,6 +9,7 @@
 #include "app/cli_common.h"
 #include "app/legend_flags.h"
 #include "app/effect_flags.h"
+#include "app/frame_size.h"
 #include "app/names.h"
 #include "io/image_writer.h"
 #include "io/tensor_field.h"
@@ -23,7 +24,7 @@ const std::map<std::string, int, std::less<>> kArity = {
     {"epsilon", 1}, {"stats", 1}, {"frames", 1},     {"screenshot", 1}, {"magnitude", -2}, {"clamp", 1},
     {"legend", 1},  {"legend-corner", 1}, {"units", 1}, {"length-units", 1},
     {"ao", 1},      {"ao-radius", 1}, {"ao-strength", 1}, {"outlines", 1}, {"outline-width", 1},
-    {"shadows", 1}, {"shadow", 2}};
+    {"shadows", 1}, {"shadow", 2}, {"pick", 2}};
 
 double number(const ScriptStep& s, std::size_t k) { return parseDouble(s.verb, s.args[k]); }
 
@@ -78,6 +79,7 @@ void check(const ScriptStep& s) {
     throw UsageError("epsilon: must be within 1e-9..0.5");
   if (v == "stats" && s.args[0] != "on" && s.args[0] != "off") throw UsageError("stats: on or off");
   if (v == "frames") parseIntIn(v, s.args[0], 1, 100000);
+  if (v == "pick") parseIntIn(v, s.args[0], 0, kMaxFrameSide - 1), parseIntIn(v, s.args[1], 0, kMaxFrameSide - 1);
   // As render's -o: a format that cannot be written is known before the window opens.
   if (v == "screenshot" && !io::canWriteImage(s.args[0]))
     throw UsageError("screenshot: no image format for \"" + s.args[0] + "\"");

@@ -33,6 +33,8 @@
 //   shadow penumbra|strength|bias|map-size V   (render's --shadow-* flags and ranges)
 //   frames N               render N frames unchanged (for timing)
 //   screenshot FILE        save the rendered view (without the panel)
+//   pick I J               print what pixel (I, J) shows as one line of JSON on
+//                          stdout, as render --pick (column I, row J from the top)
 #include <string>
 #include <vector>
 

@@ -1,0 +1,28 @@
+#include "app/pick_flags.h"
+
+#include <string>
+
+#include "app/cli_values.h"
+#include "app/frame_size.h"
+
+namespace tg::app {
+
+void PickFlags::addTo(OIIO::ArgParse& ap) {
+  using Args = OIIO::cspan<const char*>;
+  ap.arg("--pick I J")
+      .help("print what pixel (I, J) shows as one line of JSON on stdout: column I, row J from the top "
+            "(repeatable; README, \"Picking\")")
+      .action([this](auto&, Args a) {
+        pixels.push_back(
+            {parseIntIn("--pick", a[1], 0, kMaxFrameSide - 1), parseIntIn("--pick", a[2], 0, kMaxFrameSide - 1)});
+      });
+}
+
+void PickFlags::validate(int width, int height) const {
+  for (const PixelIJ& p : pixels)
+    if (p.i >= width || p.j >= height)
+      throw UsageError("--pick: pixel (" + std::to_string(p.i) + ", " + std::to_string(p.j) + ") is outside the " +
+                       std::to_string(width) + " x " + std::to_string(height) + " image");
+}
+
+}  // namespace tg::app
