@@ -98,6 +98,12 @@ std::uint64_t checkLegacyCounts(const std::string& path, std::uint64_t fileSize)
   for (int lineNo = 0; std::getline(in, line); ++lineNo) {
     if (lineNo == 0) newCellFormat = line.find("Version 5") != std::string::npos;
     if (lineNo == 2) binary = line.rfind("BINARY", 0) == 0;
+    // A binary file's arrays are read as lines too, and their bytes can spell
+    // a keyword and numbers; header lines are printable text.
+    if (binary && lineNo > 2 && !std::all_of(line.begin(), line.end(), [](unsigned char ch) {
+          return (ch >= 0x20 && ch < 0x7f) || ch == '\t' || ch == '\r';
+        }))
+      continue;
     std::istringstream ls(line);
     std::string key, type;
     ls >> key;
