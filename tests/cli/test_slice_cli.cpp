@@ -48,5 +48,24 @@ TEST(SliceCli, RendersAnUnderlayFileAndRefusesBadOnesInOneLine) {
   expectFailsCleanly("render " + points.string() + " -o " + out.string() + " --underlay fa", "point set", out, dir, 1);
 }
 
+// The viewer takes the same flags; its planes and `plane N` steps are checked
+// before a window opens, so these need no display.
+TEST(SliceCli, ViewRefusesPlanesAndPlaneStepsBeforeOpeningAWindow) {
+  const auto dir = cliDir("slice-view");
+  const auto script = dir / "s.txt";
+  const auto none = dir / "none.png";
+  std::ofstream(script) << "zoom 2\nplane 2 off\n";
+  expectFailsCleanly("view --plane z:5 --script " + script.string(),
+                     "s.txt:2: plane 2: the view has 1 slice plane(s)", none, dir, 1);
+  std::ofstream(script) << "plane 1 index 20\n";
+  expectFailsCleanly("view --plane z:5 --script " + script.string(), "s.txt:1: plane 1: index 20 is outside 0..19 along z",
+                     none, dir, 1);
+  std::ofstream(script) << "plane 1 off\n";
+  expectFailsCleanly("view --script " + script.string(), "s.txt:1: plane 1: the view has no slice planes", none, dir, 1);
+  expectFailsCleanly("view --underlay fa --plane z:20", "plane z:20 is outside the underlay's grid (0..19)", none, dir, 1);
+  EXPECT_EQ(runBinary("view --underlay-window 1 0 --underlay fa", dir).code, 2);
+  std::filesystem::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace tg::test

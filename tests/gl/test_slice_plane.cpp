@@ -155,6 +155,46 @@ TEST_F(SlicePlanes, GlyphsOnThePlaneAreWholeAndThoseBehindItHidden) {
   EXPECT_EQ(countId(drawWith(behind, cam, p, &v, &mid), 0), 0u);
 }
 
+// The viewer moves a plane by setSpec, which computes a new quad on the CPU
+// and touches no GL object: the moved plane draws exactly as one made at its
+// new index, the renderer holds the same GPU memory, an index outside the
+// grid leaves it where it was, and a hidden plane draws nothing.
+TEST_F(SlicePlanes, AMovedPlaneDrawsAsOneMadeThereAndAHiddenOneNotAtAll) {
+  const tensor::GlyphSet none = sphereAt({100, 100, 100}, 0.1f);
+  const auto cam = topCamera(96, 72, render::Projection::Perspective);
+  const render::UnderlayVolume v = linearVolume(9, 1.0, glm::dmat4(1.0));
+  render::PlaneSpec from, to, outside;
+  from.axis = to.axis = outside.axis = 2;
+  from.index = 1;
+  to.index = 6;
+  outside.index = 9;
+  render::FrameParams p;
+  const auto want = drawWith(none, cam, p, &v, &to);
+  ctx_->makeCurrent();
+  render::GlyphRenderer r(ctx_->api(), *lib_);
+  render::GBuffer target(ctx_->api(), cam.width, cam.height);
+  r.upload(none);
+  auto shared = std::make_shared<const render::SliceVolume>(ctx_->api(), *lib_, v);
+  auto& plane = static_cast<render::SlicePlane&>(
+      r.addContext(std::make_unique<render::SlicePlane>(shared, from, render::SliceParams{}, none.maxAbsEigenvalue)));
+  r.render(cam, p, target);
+  const auto before = r.readback(cam, target);
+  const std::size_t bytes = r.gpuBytes();
+  plane.setSpec(to);
+  r.render(cam, p, target);
+  const auto moved = r.readback(cam, target);
+  EXPECT_GT(countId(moved, render::kContextIdBase), 2000u);
+  EXPECT_EQ(moved.rgba, want.rgba);
+  EXPECT_EQ(moved.depth, want.depth);
+  EXPECT_NE(moved.depth, before.depth);
+  EXPECT_EQ(r.gpuBytes(), bytes);
+  EXPECT_THROW(plane.setSpec(outside), std::invalid_argument);
+  EXPECT_EQ(plane.spec(), to);
+  plane.setVisible(false);
+  r.render(cam, p, target);
+  EXPECT_EQ(countId(r.readback(cam, target), render::kContextIdBase), 0u);
+}
+
 // Depth mixing: an elongated glyph half through an oblique plane, against
 // the reference's ellipsoid and plane (coverage, ids, depth, normals), at
 // true depth and with the offset. Tolerances as the ellipsoid tests': the
