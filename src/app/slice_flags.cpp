@@ -78,6 +78,18 @@ void SliceFlags::addTo(OIIO::ArgParse& ap) {
         if (!(lo < hi)) throw UsageError("--underlay-window: LO must be below HI");
         params.window = std::pair(lo, hi);
       });
+  ap.arg("--underlay-percentiles LO HI")
+      .help("without --underlay-window: the percentiles (0..100) of the volume's finite values mapped onto the "
+            "colormap's ends (default " + formatNumber(d.percentileLo) + " " + formatNumber(d.percentileHi) + ")")
+      .action([this, param](auto&, Args a) {
+        param("--underlay-percentiles");
+        const double lo = parseDoubleIn("--underlay-percentiles", a[1], 0.0, 100.0);
+        const double hi = parseDoubleIn("--underlay-percentiles", a[2], 0.0, 100.0);
+        if (!(lo < hi)) throw UsageError("--underlay-percentiles: LO must be below HI");
+        params.percentileLo = lo;
+        params.percentileHi = hi;
+        percentilesGiven = true;
+      });
   ap.arg("--underlay-nearest")
       .help("sample the nearest voxel (for masks and labels) instead of trilinear interpolation (the default)")
       .action([this, param](auto&, Args) {
@@ -96,6 +108,8 @@ void SliceFlags::addTo(OIIO::ArgParse& ap) {
 void SliceFlags::validate() const {
   if (!firstParameterFlag.empty() && !any())
     throw UsageError(firstParameterFlag + " needs --underlay or --plane");
+  if (percentilesGiven && params.window)
+    throw UsageError("--underlay-percentiles and --underlay-window exclude each other");
 }
 
 bool SliceFlags::fromField() const {

@@ -22,6 +22,7 @@ struct SliceFlags {
   std::vector<render::PlaneSpec> planes;
   render::SliceParams params;
   std::string firstParameterFlag;  // an --underlay-* flag given, for validate()
+  bool percentilesGiven = false;
 
   void addTo(OIIO::ArgParse& ap);
   // UsageError for a parameter flag without a plane or an underlay.
