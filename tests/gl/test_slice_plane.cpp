@@ -195,6 +195,32 @@ TEST_F(SlicePlanes, AMovedPlaneDrawsAsOneMadeThereAndAHiddenOneNotAtAll) {
   EXPECT_EQ(countId(r.readback(cam, target), render::kContextIdBase), 0u);
 }
 
+// A masked field's own FA keeps only a thin structure; every other voxel is
+// a hole. Linear filtering next to a hole takes the nearest voxel, so a row
+// one voxel thick is drawn (it used to vanish: a NaN among the 8 texels made
+// every sample NaN) exactly where nearest sampling draws it, and the CPU
+// sampler, which picking reads, agrees.
+TEST_F(SlicePlanes, AOneVoxelRowAmongHolesIsDrawnWithLinearFiltering) {
+  const tensor::GlyphSet none = sphereAt({100, 100, 100}, 0.1f);
+  const auto cam = topCamera(96, 72, render::Projection::Orthographic);
+  render::UnderlayVolume v = linearVolume(9, 1.0, glm::dmat4(1.0));
+  for (std::size_t k = 0; k < v.values.size(); ++k)
+    if (k / 9 != 4 + 9 * 4) v.values[k] = NAN;  // keeps the row j = 4, k = 4 (y = 0, z = 0)
+  render::PlaneSpec mid;
+  mid.axis = 2;
+  mid.index = 4;
+  render::SliceParams nearest;
+  nearest.linear = false;
+  render::FrameParams p;
+  const auto linear = drawWith(none, cam, p, &v, &mid), near = drawWith(none, cam, p, &v, &mid, nearest);
+  EXPECT_GT(countId(linear, render::kContextIdBase), 50u);
+  EXPECT_EQ(linear.id, near.id);
+  const auto at = v.sample({1.2, 0.3, 0.0}, true);
+  ASSERT_TRUE(at);
+  EXPECT_EQ(*at, *v.sample({1.2, 0.3, 0.0}, false));
+  EXPECT_FALSE(v.sample({1.2, 0.7, 0.0}, true));
+}
+
 // Depth mixing: an elongated glyph half through an oblique plane, against
 // the reference's ellipsoid and plane (coverage, ids, depth, normals), at
 // true depth and with the offset. Tolerances as the ellipsoid tests': the
