@@ -24,6 +24,13 @@ void main() {
   vec3 tc = (uTexFromWC * vec4(vPointWC, 1.0)).xyz;
   if (any(lessThan(tc, vec3(0.0))) || any(greaterThan(tc, vec3(1.0)))) discard;
   float v = texture(uVolume, tc).r;
+  // Filtering gives NaN wherever a hole is among the 8 voxels, even at zero
+  // weight, which would erase a mask one voxel thick: take the nearest voxel
+  // there (UnderlayVolume::sample does the same).
+  if (isnan(v) || isinf(v)) {
+    ivec3 n = textureSize(uVolume, 0);
+    v = texelFetch(uVolume, clamp(ivec3(floor(tc * vec3(n))), ivec3(0), n - 1), 0).r;
+  }
   if (isnan(v) || isinf(v)) discard;  // a hole in the volume
   vec3 originVC, dirVC;
   rayThroughFragment(gl_FragCoord.xy, originVC, dirVC);

@@ -23,6 +23,7 @@
 #include "app/legend_flags.h"
 #include "app/look_flags.h"
 #include "app/shadow_flags.h"
+#include "app/slice_flags.h"
 #include "app/names.h"
 #include "app/output_check.h"
 #include "app/pick.h"
@@ -34,6 +35,7 @@
 #include "gl/shader_library.h"
 #include "io/image_writer.h"
 #include "render/legend_pass.h"
+#include "render/slice_plane.h"
 
 namespace tg::app {
 namespace {
@@ -44,6 +46,7 @@ struct ViewOptions {
   LegendFlags legend;
   ShadowFlags shadow;
   EffectFlags effects;
+  SliceFlags slices;
   LookFlags look;
   int width = 1280, height = 800;
   double gamma = 3.0;
@@ -81,6 +84,7 @@ ViewOptions parse(int argc, const char** argv) {
   o.legend.addTo(ap);
   o.shadow.addTo(ap);
   o.effects.addTo(ap);
+  o.slices.addTo(ap);
   o.look.addTo(ap);
   parseArgs(ap, argc, argv);
   return o;
@@ -95,6 +99,7 @@ void validate(const ViewOptions& o) {
   o.legend.validate();
   o.shadow.validate();
   o.effects.validate();
+  o.slices.validate();
   o.look.validate(o.shadow.params.enabled, o.effects.ao.enabled, o.effects.outline.enabled, o.legend.params.enabled);
 }
 
@@ -127,12 +132,17 @@ int cmdView(int argc, const char** argv) {
       throw io::InputError(o.script + ":" + std::to_string(s.line) + ": pick: the pixel is outside the " +
                            std::to_string(o.width) + " x " + std::to_string(o.height) + " window");
   refuseOutputsOverInputs(scriptShots,
-                          {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath}, {"--script", o.script}});
+                          {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath}, {"--script", o.script},
+                           {"--underlay", o.slices.fromField() ? "" : o.slices.underlay}});
   Scene scene = loadScene(o.input, o.field.read);
   reportLoad(scene.field, "view");
   tensor::GlyphSet glyphs =
       tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids, 0, o.field.glyph);
   checkDrawable(glyphs, scene.field.path);
+  // The field's own scalar underlay reads the samples, so it comes before
+  // the pick table takes them.
+  std::optional<render::UnderlayVolume> underlay;
+  if (o.slices.any()) underlay = loadUnderlay(o.slices, scene.field, "view");
   // Clicks pick at any time: the samples stay (app/pick.h), 40 bytes a tensor.
   const PickTable pickTable(scene.field, o.field.glyph);
   scene.field.releaseSamples();
@@ -150,6 +160,15 @@ int cmdView(int argc, const char** argv) {
   p.ao = o.effects.ao;
   p.outline = o.effects.outline;
   if (scene.preferredLook) o.look.apply(*scene.preferredLook, p, o.height);
+  // The planes and the script's plane steps are checked before the window opens.
+  std::optional<std::pair<glm::dvec3, glm::dvec3>> underlayBox;
+  if (underlay) {
+    checkPlanes(o.slices, *underlay, "view");
+    for (const render::PlaneSpec& spec : o.slices.planesFor(*underlay))
+      v.planes.push_back({spec, true, spec.axis >= 0 ? underlay->dims[spec.axis] : 0});
+    underlayBox = underlay->boundsWC();
+  }
+  checkPlaneSteps(script, v.planes, o.script);
   {
     // As render frames it: the sample positions (tensor::framingBox).
     const double typical = tensor::resolveScale(v.sizing, v.magnitudes).typicalRadiusWC;
@@ -165,6 +184,10 @@ int cmdView(int argc, const char** argv) {
   const gl::ShaderLibrary lib;
   render::GlyphRenderer renderer(api, lib, render::makeLegendPass);
   renderer.upload(glyphs);
+  // Moving or hiding a plane later changes its quad only: the volume stays on the GPU.
+  std::vector<render::SlicePlane*> planes;
+  if (underlay) planes = addSlicePlanes(renderer, api, lib, o.slices, std::move(*underlay), glyphs.maxAbsEigenvalue);
+  std::vector<PlaneView> appliedPlanes = v.planes;
   const std::size_t glyphCount = glyphs.glyphs.size();
   glyphs.glyphs = {};  // the box and counts stay for the camera
 
@@ -225,7 +248,22 @@ int cmdView(int argc, const char** argv) {
         status.lastChangeUs = us;
         applied = p;
       }
-      const auto [lo, hi] = tensor::glyphBoxWC(glyphs, p.scale, p.sizing);
+      for (std::size_t k = 0; k < planes.size(); ++k) {
+        if (v.planes[k] == appliedPlanes[k]) continue;
+        const auto t = Clock::now();
+        planes[k]->setVisible(v.planes[k].visible);
+        planes[k]->setSpec(v.planes[k].spec);
+        const double us = 1000.0 * msSince(t);
+        changeUs.push_back(us);
+        status.lastChangeUs = us;
+        appliedPlanes[k] = v.planes[k];
+      }
+      auto [lo, hi] = tensor::glyphBoxWC(glyphs, p.scale, p.sizing);
+      if (underlayBox) {
+        // The camera's depth range holds the planes too, as render's.
+        lo = glm::min(lo, underlayBox->first);
+        hi = glm::max(hi, underlayBox->second);
+      }
       const render::Camera cam = render::makeCamera(v.camera.desc(), w, h, lo, hi);
       renderer.render(cam, p, *target);
       // Never waits for the GPU: the status trails the frame by one or two.

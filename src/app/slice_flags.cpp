@@ -78,6 +78,18 @@ void SliceFlags::addTo(OIIO::ArgParse& ap) {
         if (!(lo < hi)) throw UsageError("--underlay-window: LO must be below HI");
         params.window = std::pair(lo, hi);
       });
+  ap.arg("--underlay-percentiles LO HI")
+      .help("without --underlay-window: the percentiles (0..100) of the volume's finite values mapped onto the "
+            "colormap's ends (default " + formatNumber(d.percentileLo) + " " + formatNumber(d.percentileHi) + ")")
+      .action([this, param](auto&, Args a) {
+        param("--underlay-percentiles");
+        const double lo = parseDoubleIn("--underlay-percentiles", a[1], 0.0, 100.0);
+        const double hi = parseDoubleIn("--underlay-percentiles", a[2], 0.0, 100.0);
+        if (!(lo < hi)) throw UsageError("--underlay-percentiles: LO must be below HI");
+        params.percentileLo = lo;
+        params.percentileHi = hi;
+        percentilesGiven = true;
+      });
   ap.arg("--underlay-nearest")
       .help("sample the nearest voxel (for masks and labels) instead of trilinear interpolation (the default)")
       .action([this, param](auto&, Args) {
@@ -96,6 +108,8 @@ void SliceFlags::addTo(OIIO::ArgParse& ap) {
 void SliceFlags::validate() const {
   if (!firstParameterFlag.empty() && !any())
     throw UsageError(firstParameterFlag + " needs --underlay or --plane");
+  if (percentilesGiven && params.window)
+    throw UsageError("--underlay-percentiles and --underlay-window exclude each other");
 }
 
 bool SliceFlags::fromField() const {
@@ -113,7 +127,7 @@ std::vector<render::PlaneSpec> SliceFlags::planesFor(const render::UnderlayVolum
   return {p};
 }
 
-render::UnderlayVolume loadUnderlay(const SliceFlags& f, const io::TensorField& field) {
+render::UnderlayVolume loadUnderlay(const SliceFlags& f, const io::TensorField& field, const char* command) {
   render::UnderlayVolume v;
   if (!f.fromField()) {
     io::ScalarVolume s = io::readUnderlay(f.underlay);
@@ -129,7 +143,7 @@ render::UnderlayVolume loadUnderlay(const SliceFlags& f, const io::TensorField& 
   const std::string scalar = f.underlay.empty() ? "fa" : f.underlay;
   const std::string who = field.path.empty() ? "the built-in scene" : field.path;
   if (!field.grid)
-    throw io::InputError("render: " + who + ": --underlay " + scalar +
+    throw io::InputError(std::string(command) + ": " + who + ": --underlay " + scalar +
                          " needs a field on a grid; this is a point set (give --underlay FILE)");
   const io::GridInfo& g = *field.grid;
   v.name = scalar;
@@ -149,18 +163,32 @@ render::UnderlayVolume loadUnderlay(const SliceFlags& f, const io::TensorField& 
   return v;
 }
 
-void addSlicePlanes(render::GlyphRenderer& r, const gl::Api& gl, const gl::ShaderLibrary& lib, const SliceFlags& f,
-                    render::UnderlayVolume volume, double maxAbsEigenvalue) {
-  if (!f.any()) return;
+void checkPlanes(const SliceFlags& f, const render::UnderlayVolume& volume, const char* command) {
+  try {
+    for (const render::PlaneSpec& p : f.planesFor(volume)) render::planeQuad(volume, p);
+  } catch (const std::invalid_argument& e) {
+    throw io::InputError(std::string(command) + ": " + volume.name + ": " + e.what());
+  }
+}
+
+std::vector<render::SlicePlane*> addSlicePlanes(render::GlyphRenderer& r, const gl::Api& gl,
+                                                const gl::ShaderLibrary& lib, const SliceFlags& f,
+                                                render::UnderlayVolume volume, double maxAbsEigenvalue) {
+  std::vector<render::SlicePlane*> added;
+  if (!f.any()) return added;
   const std::string name = volume.name;
   const std::vector<render::PlaneSpec> planes = f.planesFor(volume);
   try {
     auto shared = std::make_shared<const render::SliceVolume>(gl, lib, std::move(volume));
-    for (const render::PlaneSpec& p : planes)
-      r.addContext(std::make_unique<render::SlicePlane>(shared, p, f.params, maxAbsEigenvalue));
+    for (const render::PlaneSpec& p : planes) {
+      auto plane = std::make_unique<render::SlicePlane>(shared, p, f.params, maxAbsEigenvalue);
+      added.push_back(plane.get());
+      r.addContext(std::move(plane));
+    }
   } catch (const std::invalid_argument& e) {
     throw io::InputError("render: " + name + ": " + e.what());
   }
+  return added;
 }
 
 }  // namespace tg::app

@@ -11,6 +11,10 @@
 #include "render/renderer.h"
 #include "render/underlay.h"
 
+namespace tg::render {
+class SlicePlane;
+}
+
 namespace tg::app {
 
 struct SliceFlags {
@@ -18,6 +22,7 @@ struct SliceFlags {
   std::vector<render::PlaneSpec> planes;
   render::SliceParams params;
   std::string firstParameterFlag;  // an --underlay-* flag given, for validate()
+  bool percentilesGiven = false;
 
   void addTo(OIIO::ArgParse& ap);
   // UsageError for a parameter flag without a plane or an underlay.
@@ -31,13 +36,19 @@ struct SliceFlags {
 
 // The underlay a render draws: the file (read guarded, io::readUnderlay) or
 // the field's scalar on its grid, NaN where no tensor was kept. Call before
-// the field's samples are released. Throws io::InputError naming the file.
-render::UnderlayVolume loadUnderlay(const SliceFlags& f, const io::TensorField& field);
+// the field's samples are released. Throws io::InputError naming the file;
+// `command` begins the message where the field has no grid.
+render::UnderlayVolume loadUnderlay(const SliceFlags& f, const io::TensorField& field, const char* command = "render");
+
+// GL-free: throws io::InputError, as addSlicePlanes would, for a plane
+// outside the volume, so the viewer can refuse it before its window opens.
+void checkPlanes(const SliceFlags& f, const render::UnderlayVolume& volume, const char* command);
 
 // Adds the planes as context items of `r` (nothing at all when f.any() is
 // false). `maxAbsEigenvalue`: the glyphs', for the depth offset. Throws
 // io::InputError for a plane outside the volume, naming the underlay.
-void addSlicePlanes(render::GlyphRenderer& r, const gl::Api& gl, const gl::ShaderLibrary& lib, const SliceFlags& f,
+// Returns the planes, in order, for the viewer to toggle and move.
+std::vector<render::SlicePlane*> addSlicePlanes(render::GlyphRenderer& r, const gl::Api& gl, const gl::ShaderLibrary& lib, const SliceFlags& f,
                     render::UnderlayVolume volume, double maxAbsEigenvalue);
 
 }  // namespace tg::app

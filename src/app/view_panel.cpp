@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace tg::app {
 namespace {
@@ -135,6 +136,24 @@ void controls(ViewState& v, const tensor::GlyphSet& meta) {
   }
 }
 
+// Each plane on or off, and an index plane's slice: the viewer moves its quad
+// (no upload). Numbered as the script's `plane N`.
+void slicePlanes(ViewState& v) {
+  if (v.planes.empty() || !ImGui::CollapsingHeader("slice planes", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  for (std::size_t k = 0; k < v.planes.size(); ++k) {
+    PlaneView& plane = v.planes[k];
+    ImGui::PushID(int(k));
+    // "###": one widget id while the label follows the index.
+    ImGui::Checkbox((std::to_string(k + 1) + ": " + plane.spec.label() + "###visible").c_str(), &plane.visible);
+    if (plane.slices > 1) {
+      int index = int(plane.spec.index);
+      if (ImGui::SliderInt("index", &index, 0, int(plane.slices - 1)))
+        plane.spec.index = std::clamp<long long>(index, 0, plane.slices - 1);
+    }
+    ImGui::PopID();
+  }
+}
+
 // Mouse and keys reach the view only when the panel does not want them.
 void navigate(ViewState& v, PanelActions& act) {
   const ImGuiIO& io = ImGui::GetIO();
@@ -169,6 +188,7 @@ PanelActions drawPanel(ViewState& v, const PanelStatus& s, const tensor::GlyphSe
   ImGui::Begin("tensorglyph");
   controls(v, meta);
   depthCues(v.params, s);
+  slicePlanes(v);
   if (ImGui::Button("reset view (R)")) v.camera.reset();
   ImGui::SameLine();
   if (ImGui::Button("screenshot (S)")) act.screenshot = true;

@@ -2,6 +2,7 @@
 
 #include <sys/stat.h>
 
+#include <algorithm>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -17,16 +18,33 @@
 namespace tg::app {
 namespace {
 
-// Argument counts; -1 for slab, which takes one or three; -2 for magnitude, one or two.
+// Argument counts; -1 for slab, which takes one or three; -2 for magnitude, one or two;
+// -3 for plane, two or three.
 const std::map<std::string, int, std::less<>> kArity = {
     {"orbit", 2},  {"pan", 2},    {"zoom", 1},       {"reset", 0},   {"glyph", 1},  {"gamma", 1},
     {"fa-min", 1}, {"scale", 1},  {"color", 1},      {"slab", -1},   {"light", 2},  {"iterations", 1},
     {"epsilon", 1}, {"stats", 1}, {"frames", 1},     {"screenshot", 1}, {"magnitude", -2}, {"clamp", 1},
     {"legend", 1},  {"legend-corner", 1}, {"units", 1}, {"length-units", 1},
     {"ao", 1},      {"ao-radius", 1}, {"ao-strength", 1}, {"outlines", 1}, {"outline-width", 1},
-    {"shadows", 1}, {"shadow", 2}, {"pick", 2}};
+    {"shadows", 1}, {"shadow", 2}, {"pick", 2}, {"plane", -3}};
 
 double number(const ScriptStep& s, std::size_t k) { return parseDouble(s.verb, s.args[k]); }
+
+// `plane N on|off` or `plane N index I`: N counts from 1; the plane's own
+// range is checked once the underlay is known (checkPlaneSteps).
+std::size_t planeNumber(const ScriptStep& s) {
+  return std::size_t(parseInt("plane", s.args[0], 1, static_cast<long long>(render::kMaxContextItems)));
+}
+long long planeIndex(const ScriptStep& s) { return parseInt("plane index", s.args[2], 0, 1LL << 31); }
+void checkPlaneSyntax(const ScriptStep& s) {
+  planeNumber(s);
+  if (s.args.size() == 2 && s.args[1] != "on" && s.args[1] != "off")
+    throw UsageError("plane: give N on|off or N index I");
+  if (s.args.size() == 3) {
+    if (s.args[1] != "index") throw UsageError("plane: give N on|off or N index I");
+    planeIndex(s);
+  }
+}
 
 int axisNamed(const std::string& a) { return a == "x" ? 0 : a == "y" ? 1 : a == "z" ? 2 : -1; }
 
@@ -48,7 +66,8 @@ void check(const ScriptStep& s) {
   const std::size_t n = s.args.size();
   const bool countOk = it->second >= 0 ? n == std::size_t(it->second)
                        : it->second == -1 ? (n == 1 || n == 3)
-                                          : (n == 1 || n == 2);
+                       : it->second == -2 ? (n == 1 || n == 2)
+                                          : (n == 2 || n == 3);
   if (!countOk)
     throw UsageError(s.verb + ": wrong number of arguments");
   const std::string& v = s.verb;
@@ -100,6 +119,7 @@ void check(const ScriptStep& s) {
   if (v == "outline-width") parseOutlineWidth(v, s.args[0]);
   if (v == "shadows" && s.args[0] != "on" && s.args[0] != "off") throw UsageError("shadows: on or off");
   if (v == "shadow") shadowValue(s);
+  if (v == "plane") checkPlaneSyntax(s);
 }
 
 }  // namespace
@@ -133,6 +153,25 @@ std::vector<ScriptStep> parseScript(const std::string& path) {
   }
   if (in.bad()) throw io::InputError(path + ": read error");
   return steps;
+}
+
+void checkPlaneSteps(const std::vector<ScriptStep>& steps, const std::vector<PlaneView>& planes,
+                     const std::string& path) {
+  for (const ScriptStep& s : steps) {
+    if (s.verb != "plane") continue;
+    const std::string where = path + ":" + std::to_string(s.line) + ": plane " + s.args[0] + ": ";
+    const std::size_t n = planeNumber(s);
+    if (n > planes.size())
+      throw io::InputError(where + (planes.empty() ? std::string("the view has no slice planes (give --plane or --underlay)")
+                                                   : "the view has " + std::to_string(planes.size()) +
+                                                         " slice plane(s), numbered from 1 in the order of --plane and --plane-at"));
+    const PlaneView& p = planes[n - 1];
+    if (s.args.size() < 3) continue;
+    if (p.slices <= 0) throw io::InputError(where + "an oblique plane (--plane-at) can only be switched on or off");
+    if (planeIndex(s) >= p.slices)
+      throw io::InputError(where + "index " + s.args[2] + " is outside 0.." + std::to_string(p.slices - 1) + " along " +
+                           std::string(1, "xyz"[p.spec.axis]));
+  }
 }
 
 void resize(ViewState& v) {
@@ -173,6 +212,14 @@ void applyStep(const ScriptStep& s, ViewState& v) {
       p.shadow.mapSize = int(value);
       p.shadow.mapDensity = 0.0f;  // fixed, as render's --shadow-map-size
     } else (t == "penumbra" ? p.shadow.penumbra : t == "strength" ? p.shadow.strength : p.shadow.bias) = float(value);
+  }
+  else if (w == "plane") {
+    // checkPlaneSteps has held the plane and index to the view's planes.
+    const std::size_t n = planeNumber(s);
+    if (n > v.planes.size()) return;
+    PlaneView& plane = v.planes[n - 1];
+    if (s.args.size() == 2) plane.visible = s.args[1] == "on";
+    else if (plane.slices > 0) plane.spec.index = std::min(planeIndex(s), plane.slices - 1);
   }
   else if (w == "scale") {
     v.scaleFactor = number(s, 0);

@@ -31,6 +31,8 @@
 //   outline-width W        their width in pixels, 0.25..8
 //   shadows on|off         soft shadows from the key light
 //   shadow penumbra|strength|bias|map-size V   (render's --shadow-* flags and ranges)
+//   plane N on|off         show or hide slice plane N (1: the first --plane or --plane-at)
+//   plane N index I        move index plane N to slice I of its axis (0-based, as --plane)
 //   frames N               render N frames unchanged (for timing)
 //   screenshot FILE        save the rendered view (without the panel)
 //   pick I J               print what pixel (I, J) shows as one line of JSON on
@@ -40,8 +42,18 @@
 
 #include "app/orbit_camera.h"
 #include "render/renderer.h"
+#include "render/underlay.h"
 
 namespace tg::app {
+
+// A slice plane as the panel and `plane N ...` set it; the viewer hands a
+// change to its render::SlicePlane (the quad only: no upload).
+struct PlaneView {
+  render::PlaneSpec spec;
+  bool visible = true;
+  long long slices = 0;  // along spec.axis: the index runs over 0..slices-1 (0: oblique)
+  bool operator==(const PlaneView&) const = default;
+};
 
 struct ViewState {
   render::FrameParams params;
@@ -52,6 +64,7 @@ struct ViewState {
   // mapping or clamp is resolved again without the records (resize()).
   tensor::ScaleParams sizing{};
   tensor::MagnitudeSample magnitudes{};
+  std::vector<PlaneView> planes{};  // in the order of --plane and --plane-at
 };
 
 // Resolves v.sizing over v.magnitudes into baseScale, params.scale and
@@ -67,6 +80,13 @@ struct ScriptStep {
 // Throws io::InputError "PATH:LINE: ..." for an unreadable file, an unknown
 // command, a wrong argument count or a value out of range.
 std::vector<ScriptStep> parseScript(const std::string& path);
+
+// The `plane` steps against the planes the view has, once the underlay is
+// known and before the window opens: throws io::InputError "PATH:LINE: ..."
+// for a plane that does not exist, an index outside its axis or an index for
+// an oblique plane.
+void checkPlaneSteps(const std::vector<ScriptStep>& steps, const std::vector<PlaneView>& planes,
+                     const std::string& path);
 
 // Applies a parsed step to the state. `frames` and `screenshot` change
 // nothing here; the viewer acts on them.

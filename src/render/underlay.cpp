@@ -38,7 +38,7 @@ std::optional<double> UnderlayVolume::sample(const glm::dvec3& pointWC, bool lin
   for (int c = 0; c < 8; ++c) {
     const int i = c & 1 ? hi[0] : lo[0], j = c & 2 ? hi[1] : lo[1], k = c & 4 ? hi[2] : lo[2];
     const double v = at(i, j, k);
-    if (!std::isfinite(v)) return std::nullopt;
+    if (!std::isfinite(v)) return sample(pointWC, false);  // next to a hole: the nearest voxel, as the shader
     sum += v * (c & 1 ? f[0] : 1 - f[0]) * (c & 2 ? f[1] : 1 - f[1]) * (c & 4 ? f[2] : 1 - f[2]);
   }
   return sum;

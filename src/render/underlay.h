@@ -23,7 +23,8 @@ struct UnderlayVolume {
 
   std::size_t voxels() const { return std::size_t(dims[0]) * std::size_t(dims[1]) * std::size_t(dims[2]); }
   // Trilinear (linear) or nearest-voxel value at a world point, as the plane
-  // samples it; none outside the voxel cells or where a sample used is a hole.
+  // samples it; none outside the voxel cells. Linear next to a hole is the
+  // nearest voxel's value (none if that is the hole).
   std::optional<double> sample(const glm::dvec3& pointWC, bool linear) const;
   // The box of the voxel cells (voxel centres +- half a step), in WC.
   std::pair<glm::dvec3, glm::dvec3> boundsWC() const;

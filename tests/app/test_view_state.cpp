@@ -241,3 +241,76 @@ TEST(ViewScript, ShadowCommandsSetTheShadowParamsWithRenderRanges) {
   }
   std::filesystem::remove_all(dir);
 }
+
+TEST(ViewScript, PlaneStepsToggleAndMoveOnlyThePlanesTheViewHas) {
+  const auto dir = std::filesystem::temp_directory_path() / ("tg_view_plane_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto path = (dir / "s.txt").string();
+  std::ofstream(path) << "plane 1 off\nplane 2 index 7\nplane 3 off\nplane 1 on\nplane 2 index 0\n";
+  const auto steps = app::parseScript(path);
+  ASSERT_EQ(steps.size(), 5u);
+  app::ViewState v{{}, app::OrbitCamera(start()), 1.0, 1.0};
+  render::PlaneSpec z, x, oblique;
+  z.axis = 2;
+  z.index = 3;
+  x.axis = 0;
+  x.index = 39;
+  oblique.axis = -1;
+  v.planes = {{z, true, 20}, {x, true, 40}, {oblique, true, 0}};
+  EXPECT_NO_THROW(app::checkPlaneSteps(steps, v.planes, path));
+  app::applyStep(steps[0], v);
+  EXPECT_FALSE(v.planes[0].visible);
+  EXPECT_EQ(v.planes[0].spec, z) << "switching off keeps the slice";
+  app::applyStep(steps[1], v);
+  EXPECT_EQ(v.planes[1].spec.index, 7);
+  EXPECT_EQ(v.planes[1].spec.axis, 0);
+  EXPECT_TRUE(v.planes[1].visible);
+  app::applyStep(steps[2], v);
+  EXPECT_FALSE(v.planes[2].visible);
+  app::applyStep(steps[3], v);
+  EXPECT_TRUE(v.planes[0].visible);
+  app::applyStep(steps[4], v);
+  EXPECT_EQ(v.planes[1].spec.index, 0);
+  EXPECT_EQ(v.planes[0].spec, z) << "a step moves its own plane only";
+
+  // Against the planes given: checked after the underlay is known, before the window opens.
+  const std::pair<const char*, const char*> unfit[] = {
+      {"plane 4 on\n", ":1: plane 4: the view has 3 slice plane(s), numbered from 1"},
+      {"zoom 2\nplane 1 index 20\n", ":2: plane 1: index 20 is outside 0..19 along z"},
+      {"plane 3 index 0\n", ":1: plane 3: an oblique plane (--plane-at) can only be switched on or off"}};
+  for (const auto& [text, message] : unfit) {
+    std::ofstream(path) << text;
+    const auto ok = app::parseScript(path);
+    try {
+      app::checkPlaneSteps(ok, v.planes, path);
+      ADD_FAILURE() << "no error for " << text;
+    } catch (const io::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(path + message), std::string::npos) << e.what();
+    }
+  }
+  std::ofstream(path) << "plane 1 on\n";
+  try {
+    app::checkPlaneSteps(app::parseScript(path), {}, path);
+    ADD_FAILURE() << "no error without planes";
+  } catch (const io::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(":1: plane 1: the view has no slice planes"), std::string::npos) << e.what();
+  }
+
+  // Malformed steps: refused by parseScript itself.
+  const std::pair<const char*, const char*> bad[] = {
+      {"plane 0 on\n", ":1: plane: \"0\" is not an integer within 1..255"},
+      {"plane 1 maybe\n", ":1: plane: give N on|off or N index I"},
+      {"plane 1 move 3\n", ":1: plane: give N on|off or N index I"},
+      {"plane 1 index -1\n", ":1: plane index: \"-1\" is not an integer within 0..2147483648"},
+      {"plane 1\n", ":1: plane: wrong number of arguments"}};
+  for (const auto& [text, message] : bad) {
+    std::ofstream(path) << text;
+    try {
+      app::parseScript(path);
+      ADD_FAILURE() << "no error for " << text;
+    } catch (const io::InputError& e) {
+      EXPECT_EQ(std::string(e.what()), path + message) << text;
+    }
+  }
+  std::filesystem::remove_all(dir);
+}

@@ -2,6 +2,7 @@
 // an underlay file on its own grid.
 #include <cmath>
 #include <fstream>
+#include <iterator>
 
 #include "cli/cli_run.h"
 
@@ -41,11 +42,60 @@ TEST(SliceCli, RendersAnUnderlayFileAndRefusesBadOnesInOneLine) {
   expectFailsCleanly("render -o " + out.string() + " --underlay fa --underlay-window 1 0", "LO must be below HI", out,
                      dir, 1);
   EXPECT_EQ(runBinary("render -o " + out.string() + " --underlay fa --underlay-window 1 0", dir).code, 2);
+  expectFailsCleanly("render -o " + out.string() + " --underlay fa --underlay-percentiles 5 120",
+                     "--underlay-percentiles must be within 0..100", out, dir, 1);
+  expectFailsCleanly("render -o " + out.string() + " --underlay fa --underlay-percentiles 50 50", "LO must be below HI",
+                     out, dir, 1);
+  expectFailsCleanly("render -o " + out.string() + " --underlay fa --underlay-percentiles 2 98 --underlay-window 0 1",
+                     "--underlay-percentiles and --underlay-window exclude each other", out, dir, 1);
+  expectFailsCleanly("render -o " + out.string() + " --underlay-percentiles 2 98", "needs --underlay or --plane", out,
+                     dir, 1);
   EXPECT_EQ(runBinary("render -o " + out.string() + " --underlay " + (dir / "missing.nrrd").string(), dir).code, 1);
   // A point set has no grid for its own FA.
   const auto points = dir / "points.vtk";
   ASSERT_EQ(runBinary("synth random -o " + points.string() + " --n 10", dir).code, 0);
   expectFailsCleanly("render " + points.string() + " -o " + out.string() + " --underlay fa", "point set", out, dir, 1);
+}
+
+std::string fileBytes(const std::filesystem::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+// --underlay-percentiles moves the default window: the 0th and 100th
+// percentiles of the file's finite values (0..23, one NaN) are the window
+// 0..23 given by hand, pixel for pixel, and not the default 1st..99th.
+TEST(SliceCli, UnderlayPercentilesSetTheWindowFromTheValues) {
+  const auto dir = cliDir("slice-pct");
+  const std::string under = writeUnderlay(dir, "under.nrrd", true);
+  const std::string base = "render --size 64 48 --underlay " + under + " --plane z:1 --eye 0 -3 6 --look-at 0 0 0 -o ";
+  const auto pct = dir / "pct.png", win = dir / "win.png", def = dir / "def.png";
+  ASSERT_EQ(runBinary(base + pct.string() + " --underlay-percentiles 0 100", dir).code, 0);
+  ASSERT_EQ(runBinary(base + win.string() + " --underlay-window 0 23", dir).code, 0);
+  ASSERT_EQ(runBinary(base + def.string() + " --underlay-window 0 46", dir).code, 0);
+  EXPECT_FALSE(fileBytes(pct).empty());
+  EXPECT_EQ(fileBytes(pct), fileBytes(win));
+  EXPECT_NE(fileBytes(pct), fileBytes(def));
+  std::filesystem::remove_all(dir);
+}
+
+// The viewer takes the same flags; its planes and `plane N` steps are checked
+// before a window opens, so these need no display.
+TEST(SliceCli, ViewRefusesPlanesAndPlaneStepsBeforeOpeningAWindow) {
+  const auto dir = cliDir("slice-view");
+  const auto script = dir / "s.txt";
+  const auto none = dir / "none.png";
+  std::ofstream(script) << "zoom 2\nplane 2 off\n";
+  expectFailsCleanly("view --plane z:5 --script " + script.string(),
+                     "s.txt:2: plane 2: the view has 1 slice plane(s)", none, dir, 1);
+  std::ofstream(script) << "plane 1 index 20\n";
+  expectFailsCleanly("view --plane z:5 --script " + script.string(), "s.txt:1: plane 1: index 20 is outside 0..19 along z",
+                     none, dir, 1);
+  std::ofstream(script) << "plane 1 off\n";
+  expectFailsCleanly("view --script " + script.string(), "s.txt:1: plane 1: the view has no slice planes", none, dir, 1);
+  expectFailsCleanly("view --underlay fa --plane z:20", "plane z:20 is outside the underlay's grid (0..19)", none, dir, 1);
+  EXPECT_EQ(runBinary("view --underlay-window 1 0 --underlay fa", dir).code, 2);
+  std::filesystem::remove_all(dir);
 }
 
 }  // namespace

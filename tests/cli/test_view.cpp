@@ -98,3 +98,42 @@ TEST(View, ScriptedScreenshotsMatchTheHeadlessRenderer) {
   EXPECT_GT(covered(s[4]), 50u);
   std::filesystem::remove_all(dir);
 }
+
+// Slice planes in the viewer take render's flags; `plane N` steps hide and
+// move them. A moved plane is exactly the plane render draws at that index
+// (same offscreen target and driver), and putting everything back restores
+// the first view.
+TEST(View, ScriptedSlicePlanesMatchTheHeadlessRenderer) {
+  if (!haveDisplay()) GTEST_SKIP() << "no X display";
+  const auto dir = tg::test::cliDir("view-planes");
+  const auto shot = [&](int k) { return dir / ("plane-shot" + std::to_string(k).append(".png")); };
+  {
+    std::ofstream s(dir / "script.txt");
+    s << "screenshot " << shot(0).string() << "\n"
+      << "plane 1 index 3\n"
+      << "screenshot " << shot(1).string() << "\n"
+      << "plane 1 off\nplane 2 off\n"
+      << "screenshot " << shot(2).string() << "\n"
+      << "plane 2 on\nplane 1 on\nplane 1 index 10\n"
+      << "screenshot " << shot(3).string() << "\n";
+  }
+  const std::string plain = " --size 320 240 --glyph ellipsoid --no-shadows --no-ao --no-outlines --no-legend";
+  const auto r = runBinary("view" + plain + " --plane z:10 --plane x:20 --script " + (dir / "script.txt").string(), dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_EQ(runBinary("render" + plain + " --plane z:10 --plane x:20 -o " + (dir / "r0.png").string(), dir).code, 0);
+  ASSERT_EQ(runBinary("render" + plain + " --plane z:3 --plane x:20 -o " + (dir / "r1.png").string(), dir).code, 0);
+  int w = 0, h = 0;
+  std::vector<std::vector<unsigned char>> s;
+  for (int k = 0; k < 4; ++k) {
+    s.push_back(readRgba(shot(k), w, h));
+    ASSERT_EQ(w, 320) << k;
+  }
+  const auto r0 = readRgba(dir / "r0.png", w, h), r1 = readRgba(dir / "r1.png", w, h);
+  EXPECT_EQ(differing(s[0], r0), 0u);
+  EXPECT_EQ(differing(s[1], r1), 0u) << "the moved plane is render's plane at that index";
+  EXPECT_GT(differing(s[1], s[0]), 500u) << "moving the plane changes the view";
+  EXPECT_EQ(differing(s[3], s[0]), 0u) << "on again at the first index gives the first view back";
+  EXPECT_LT(covered(s[2]) + 5000, covered(s[0])) << "hidden planes leave the background";
+  EXPECT_GT(covered(s[2]), 3000u) << "the glyphs stay";
+  std::filesystem::remove_all(dir);
+}

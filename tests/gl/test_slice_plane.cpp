@@ -155,6 +155,72 @@ TEST_F(SlicePlanes, GlyphsOnThePlaneAreWholeAndThoseBehindItHidden) {
   EXPECT_EQ(countId(drawWith(behind, cam, p, &v, &mid), 0), 0u);
 }
 
+// The viewer moves a plane by setSpec, which computes a new quad on the CPU
+// and touches no GL object: the moved plane draws exactly as one made at its
+// new index, the renderer holds the same GPU memory, an index outside the
+// grid leaves it where it was, and a hidden plane draws nothing.
+TEST_F(SlicePlanes, AMovedPlaneDrawsAsOneMadeThereAndAHiddenOneNotAtAll) {
+  const tensor::GlyphSet none = sphereAt({100, 100, 100}, 0.1f);
+  const auto cam = topCamera(96, 72, render::Projection::Perspective);
+  const render::UnderlayVolume v = linearVolume(9, 1.0, glm::dmat4(1.0));
+  render::PlaneSpec from, to, outside;
+  from.axis = to.axis = outside.axis = 2;
+  from.index = 1;
+  to.index = 6;
+  outside.index = 9;
+  render::FrameParams p;
+  const auto want = drawWith(none, cam, p, &v, &to);
+  ctx_->makeCurrent();
+  render::GlyphRenderer r(ctx_->api(), *lib_);
+  render::GBuffer target(ctx_->api(), cam.width, cam.height);
+  r.upload(none);
+  auto shared = std::make_shared<const render::SliceVolume>(ctx_->api(), *lib_, v);
+  auto& plane = static_cast<render::SlicePlane&>(
+      r.addContext(std::make_unique<render::SlicePlane>(shared, from, render::SliceParams{}, none.maxAbsEigenvalue)));
+  r.render(cam, p, target);
+  const auto before = r.readback(cam, target);
+  const std::size_t bytes = r.gpuBytes();
+  plane.setSpec(to);
+  r.render(cam, p, target);
+  const auto moved = r.readback(cam, target);
+  EXPECT_GT(countId(moved, render::kContextIdBase), 2000u);
+  EXPECT_EQ(moved.rgba, want.rgba);
+  EXPECT_EQ(moved.depth, want.depth);
+  EXPECT_NE(moved.depth, before.depth);
+  EXPECT_EQ(r.gpuBytes(), bytes);
+  EXPECT_THROW(plane.setSpec(outside), std::invalid_argument);
+  EXPECT_EQ(plane.spec(), to);
+  plane.setVisible(false);
+  r.render(cam, p, target);
+  EXPECT_EQ(countId(r.readback(cam, target), render::kContextIdBase), 0u);
+}
+
+// A masked field's own FA keeps only a thin structure; every other voxel is
+// a hole. Linear filtering next to a hole takes the nearest voxel, so a row
+// one voxel thick is drawn (it used to vanish: a NaN among the 8 texels made
+// every sample NaN) exactly where nearest sampling draws it, and the CPU
+// sampler, which picking reads, agrees.
+TEST_F(SlicePlanes, AOneVoxelRowAmongHolesIsDrawnWithLinearFiltering) {
+  const tensor::GlyphSet none = sphereAt({100, 100, 100}, 0.1f);
+  const auto cam = topCamera(96, 72, render::Projection::Orthographic);
+  render::UnderlayVolume v = linearVolume(9, 1.0, glm::dmat4(1.0));
+  for (std::size_t k = 0; k < v.values.size(); ++k)
+    if (k / 9 != 4 + 9 * 4) v.values[k] = NAN;  // keeps the row j = 4, k = 4 (y = 0, z = 0)
+  render::PlaneSpec mid;
+  mid.axis = 2;
+  mid.index = 4;
+  render::SliceParams nearest;
+  nearest.linear = false;
+  render::FrameParams p;
+  const auto linear = drawWith(none, cam, p, &v, &mid), near = drawWith(none, cam, p, &v, &mid, nearest);
+  EXPECT_GT(countId(linear, render::kContextIdBase), 50u);
+  EXPECT_EQ(linear.id, near.id);
+  const auto at = v.sample({1.2, 0.3, 0.0}, true);
+  ASSERT_TRUE(at);
+  EXPECT_EQ(*at, *v.sample({1.2, 0.3, 0.0}, false));
+  EXPECT_FALSE(v.sample({1.2, 0.7, 0.0}, true));
+}
+
 // Depth mixing: an elongated glyph half through an oblique plane, against
 // the reference's ellipsoid and plane (coverage, ids, depth, normals), at
 // true depth and with the offset. Tolerances as the ellipsoid tests': the
