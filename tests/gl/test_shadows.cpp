@@ -16,6 +16,7 @@
 #include <glm/matrix.hpp>
 
 #include "io/image_writer.h"
+#include "gl/golden.h"
 #include "ref/shadow_ref.h"
 
 using namespace tg;
@@ -295,7 +296,7 @@ TEST_F(Shadows, LitAndShadowedPixelsMatchTheShadowRayReference) {
 // samples of the key light (under 2 levels), and shading by a few levels; a
 // shadow moved by a texel or more, or acne, changes pixels by 20+ levels
 // over whole regions and fails the mean, 0.6/255: drift below one level on
-// average. TG_UPDATE_GOLDEN=1 rewrites the images.
+// average.
 TEST_F(Shadows, GoldenImages) {
   const auto set = shadowScene();
   const auto cam = sceneCamera(128, 96);
@@ -308,27 +309,6 @@ TEST_F(Shadows, GoldenImages) {
     p.glyph = glyph;
     p.shadow.enabled = true;
     const auto img = frame(set, cam, p);
-    const std::string golden = std::string(TG_SOURCE_DIR) + "/tests/golden/" + name + ".png";
-    if (const char* u = std::getenv("TG_UPDATE_GOLDEN"); u && std::string(u) == "1") io::writeImage(img, golden);
-    auto in = OIIO::ImageInput::open(golden);
-    ASSERT_TRUE(in) << golden;
-    ASSERT_EQ(in->spec().width, cam.width);
-    ASSERT_EQ(in->spec().height, cam.height);
-    std::vector<unsigned char> want(std::size_t(cam.width) * cam.height * 4);
-    ASSERT_TRUE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, want.data()));
-    const auto actual = std::filesystem::temp_directory_path() / (name + "-actual.png");
-    io::writeImage(img, actual.string());
-    auto got = OIIO::ImageInput::open(actual.string());
-    std::vector<unsigned char> have(want.size());
-    ASSERT_TRUE(got && got->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, have.data()));
-    int worst = 0;
-    double sum = 0;
-    for (std::size_t k = 0; k < want.size(); ++k) {
-      const int diff = std::abs(int(want[k]) - int(have[k]));
-      worst = std::max(worst, diff);
-      sum += diff;
-    }
-    EXPECT_LE(worst, 40) << "actual image: " << actual;
-    EXPECT_LE(sum / double(want.size()), 0.6) << "actual image: " << actual;
+    test::expectMatchesGolden(img, name, 40, 0.6);
   }
 }

@@ -14,6 +14,7 @@
 #include "io/image_writer.h"
 #include "ref/plane_ref.h"
 #include "render/slice_plane.h"
+#include "gl/golden.h"
 
 namespace tg::test {
 namespace {
@@ -279,25 +280,7 @@ TEST_F(SlicePlanes, GoldenImage) {
   p.scale = tensor::defaultScale(set, helix.field.sampleSpacing);
   p.shadow.enabled = true;
   const auto img = drawWith(set, cam, p, &v, &plane, sp);
-  const std::string golden = std::string(TG_SOURCE_DIR) + "/tests/golden/slice-plane.png";
-  if (const char* u = std::getenv("TG_UPDATE_GOLDEN"); u && std::string(u) == "1") io::writeImage(img, golden);
-  const auto actual = std::filesystem::temp_directory_path() / "slice-plane-actual.png";
-  io::writeImage(img, actual.string());
-  auto in = OIIO::ImageInput::open(golden);
-  ASSERT_TRUE(in) << golden;
-  std::vector<unsigned char> want(std::size_t(cam.width) * cam.height * 4), have(want.size());
-  ASSERT_TRUE(in->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, want.data()));
-  auto got = OIIO::ImageInput::open(actual.string());
-  ASSERT_TRUE(got && got->read_image(0, 0, 0, 4, OIIO::TypeDesc::UINT8, have.data()));
-  int worst = 0;
-  double sum = 0;
-  for (std::size_t k = 0; k < want.size(); ++k) {
-    const int diff = std::abs(int(want[k]) - int(have[k]));
-    worst = std::max(worst, diff);
-    sum += diff;
-  }
-  EXPECT_LE(worst, 40) << "actual image: " << actual;
-  EXPECT_LE(sum / double(want.size()), 0.6) << "actual image: " << actual;
+  test::expectMatchesGolden(img, "slice-plane", 40, 0.6);
 }
 
 }  // namespace
