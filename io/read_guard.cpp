@@ -15,6 +15,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <memory>
 #include <new>
 #include <optional>
 #include <type_traits>
@@ -111,7 +112,7 @@ void sendAll(int fd, const void* p, std::size_t n) {
 }
 
 [[noreturn]] void childMain(int statusFd, int dataFd, const ReadLimits& limits,
-                            const std::function<TensorField(const PromiseFn&)>& read) {
+                            const std::function<SendFn(const PromiseFn&)>& read) {
   // Messages of third-party libraries never reach the user; ours go through the pipe.
   if (const int null = ::open("/dev/null", O_WRONLY); null >= 0) {
     ::dup2(null, 1);
@@ -131,7 +132,7 @@ void sendAll(int fd, const void* p, std::size_t n) {
   int code = 0;
   std::uint64_t promised = 0;
   try {
-    const TensorField f = read([statusFd, &promised](std::uint64_t bytes, std::uint64_t memory) {
+    const SendFn send = read([statusFd, &promised](std::uint64_t bytes, std::uint64_t memory) {
       promised += memory;
       limitAddressSpace(mappedBytes() + memory + kSlackBytes);
       const char tag = 'P';
@@ -141,8 +142,8 @@ void sendAll(int fd, const void* p, std::size_t n) {
     // The parent reads the field once it sees 'O'.
     sendAll(statusFd, "O", 1);
     WireOut w(dataFd);
-    writeField(w, f);
-    w.finish();  // with `f` alive: the parent may be copying from it
+    send(w);
+    w.finish();  // with `send`'s data alive: the parent may be copying from it
     _exit(0);
   } catch (const InputError& e) {
     sendAll(statusFd, "E", 1);
@@ -200,6 +201,19 @@ ReadLimits limitsFor(std::uint64_t fileBytes, std::uint64_t memoryBudget) {
 
 TensorField readInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
                         const std::function<TensorField(const PromiseFn&)>& read) {
+  std::optional<TensorField> field;
+  runInChild(
+      who, path, limits,
+      [&read](const PromiseFn& promise) -> SendFn {
+        auto f = std::make_shared<const TensorField>(read(promise));
+        return [f](WireOut& w) { writeField(w, *f); };
+      },
+      [&field](WireIn& in) { field = readField(in); });
+  return std::move(*field);
+}
+
+void runInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
+                const std::function<SendFn(const PromiseFn&)>& read, const std::function<void(WireIn&)>& receive) {
   auto fail = [&](const std::string& what) -> InputError { return InputError(who + ": " + path + ": " + what); };
   int statusFds[2], dataFds[2];
   if (::pipe2(statusFds, O_CLOEXEC) != 0) throw fail(std::string("cannot start the reader: ") + std::strerror(errno));
@@ -241,7 +255,7 @@ TensorField readInChild(const std::string& who, const std::string& path, const R
       deadline += std::chrono::duration<double>(double(bytes) / limits.bytesPerSecond);
     }
   }
-  std::optional<TensorField> field;
+  bool received = false;
   std::string transferError;
   if (status == "O") {
     // Memory bandwidth, not the reader, sets this pace: 10 s and 100 MB/s.
@@ -249,8 +263,9 @@ TensorField readInChild(const std::string& who, const std::string& path, const R
                                           std::chrono::duration<double>(10.0 + double(limits.memoryBytes) / 1e8));
     try {
       WireIn in(dataIn.fd, pid, until, limits.memoryBytes + (std::uint64_t(1) << 20));
-      field = readField(in);
+      receive(in);
       in.finish();
+      received = true;
     } catch (const std::runtime_error& e) {
       transferError = e.what();
     } catch (const std::bad_alloc&) {
@@ -264,7 +279,7 @@ TensorField readInChild(const std::string& who, const std::string& path, const R
     throw fail("reading took longer than its time limit, " + std::to_string(int(limits.headerSeconds)) +
                " s for the header and then what the promised data allows; the reader was stopped");
   if (!transferError.empty()) throw fail(transferError);
-  if (field) return std::move(*field);
+  if (received) return;
   if (WIFSIGNALED(ws)) {
     const int sig = WTERMSIG(ws);
     if (sig == SIGXCPU || sig == SIGKILL) throw fail("reading used more than its CPU time limit; the reader was stopped");

@@ -43,4 +43,13 @@ using PromiseFn = std::function<void(std::uint64_t decodedBytes, std::uint64_t m
 TensorField readInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
                         const std::function<TensorField(const PromiseFn&)>& read);
 
+// The same for any result: in the child, `read` returns a function that puts
+// its result on the wire (holding what it sends alive), and in the parent
+// `receive` takes it off; readInChild above is this with a TensorField.
+class WireOut;
+class WireIn;
+using SendFn = std::function<void(WireOut&)>;
+void runInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
+                const std::function<SendFn(const PromiseFn&)>& read, const std::function<void(WireIn&)>& receive);
+
 }  // namespace tg::io
