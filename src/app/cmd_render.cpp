@@ -16,6 +16,7 @@
 #include "app/frame_size.h"
 #include "app/legend_flags.h"
 #include "app/look_flags.h"
+#include "app/mesh_flags.h"
 #include "app/names.h"
 #include "app/output_check.h"
 #include "app/scene.h"
@@ -36,6 +37,7 @@ struct RenderOptions {
   LegendFlags legend;
   EffectFlags effects;
   ShadowFlags shadow;
+  MeshFlags mesh;
   LookFlags look;
   int width = 1024, height = 768;
   double gamma = 3.0;
@@ -97,6 +99,7 @@ RenderOptions parse(int argc, const char** argv) {
   o.legend.addTo(ap);
   o.effects.addTo(ap);
   o.shadow.addTo(ap);
+  o.mesh.addTo(ap);
   o.look.addTo(ap);
   ap.arg("--repeat N").help("render N more frames and report the median frame time").action([&](auto&, Args a) {
     o.repeat = parseIntIn("--repeat", a[1], 0, 10000);
@@ -124,6 +127,7 @@ void validate(const RenderOptions& o) {
   o.legend.validate();
   o.effects.validate();
   o.shadow.validate();
+  o.mesh.validate(o.input);
   o.look.validate(o.shadow.params.enabled, o.effects.ao.enabled, o.effects.outline.enabled, o.legend.params.enabled);
   if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
   if ((o.lookAt || o.up) && !o.eye) throw UsageError("--look-at and --up need --eye");
@@ -133,7 +137,9 @@ void validate(const RenderOptions& o) {
   checkBackend(o.backend);
   if (!OIIO::ImageOutput::create(o.output))
     throw UsageError("-o: no image format for \"" + o.output + "\"");
-  refuseOutputsOverInputs({{"-o", o.output}}, {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath}});
+  std::vector<NamedPath> inputs = {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath}};
+  for (const NamedPath& m : o.mesh.inputs()) inputs.push_back(m);
+  refuseOutputsOverInputs({{"-o", o.output}}, inputs);
 }
 
 // Frames `frame` (the sample positions, tensor::framingBox), not the glyphs'
@@ -166,6 +172,7 @@ int cmdRender(int argc, const char** argv) {
   Scene scene = loadScene(o.input, o.field.read);
   const double loadMs = msSince(t0);
   reportLoad(scene.field, "render");
+  std::vector<io::MeshData> meshes = o.mesh.read(o.input, "render");
 
   const auto t1 = Clock::now();
   tensor::GlyphSet glyphs =
@@ -194,7 +201,7 @@ int cmdRender(int argc, const char** argv) {
   params.shadow = o.shadow.params;
   if (scene.preferredLook) o.look.apply(*scene.preferredLook, params, o.height);
 
-  const auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale, params.sizing);
+  auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale, params.sizing);
   // The GPU works in single precision: a box beyond FLT_MAX draws nothing.
   const double extent = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y),
                                   std::abs(hi.z)});
@@ -202,6 +209,7 @@ int cmdRender(int argc, const char** argv) {
     throw io::InputError("render: " + scene.field.path + ": the glyphs extend beyond the floating-point range (scale " +
                          std::to_string(params.scale) + ")");
   const tensor::FramingBox frame = tensor::framingBox(glyphs, !scene.field.grid, sized.typicalRadiusWC);
+  growByMeshes(meshes, lo, hi);
   const render::Camera cam = render::makeCamera(chooseCamera(o, scene, frame), o.width, o.height, lo, hi);
 
   auto ctx = createContext(o.backend, o.width, o.height);
@@ -210,6 +218,8 @@ int cmdRender(int argc, const char** argv) {
   render::GBuffer target(ctx->api(), o.width, o.height);
   const auto t2 = Clock::now();
   renderer.upload(glyphs);
+  addMeshes(renderer, ctx->api(), lib, meshes, o.mesh.params);
+  meshes.clear();
   ctx->api().Finish();
   const double uploadMs = msSince(t2);
   const std::size_t glyphCount = glyphs.glyphs.size();
@@ -263,6 +273,10 @@ int cmdRender(int argc, const char** argv) {
                    params.ao.strength, params.ao.samples);
     if (params.outline.enabled)
       std::fprintf(stderr, "  outlines: width %.3g px, crease %.3g deg\n", params.outline.width, params.outline.creaseDeg);
+    for (const auto& item : renderer.context())
+      if (const auto* m = dynamic_cast<const render::MeshItem*>(item.get()))
+        std::fprintf(stderr, "  %s: %zu triangles, %s, %.1f MiB of GPU memory\n", m->label().c_str(), m->triangleCount(),
+                     render::meshModeName(m->params().mode), double(m->gpuBytes()) / (1024.0 * 1024.0));
     if (params.shadow.enabled)
       std::fprintf(stderr, "  shadows: map %d x %d texels, penumbra %.3g, %.1f MiB of GPU memory in all\n",
                    renderer.shadowMapSize(), renderer.shadowMapSize(), double(params.shadow.penumbra),

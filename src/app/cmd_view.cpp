@@ -8,6 +8,7 @@
 #include <backends/imgui_impl_opengl3.h>
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -28,6 +29,7 @@
 #include "app/scene.h"
 #include "app/view_panel.h"
 #include "app/view_script.h"
+#include "app/mesh_flags.h"
 #include "gl/context_glfw.h"
 #include "gl/shader_library.h"
 #include "io/image_writer.h"
@@ -42,6 +44,7 @@ struct ViewOptions {
   LegendFlags legend;
   ShadowFlags shadow;
   EffectFlags effects;
+  MeshFlags mesh;
   LookFlags look;
   int width = 1280, height = 800;
   double gamma = 3.0;
@@ -78,6 +81,7 @@ ViewOptions parse(int argc, const char** argv) {
   o.legend.addTo(ap);
   o.shadow.addTo(ap);
   o.effects.addTo(ap);
+  o.mesh.addTo(ap);
   o.look.addTo(ap);
   parseArgs(ap, argc, argv);
   return o;
@@ -92,6 +96,7 @@ void validate(const ViewOptions& o) {
   o.legend.validate();
   o.shadow.validate();
   o.effects.validate();
+  o.mesh.validate(o.input);
   o.look.validate(o.shadow.params.enabled, o.effects.ao.enabled, o.effects.outline.enabled, o.legend.params.enabled);
 }
 
@@ -118,10 +123,15 @@ int cmdView(int argc, const char** argv) {
   std::vector<NamedPath> scriptShots;
   for (const ScriptStep& s : script)
     if (s.verb == "screenshot") scriptShots.push_back({o.script + ":" + std::to_string(s.line) + ": screenshot", s.args[0]});
-  refuseOutputsOverInputs(scriptShots,
-                          {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath}, {"--script", o.script}});
+  std::vector<NamedPath> inputs = {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath}, {"--script", o.script}};
+  for (const NamedPath& m : o.mesh.inputs()) inputs.push_back(m);
+  refuseOutputsOverInputs(scriptShots, inputs);
   Scene scene = loadScene(o.input, o.field.read);
   reportLoad(scene.field, "view");
+  std::vector<io::MeshData> meshes = o.mesh.read(o.input, "view");
+  checkScriptMeshes(script, meshes.size(), o.script);
+  glm::dvec3 meshLo(INFINITY), meshHi(-INFINITY);
+  growByMeshes(meshes, meshLo, meshHi);
   tensor::GlyphSet glyphs =
       tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids, 0, o.field.glyph);
   checkDrawable(glyphs, scene.field.path);
@@ -155,6 +165,14 @@ int cmdView(int argc, const char** argv) {
   const gl::ShaderLibrary lib;
   render::GlyphRenderer renderer(api, lib, render::makeLegendPass);
   renderer.upload(glyphs);
+  addMeshes(renderer, api, lib, meshes, o.mesh.params);
+  meshes.clear();
+  // Context items in the order added: the meshes are all of them here.
+  std::vector<render::MeshItem*> meshItems;
+  for (const auto& item : renderer.context()) {
+    meshItems.push_back(static_cast<render::MeshItem*>(item.get()));
+    v.meshes.push_back({item->label(), true, o.mesh.params});
+  }
   const std::size_t glyphCount = glyphs.glyphs.size();
   glyphs.glyphs = {};  // the box and counts stay for the camera
 
@@ -211,8 +229,13 @@ int cmdView(int argc, const char** argv) {
         status.lastChangeUs = us;
         applied = p;
       }
-      const auto [lo, hi] = tensor::glyphBoxWC(glyphs, p.scale, p.sizing);
-      const render::Camera cam = render::makeCamera(v.camera.desc(), w, h, lo, hi);
+      for (std::size_t k = 0; k < meshItems.size(); ++k) {
+        meshItems[k]->setVisible(v.meshes[k].visible);
+        if (!(meshItems[k]->params() == v.meshes[k].params)) meshItems[k]->setParams(v.meshes[k].params);
+      }
+      const auto [glyphLo, glyphHi] = tensor::glyphBoxWC(glyphs, p.scale, p.sizing);
+      const render::Camera cam =
+          render::makeCamera(v.camera.desc(), w, h, glm::min(glyphLo, meshLo), glm::max(glyphHi, meshHi));
       renderer.render(cam, p, *target);
       // Never waits for the GPU: the status trails the frame by one or two.
       renderer.requestDrawnCount();

@@ -31,15 +31,26 @@
 //   outline-width W        their width in pixels, 0.25..8
 //   shadows on|off         soft shadows from the key light
 //   shadow penumbra|strength|bias|map-size V   (render's --shadow-* flags and ranges)
+//   mesh N on|off|opaque|see-through|edges   the N-th mesh (--mesh-from-input first, then
+//                          each --mesh; from 1): shown, hidden, or drawn so (render's --mesh-mode)
+//   mesh-opacity N A       the N-th mesh's see-through opacity, 0..1
 //   frames N               render N frames unchanged (for timing)
 //   screenshot FILE        save the rendered view (without the panel)
 #include <string>
 #include <vector>
 
 #include "app/orbit_camera.h"
+#include "render/mesh_item.h"
 #include "render/renderer.h"
 
 namespace tg::app {
+
+// A context mesh as the viewer shows it; the viewer hands changes to its MeshItem.
+struct MeshView {
+  std::string label;
+  bool visible = true;
+  render::MeshParams params;
+};
 
 struct ViewState {
   render::FrameParams params;
@@ -50,6 +61,7 @@ struct ViewState {
   // mapping or clamp is resolved again without the records (resize()).
   tensor::ScaleParams sizing{};
   tensor::MagnitudeSample magnitudes{};
+  std::vector<MeshView> meshes{};
 };
 
 // Resolves v.sizing over v.magnitudes into baseScale, params.scale and
@@ -65,6 +77,10 @@ struct ScriptStep {
 // Throws io::InputError "PATH:LINE: ..." for an unreadable file, an unknown
 // command, a wrong argument count or a value out of range.
 std::vector<ScriptStep> parseScript(const std::string& path);
+
+// io::InputError "PATH:LINE: mesh: ..." for a mesh step naming a mesh beyond
+// the `meshes` loaded; run once they are, before the window opens.
+void checkScriptMeshes(const std::vector<ScriptStep>& steps, std::size_t meshes, const std::string& path);
 
 // Applies a parsed step to the state. `frames` and `screenshot` change
 // nothing here; the viewer acts on them.
