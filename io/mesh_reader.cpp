@@ -279,7 +279,16 @@ MeshData readWith(const std::string& path, MeshSource source, std::uint64_t budg
     ReadOptions opt;
     opt.memoryBudget = budget;
     opt.onPromise = promise;
-    const ReadResult read = readDataSet(path, opt);
+    // readVtk's checks, in the words of this reader.
+    const ReadResult read = [&] {
+      try {
+        return readDataSet(path, opt);
+      } catch (const InputError& e) {
+        const std::string what = e.what();
+        if (what.rfind("readVtk: ", 0) != 0) throw;
+        throw InputError("readMesh" + what.substr(7));
+      }
+    }();
     // As readVtk: VTK stops, with a warning, at a 3D-TSV stress trailer,
     // after the geometry; any other word from VTK is refused.
     if (!read.vtkSaid.empty() && read.vtkSaid.find("Unsupported point attribute type") == std::string::npos)
