@@ -35,8 +35,8 @@ void MeshFlags::addTo(OIIO::ArgParse& ap) {
   ap.arg("--mesh-from-input").help("draw the boundary of the FEM mesh the tensors came from (a .vtu/.vtk input)")
       .action([this](auto&, Args) { fromInput = true; });
   ap.arg("--mesh-mode MODE")
-      .help(std::string("how meshes are drawn: opaque (default), see-through (the front layer blended over the "
-                        "glyphs) or edges (feature edges)"))
+      .help(std::string("how meshes are drawn: opaque, see-through (the front layer blended over the glyphs) or "
+                        "edges (feature edges); default ") + render::meshModeName(d.mode))
       .action([this, given](auto&, Args a) {
         given("--mesh-mode");
         const auto m = meshModeNamed(a[1]);
