@@ -10,6 +10,8 @@
 #include <filesystem>
 #include <vector>
 
+#include <glm/matrix.hpp>
+
 #include "io/image_writer.h"
 #include "ref/mesh_ref.h"
 #include "render/mesh_item.h"
@@ -186,6 +188,45 @@ TEST_F(Meshes, SeeThroughKeepsTheGlyphsInside) {
   std::size_t changed = 0;
   for (std::size_t i = 0; i < seen.rgba.size(); ++i) changed += std::abs(seen.rgba[i] - alone.rgba[i]) > 0.02f;
   EXPECT_GT(changed, seen.rgba.size() / 20);  // the box is drawn over a good part
+}
+
+// An opaque mesh casts into the key light's shadow map: a small square
+// between the glyph and the light darkens the glyph's lit pixels; see-through
+// and edges cast nothing, so the glyph is as bright as with no mesh at all.
+TEST_F(Meshes, OpaqueMeshesCastShadows) {
+  const auto set = glyphRow(1, 0.0f);
+  const auto cam = cameraFor(set, 1.0, oblique(set, 6.0, render::Projection::Perspective), 128, 96);
+  render::FrameParams p;
+  p.shadow.enabled = true;
+  // The square sits 2 units towards the light, across its direction.
+  const glm::dvec3 keyWC = glm::normalize(glm::transpose(glm::dmat3(cam.viewWCVC)) * glm::dvec3(p.light.keyDirVC));
+  const glm::dvec3 u = glm::normalize(glm::cross(keyWC, glm::dvec3(0, 0, 1))), v = glm::cross(keyWC, u);
+  Mesh square;
+  for (int k = 0; k < 4; ++k) {
+    const glm::dvec3 c = 2.0 * keyWC + 0.4 * ((k & 1 ? 1.0 : -1.0) * u + (k & 2 ? 1.0 : -1.0) * v);
+    square.positions.insert(square.positions.end(), {float(c.x), float(c.y), float(c.z)});
+  }
+  square.triangles = {0, 1, 3, 0, 3, 2};
+  // Mean brightness of the glyph's pixels that no mesh covers in either image.
+  auto glyphLight = [](const render::FrameImage& a, const render::FrameImage& b) {
+    double sum = 0;
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < a.id.size(); ++i)
+      if (a.id[i] == 0 && b.id[i] == 0) sum += a.rgba[4 * i] + a.rgba[4 * i + 1] + a.rgba[4 * i + 2], ++n;
+    return n ? sum / double(n) : 0.0;
+  };
+  ctx_->makeCurrent();
+  const auto bare = draw(set, cam, p);
+  for (auto mode : {render::MeshMode::Opaque, render::MeshMode::SeeThrough, render::MeshMode::Edges}) {
+    SCOPED_TRACE(render::meshModeName(mode));
+    render::MeshParams mp;
+    mp.mode = mode;
+    const auto img = frame(set, square, cam, mp, p);
+    const double lit = glyphLight(bare, img), shaded = glyphLight(img, bare);
+    ASSERT_GT(lit, 0.0);
+    if (mode == render::MeshMode::Opaque) EXPECT_LT(shaded, 0.9 * lit);  // measured: 0.83
+    else EXPECT_NEAR(shaded, lit, 1e-3 * lit);
+  }
 }
 
 // One small golden image per mode: five glyphs, the right three inside a box.
