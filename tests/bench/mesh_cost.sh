@@ -2,12 +2,13 @@
 # What a 1M-triangle context mesh adds to a frame (README, "Meshes in
 # context"): 10^5 random glyphs at 1024x768 through the default backend, with
 # no mesh and with a 1,000,000-triangle sphere (binary STL) through the middle
-# of the field in each drawing mode. Each setting runs ROUNDS times in
+# of the field in each drawing mode, inside the glyphs as an FEM part is; then
+# the same with every glyph hidden (--fa-min 1), the mesh in full view. Each setting runs ROUNDS times in
 # rotating order, so that a drift in the machine's load hits all alike; a
 # round is `render --repeat 9`, whose median frame it reports.
 #   bash tests/bench/mesh_cost.sh [BUILD_DIR] [ROUNDS]   (defaults: build 3)
 # Prints one line per setting: the median over rounds of the per-round
-# median frame time, and what it adds to no mesh.
+# median frame time, and what it adds to no mesh (alone-*: to no mesh and no glyphs).
 set -euo pipefail
 bin=${1:-build}/tensorglyph
 rounds=${2:-3}
@@ -32,7 +33,9 @@ with open(sys.argv[1], "wb") as f:
             f.write(rec.pack(0, 0, 0, *a, *cc, *d, 0))
 PY
 settings=("none:" "opaque:--mesh $dir/sphere.stl" "see-through:--mesh $dir/sphere.stl --mesh-mode see-through"
-          "edges:--mesh $dir/sphere.stl --mesh-mode edges")
+          "edges:--mesh $dir/sphere.stl --mesh-mode edges" "alone-none:--fa-min 1"
+          "alone-opaque:--fa-min 1 --mesh $dir/sphere.stl"
+          "alone-see-through:--fa-min 1 --mesh $dir/sphere.stl --mesh-mode see-through")
 declare -A times=()
 for ((r = 0; r < rounds; r++)); do
   for ((k = 0; k < ${#settings[@]}; k++)); do
@@ -45,9 +48,10 @@ for ((r = 0; r < rounds; r++)); do
   done
 done
 med() { echo "$@" | tr ' ' '\n' | sort -g | awk '{a[NR]=$1} END {print a[int((NR+1)/2)]}'; }
-base=$(med ${times[none]})
 for s in "${settings[@]}"; do
   name=${s%%:*}
+  base=$(med ${times[none]})
+  [[ $name == alone-* ]] && base=$(med ${times[alone-none]})
   m=$(med ${times[$name]})
   awk -v n="$name" -v m="$m" -v b="$base" -v all="${times[$name]}" \
     'BEGIN { printf "%-12s %8.1f ms  +%.1f ms   (rounds:%s)\n", n, m, m - b, all }'
