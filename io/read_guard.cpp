@@ -17,6 +17,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <memory>
 #include <new>
 #include <optional>
 #include <type_traits>
@@ -121,7 +122,7 @@ void writeField(WireOut& w, const ScalarVolume& v) {
   if (v.placement) w.pod(*v.placement);
 }
 
-void readBack(WireIn& r, ScalarVolume& v) {
+void readVolume(WireIn& r, ScalarVolume& v) {
   if (r.pod<std::uint32_t>() != kWireMagic) throw std::runtime_error("the reader's result is malformed");
   const auto dims = r.pod<std::array<int, 3>>();
   const std::string bytes = r.str();
@@ -134,11 +135,9 @@ void readBack(WireIn& r, ScalarVolume& v) {
   if (r.pod<bool>()) v.placement = r.pod<GridPlacement>();
 }
 
-void readBack(WireIn& r, TensorField& f) { f = readField(r); }
 
-template <class Result>
 [[noreturn]] void childMain(int statusFd, int dataFd, const ReadLimits& limits,
-                            const std::function<Result(const PromiseFn&)>& read) {
+                            const std::function<SendFn(const PromiseFn&)>& read) {
   // Messages of third-party libraries never reach the user; ours go through the pipe.
   if (const int null = ::open("/dev/null", O_WRONLY); null >= 0) {
     ::dup2(null, 1);
@@ -158,7 +157,7 @@ template <class Result>
   int code = 0;
   std::uint64_t promised = 0;
   try {
-    const Result f = read([statusFd, &promised](std::uint64_t bytes, std::uint64_t memory) {
+    const SendFn send = read([statusFd, &promised](std::uint64_t bytes, std::uint64_t memory) {
       promised += memory;
       limitAddressSpace(mappedBytes() + memory + kSlackBytes);
       const char tag = 'P';
@@ -168,8 +167,8 @@ template <class Result>
     // The parent reads the field once it sees 'O'.
     sendAll(statusFd, "O", 1);
     WireOut w(dataFd);
-    writeField(w, f);
-    w.finish();  // with `f` alive: the parent may be copying from it
+    send(w);
+    w.finish();  // with `send`'s data alive: the parent may be copying from it
     _exit(0);
   } catch (const InputError& e) {
     sendAll(statusFd, "E", 1);
@@ -225,11 +224,21 @@ ReadLimits limitsFor(std::uint64_t fileBytes, std::uint64_t memoryBudget) {
   return l;
 }
 
-namespace {
+TensorField readInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
+                        const std::function<TensorField(const PromiseFn&)>& read) {
+  std::optional<TensorField> field;
+  runInChild(
+      who, path, limits,
+      [&read](const PromiseFn& promise) -> SendFn {
+        auto f = std::make_shared<const TensorField>(read(promise));
+        return [f](WireOut& w) { writeField(w, *f); };
+      },
+      [&field](WireIn& in) { field = readField(in); });
+  return std::move(*field);
+}
 
-template <class Result>
-Result guardedRead(const std::string& who, const std::string& path, const ReadLimits& limits,
-                   const std::function<Result(const PromiseFn&)>& read) {
+void runInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
+                const std::function<SendFn(const PromiseFn&)>& read, const std::function<void(WireIn&)>& receive) {
   auto fail = [&](const std::string& what) -> InputError { return InputError(who + ": " + path + ": " + what); };
   int statusFds[2], dataFds[2];
   if (::pipe2(statusFds, O_CLOEXEC) != 0) throw fail(std::string("cannot start the reader: ") + std::strerror(errno));
@@ -271,7 +280,7 @@ Result guardedRead(const std::string& who, const std::string& path, const ReadLi
       deadline += std::chrono::duration<double>(double(bytes) / limits.bytesPerSecond);
     }
   }
-  std::optional<Result> field;
+  bool received = false;
   std::string transferError;
   if (status == "O") {
     // Memory bandwidth, not the reader, sets this pace: 10 s and 100 MB/s.
@@ -279,9 +288,9 @@ Result guardedRead(const std::string& who, const std::string& path, const ReadLi
                                           std::chrono::duration<double>(10.0 + double(limits.memoryBytes) / 1e8));
     try {
       WireIn in(dataIn.fd, pid, until, limits.memoryBytes + (std::uint64_t(1) << 20));
-      field.emplace();
-      readBack(in, *field);
+      receive(in);
       in.finish();
+      received = true;
     } catch (const std::runtime_error& e) {
       transferError = e.what();
     } catch (const std::bad_alloc&) {
@@ -295,7 +304,7 @@ Result guardedRead(const std::string& who, const std::string& path, const ReadLi
     throw fail("reading took longer than its time limit, " + std::to_string(int(limits.headerSeconds)) +
                " s for the header and then what the promised data allows; the reader was stopped");
   if (!transferError.empty()) throw fail(transferError);
-  if (field) return std::move(*field);
+  if (received) return;
   if (WIFSIGNALED(ws)) {
     const int sig = WTERMSIG(ws);
     if (sig == SIGXCPU || sig == SIGKILL) throw fail("reading used more than its CPU time limit; the reader was stopped");
@@ -307,16 +316,20 @@ Result guardedRead(const std::string& who, const std::string& path, const ReadLi
   throw fail("the reader ended without a result (exit status " + std::to_string(WEXITSTATUS(ws)) + ")");
 }
 
-}  // namespace
-
-TensorField readInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
-                        const std::function<TensorField(const PromiseFn&)>& read) {
-  return guardedRead(who, path, limits, read);
-}
-
 ScalarVolume readScalarInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
                                const std::function<ScalarVolume(const PromiseFn&)>& read) {
-  return guardedRead(who, path, limits, read);
+  std::optional<ScalarVolume> volume;
+  runInChild(
+      who, path, limits,
+      [&read](const PromiseFn& promise) -> SendFn {
+        auto v = std::make_shared<const ScalarVolume>(read(promise));
+        return [v](WireOut& w) { writeField(w, *v); };
+      },
+      [&volume](WireIn& in) {
+        volume.emplace();
+        readVolume(in, *volume);
+      });
+  return std::move(*volume);
 }
 
 }  // namespace tg::io

@@ -48,4 +48,13 @@ TensorField readInChild(const std::string& who, const std::string& path, const R
 ScalarVolume readScalarInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
                                const std::function<ScalarVolume(const PromiseFn&)>& read);
 
+// The same for any result: in the child, `read` returns a function that puts
+// its result on the wire (holding what it sends alive), and in the parent
+// `receive` takes it off; readInChild above is this with a TensorField.
+class WireOut;
+class WireIn;
+using SendFn = std::function<void(WireOut&)>;
+void runInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
+                const std::function<SendFn(const PromiseFn&)>& read, const std::function<void(WireIn&)>& receive);
+
 }  // namespace tg::io

@@ -35,6 +35,7 @@
 #include "io/volume_sink.h"
 #include "io/tsv_trailer.h"
 #include "io/vtk_capture.h"
+#include "io/vtk_dataset.h"
 #include "io/vtk_nonfinite.h"
 #include "io/vtk_xml_checks.h"
 
@@ -175,13 +176,6 @@ std::uint64_t checkLegacyCounts(const std::string& path, std::uint64_t fileSize)
                    " bytes of binary data, the file has " + std::to_string(fileSize));
   return points;
 }
-
-// A dataset as VTK read it, and the first thing VTK said about it.
-struct ReadResult {
-  vtkSmartPointer<vtkDataSet> data;
-  std::string vtkSaid;  // empty: VTK said nothing
-  NonFiniteText nonFinite;  // legacy ASCII read through sentinels: restore each value
-};
 
 // Runs a reader whose counts are checked. Errors fail the read; the first
 // warning comes back in vtkSaid, for the caller to refuse unless it can
@@ -346,11 +340,13 @@ vtkSmartPointer<vtkDataSetReader> legacyReader() {
   return r;
 }
 
+}  // namespace
+
 // VTK 9.1's legacy reader dereferences null on some corrupt bodies that pass
 // every header check (tests/fuzz/vtk-body-crashes), and its XML parser
 // recurses once per nesting level: readTensorField runs all of this in a
 // child process (io/read_guard.h), which turns such crashes into one line.
-ReadResult readDataSet(const std::string& path, const ReadOptions& opt, const int* dims = nullptr) {
+ReadResult readDataSet(const std::string& path, const ReadOptions& opt, const int* dims) {
   struct stat st {};
   if (stat(path.c_str(), &st) != 0) fail(path, "cannot open file");
   const std::uint64_t fileSize = std::uint64_t(st.st_size);
@@ -401,8 +397,6 @@ ReadResult readDataSet(const std::string& path, const ReadOptions& opt, const in
   }
   return read;
 }
-
-}  // namespace
 
 void checkVtkLegacyHeader(const std::string& path) {
   struct stat st {};

@@ -14,6 +14,7 @@
 #include "app/frame_size.h"
 #include "app/legend_flags.h"
 #include "app/look_flags.h"
+#include "app/mesh_flags.h"
 #include "app/names.h"
 #include "app/output_check.h"
 #include "app/pick_flags.h"
@@ -38,6 +39,7 @@ struct RenderOptions {
   EffectFlags effects;
   ShadowFlags shadow;
   SliceFlags slices;
+  MeshFlags mesh;
   LookFlags look;
   PickFlags pick;
   int width = 1024, height = 768;
@@ -102,6 +104,7 @@ RenderOptions parse(int argc, const char** argv) {
   o.effects.addTo(ap);
   o.shadow.addTo(ap);
   o.slices.addTo(ap);
+  o.mesh.addTo(ap);
   o.look.addTo(ap);
   o.pick.addTo(ap);
   ap.arg("--repeat N").help("render N more frames and report the median frame time").action([&](auto&, Args a) {
@@ -132,6 +135,7 @@ void validate(const RenderOptions& o) {
   o.effects.validate();
   o.shadow.validate();
   o.slices.validate();
+  o.mesh.validate(o.input);
   o.look.validate(o.shadow.params.enabled, o.effects.ao.enabled, o.effects.outline.enabled, o.legend.params.enabled);
   if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
   if ((o.lookAt || o.up) && !o.eye) throw UsageError("--look-at and --up need --eye");
@@ -141,8 +145,10 @@ void validate(const RenderOptions& o) {
   checkBackend(o.backend);
   if (!io::canWriteImage(o.output))
     throw UsageError("-o: no image format for \"" + o.output + "\"");
-  refuseOutputsOverInputs({{"-o", o.output}}, {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath},
-                                                   {"--underlay", o.slices.fromField() ? "" : o.slices.underlay}});
+  std::vector<NamedPath> inputs = {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath},
+                                   {"--underlay", o.slices.fromField() ? "" : o.slices.underlay}};
+  for (const NamedPath& m : o.mesh.inputs()) inputs.push_back(m);
+  refuseOutputsOverInputs({{"-o", o.output}}, inputs);
 }
 
 // Frames `frame` (the sample positions, tensor::framingBox), not the glyphs'
@@ -175,6 +181,7 @@ int cmdRender(int argc, const char** argv) {
   Scene scene = loadScene(o.input, o.field.read);
   const double loadMs = msSince(t0);
   reportLoad(scene.field, "render");
+  std::vector<io::MeshData> meshes = o.mesh.read(o.input, "render");
 
   const auto t1 = Clock::now();
   tensor::GlyphSet glyphs =
@@ -222,6 +229,7 @@ int cmdRender(int argc, const char** argv) {
     throw io::InputError("render: " + scene.field.path + ": the glyphs extend beyond the floating-point range (scale " +
                          std::to_string(params.scale) + ")");
   const tensor::FramingBox frame = tensor::framingBox(glyphs, !scene.field.grid, sized.typicalRadiusWC);
+  growByMeshes(meshes, lo, hi);
   const render::Camera cam = render::makeCamera(chooseCamera(o, scene, frame), o.width, o.height, lo, hi);
 
   auto ctx = createContext(o.backend, o.width, o.height);
@@ -231,6 +239,8 @@ int cmdRender(int argc, const char** argv) {
   if (underlay) addSlicePlanes(renderer, ctx->api(), lib, o.slices, std::move(*underlay), glyphs.maxAbsEigenvalue);
   const auto t2 = Clock::now();
   renderer.upload(glyphs);
+  addMeshes(renderer, ctx->api(), lib, meshes, o.mesh.params);
+  meshes.clear();
   ctx->api().Finish();
   const double uploadMs = msSince(t2);
   const std::size_t glyphCount = glyphs.glyphs.size();
@@ -289,6 +299,10 @@ int cmdRender(int argc, const char** argv) {
                    params.ao.strength, params.ao.samples);
     if (params.outline.enabled)
       std::fprintf(stderr, "  outlines: width %.3g px, crease %.3g deg\n", params.outline.width, params.outline.creaseDeg);
+    for (const auto& item : renderer.context())
+      if (const auto* m = dynamic_cast<const render::MeshItem*>(item.get()))
+        std::fprintf(stderr, "  %s: %zu triangles, %s, %.1f MiB of GPU memory\n", m->label().c_str(), m->triangleCount(),
+                     render::meshModeName(m->params().mode), double(m->gpuBytes()) / (1024.0 * 1024.0));
     if (params.shadow.enabled)
       std::fprintf(stderr, "  shadows: map %d x %d texels, penumbra %.3g, %.1f MiB of GPU memory in all\n",
                    renderer.shadowMapSize(), renderer.shadowMapSize(), double(params.shadow.penumbra),

@@ -8,6 +8,7 @@
 #include <backends/imgui_impl_opengl3.h>
 
 #include <algorithm>
+#include <cmath>
 #include <chrono>
 #include <cstdio>
 #include <memory>
@@ -31,6 +32,7 @@
 #include "app/scene.h"
 #include "app/view_panel.h"
 #include "app/view_script.h"
+#include "app/mesh_flags.h"
 #include "gl/context_glfw.h"
 #include "gl/shader_library.h"
 #include "io/image_writer.h"
@@ -47,6 +49,7 @@ struct ViewOptions {
   ShadowFlags shadow;
   EffectFlags effects;
   SliceFlags slices;
+  MeshFlags mesh;
   LookFlags look;
   int width = 1280, height = 800;
   double gamma = 3.0;
@@ -85,6 +88,7 @@ ViewOptions parse(int argc, const char** argv) {
   o.shadow.addTo(ap);
   o.effects.addTo(ap);
   o.slices.addTo(ap);
+  o.mesh.addTo(ap);
   o.look.addTo(ap);
   parseArgs(ap, argc, argv);
   return o;
@@ -100,6 +104,7 @@ void validate(const ViewOptions& o) {
   o.shadow.validate();
   o.effects.validate();
   o.slices.validate();
+  o.mesh.validate(o.input);
   o.look.validate(o.shadow.params.enabled, o.effects.ao.enabled, o.effects.outline.enabled, o.legend.params.enabled);
 }
 
@@ -131,11 +136,16 @@ int cmdView(int argc, const char** argv) {
                              parseIntIn("pick", s.args[1], 0, kMaxFrameSide) >= o.height))
       throw io::InputError(o.script + ":" + std::to_string(s.line) + ": pick: the pixel is outside the " +
                            std::to_string(o.width) + " x " + std::to_string(o.height) + " window");
-  refuseOutputsOverInputs(scriptShots,
-                          {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath}, {"--script", o.script},
-                           {"--underlay", o.slices.fromField() ? "" : o.slices.underlay}});
+  std::vector<NamedPath> inputs = {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath}, {"--script", o.script},
+                                   {"--underlay", o.slices.fromField() ? "" : o.slices.underlay}};
+  for (const NamedPath& m : o.mesh.inputs()) inputs.push_back(m);
+  refuseOutputsOverInputs(scriptShots, inputs);
   Scene scene = loadScene(o.input, o.field.read);
   reportLoad(scene.field, "view");
+  std::vector<io::MeshData> meshes = o.mesh.read(o.input, "view");
+  checkScriptMeshes(script, meshes.size(), o.script);
+  glm::dvec3 meshLo(INFINITY), meshHi(-INFINITY);
+  growByMeshes(meshes, meshLo, meshHi);
   tensor::GlyphSet glyphs =
       tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids, 0, o.field.glyph);
   checkDrawable(glyphs, scene.field.path);
@@ -188,6 +198,16 @@ int cmdView(int argc, const char** argv) {
   std::vector<render::SlicePlane*> planes;
   if (underlay) planes = addSlicePlanes(renderer, api, lib, o.slices, std::move(*underlay), glyphs.maxAbsEigenvalue);
   std::vector<PlaneView> appliedPlanes = v.planes;
+  const std::size_t firstMesh = renderer.context().size();
+  addMeshes(renderer, api, lib, meshes, o.mesh.params);
+  meshes.clear();
+  // Context items in the order added: the planes, then the meshes.
+  std::vector<render::MeshItem*> meshItems;
+  for (std::size_t k = firstMesh; k < renderer.context().size(); ++k) {
+    const auto& item = renderer.context()[k];
+    meshItems.push_back(static_cast<render::MeshItem*>(item.get()));
+    v.meshes.push_back({item->label(), true, o.mesh.params});
+  }
   const std::size_t glyphCount = glyphs.glyphs.size();
   glyphs.glyphs = {};  // the box and counts stay for the camera
 
@@ -264,7 +284,12 @@ int cmdView(int argc, const char** argv) {
         lo = glm::min(lo, underlayBox->first);
         hi = glm::max(hi, underlayBox->second);
       }
-      const render::Camera cam = render::makeCamera(v.camera.desc(), w, h, lo, hi);
+      for (std::size_t k = 0; k < meshItems.size(); ++k) {
+        meshItems[k]->setVisible(v.meshes[k].visible);
+        if (!(meshItems[k]->params() == v.meshes[k].params)) meshItems[k]->setParams(v.meshes[k].params);
+      }
+      const render::Camera cam =
+          render::makeCamera(v.camera.desc(), w, h, glm::min(lo, meshLo), glm::max(hi, meshHi));
       renderer.render(cam, p, *target);
       // Never waits for the GPU: the status trails the frame by one or two.
       renderer.requestDrawnCount();

@@ -128,6 +128,19 @@ void controls(ViewState& v, const tensor::GlyphSet& meta) {
       p.shadow.mapSize = k == 0 ? d.mapSize : sizes[k];
     }
   }
+  if (!v.meshes.empty() && ImGui::CollapsingHeader("meshes", ImGuiTreeNodeFlags_DefaultOpen)) {
+    for (std::size_t k = 0; k < v.meshes.size(); ++k) {
+      MeshView& m = v.meshes[k];
+      ImGui::PushID(int(k));
+      ImGui::Checkbox(m.label.c_str(), &m.visible);
+      int mode = int(m.params.mode);
+      if (ImGui::Combo("drawn", &mode, "opaque\0see-through\0edges\0")) m.params.mode = render::MeshMode(mode);
+      if (m.params.mode == render::MeshMode::SeeThrough) ImGui::SliderFloat("opacity", &m.params.opacity, 0.0f, 1.0f);
+      if (m.params.mode == render::MeshMode::Edges)
+        ImGui::SliderFloat("feature angle", &m.params.featureAngleDeg, 0.0f, 180.0f, "%.0f deg");
+      ImGui::PopID();
+    }
+  }
   if (ImGui::CollapsingHeader("superquadric march")) {
     ImGui::SliderInt("iterations", &p.march.maxIterations, 1, 50);
     auto eps = float(p.march.epsilon);

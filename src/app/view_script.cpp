@@ -11,6 +11,7 @@
 #include "app/legend_flags.h"
 #include "app/effect_flags.h"
 #include "app/frame_size.h"
+#include "app/mesh_flags.h"
 #include "app/names.h"
 #include "io/image_writer.h"
 #include "io/tensor_field.h"
@@ -26,7 +27,7 @@ const std::map<std::string, int, std::less<>> kArity = {
     {"epsilon", 1}, {"stats", 1}, {"frames", 1},     {"screenshot", 1}, {"magnitude", -2}, {"clamp", 1},
     {"legend", 1},  {"legend-corner", 1}, {"units", 1}, {"length-units", 1},
     {"ao", 1},      {"ao-radius", 1}, {"ao-strength", 1}, {"outlines", 1}, {"outline-width", 1},
-    {"shadows", 1}, {"shadow", 2}, {"pick", 2}, {"plane", -3}};
+    {"shadows", 1}, {"shadow", 2}, {"pick", 2}, {"plane", -3}, {"mesh", 2}, {"mesh-opacity", 2}};
 
 double number(const ScriptStep& s, std::size_t k) { return parseDouble(s.verb, s.args[k]); }
 
@@ -120,6 +121,10 @@ void check(const ScriptStep& s) {
   if (v == "shadows" && s.args[0] != "on" && s.args[0] != "off") throw UsageError("shadows: on or off");
   if (v == "shadow") shadowValue(s);
   if (v == "plane") checkPlaneSyntax(s);
+  if (v == "mesh" || v == "mesh-opacity") parseIntIn(v, s.args[0], 1, int(render::kMaxContextItems));
+  if (v == "mesh" && s.args[1] != "on" && s.args[1] != "off" && !meshModeNamed(s.args[1]))
+    throw UsageError("mesh: give on, off or a mode (" + std::string(kMeshModeNames) + ")");
+  if (v == "mesh-opacity") parseDoubleIn(v, s.args[1], 0.0, 1.0);
 }
 
 }  // namespace
@@ -205,6 +210,12 @@ void applyStep(const ScriptStep& s, ViewState& v) {
   else if (w == "outlines") p.outline.enabled = s.args[0] == "on";
   else if (w == "outline-width") p.outline.width = number(s, 0);
   else if (w == "shadows") p.shadow.enabled = s.args[0] == "on";
+  else if ((w == "mesh" || w == "mesh-opacity") && std::stoul(s.args[0]) <= v.meshes.size()) {
+    MeshView& m = v.meshes[std::stoul(s.args[0]) - 1];
+    if (w == "mesh-opacity") m.params.opacity = float(number(s, 1));
+    else if (s.args[1] == "on" || s.args[1] == "off") m.visible = s.args[1] == "on";
+    else m.params.mode = *meshModeNamed(s.args[1]);
+  }
   else if (w == "shadow") {
     const double value = shadowValue(s);
     const std::string& t = s.args[0];
@@ -240,6 +251,13 @@ void applyStep(const ScriptStep& s, ViewState& v) {
     (t == "ambient" ? p.light.ambient : t == "head" ? p.light.head : t == "key" ? p.light.key
                                         : t == "specular" ? p.light.specular : p.light.shininess) = value;
   }
+}
+
+void checkScriptMeshes(const std::vector<ScriptStep>& steps, std::size_t meshes, const std::string& path) {
+  for (const ScriptStep& s : steps)
+    if ((s.verb == "mesh" || s.verb == "mesh-opacity") && std::stoul(s.args[0]) > meshes)
+      throw io::InputError(path + ":" + std::to_string(s.line) + ": " + s.verb + ": mesh " + s.args[0] + " of " +
+                       std::to_string(meshes) + " loaded (--mesh, --mesh-from-input)");
 }
 
 }  // namespace tg::app

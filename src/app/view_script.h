@@ -33,6 +33,9 @@
 //   shadow penumbra|strength|bias|map-size V   (render's --shadow-* flags and ranges)
 //   plane N on|off         show or hide slice plane N (1: the first --plane or --plane-at)
 //   plane N index I        move index plane N to slice I of its axis (0-based, as --plane)
+//   mesh N on|off|opaque|see-through|edges   the N-th mesh (--mesh-from-input first, then
+//                          each --mesh; from 1): shown, hidden, or drawn so (render's --mesh-mode)
+//   mesh-opacity N A       the N-th mesh's see-through opacity, 0..1
 //   frames N               render N frames unchanged (for timing)
 //   screenshot FILE        save the rendered view (without the panel)
 //   pick I J               print what pixel (I, J) shows as one line of JSON on
@@ -41,6 +44,7 @@
 #include <vector>
 
 #include "app/orbit_camera.h"
+#include "render/mesh_item.h"
 #include "render/renderer.h"
 #include "render/underlay.h"
 
@@ -55,6 +59,13 @@ struct PlaneView {
   bool operator==(const PlaneView&) const = default;
 };
 
+// A context mesh as the viewer shows it; the viewer hands changes to its MeshItem.
+struct MeshView {
+  std::string label;
+  bool visible = true;
+  render::MeshParams params;
+};
+
 struct ViewState {
   render::FrameParams params;
   OrbitCamera camera;
@@ -65,6 +76,7 @@ struct ViewState {
   tensor::ScaleParams sizing{};
   tensor::MagnitudeSample magnitudes{};
   std::vector<PlaneView> planes{};  // in the order of --plane and --plane-at
+  std::vector<MeshView> meshes{};
 };
 
 // Resolves v.sizing over v.magnitudes into baseScale, params.scale and
@@ -87,6 +99,9 @@ std::vector<ScriptStep> parseScript(const std::string& path);
 // an oblique plane.
 void checkPlaneSteps(const std::vector<ScriptStep>& steps, const std::vector<PlaneView>& planes,
                      const std::string& path);
+// io::InputError "PATH:LINE: mesh: ..." for a mesh step naming a mesh beyond
+// the `meshes` loaded; run once they are, before the window opens.
+void checkScriptMeshes(const std::vector<ScriptStep>& steps, std::size_t meshes, const std::string& path);
 
 // Applies a parsed step to the state. `frames` and `screenshot` change
 // nothing here; the viewer acts on them.

@@ -314,3 +314,46 @@ TEST(ViewScript, PlaneStepsToggleAndMoveOnlyThePlanesTheViewHas) {
   }
   std::filesystem::remove_all(dir);
 }
+
+TEST(ViewScript, MeshCommandsToggleAndSetTheModeOfOneMesh) {
+  const auto dir = std::filesystem::temp_directory_path() / ("tg_view_mesh_" + std::to_string(::getpid()));
+  std::filesystem::create_directories(dir);
+  const auto path = (dir / "s.txt").string();
+  std::ofstream(path) << "mesh 1 off\nmesh 2 see-through\nmesh-opacity 2 0.6\nmesh 1 on\nmesh 1 edges\n";
+  const auto steps = app::parseScript(path);
+  ASSERT_EQ(steps.size(), 5u);
+  app::ViewState v{{}, app::OrbitCamera(start()), 1.0, 1.0};
+  v.meshes = {{"mesh a.stl", true, {}}, {"mesh b.vtp", true, {}}};
+  for (std::size_t k = 0; k < 3; ++k) app::applyStep(steps[k], v);
+  EXPECT_FALSE(v.meshes[0].visible);
+  EXPECT_TRUE(v.meshes[1].visible);
+  EXPECT_EQ(v.meshes[1].params.mode, render::MeshMode::SeeThrough);
+  EXPECT_FLOAT_EQ(v.meshes[1].params.opacity, 0.6f);
+  EXPECT_EQ(v.meshes[0].params, render::MeshParams{});  // the other mesh is untouched
+  app::applyStep(steps[3], v);
+  app::applyStep(steps[4], v);
+  EXPECT_TRUE(v.meshes[0].visible);
+  EXPECT_EQ(v.meshes[0].params.mode, render::MeshMode::Edges);
+  app::checkScriptMeshes(steps, 2, path);
+  try {
+    app::checkScriptMeshes(steps, 1, path);
+    ADD_FAILURE() << "mesh 2 of 1 accepted";
+  } catch (const io::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find(":2: mesh: mesh 2 of 1 loaded"), std::string::npos) << e.what();
+  }
+  const std::pair<const char*, const char*> bad[] = {
+      {"mesh 0 on\n", ":1: mesh: \"0\" is not an integer within 1..255"},
+      {"mesh 1 glass\n", ":1: mesh: give on, off or a mode (opaque, see-through or edges)"},
+      {"mesh-opacity 1 1.5\n", ":1: mesh-opacity must be within 0..1"},
+      {"mesh 1\n", ":1: mesh: wrong number of arguments"}};
+  for (const auto& [text, what] : bad) {
+    std::ofstream(path) << text;
+    try {
+      app::parseScript(path);
+      ADD_FAILURE() << "no error for " << text;
+    } catch (const io::InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
+    }
+  }
+  std::filesystem::remove_all(dir);
+}

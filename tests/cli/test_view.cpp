@@ -137,3 +137,30 @@ TEST(View, ScriptedSlicePlanesMatchTheHeadlessRenderer) {
   EXPECT_GT(covered(s[2]), 3000u) << "the glyphs stay";
   std::filesystem::remove_all(dir);
 }
+
+// A mesh toggled and switched by the script: each screenshot is the headless
+// render with the same mesh flags, pixel for pixel.
+TEST(View, ScriptTogglesAMeshAsRenderDrawsIt) {
+  if (!haveDisplay()) GTEST_SKIP() << "no X display";
+  const auto dir = tg::test::cliDir("view_mesh");
+  const std::string field = std::string(TG_REAL_DATA_DIR) + "/tsv-kitten-stress/kitten-stress.vtu";
+  {
+    std::ofstream s(dir / "script.txt");
+    s << "screenshot " << (dir / "s0.png").string() << "\nmesh 1 see-through\n"
+      << "screenshot " << (dir / "s1.png").string() << "\nmesh 1 off\n"
+      << "screenshot " << (dir / "s2.png").string() << "\n";
+  }
+  const std::string common = " --size 320 240 " + field + " --mesh-from-input";
+  const auto r = runBinary("view" + common + " --script " + (dir / "script.txt").string(), dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  ASSERT_EQ(runBinary("render" + common + " -o " + (dir / "r0.png").string(), dir).code, 0);
+  ASSERT_EQ(runBinary("render" + common + " --mesh-mode see-through -o " + (dir / "r1.png").string(), dir).code, 0);
+  ASSERT_EQ(runBinary("render --size 320 240 " + field + " -o " + (dir / "r2.png").string(), dir).code, 0);
+  int w = 0, h = 0;
+  const char* shots[3] = {"s0.png", "s1.png", "s2.png"};
+  const char* renders[3] = {"r0.png", "r1.png", "r2.png"};
+  for (int k = 0; k < 3; ++k)
+    EXPECT_EQ(differing(readRgba(dir / shots[k], w, h), readRgba(dir / renders[k], w, h)), 0u) << k;
+  EXPECT_GT(differing(readRgba(dir / "r0.png", w, h), readRgba(dir / "r1.png", w, h)), 5000u);
+  std::filesystem::remove_all(dir);
+}

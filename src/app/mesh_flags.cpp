@@ -1,0 +1,109 @@
+#include "app/mesh_flags.h"
+
+#include <cstdio>
+
+#include "app/arg_parse.h"
+#include "app/cli_values.h"
+
+namespace tg::app {
+namespace {
+
+std::string number(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+}  // namespace
+
+std::optional<render::MeshMode> meshModeNamed(std::string_view name) {
+  for (render::MeshMode m : {render::MeshMode::Opaque, render::MeshMode::SeeThrough, render::MeshMode::Edges})
+    if (name == render::meshModeName(m)) return m;
+  return std::nullopt;
+}
+
+void MeshFlags::addTo(OIIO::ArgParse& ap) {
+  using Args = OIIO::cspan<const char*>;
+  const render::MeshParams d;
+  auto given = [this](const char* flag) {
+    if (firstParameterFlag.empty()) firstParameterFlag = flag;
+  };
+  ap.arg("--mesh FILE")
+      .help("draw a surface with the glyphs (repeatable): .vtp .vtk .stl .obj .ply, or the outer surface of a "
+            ".vtu/.vts volume mesh")
+      .action([this](auto&, Args a) { files.emplace_back(a[1]); });
+  ap.arg("--mesh-from-input").help("draw the boundary of the FEM mesh the tensors came from (a .vtu/.vtk input)")
+      .action([this](auto&, Args) { fromInput = true; });
+  ap.arg("--mesh-mode MODE")
+      .help(std::string("how meshes are drawn: opaque, see-through (the front layer blended over the glyphs) or "
+                        "edges (feature edges); default ") + render::meshModeName(d.mode))
+      .action([this, given](auto&, Args a) {
+        given("--mesh-mode");
+        const auto m = meshModeNamed(a[1]);
+        if (!m) throw UsageError("--mesh-mode: unknown mode \"" + std::string(a[1]) + "\"; choose " + kMeshModeNames);
+        params.mode = *m;
+      });
+  ap.arg("--mesh-color R G B")
+      .help("mesh colour, 0..1 (default " + number(d.color.r) + " " + number(d.color.g) + " " + number(d.color.b) + ")")
+      .action([this, given](auto&, Args a) {
+        given("--mesh-color");
+        for (int k = 0; k < 3; ++k) params.color[k] = float(parseDoubleIn("--mesh-color", a[1 + std::size_t(k)], 0.0, 1.0));
+      });
+  ap.arg("--mesh-opacity A")
+      .help("see-through: opacity of a face seen head-on, rising towards the outline (0..1, default " +
+            number(d.opacity) + ")")
+      .action([this, given](auto&, Args a) {
+        given("--mesh-opacity");
+        params.opacity = float(parseDoubleIn("--mesh-opacity", a[1], 0.0, 1.0));
+      });
+  ap.arg("--mesh-feature-angle DEG")
+      .help("edges: draw creases sharper than this, and every boundary edge (0..180, default " +
+            number(d.featureAngleDeg) + ")")
+      .action([this, given](auto&, Args a) {
+        given("--mesh-feature-angle");
+        params.featureAngleDeg = float(parseDoubleIn("--mesh-feature-angle", a[1], 0.0, 180.0));
+      });
+}
+
+void MeshFlags::validate(const std::string& input) const {
+  if (!firstParameterFlag.empty() && !any()) throw UsageError(firstParameterFlag + " needs --mesh or --mesh-from-input");
+  if (fromInput && input.empty())
+    throw UsageError("--mesh-from-input needs an input file: the built-in scene has no FEM mesh");
+}
+
+std::vector<NamedPath> MeshFlags::inputs() const {
+  std::vector<NamedPath> v;
+  for (const std::string& f : files) v.push_back({"--mesh", f});
+  return v;
+}
+
+std::vector<io::MeshData> MeshFlags::read(const std::string& input, const char* command) const {
+  std::vector<io::MeshData> meshes;
+  if (fromInput) meshes.push_back(io::readMesh(input, io::MeshSource::FemBoundary));
+  for (const std::string& f : files) meshes.push_back(io::readMesh(f, io::MeshSource::Surface));
+  for (const io::MeshData& m : meshes)
+    if (m.skippedNonFinite)
+      std::fprintf(stderr, "tensorglyph %s: %s: %zu cells skipped: a vertex is NaN/Inf or beyond single precision\n",
+                   command, m.path.c_str(), m.skippedNonFinite);
+  return meshes;
+}
+
+void addMeshes(render::GlyphRenderer& r, const gl::Api& gl, const gl::ShaderLibrary& lib,
+               const std::vector<io::MeshData>& meshes, const render::MeshParams& params) {
+  for (const io::MeshData& m : meshes) {
+    const std::string name = m.path.substr(m.path.find_last_of('/') + 1);
+    r.addContext(std::make_unique<render::MeshItem>(gl, lib, "mesh " + name, m.positionsWC, m.triangles, params));
+  }
+}
+
+void growByMeshes(const std::vector<io::MeshData>& meshes, glm::dvec3& lo, glm::dvec3& hi) {
+  for (const io::MeshData& m : meshes)
+    for (std::uint32_t i : m.triangles) {
+      const glm::dvec3 p(m.positionsWC[3 * std::size_t(i)], m.positionsWC[3 * std::size_t(i) + 1],
+                         m.positionsWC[3 * std::size_t(i) + 2]);
+      lo = glm::min(lo, p);
+      hi = glm::max(hi, p);
+    }
+}
+
+}  // namespace tg::app
