@@ -74,18 +74,23 @@ RawHeader checkRawHeader(const std::string& path) {
   // nifti_read_header leaves the bytes in the file's order; a header whose
   // size field reads swapped is in the other byte order from ours.
   std::int64_t dim[8] = {};
+  double pixdim[8] = {};
   bool sized = true;
   if (r.version == 2) {
     const auto* h = static_cast<nifti_2_header*>(raw);
     const bool native = h->sizeof_hdr == 540;
     sized = native || __builtin_bswap32(std::uint32_t(h->sizeof_hdr)) == 540;
     for (int k = 0; k < 8; ++k) dim[k] = native ? h->dim[k] : std::int64_t(__builtin_bswap64(std::uint64_t(h->dim[k])));
+    for (int k = 0; k < 8; ++k)
+      pixdim[k] = native ? h->pixdim[k] : std::bit_cast<double>(__builtin_bswap64(std::bit_cast<std::uint64_t>(h->pixdim[k])));
     r.voxOffset = double(native ? h->vox_offset : std::int64_t(__builtin_bswap64(std::uint64_t(h->vox_offset))));
   } else {
     const auto* h = static_cast<nifti_1_header*>(raw);
     const bool native = h->sizeof_hdr == 348;
     sized = native || __builtin_bswap32(std::uint32_t(h->sizeof_hdr)) == 348;
     for (int k = 0; k < 8; ++k) dim[k] = native ? h->dim[k] : std::int16_t(__builtin_bswap16(std::uint16_t(h->dim[k])));
+    for (int k = 0; k < 8; ++k)
+      pixdim[k] = native ? h->pixdim[k] : std::bit_cast<float>(__builtin_bswap32(std::bit_cast<std::uint32_t>(h->pixdim[k])));
     r.voxOffset = native ? h->vox_offset
                          : std::bit_cast<float>(__builtin_bswap32(std::bit_cast<std::uint32_t>(h->vox_offset)));
   }
@@ -94,6 +99,10 @@ RawHeader checkRawHeader(const std::string& path) {
   if (dim[0] < 1 || dim[0] > 7) fail(path, "dim[0] is " + std::to_string(dim[0]) + ", not 1..7");
   for (int k = 1; k <= dim[0]; ++k)
     if (dim[k] < 1) fail(path, "dimension " + std::to_string(k) + " is " + std::to_string(dim[k]));
+  // libnifti2 turns a NaN or Inf voxel size into 1, which would place the
+  // voxels somewhere the file never said.
+  for (int k = 1; k <= std::min<std::int64_t>(dim[0], 3); ++k)
+    if (!std::isfinite(pixdim[k])) fail(path, "pixdim[" + std::to_string(k) + "] (a voxel size) is not finite");
   return r;
 }
 

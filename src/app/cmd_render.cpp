@@ -219,8 +219,7 @@ int cmdRender(int argc, const char** argv) {
   if (underlay) {
     // The camera's depth range holds the planes too (framing stays on the glyphs).
     const auto [ulo, uhi] = underlay->boundsWC();
-    lo = glm::min(lo, ulo);
-    hi = glm::max(hi, uhi);
+    growDepthRange(lo, hi, ulo, uhi);
   }
   // The GPU works in single precision: a box beyond FLT_MAX draws nothing.
   const double extent = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y),
@@ -229,7 +228,9 @@ int cmdRender(int argc, const char** argv) {
     throw io::InputError("render: " + scene.field.path + ": the glyphs extend beyond the floating-point range (scale " +
                          std::to_string(params.scale) + ")");
   const tensor::FramingBox frame = tensor::framingBox(glyphs, !scene.field.grid, sized.typicalRadiusWC);
-  growByMeshes(meshes, lo, hi);
+  glm::dvec3 meshLo(INFINITY), meshHi(-INFINITY);
+  growByMeshes(meshes, meshLo, meshHi);
+  growDepthRange(lo, hi, meshLo, meshHi);
   const render::Camera cam = render::makeCamera(chooseCamera(o, scene, frame), o.width, o.height, lo, hi);
 
   auto ctx = createContext(o.backend, o.width, o.height);

@@ -279,17 +279,14 @@ int cmdView(int argc, const char** argv) {
         appliedPlanes[k] = v.planes[k];
       }
       auto [lo, hi] = tensor::glyphBoxWC(glyphs, p.scale, p.sizing);
-      if (underlayBox) {
-        // The camera's depth range holds the planes too, as render's.
-        lo = glm::min(lo, underlayBox->first);
-        hi = glm::max(hi, underlayBox->second);
-      }
+      // The camera's depth range holds the planes and meshes too, as render's.
+      if (underlayBox) growDepthRange(lo, hi, underlayBox->first, underlayBox->second);
+      growDepthRange(lo, hi, meshLo, meshHi);
       for (std::size_t k = 0; k < meshItems.size(); ++k) {
         meshItems[k]->setVisible(v.meshes[k].visible);
         if (!(meshItems[k]->params() == v.meshes[k].params)) meshItems[k]->setParams(v.meshes[k].params);
       }
-      const render::Camera cam =
-          render::makeCamera(v.camera.desc(), w, h, glm::min(lo, meshLo), glm::max(hi, meshHi));
+      const render::Camera cam = render::makeCamera(v.camera.desc(), w, h, lo, hi);
       renderer.render(cam, p, *target);
       // Never waits for the GPU: the status trails the frame by one or two.
       renderer.requestDrawnCount();

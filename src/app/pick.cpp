@@ -108,6 +108,12 @@ Pick resolvePick(const render::Camera& cam, PixelIJ pixel, std::uint32_t id, dou
   if (render::isContextId(id)) {
     const render::ContextItem* item = renderer.contextItem(id);
     if (!item) throw std::logic_error("resolvePick: id " + std::to_string(id) + " names no context item");
+    // A slice plane's depth is drawn moved behind the glyphs: report the
+    // point on the plane itself, and its depth.
+    if (const auto onItem = item->trueSurface(ray.origin, ray.direction)) {
+      pick.surfaceWC = *onItem;
+      pick.viewDepth = glm::dot(*onItem - ray.origin, ray.direction) / glm::dot(ray.direction, ray.direction);
+    }
     pick.context = ContextPick{item->label(), item->valueAt(*pick.surfaceWC)};
     return pick;
   }

@@ -5,6 +5,7 @@
 #include "data-synthetic/generators.h"
 #include "io/readers.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -57,6 +58,13 @@ render::CameraDesc sceneCamera(const Scene& s, const glm::dvec3& loWC, const glm
     d.upWC = s.preferredCamera->upWC;
   }
   return d;
+}
+
+void growDepthRange(glm::dvec3& lo, glm::dvec3& hi, const glm::dvec3& itemLo, const glm::dvec3& itemHi) {
+  if (!(itemLo.x <= itemHi.x && itemLo.y <= itemHi.y && itemLo.z <= itemHi.z)) return;  // empty
+  const double reach = kContextReach * std::max(glm::length(hi - lo), 1e-30);
+  lo = glm::min(lo, glm::max(itemLo, lo - reach));
+  hi = glm::max(hi, glm::min(itemHi, hi + reach));
 }
 
 }  // namespace tg::app

@@ -31,4 +31,12 @@ Scene loadScene(const std::string& input, const io::ReadOptions& opt);
 render::CameraDesc sceneCamera(const Scene& s, const glm::dvec3& loWC, const glm::dvec3& hiWC, render::Projection p,
                                double fovYDeg, double aspect);
 
+// Grows the camera's depth range [lo, hi], the glyphs' box, to hold a
+// context item's box (a slice plane's volume, a mesh), by at most
+// kContextReach of the glyphs' diagonals each way: an item far larger than
+// the field (an underlay with 1e30-wide voxels) would otherwise move the
+// near plane past every glyph. Beyond that reach the item is clipped.
+inline constexpr double kContextReach = 10.0;
+void growDepthRange(glm::dvec3& lo, glm::dvec3& hi, const glm::dvec3& itemLo, const glm::dvec3& itemHi);
+
 }  // namespace tg::app

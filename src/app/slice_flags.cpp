@@ -4,6 +4,10 @@
 #include <cstdio>
 #include <memory>
 
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
+
 #include "app/cli_values.h"
 #include "io/readers.h"
 #include "render/slice_plane.h"
@@ -46,7 +50,10 @@ void SliceFlags::addTo(OIIO::ArgParse& ap) {
   ap.arg("--underlay SOURCE")
       .help("scalar volume under the glyphs: .nrrd .nhdr .nii .nii.gz .mif .mih .vti on any grid, placed by its "
             "own index-to-world map; or fa, md, cl, cp of the field itself (default fa when only --plane is given)")
-      .action([this](auto&, Args a) { underlay = a[1]; });
+      .action([this](auto&, Args a) {
+        if (!*a[1]) throw UsageError("--underlay needs a file or fa, md, cl or cp");
+        underlay = a[1];
+      });
   ap.arg("--plane SLICE")
       .help("a slice plane of the underlay's grid, SLICE = x|y|z:INDEX (repeatable; default with --underlay: the middle z slice)")
       .action([this](auto&, Args a) { planes.push_back(parsePlane(a[1])); });
@@ -138,6 +145,14 @@ render::UnderlayVolume loadUnderlay(const SliceFlags& f, const io::TensorField& 
     for (int c = 0; c < 3; ++c)
       for (int r = 0; r < 3; ++r) v.indexToWC[c][r] = p.axesWC[3 * r + c];
     v.indexToWC[3] = glm::dvec4(p.originWC[0], p.originWC[1], p.originWC[2], 1.0);
+    // Voxel axes that span no volume (two alike, or a NaN that slipped into
+    // the header) would draw the volume flattened somewhere.
+    const glm::dmat3 axes(v.indexToWC);
+    const double det = glm::determinant(axes);
+    const double size = glm::length(axes[0]) * glm::length(axes[1]) * glm::length(axes[2]);
+    if (!std::isfinite(det) || !std::isfinite(size) || !(std::abs(det) > 1e-9 * size))
+      throw io::InputError(std::string(command) + ": " + f.underlay +
+                           ": the underlay's voxel axes are singular or not finite");
     return v;
   }
   const std::string scalar = f.underlay.empty() ? "fa" : f.underlay;

@@ -48,6 +48,12 @@ class ContextItem {
   // What picking reports of a surface point, beyond the label: the scalar a
   // slice shows there (its underlay's value), or nothing.
   virtual std::optional<double> valueAt(const glm::dvec3& /*pointWC*/) const { return std::nullopt; }
+  // Where the ray origin + t dir (t > 0) meets the item's true surface, for an
+  // item that draws its depth moved (a slice plane's offset); nothing when
+  // the drawn depth is the surface.
+  virtual std::optional<glm::dvec3> trueSurface(const glm::dvec3& /*originWC*/, const glm::dvec3& /*dirWC*/) const {
+    return std::nullopt;
+  }
   // GPU memory the item holds.
   virtual std::size_t gpuBytes() const = 0;
 

@@ -125,6 +125,14 @@ std::optional<double> SlicePlane::valueAt(const glm::dvec3& pointWC) const {
   return volume_->volume().sample(onPlane, params_.linear);
 }
 
+std::optional<glm::dvec3> SlicePlane::trueSurface(const glm::dvec3& originWC, const glm::dvec3& dirWC) const {
+  const double facing = glm::dot(dirWC, quad_.normalWC);
+  if (facing == 0.0) return std::nullopt;  // edge on: the drawn point is as good
+  const double t = glm::dot(quad_.pointWC - originWC, quad_.normalWC) / facing;
+  if (!(t > 0.0)) return std::nullopt;
+  return originWC + t * dirWC;
+}
+
 std::size_t SlicePlane::gpuBytes() const {
   return volume_->gpuBytes() / std::size_t(std::max<long>(volume_.use_count(), 1));
 }

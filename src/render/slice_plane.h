@@ -64,6 +64,7 @@ class SlicePlane : public ContextItem {
   void drawOpaque(const Camera& cam, const FrameParams& p, std::uint32_t id, ContextTarget target) override;
   std::pair<glm::dvec3, glm::dvec3> boundsWC() const override;
   std::optional<double> valueAt(const glm::dvec3& pointWC) const override;
+  std::optional<glm::dvec3> trueSurface(const glm::dvec3& originWC, const glm::dvec3& dirWC) const override;
   // Its share of the volume's texture: the planes of one underlay add up to it.
   std::size_t gpuBytes() const override;
 

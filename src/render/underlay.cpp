@@ -99,9 +99,11 @@ PlaneQuad planeQuad(const UnderlayVolume& v, const PlaneSpec& s) {
     if (!std::isfinite(q.normalWC.x)) throw std::invalid_argument("the underlay's grid is degenerate");
     return q;
   }
-  const double len = glm::length(s.normalWC);
-  if (!(len > 0) || !std::isfinite(len)) throw std::invalid_argument("an oblique plane needs a non-zero normal");
-  const glm::dvec3 n = s.normalWC / len;
+  // Scaled by its largest component first, so that a tiny normal (1e-300)
+  // does not underflow to length 0.
+  const double big = std::max({std::abs(s.normalWC.x), std::abs(s.normalWC.y), std::abs(s.normalWC.z)});
+  if (!(big > 0) || !std::isfinite(big)) throw std::invalid_argument("an oblique plane needs a non-zero normal");
+  const glm::dvec3 n = glm::normalize(s.normalWC / big);
   glm::dvec3 corners[8];
   bool above = false, below = false;
   for (int c = 0; c < 8; ++c) {

@@ -235,7 +235,7 @@ glm::dvec3 ellipsoidAxes(const GlyphRecord& g, double scale) {
 namespace tg::tensor {
 
 BoxWC glyphBoxWC(const GlyphSet& set, double scale) {
-  const double pad = scale * set.maxAbsEigenvalue;
+  const double pad = kGlyphReach * scale * set.maxAbsEigenvalue;
   return {set.boundsMinWC - pad, set.boundsMaxWC + pad};
 }
 

@@ -96,11 +96,17 @@ namespace tg::tensor {
 // (tensor/glyph_scale.h, ScaleParams, resolves it).
 enum class ScaleMode { Absolute, Max, Spacing };
 
-// The glyph centres' bounds widened by the largest semi-axis at `scale`
-// (scale * max |eigenvalue|): the depth range of linear, unclamped glyphs.
+// The glyph centres' bounds widened by kGlyphReach times the largest
+// semi-axis at `scale` (scale * max |eigenvalue|): the depth range of linear,
+// unclamped glyphs of any kind.
 struct BoxWC {
   glm::dvec3 lo, hi;
 };
+// How far any glyph reaches from its centre, in units of its largest
+// semi-axis: a box's corner (and a superquadric's, which its box holds) lies
+// sqrt(3) semi-axes out, a cylinder's rim sqrt(2). The depth range must hold
+// all of it, or the near plane cuts the glyphs nearest the eye.
+inline constexpr double kGlyphReach = 1.7320508075688772;
 BoxWC glyphBoxWC(const GlyphSet& set, double scale);
 
 }  // namespace tg::tensor

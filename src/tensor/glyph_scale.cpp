@@ -134,7 +134,7 @@ double defaultScale(const GlyphSet& set, double spacing) {
 }
 
 BoxWC glyphBoxWC(const GlyphSet& set, double scale, const SizeMapping& s) {
-  const double pad = maxGlyphRadiusWC(set, scale, s);
+  const double pad = kGlyphReach * maxGlyphRadiusWC(set, scale, s);
   return {set.boundsMinWC - pad, set.boundsMaxWC + pad};
 }
 

@@ -370,3 +370,29 @@ TEST(PickView, ScriptPicksMatchRender) {
   EXPECT_NE(bad.err.find(script.string() + ":2: pick"), std::string::npos) << bad.err;
   EXPECT_TRUE(bad.out.empty());
 }
+
+// A box's corner and a cylinder's rim reach sqrt(3) and sqrt(2) semi-axes
+// from the centre; the depth range must hold them, or the near plane cuts
+// the glyph nearest the eye and the pick finds its far wall. One glyph with
+// eigenvalues 1, 0.95, 0.9, turned 45 degrees about y so that an edge of the
+// box faces the eye: on the central ray both the box's edge and the
+// cylinder's rim lie 0.9 sqrt(2) = 1.2728 in front of the centre, beyond
+// the largest semi-axis (1) where the near plane used to be.
+TEST(Pick, BoxesAndCylindersNearTheEyeAreWhole) {
+  Field f;
+  f.positions = {0, 0, 0};
+  f.tensors = {0.95f, 0.0f, -0.05f, 0.95f, 0.0f, 0.95f};
+  f.ids = {0};
+  const fs::path path = writeField(f);
+  const double s = std::sqrt(0.5);
+  for (const auto& [kind, front] : {std::pair{"box", 1.8 * s}, std::pair{"cylinder", 0.9 * std::sqrt(2.0)}}) {
+    const auto r = tg::test::runBinary("render " + path.string() + " -o " + (dir() / "near.png").string() + " --glyph " + kind +
+                                 " --scale 1 --size 65 65 --eye 0 0 10 --look-at 0 0 0 --ortho 3 --pick 32 32",
+                             dir());
+    ASSERT_EQ(r.code, 0) << r.err;
+    const auto picks = parseLines(r.out);
+    ASSERT_EQ(picks.size(), 1u);
+    EXPECT_EQ(picks[0]["hit"].asString(), "glyph") << kind;
+    EXPECT_NEAR(picks[0]["depth"].asDouble(), 10.0 - front, 1e-3) << kind;
+  }
+}

@@ -98,5 +98,71 @@ TEST(SliceCli, ViewRefusesPlanesAndPlaneStepsBeforeOpeningAWindow) {
   std::filesystem::remove_all(dir);
 }
 
+// A 4x3x2 float NRRD of ones with the given space directions and origin.
+std::string writePlaced(const std::filesystem::path& dir, const std::string& name, const std::string& directions,
+                        const std::string& origin) {
+  const auto path = dir / name;
+  std::ofstream out(path, std::ios::binary);
+  out << "NRRD0004\ntype: float\ndimension: 3\nsizes: 4 3 2\nencoding: raw\nendian: little\n"
+      << "space: RAS\nspace directions: " << directions << "\nspace origin: " << origin << "\n\n";
+  for (int k = 0; k < 24; ++k) {
+    const float v = 1.0f;
+    out.write(reinterpret_cast<const char*>(&v), sizeof v);
+  }
+  return path.string();
+}
+
+// Found by attacking: an underlay whose axes span no volume was drawn as a
+// flat sliver, and one with 1e30-wide voxels pushed the near plane past
+// every glyph (an empty image, exit 0). The first is refused; the second
+// keeps the glyphs, its plane clipped to the depth range.
+TEST(SliceCli, DegenerateAndHugeUnderlaysNeverHideTheGlyphs) {
+  const auto dir = cliDir("slice_extreme");
+  const auto out = dir / "out.png";
+  expectFailsCleanly("render -o " + out.string() + " --size 64 48 --underlay " +
+                         writePlaced(dir, "flat.nrrd", "(1,0,0) (0,1,0) (1,0,0)", "(0,0,0)"),
+                     "flat.nrrd: the underlay's voxel axes are singular or not finite", out, dir, 1);
+  std::string plain = " --size 64 48 --no-shadows --no-ao --no-legend";
+  for (int j = 2; j < 48; j += 4)
+    for (int i = 2; i < 64; i += 4) plain += " --pick " + std::to_string(i) + " " + std::to_string(j);
+  auto glyphHits = [](const std::string& lines) {
+    std::size_t n = 0;
+    for (auto at = lines.find("\"hit\":\"glyph\""); at != std::string::npos;
+         at = lines.find("\"hit\":\"glyph\"", at + 1))
+      ++n;
+    return n;
+  };
+  const CmdResult alone = runBinary("render -o " + (dir / "alone.png").string() + plain, dir);
+  ASSERT_EQ(alone.code, 0) << alone.err;
+  ASSERT_GT(glyphHits(alone.out), 10u);
+  const auto huge = writePlaced(dir, "huge.nrrd", "(1e30,0,0) (0,1e30,0) (0,0,1e30)", "(-1e30,-1e30,-1e30)");
+  const CmdResult r = runBinary("render -o " + out.string() + plain + " --underlay " + huge, dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_GT(glyphHits(r.out), glyphHits(alone.out) / 2) << "the glyphs stay in view";
+  EXPECT_EQ(runBinary("render -o " + out.string() + " --underlay ''", dir).code, 2);
+}
+
+// The plane's depth is drawn moved behind the glyph layer (--plane-offset);
+// a pick reports the point on the plane itself.
+TEST(SliceCli, PlanePicksLieOnThePlane) {
+  const auto dir = cliDir("slice_pick");
+  const auto under = writePlaced(dir, "u.nrrd", "(2,0,0) (0,2,0) (0,0,2)", "(-3,-2,1.5)");
+  for (const char* offset : {"0", "1"}) {
+    const CmdResult r = runBinary("render -o " + (dir / "p.png").string() +
+                                      " --size 64 48 --fa-min 1 --underlay " + under +
+                                      " --plane z:0 --eye 1 2 30 --look-at 0 0 0 --plane-offset " + offset +
+                                      " --pick 32 24",
+                                  dir);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.out.find("\"hit\":\"context\""), std::string::npos) << r.out;
+    // The plane z:0 lies at z = 1.5; "surface":[x,y,z]
+    const auto at = r.out.find("\"surface\":[");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    const std::string rest = r.out.substr(at + 11);
+    const double z = std::stod(rest.substr(rest.rfind(',', rest.find(']')) + 1));
+    EXPECT_NEAR(z, 1.5, 1e-6) << "offset " << offset << ": " << r.out;
+  }
+}
+
 }  // namespace
 }  // namespace tg::test

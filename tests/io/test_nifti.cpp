@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 
@@ -234,11 +235,16 @@ TEST(Nifti, BadInputGetsOneLineNamingFileAndProblem) {
   const int16_t seven = 7;  // no such NIfTI datatype; libnifti2 prints its own "** ERROR" line for it
   std::memcpy(&badType[70], &seven, 2);
   std::ofstream(d / "datatype.nii", std::ios::binary) << badType;
+  // libnifti2 reads a NaN voxel size as 1: pixdim[2] at byte 76 + 4 * 2 of a NIfTI-1 header.
+  std::string nanPixdim = bytes;
+  const float nan = std::numeric_limits<float>::quiet_NaN();
+  std::memcpy(&nanPixdim[76 + 4 * 2], &nan, 4);
+  std::ofstream(d / "nan-pixdim.nii", std::ios::binary) << nanPixdim;
   struct Case {
     const char* file;
     const char* expect;
   } cases[] = {{"trunc.nii", "truncated"}, {"garbage.nii", "NIfTI"}, {"huge.nii", "readNifti"},
-               {"datatype.nii", "NIfTI"}};
+               {"datatype.nii", "NIfTI"}, {"nan-pixdim.nii", "pixdim[2] (a voxel size) is not finite"}};
   for (const Case& c : cases) {
     testing::internal::CaptureStderr();
     const std::string e = errorOf(d / c.file);
