@@ -38,7 +38,7 @@ struct Loaded {
 Loaded load() {
   Loaded l;
   l.path = directoryOfThisCode() + "/tensorglyph-oiio.so";
-  void* handle = dlopen(l.path.c_str(), RTLD_NOW | RTLD_LOCAL);
+  void* handle = dlopen(l.path.c_str(), RTLD_LAZY | RTLD_LOCAL);
   if (!handle) {
     l.error = dlerror();
     return l;

@@ -29,7 +29,7 @@ F symbol(void* lib, const char* name) {
 }
 
 OSMesaLibrary openOSMesa() {
-  void* lib = dlopen("libOSMesa.so.8", RTLD_NOW | RTLD_LOCAL);
+  void* lib = dlopen("libOSMesa.so.8", RTLD_LAZY | RTLD_LOCAL);
   if (!lib) throw std::runtime_error(std::string("createOSMesaContext: cannot load libOSMesa.so.8: ") + dlerror());
   return {symbol<decltype(&::OSMesaCreateContextAttribs)>(lib, "OSMesaCreateContextAttribs"),
           symbol<decltype(&::OSMesaMakeCurrent)>(lib, "OSMesaMakeCurrent"),
