@@ -1,5 +1,7 @@
 #include "app/cli_values.h"
 
+#include <cstdio>
+
 #include <charconv>
 #include <cmath>
 #include <sstream>
@@ -54,6 +56,12 @@ void checkOutputPath(std::string_view flag, const std::string& path) {
 glm::dvec3 parseVec3(std::string_view flag, std::span<const char* const> a) {
   if (a.size() != 3) throw UsageError(std::string(flag) + " needs 3 numbers");
   return {parseDouble(flag, a[0]), parseDouble(flag, a[1]), parseDouble(flag, a[2])};
+}
+
+std::string formatNumber(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
 }
 
 }  // namespace tg::app

@@ -56,4 +56,7 @@ inline double msSince(Clock::time_point t) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
 }
 
+// A value as the help texts quote defaults ("%g").
+std::string formatNumber(double v);
+
 }  // namespace tg::app

@@ -6,16 +6,6 @@
 #include "app/cli_values.h"
 
 namespace tg::app {
-namespace {
-
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-
-}  // namespace
-
 std::optional<render::MeshMode> meshModeNamed(std::string_view name) {
   for (render::MeshMode m : {render::MeshMode::Opaque, render::MeshMode::SeeThrough, render::MeshMode::Edges})
     if (name == render::meshModeName(m)) return m;
@@ -44,21 +34,21 @@ void MeshFlags::addTo(OIIO::ArgParse& ap) {
         params.mode = *m;
       });
   ap.arg("--mesh-color R G B")
-      .help("mesh colour, 0..1 (default " + number(d.color.r) + " " + number(d.color.g) + " " + number(d.color.b) + ")")
+      .help("mesh colour, 0..1 (default " + formatNumber(d.color.r) + " " + formatNumber(d.color.g) + " " + formatNumber(d.color.b) + ")")
       .action([this, given](auto&, Args a) {
         given("--mesh-color");
         for (int k = 0; k < 3; ++k) params.color[k] = float(parseDoubleIn("--mesh-color", a[1 + std::size_t(k)], 0.0, 1.0));
       });
   ap.arg("--mesh-opacity A")
       .help("see-through: opacity of a face seen head-on, rising towards the outline (0..1, default " +
-            number(d.opacity) + ")")
+            formatNumber(d.opacity) + ")")
       .action([this, given](auto&, Args a) {
         given("--mesh-opacity");
         params.opacity = float(parseDoubleIn("--mesh-opacity", a[1], 0.0, 1.0));
       });
   ap.arg("--mesh-feature-angle DEG")
       .help("edges: draw creases sharper than this, and every boundary edge (0..180, default " +
-            number(d.featureAngleDeg) + ")")
+            formatNumber(d.featureAngleDeg) + ")")
       .action([this, given](auto&, Args a) {
         given("--mesh-feature-angle");
         params.featureAngleDeg = float(parseDoubleIn("--mesh-feature-angle", a[1], 0.0, 180.0));

@@ -5,16 +5,6 @@
 #include "app/cli_values.h"
 
 namespace tg::app {
-namespace {
-
-std::string number(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
-
-}  // namespace
-
 void ShadowFlags::addTo(OIIO::ArgParse& ap) {
   using Args = OIIO::cspan<const char*>;
   const render::ShadowParams d;
@@ -26,29 +16,29 @@ void ShadowFlags::addTo(OIIO::ArgParse& ap) {
       .action([&p](auto&, Args) { p.enabled = true; });
   ap.arg("--shadow-penumbra F")
       .help("width of the shadows' soft edge, as a fraction of the shadowed region's width (0.." +
-            number(render::kMaxShadowPenumbra) + ", default " + number(d.penumbra) + ")")
+            formatNumber(render::kMaxShadowPenumbra) + ", default " + formatNumber(d.penumbra) + ")")
       .action([&p, given](auto&, Args a) {
         given("--shadow-penumbra");
         p.penumbra = float(parseDoubleIn("--shadow-penumbra", a[1], 0.0, render::kMaxShadowPenumbra));
       });
   ap.arg("--shadow-map-size N")
-      .help("shadow map texels per side, fixed (" + number(render::kMinShadowMapSize) + ".." +
-            number(render::kMaxShadowMapSize) + "; default: about " + number(d.mapDensity) +
-            " per image pixel at the glyphs, at most " + number(d.mapSize) + ")")
+      .help("shadow map texels per side, fixed (" + formatNumber(render::kMinShadowMapSize) + ".." +
+            formatNumber(render::kMaxShadowMapSize) + "; default: about " + formatNumber(d.mapDensity) +
+            " per image pixel at the glyphs, at most " + formatNumber(d.mapSize) + ")")
       .action([&p, given](auto&, Args a) {
         given("--shadow-map-size");
         p.mapSize = parseIntIn("--shadow-map-size", a[1], render::kMinShadowMapSize, render::kMaxShadowMapSize);
         p.mapDensity = 0.0f;
       });
   ap.arg("--shadow-strength S")
-      .help("share of the key light a full shadow removes (0..1, default " + number(d.strength) + ")")
+      .help("share of the key light a full shadow removes (0..1, default " + formatNumber(d.strength) + ")")
       .action([&p, given](auto&, Args a) {
         given("--shadow-strength");
         p.strength = float(parseDoubleIn("--shadow-strength", a[1], 0.0, 1.0));
       });
   ap.arg("--shadow-bias B")
-      .help("depth bias along the light, in shadow map texels (0.." + number(render::kMaxShadowBias) + ", default " +
-            number(d.bias) + ")")
+      .help("depth bias along the light, in shadow map texels (0.." + formatNumber(render::kMaxShadowBias) + ", default " +
+            formatNumber(d.bias) + ")")
       .action([&p, given](auto&, Args a) {
         given("--shadow-bias");
         p.bias = float(parseDoubleIn("--shadow-bias", a[1], 0.0, render::kMaxShadowBias));

@@ -19,12 +19,6 @@ namespace {
 
 constexpr const char* kFieldScalars[] = {"fa", "md", "cl", "cp"};
 
-std::string formatNumber(double v) {
-  char b[32];
-  std::snprintf(b, sizeof b, "%g", v);
-  return b;
-}
-
 render::PlaneSpec parsePlane(const std::string& text) {
   io::SliceSpec s;
   try {
@@ -77,8 +71,8 @@ void SliceFlags::addTo(OIIO::ArgParse& ap) {
         params.colormap = *c;
       });
   ap.arg("--underlay-window LO HI")
-      .help("values mapped onto the colormap's ends (default: the " + formatNumber(d.percentileLo) + "th to " +
-            formatNumber(d.percentileHi) + "th percentile of the volume's finite values)")
+      .help("values mapped onto the colormap's ends (default: percentiles " + formatNumber(d.percentileLo) + " and " +
+            formatNumber(d.percentileHi) + " of the volume's finite values)")
       .action([this, param](auto&, Args a) {
         param("--underlay-window");
         const double lo = parseDouble("--underlay-window", a[1]), hi = parseDouble("--underlay-window", a[2]);
