@@ -217,6 +217,8 @@ int cmdRender(int argc, const char** argv) {
 
   auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale, params.sizing);
   if (underlay) {
+    for (const std::string& w : underlayWarnings(o.slices, *underlay, lo, hi))
+      std::fprintf(stderr, "tensorglyph render: --underlay %s: %s\n", underlay->name.c_str(), w.c_str());
     // The camera's depth range holds the planes too (framing stays on the glyphs).
     const auto [ulo, uhi] = underlay->boundsWC();
     growDepthRange(lo, hi, ulo, uhi);

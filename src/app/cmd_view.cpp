@@ -174,6 +174,8 @@ int cmdView(int argc, const char** argv) {
   std::optional<std::pair<glm::dvec3, glm::dvec3>> underlayBox;
   if (underlay) {
     checkPlanes(o.slices, *underlay, "view");
+    for (const std::string& w : underlayWarnings(o.slices, *underlay, glyphs.boundsMinWC, glyphs.boundsMaxWC))
+      std::fprintf(stderr, "tensorglyph view: --underlay %s: %s\n", underlay->name.c_str(), w.c_str());
     for (const render::PlaneSpec& spec : o.slices.planesFor(*underlay))
       v.planes.push_back({spec, true, spec.axis >= 0 ? underlay->dims[spec.axis] : 0});
     underlayBox = underlay->boundsWC();

@@ -180,6 +180,37 @@ void checkPlanes(const SliceFlags& f, const render::UnderlayVolume& volume, cons
   }
 }
 
+std::vector<std::string> underlayWarnings(const SliceFlags& f, const render::UnderlayVolume& volume,
+                                          const glm::dvec3& glyphLoWC, const glm::dvec3& glyphHiWC) {
+  std::vector<std::string> lines;
+  const auto [lo, hi] = volume.boundsWC();
+  bool overlap = true;
+  for (int a = 0; a < 3; ++a) overlap = overlap && lo[a] <= glyphHiWC[a] && hi[a] >= glyphLoWC[a];
+  if (!overlap) {
+    auto box = [](const glm::dvec3& l, const glm::dvec3& h) {
+      char b[160];
+      std::snprintf(b, sizeof b, "(%g, %g, %g)..(%g, %g, %g)", l.x, l.y, l.z, h.x, h.y, h.z);
+      return std::string(b);
+    };
+    lines.push_back("the underlay's box " + box(lo, hi) + " does not overlap the glyphs' " +
+                    box(glyphLoWC, glyphHiWC) + ": another grid, other units or another affine?");
+  }
+  for (const render::PlaneSpec& p : f.planesFor(volume)) {
+    if (p.axis < 0 || p.index < 0 || p.index >= volume.dims[p.axis]) continue;
+    const int a = p.axis, b = (a + 1) % 3, c = (a + 2) % 3;
+    bool any = false;
+    int ijk[3];
+    ijk[a] = int(p.index);
+    for (ijk[c] = 0; ijk[c] < volume.dims[c] && !any; ++ijk[c])
+      for (ijk[b] = 0; ijk[b] < volume.dims[b] && !any; ++ijk[b])
+        any = std::isfinite(volume.values[std::size_t(ijk[0]) +
+                                          std::size_t(volume.dims[0]) *
+                                              (std::size_t(ijk[1]) + std::size_t(volume.dims[1]) * std::size_t(ijk[2]))]);
+    if (!any) lines.push_back(p.label() + " shows nothing: every voxel of that slice is a hole (masked, unselected or not finite)");
+  }
+  return lines;
+}
+
 std::vector<render::SlicePlane*> addSlicePlanes(render::GlyphRenderer& r, const gl::Api& gl,
                                                 const gl::ShaderLibrary& lib, const SliceFlags& f,
                                                 render::UnderlayVolume volume, double maxAbsEigenvalue) {

@@ -44,6 +44,13 @@ render::UnderlayVolume loadUnderlay(const SliceFlags& f, const io::TensorField& 
 // outside the volume, so the viewer can refuse it before its window opens.
 void checkPlanes(const SliceFlags& f, const render::UnderlayVolume& volume, const char* command);
 
+// What a user would otherwise not see: one line each (without the command's
+// name) for an underlay whose box does not overlap the glyphs' (another grid,
+// other units, a wrong affine?), and for an index plane whose slice holds no
+// finite value (all holes: masked voxels, or a --slice elsewhere).
+std::vector<std::string> underlayWarnings(const SliceFlags& f, const render::UnderlayVolume& volume,
+                                          const glm::dvec3& glyphLoWC, const glm::dvec3& glyphHiWC);
+
 // Adds the planes as context items of `r` (nothing at all when f.any() is
 // false). `maxAbsEigenvalue`: the glyphs', for the depth offset. Throws
 // io::InputError for a plane outside the volume, naming the underlay.

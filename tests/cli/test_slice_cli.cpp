@@ -164,5 +164,26 @@ TEST(SliceCli, PlanePicksLieOnThePlane) {
   }
 }
 
+// Planes a user would not see are said so on stderr (the render still runs):
+// an underlay far from the glyphs, and a slice that is all holes.
+TEST(SliceCli, InvisiblePlanesAreReported) {
+  const auto dir = cliDir("slice_warn");
+  const auto out = dir / "out.png";
+  const auto far = writePlaced(dir, "far.nrrd", "(1,0,0) (0,1,0) (0,0,1)", "(1000,1000,1000)");
+  const CmdResult r = runBinary("render -o " + out.string() + " --size 64 48 --underlay " + far, dir);
+  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("far.nrrd: the underlay's box"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("does not overlap the glyphs'"), std::string::npos) << r.err;
+  const CmdResult near = runBinary("render -o " + out.string() + " --size 64 48 --underlay fa", dir);
+  EXPECT_EQ(near.code, 0) << near.err;
+  EXPECT_EQ(near.err.find("does not overlap"), std::string::npos) << near.err;
+  // The built-in scene selected to slice z:2 has no tensor, so no FA, on z:5.
+  const CmdResult holes =
+      runBinary("render -o " + out.string() + " --size 64 48 --slice z:2 --underlay fa --plane z:5", dir);
+  EXPECT_EQ(holes.code, 0) << holes.err;
+  EXPECT_NE(holes.err.find("plane z:5 shows nothing: every voxel of that slice is a hole"), std::string::npos)
+      << holes.err;
+}
+
 }  // namespace
 }  // namespace tg::test
