@@ -15,9 +15,6 @@ GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib, Ov
     : gl_(gl),
       lib_(lib),
       ellipsoid_(gl, lib, {{GL_VERTEX_SHADER, "ellipsoid.vert"}, {GL_FRAGMENT_SHADER, "ellipsoid.frag"}}),
-      superquadric_(gl, lib, {{GL_VERTEX_SHADER, "superquadric.vert"}, {GL_FRAGMENT_SHADER, "superquadric.frag"}}),
-      superquadricStats_(gl, lib, {{GL_VERTEX_SHADER, "superquadric.vert"}, {GL_FRAGMENT_SHADER, "superquadric.frag"}},
-                         {"TG_ITERATION_STATS"}),
       lighting_(gl, lib, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "lighting.frag"}}),
       sprites_(gl),
       culling_(gl, lib),
@@ -54,7 +51,8 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   eigenMin_ = set.eigenvalueMin;
   eigenMax_ = set.eigenvalueMax;
   typicalDiameter_ = 1.0 / tensor::defaultScale(set, 1.0);
-  for (const gl::Program* prog : glyphPrograms()) prog->set("uMdRange", glm::vec2(mdMin_, mdMax_));
+  for (const gl::Program* prog : glyphPrograms())
+    if (prog) prog->set("uMdRange", glm::vec2(mdMin_, mdMax_));
   prisms_.setMdRange(glm::vec2(mdMin_, mdMax_));
   if (count_ > 0) {
     gl_.CreateBuffers(1, &buffer_);
@@ -67,26 +65,51 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
 
 void GlyphRenderer::setCamera(const gl::Program& prog, const Camera& cam) const { setCameraUniforms(prog, cam); }
 
+// Null where a marching program has not been built yet.
 std::array<const gl::Program*, 4> GlyphRenderer::glyphPrograms() const {
-  return {&ellipsoid_, &superquadric_, &superquadricStats_, &tessellated_.program()};
+  return {&ellipsoid_, superquadric_.get(), superquadricStats_.get(), &tessellated_.program()};
 }
 
 std::array<const gl::Program*, 3> GlyphRenderer::shapePrograms() const {
-  return {&superquadric_, &superquadricStats_, &tessellated_.program()};
+  return {superquadric_.get(), superquadricStats_.get(), &tessellated_.program()};
+}
+
+void GlyphRenderer::setShapeUniforms(const gl::Program& prog, const FrameParams& p, const FrameParams* old) const {
+  auto changed = [&](auto member) { return !old || !(old->*member == p.*member); };
+  if (changed(&FrameParams::gamma)) prog.set("uGamma", float(p.gamma));
+  if (changed(&FrameParams::march)) {
+    prog.set("uMaxIterations", p.march.maxIterations);
+    prog.set("uEpsilon", float(p.march.epsilon));
+  }
+}
+
+// The Newton march, compiled the first time a frame has glyphs to march:
+// ellipsoid, cylinder and box frames never build it (a third of the
+// programs' compile time at start-up), and the counting variant only with
+// --stats.
+const gl::Program& GlyphRenderer::marchProgram(bool stats, const FrameParams& p) {
+  auto& slot = stats ? superquadricStats_ : superquadric_;
+  if (!slot) {
+    const auto stages = {gl::StageSource{GL_VERTEX_SHADER, "superquadric.vert"},
+                         gl::StageSource{GL_FRAGMENT_SHADER, "superquadric.frag"}};
+    slot = stats ? std::make_unique<gl::Program>(gl_, lib_, stages,
+                                                 std::initializer_list<std::string_view>{"TG_ITERATION_STATS"})
+                 : std::make_unique<gl::Program>(gl_, lib_, stages);
+    setGlyphUniforms(*slot, p, nullptr);
+    setShapeUniforms(*slot, p, nullptr);
+    slot->set("uMdRange", glm::vec2(mdMin_, mdMax_));
+  }
+  return *slot;
 }
 
 void GlyphRenderer::setParams(const FrameParams& p) {
   const FrameParams* old = params_ ? &*params_ : nullptr;
   auto changed = [&](auto member) { return !old || !(old->*member == p.*member); };
-  for (const gl::Program* prog : glyphPrograms()) setGlyphUniforms(*prog, p, old);
+  for (const gl::Program* prog : glyphPrograms())
+    if (prog) setGlyphUniforms(*prog, p, old);
   prisms_.setParams(p, old);
-  for (const gl::Program* prog : shapePrograms()) {
-    if (changed(&FrameParams::gamma)) prog->set("uGamma", float(p.gamma));
-    if (changed(&FrameParams::march)) {
-      prog->set("uMaxIterations", p.march.maxIterations);
-      prog->set("uEpsilon", float(p.march.epsilon));
-    }
-  }
+  for (const gl::Program* prog : shapePrograms())
+    if (prog) setShapeUniforms(*prog, p, old);
   if (changed(&FrameParams::background)) {
     lighting_.set("uBackground", p.background);
     if (lightingVariant_) lightingVariant_->set("uBackground", p.background);
@@ -194,7 +217,7 @@ Camera GlyphRenderer::renderShadowMap(const Camera& cam, const FrameParams& p, i
   }
   shadow_->beginMap(light.width);
   // The glyph programs themselves, from the light: the same exact surfaces.
-  if (count_ > 0) drawGlyphs(light, p, split, superquadric_, occluders);
+  if (count_ > 0) drawGlyphs(light, p, split, false, occluders);
   drawContext(light, p, ContextTarget::ShadowMap);
   ++shadowMapPasses_;
   return light;
@@ -217,8 +240,7 @@ void GlyphRenderer::useGlyphProgram(const gl::Program& prog, const Camera& cam) 
 // (tensor::GlyphGroup): the ellipsoid program draws groups [0, split), the
 // marching program the rest. At gamma 0 only mixed-sign glyphs are not
 // ellipsoids; at gamma > 0 only spheres are.
-void GlyphRenderer::drawGlyphs(const Camera& cam, const FrameParams& p, int split, const gl::Program& march,
-                               bool occluders) {
+void GlyphRenderer::drawGlyphs(const Camera& cam, const FrameParams& p, int split, bool stats, bool occluders) {
   if (p.tessellation > 0) {
     setCamera(tessellated_.program(), cam);
     tessellated_.draw(p.tessellation, std::size_t(count_));
@@ -233,6 +255,7 @@ void GlyphRenderer::drawGlyphs(const Camera& cam, const FrameParams& p, int spli
   useGlyphProgram(ellipsoid_, cam);
   culling_.draw(sprites_, 0, split);
   if (split < 3) {
+    const gl::Program& march = marchProgram(stats, p);
     // Per pass, from what ran: the shaders never read a stale pre-pass.
     march.set("uOccluders", occluders ? 1 : 0);
     useGlyphProgram(march, cam);
@@ -276,7 +299,7 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
       gl_.NamedBufferSubData(stats_, 0, sizeof(zero), zero);
       gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, stats_);
     }
-    drawGlyphs(cam, p, split, p.iterationStats ? superquadricStats_ : superquadric_, occluders);
+    drawGlyphs(cam, p, split, p.iterationStats, occluders);
   }
   drawContext(cam, p, ContextTarget::View);
   gl_.Disable(GL_DEPTH_TEST);

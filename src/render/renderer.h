@@ -137,6 +137,8 @@ class GlyphRenderer {
   // Frames that drew the shadow map since construction, and whether the
   // shadow pass (its program and map) exists now: only while frames ask for it.
   std::uint64_t shadowMapPasses() const { return shadowMapPasses_; }
+  // Whether a frame has needed the Newton march (its program is built then).
+  bool marchProgramBuilt() const { return superquadric_ || superquadricStats_; }
   bool shadowPassBuilt() const { return shadow_ != nullptr; }
   int shadowMapSize() const { return shadow_ ? shadow_->mapSize() : 0; }  // texels a side, of the last map
   // GPU memory held for the uploaded glyphs: records, culling's ranges and
@@ -171,9 +173,13 @@ class GlyphRenderer {
   void beginGlyphs() const;
   void useGlyphProgram(const gl::Program& prog, const Camera& cam) const;
   // Every glyph `cam` sees, into the bound framebuffer; groups from `split`
-  // on by the marching program `march` (superquadrics).
-  void drawGlyphs(const Camera& cam, const FrameParams& p, int split, const gl::Program& march, bool occluders);
-  // Programs that draw glyphs, and those of them that take the superquadric shape uniforms.
+  // on by the marching program (superquadrics), the counting one when `stats`.
+  void drawGlyphs(const Camera& cam, const FrameParams& p, int split, bool stats, bool occluders);
+  // The marching program (with Newton counting when `stats`), built on first use.
+  const gl::Program& marchProgram(bool stats, const FrameParams& p);
+  void setShapeUniforms(const gl::Program& prog, const FrameParams& p, const FrameParams* old) const;
+  // Programs that draw glyphs, and those of them that take the superquadric
+  // shape uniforms; null where a marching program is not built yet.
   std::array<const gl::Program*, 4> glyphPrograms() const;
   std::array<const gl::Program*, 3> shapePrograms() const;
   // Sets the lighting uniforms of `p` on a lighting program.
@@ -188,8 +194,7 @@ class GlyphRenderer {
   const gl::Api& gl_;
   const gl::ShaderLibrary& lib_;
   gl::Program ellipsoid_;
-  gl::Program superquadric_;
-  gl::Program superquadricStats_;
+  std::unique_ptr<gl::Program> superquadric_, superquadricStats_;  // built on first use (marchProgram)
   gl::Program lighting_;
   QuadSprites sprites_;
   GlyphCulling culling_;

@@ -162,7 +162,7 @@ TEST_F(GlFixture, PrismsFollowSizingAndThreshold) {
 
 TEST_F(GlFixture, PrismKindsRunOnlyTheirOwnProgram) {
   // "Model only what a scene requires": boxes build no cylinder program and
-  // run no superquadric pre-pass; an ellipsoid frame builds neither.
+  // run no superquadric pre-pass; an ellipsoid frame builds neither, nor the march.
   const auto set = test::glyphsOf(synth::randomField(64, 2));
   const auto cam = test::cameraFor(set, 0.6, test::oblique(set, 12.0, render::Projection::Perspective), 96, 72);
   ctx_->makeCurrent();
@@ -183,4 +183,10 @@ TEST_F(GlFixture, PrismKindsRunOnlyTheirOwnProgram) {
   EXPECT_EQ(r.shadowMapPasses(), 1u);
   const auto img = r.readback(cam, target);
   EXPECT_GT(std::count_if(img.id.begin(), img.id.end(), [](std::uint32_t id) { return id != ref::kNoGlyph; }), 500);
+  // Neither the ellipsoid nor the box frames compiled the Newton march; the
+  // first superquadric frame does, and draws with it.
+  EXPECT_FALSE(r.marchProgramBuilt());
+  p.glyph = render::GlyphKind::Superquadric;
+  r.render(cam, p, target);
+  EXPECT_TRUE(r.marchProgramBuilt());
 }
