@@ -224,17 +224,29 @@ ReadLimits limitsFor(std::uint64_t fileBytes, std::uint64_t memoryBudget) {
   return l;
 }
 
-TensorField readInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
-                        const std::function<TensorField(const PromiseFn&)>& read) {
-  std::optional<TensorField> field;
+namespace {
+
+// runInChild for a result that writeField puts on the wire and `receive`
+// takes off: the child keeps it alive until it is sent.
+template <class Result, class Receive>
+Result resultInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
+                     const std::function<Result(const PromiseFn&)>& read, Receive receive) {
+  std::optional<Result> result;
   runInChild(
       who, path, limits,
       [&read](const PromiseFn& promise) -> SendFn {
-        auto f = std::make_shared<const TensorField>(read(promise));
-        return [f](WireOut& w) { writeField(w, *f); };
+        auto r = std::make_shared<const Result>(read(promise));
+        return [r](WireOut& w) { writeField(w, *r); };
       },
-      [&field](WireIn& in) { field = readField(in); });
-  return std::move(*field);
+      [&](WireIn& in) { result = receive(in); });
+  return std::move(*result);
+}
+
+}  // namespace
+
+TensorField readInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
+                        const std::function<TensorField(const PromiseFn&)>& read) {
+  return resultInChild(who, path, limits, read, [](WireIn& in) { return readField(in); });
 }
 
 void runInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
@@ -318,18 +330,11 @@ void runInChild(const std::string& who, const std::string& path, const ReadLimit
 
 ScalarVolume readScalarInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
                                const std::function<ScalarVolume(const PromiseFn&)>& read) {
-  std::optional<ScalarVolume> volume;
-  runInChild(
-      who, path, limits,
-      [&read](const PromiseFn& promise) -> SendFn {
-        auto v = std::make_shared<const ScalarVolume>(read(promise));
-        return [v](WireOut& w) { writeField(w, *v); };
-      },
-      [&volume](WireIn& in) {
-        volume.emplace();
-        readVolume(in, *volume);
-      });
-  return std::move(*volume);
+  return resultInChild(who, path, limits, read, [](WireIn& in) {
+    ScalarVolume v;
+    readVolume(in, v);
+    return v;
+  });
 }
 
 }  // namespace tg::io

@@ -10,6 +10,7 @@
 #include "app/cli_common.h"
 #include "app/effect_flags.h"
 #include "app/commands.h"
+#include "app/scene_flags.h"
 #include "app/field_flags.h"
 #include "app/frame_size.h"
 #include "app/legend_flags.h"
@@ -32,15 +33,8 @@
 namespace tg::app {
 namespace {
 
-struct RenderOptions {
+struct RenderOptions : SceneFlags {
   std::string input, output, backend = "osmesa", glyph = "ellipsoid", color = "dec";
-  FieldFlags field;
-  LegendFlags legend;
-  EffectFlags effects;
-  ShadowFlags shadow;
-  SliceFlags slices;
-  MeshFlags mesh;
-  LookFlags look;
   PickFlags pick;
   int width = 1024, height = 768;
   double gamma = 3.0;
@@ -99,13 +93,7 @@ RenderOptions parse(int argc, const char** argv) {
     for (int k = 0; k < 4; ++k) o.background[k] = float(parseDouble("--background", a[1 + k]));
   });
   ap.arg("--backend NAME").help("osmesa (default), egl, glfw or auto").action([&](auto&, Args a) { o.backend = a[1]; });
-  o.field.addTo(ap, true);
-  o.legend.addTo(ap);
-  o.effects.addTo(ap);
-  o.shadow.addTo(ap);
-  o.slices.addTo(ap);
-  o.mesh.addTo(ap);
-  o.look.addTo(ap);
+  o.addSceneFlags(ap);
   o.pick.addTo(ap);
   ap.arg("--repeat N").help("render N more frames and report the median frame time").action([&](auto&, Args a) {
     o.repeat = parseIntIn("--repeat", a[1], 0, 10000);
@@ -130,13 +118,7 @@ void validate(const RenderOptions& o) {
   if (o.tessellate != 0 && o.stats) throw UsageError("--stats counts the ray march; --tessellate has none");
   if (o.maxIterations < 1 || o.maxIterations > 1000) throw UsageError("--iterations must be within 1..1000");
   if (!(o.epsilon >= 1e-9 && o.epsilon <= 0.5)) throw UsageError("--epsilon must be within 1e-9..0.5");
-  o.field.validate();
-  o.legend.validate();
-  o.effects.validate();
-  o.shadow.validate();
-  o.slices.validate();
-  o.mesh.validate(o.input);
-  o.look.validate(o.shadow.params.enabled, o.effects.ao.enabled, o.effects.outline.enabled, o.legend.params.enabled);
+  o.validateSceneFlags(o.input);
   if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
   if ((o.lookAt || o.up) && !o.eye) throw UsageError("--look-at and --up need --eye");
   if (!colorModeNamed(o.color))

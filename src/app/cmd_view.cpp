@@ -18,6 +18,7 @@
 #include "app/arg_parse.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
+#include "app/scene_flags.h"
 #include "app/field_flags.h"
 #include "app/frame_size.h"
 #include "app/effect_flags.h"
@@ -42,15 +43,8 @@
 namespace tg::app {
 namespace {
 
-struct ViewOptions {
+struct ViewOptions : SceneFlags {
   std::string input, script, glyph = "ellipsoid", color = "dec", shotPrefix = "tensorglyph-view-";
-  FieldFlags field;
-  LegendFlags legend;
-  ShadowFlags shadow;
-  EffectFlags effects;
-  SliceFlags slices;
-  MeshFlags mesh;
-  LookFlags look;
   int width = 1280, height = 800;
   double gamma = 3.0;
   std::optional<double> faMin;
@@ -83,13 +77,7 @@ ViewOptions parse(int argc, const char** argv) {
       .action([&](auto&, Args a) { o.script = a[1]; });
   ap.arg("--screenshot-prefix P").help("key S saves P0000.png, P0001.png, ... (default tensorglyph-view-)")
       .action([&](auto&, Args a) { o.shotPrefix = a[1]; });
-  o.field.addTo(ap, true);
-  o.legend.addTo(ap);
-  o.shadow.addTo(ap);
-  o.effects.addTo(ap);
-  o.slices.addTo(ap);
-  o.mesh.addTo(ap);
-  o.look.addTo(ap);
+  o.addSceneFlags(ap);
   parseArgs(ap, argc, argv);
   return o;
 }
@@ -99,13 +87,7 @@ void validate(const ViewOptions& o) {
   if (!glyphKindNamed(o.glyph)) throw UsageError("--glyph: unknown kind \"" + o.glyph + "\"; choose " + kGlyphKindNames);
   if (!colorModeNamed(o.color)) throw UsageError("--color: unknown mode \"" + o.color + "\"; choose " + kColorModeNames);
   if (!(o.gamma >= 0.0 && o.gamma <= 1e4)) throw UsageError("--gamma must be within 0..10000");
-  o.field.validate();
-  o.legend.validate();
-  o.shadow.validate();
-  o.effects.validate();
-  o.slices.validate();
-  o.mesh.validate(o.input);
-  o.look.validate(o.shadow.params.enabled, o.effects.ao.enabled, o.effects.outline.enabled, o.legend.params.enabled);
+  o.validateSceneFlags(o.input);
 }
 
 // The median of a sample, 0 for none.

@@ -191,7 +191,7 @@ Camera GlyphRenderer::renderShadowMap(const Camera& cam, const FrameParams& p, i
     lo[a] = std::max(lo[a], p.slab.lo);
     hi[a] = std::max(lo[a], std::min(hi[a], p.slab.hi));
   }
-  const double pad = std::sqrt(3.0) * tensor::glyphRadiusWC(p.scale, p.sizing, maxAbsEigenvalue_);
+  const double pad = tensor::kGlyphReach * tensor::glyphRadiusWC(p.scale, p.sizing, maxAbsEigenvalue_);
   lo -= pad;
   hi += pad;
   // Context both casts and receives: the map covers it too.
