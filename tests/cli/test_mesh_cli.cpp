@@ -14,6 +14,7 @@
 #include <string>
 
 #include "cli/cli_run.h"
+#include "real_data.h"
 
 namespace fs = std::filesystem;
 using tg::test::CmdResult;
@@ -39,7 +40,17 @@ CmdResult run(const std::string& args) {
   return tg::test::runBinary("", dir(), "ulimit -v " + std::to_string(kVirtualKiB) + "; exec " TG_BINARY " " + args);
 }
 
-const std::string kField = std::string(TG_REAL_DATA_DIR) + "/tsv-kitten-stress/kitten-stress.vtu";
+// The kitten's stress field, published by others: only the tests about its
+// FEM mesh need it, and they skip where the datasets are absent.
+const std::string kKitten = std::string(TG_REAL_DATA_DIR) + "/tsv-kitten-stress/kitten-stress.vtu";
+
+// A synthetic stress field (a point load) for the tests that only need
+// glyphs beside their mesh.
+std::string field() {
+  const fs::path p = dir() / "field.vtu";
+  if (!fs::exists(p)) EXPECT_EQ(tg::test::runBinary("synth boussinesq -o " + p.string(), dir()).code, 0);
+  return p.string();
+}
 
 // A unit box, as 8 vertices and 6 quads (faces listed 1-based as OBJ wants them).
 const double kCorner[8][3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {1, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}, {1, 1, 1}};
@@ -88,7 +99,7 @@ std::string boxStl(std::uint32_t claimed = 12) {
 void expectRefused(const std::string& meshArgs, const std::string& what, const std::string& named) {
   const fs::path out = dir() / "refused.png";
   fs::remove(out);
-  const std::string args = "render " + kField + " -o " + out.string() + " --size 64 48 " + meshArgs;
+  const std::string args = "render " + field() + " -o " + out.string() + " --size 64 48 " + meshArgs;
   const CmdResult r = run(args);
   EXPECT_EQ(r.code, 1) << args << " -> " << r.err;
   EXPECT_NE(r.err.find(what), std::string::npos) << args << " -> " << r.err;
@@ -112,7 +123,7 @@ TEST(MeshCli, EveryFormatReadsTheBox) {
                             write("box.stl", boxStl()), write("box.vtp", vtp)};
   for (const fs::path& f : files) {
     const fs::path out = dir() / "box.png";
-    const CmdResult r = run("render " + kField + " -o " + out.string() + " --size 64 48 --verbose --mesh " + f.string());
+    const CmdResult r = run("render " + field() + " -o " + out.string() + " --size 64 48 --verbose --mesh " + f.string());
     EXPECT_EQ(r.code, 0) << f << ": " << r.err;
     EXPECT_NE(r.err.find("mesh " + f.filename().string() + ": 12 triangles, opaque"), std::string::npos) << r.err;
   }
@@ -122,14 +133,15 @@ TEST(MeshCli, EveryFormatReadsTheBox) {
 // the same surface whether read as the input or as a --mesh .vtu; the legacy
 // copy of the same mesh gives the same triangle count.
 TEST(MeshCli, FemBoundaryOfTheKitten) {
+  TG_REQUIRE_REAL_DATA();
   const fs::path out = dir() / "kitten.png";
-  const CmdResult a = run("render " + kField + " -o " + out.string() + " --size 64 48 --verbose --mesh-from-input");
+  const CmdResult a = run("render " + kKitten + " -o " + out.string() + " --size 64 48 --verbose --mesh-from-input");
   ASSERT_EQ(a.code, 0) << a.err;
   const auto at = a.err.find("mesh kitten-stress.vtu: ");
   ASSERT_NE(at, std::string::npos) << a.err;
   const long triangles = std::stol(a.err.substr(at + 24));
   EXPECT_GT(triangles, 1000);
-  const CmdResult b = run("render " + kField + " -o " + out.string() + " --size 64 48 --verbose --mesh " + kField);
+  const CmdResult b = run("render " + kKitten + " -o " + out.string() + " --size 64 48 --verbose --mesh " + kKitten);
   ASSERT_EQ(b.code, 0) << b.err;
   EXPECT_NE(b.err.find("mesh kitten-stress.vtu: " + std::to_string(triangles) + " triangles"), std::string::npos) << b.err;
 }
@@ -139,10 +151,10 @@ TEST(MeshCli, FlagsAreChecked) {
   CmdResult r = run("render -o " + out.string() + " --mesh-from-input");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("--mesh-from-input needs an input file"), std::string::npos) << r.err;
-  r = run("render " + kField + " -o " + out.string() + " --mesh-opacity 0.5");
+  r = run("render " + field() + " -o " + out.string() + " --mesh-opacity 0.5");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("--mesh-opacity needs --mesh"), std::string::npos) << r.err;
-  r = run("render " + kField + " -o " + out.string() + " --mesh-from-input --mesh-mode glass");
+  r = run("render " + field() + " -o " + out.string() + " --mesh-from-input --mesh-mode glass");
   EXPECT_EQ(r.code, 2) << r.err;
   EXPECT_NE(r.err.find("opaque, see-through or edges"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(out));
@@ -172,7 +184,7 @@ TEST(MeshCli, HostileMeshesFailInOneLine) {
   ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   expectRefused("--mesh " + fifo.string(), "not a regular file", "fifo.stl");
   // A volume mesh cut in half: VTK's XML reader must not draw what it made of the rest.
-  std::ifstream in(kField, std::ios::binary);
+  std::ifstream in(field(), std::ios::binary);
   const std::string whole{std::istreambuf_iterator<char>(in), {}};
   expectRefused("--mesh " + write("half.vtu", whole.substr(0, whole.size() / 2)).string(), "half.vtu", "half.vtu");
 }
@@ -185,7 +197,7 @@ TEST(MeshCli, NanVerticesSkipTheirCells) {
   ASSERT_NE(at, std::string::npos);
   s.replace(at, 8, "nan");
   const fs::path f = write("somenan.vtk", s), out = dir() / "somenan.png";
-  const CmdResult r = run("render " + kField + " -o " + out.string() + " --size 64 48 --verbose --mesh " + f.string());
+  const CmdResult r = run("render " + field() + " -o " + out.string() + " --size 64 48 --verbose --mesh " + f.string());
   EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("somenan.vtk: 3 cells skipped: a vertex is NaN/Inf"), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("mesh somenan.vtk: 6 triangles"), std::string::npos) << r.err;

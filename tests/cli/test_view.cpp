@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/cli_run.h"
+#include "real_data.h"
 
 namespace {
 
@@ -142,6 +143,7 @@ TEST(View, ScriptedSlicePlanesMatchTheHeadlessRenderer) {
 // render with the same mesh flags, pixel for pixel.
 TEST(View, ScriptTogglesAMeshAsRenderDrawsIt) {
   if (!haveDisplay()) GTEST_SKIP() << "no X display";
+  TG_REQUIRE_REAL_DATA();
   const auto dir = tg::test::cliDir("view_mesh");
   const std::string field = std::string(TG_REAL_DATA_DIR) + "/tsv-kitten-stress/kitten-stress.vtu";
   {
