@@ -48,7 +48,9 @@ const std::string kKitten = std::string(TG_REAL_DATA_DIR) + "/tsv-kitten-stress/
 // glyphs beside their mesh.
 std::string field() {
   const fs::path p = dir() / "field.vtu";
-  if (!fs::exists(p)) EXPECT_EQ(tg::test::runBinary("synth boussinesq -o " + p.string(), dir()).code, 0);
+  if (!fs::exists(p)) {
+    EXPECT_EQ(tg::test::runBinary("synth boussinesq -o " + p.string(), dir()).code, 0);
+  }
   return p.string();
 }
 
