@@ -40,6 +40,13 @@ bool canWriteImage(const std::string& path) {
   return !ext.empty() && oiioModule("canWriteImage", path).canWrite(path);
 }
 
+std::vector<unsigned char> toRgba8(const render::FrameImage& img) {
+  std::vector<unsigned char> px(img.rgba.size());
+  for (std::size_t i = 0; i < px.size(); ++i)
+    px[i] = static_cast<unsigned char>(std::clamp(img.rgba[i], 0.0f, 1.0f) * 255.0f + 0.5f);
+  return px;
+}
+
 void writeImage(const render::FrameImage& img, const std::string& path) {
   const std::size_t n = std::size_t(img.width) * img.height;
   const std::string ext = lowerExtension(path);
@@ -69,9 +76,7 @@ void writeImage(const render::FrameImage& img, const std::string& path) {
     writeThroughOiio(path, out);
     return;
   }
-  std::vector<unsigned char> px(4 * n);
-  for (std::size_t i = 0; i < 4 * n; ++i)
-    px[i] = static_cast<unsigned char>(std::clamp(img.rgba[i], 0.0f, 1.0f) * 255.0f + 0.5f);
+  const std::vector<unsigned char> px = toRgba8(img);
   if (ext == "png") {
     writePng(path, img.width, img.height, 4, px.data());
     return;

@@ -5,10 +5,15 @@
 //   any other OIIO  RGBA in the format's default depth, through OpenImageIO
 // OpenImageIO is loaded only for the formats that need it (io/oiio_module.h).
 #include <string>
+#include <vector>
 
 #include "render/frame_image.h"
 
 namespace tg::io {
+
+// The 8-bit RGBA every 8-bit format stores (rows top first): each channel
+// clamped to 0..1 and rounded. The Python module returns the same bytes.
+std::vector<unsigned char> toRgba8(const render::FrameImage& img);
 
 // Throws std::runtime_error "writeImage: path: problem" (disk full included);
 // never leaves a partial or temporary file.

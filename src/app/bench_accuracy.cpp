@@ -12,7 +12,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "app/arg_parse.h"
+#include "app/option_table.h"
 #include "app/bench.h"
 #include "app/field_flags.h"
 #include "app/frame_size.h"
@@ -42,38 +42,36 @@ struct Options {
 
 Options parse(int argc, const char** argv) {
   Options o;
-  OIIO::ArgParse ap;
-  ap.intro("tensorglyph bench accuracy [INPUT] -o CSV [options]\n"
+  OptionTable ap("tensorglyph bench accuracy [INPUT] -o CSV [options]\n"
            "Superquadric march: frame time, Newton iterations and error against the\n"
-           "double-precision reference, over maximum iterations x epsilon.")
-      .exit_on_error(false);
-  using Args = OIIO::cspan<const char*>;
+           "double-precision reference, over maximum iterations x epsilon.");
+  using Args = OptionArgs;
   addInputArg(ap, o.input);
-  ap.arg("-o CSV").help("one row per setting").action([&](auto&, Args a) { o.csv = a[1]; });
-  ap.arg("--plot PNG").help("error against frame time (default: the CSV path with .png)").action([&](auto&, Args a) {
+  ap.arg("-o CSV").help("one row per setting").action([&](Args a) { o.csv = a[1]; });
+  ap.arg("--plot PNG").help("error against frame time (default: the CSV path with .png)").action([&](Args a) {
     o.plot = a[1];
   });
-  ap.arg("--size W H").help("image size in pixels (default 640 480)").action([&](auto&, Args a) {
+  ap.arg("--size W H").help("image size in pixels (default 640 480)").action([&](Args a) {
     o.width = parseIntIn("--size", a[1], 16, 8192);
     o.height = parseIntIn("--size", a[2], 16, 8192);
   });
-  ap.arg("--gamma G").help("superquadric sharpness (default 3)").action([&](auto&, Args a) {
+  ap.arg("--gamma G").help("superquadric sharpness (default 3)").action([&](Args a) {
     o.gamma = parseDouble("--gamma", a[1]);
   });
   ap.arg("--iterations LIST").help("maximum iterations, comma-separated (default 1,2,3,4,5,6,8,10,12,15,20,30)")
-      .action([&](auto&, Args a) { o.iterations = parseList<int>("--iterations", a[1], [](auto f, auto t) { return parseIntIn(f, t, 1, 1000); }); });
-  ap.arg("--epsilon LIST").help("tolerances, comma-separated (default 1e-2,1e-3,...,1e-7)").action([&](auto&, Args a) {
+      .action([&](Args a) { o.iterations = parseList<int>("--iterations", a[1], [](auto f, auto t) { return parseIntIn(f, t, 1, 1000); }); });
+  ap.arg("--epsilon LIST").help("tolerances, comma-separated (default 1e-2,1e-3,...,1e-7)").action([&](Args a) {
     o.epsilons = parseList<double>("--epsilon", a[1], parseDouble);
   });
-  ap.arg("--frames N").help("timed frames per setting; the median is reported (default 5)").action([&](auto&, Args a) {
+  ap.arg("--frames N").help("timed frames per setting; the median is reported (default 5)").action([&](Args a) {
     o.frames = parseIntIn("--frames", a[1], 1, 1000);
   });
-  ap.arg("--fa-min F").help("hide glyphs with FA below F").action([&](auto&, Args a) {
+  ap.arg("--fa-min F").help("hide glyphs with FA below F").action([&](Args a) {
     o.faMin = parseDoubleIn("--fa-min", a[1], 0.0, 1.0);
   });
-  ap.arg("--backend NAME").help("osmesa (default), egl, glfw or auto").action([&](auto&, Args a) { o.backend = a[1]; });
+  ap.arg("--backend NAME").help("osmesa (default), egl, glfw or auto").action([&](Args a) { o.backend = a[1]; });
   o.field.addTo(ap, true);
-  parseArgs(ap, argc, argv);
+  parseCommandLine(ap, argc, argv);
   return o;
 }
 

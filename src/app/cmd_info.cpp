@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <limits>
 
-#include "app/arg_parse.h"
+#include "app/option_table.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/field_flags.h"
@@ -17,11 +17,10 @@ namespace tg::app {
 int cmdInfo(int argc, const char** argv) {
   std::string input;
   FieldFlags flags;
-  OIIO::ArgParse ap;
-  ap.intro("tensorglyph info INPUT [selection flags]").exit_on_error(false);
+  OptionTable ap("tensorglyph info INPUT [selection flags]");
   addInputArg(ap, input);
   flags.addTo(ap, true);  // the size flags change what info reports as the default render's size
-  parseArgs(ap, argc, argv);
+  parseCommandLine(ap, argc, argv);
   if (input.empty()) throw UsageError("INPUT is required");
   flags.validate();
 

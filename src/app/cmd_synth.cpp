@@ -3,7 +3,7 @@
 #include <limits>
 #include <string>
 
-#include "app/arg_parse.h"
+#include "app/option_table.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "data-synthetic/generators.h"
@@ -33,21 +33,19 @@ void writeField(const io::TensorField& f, const std::string& out, const double* 
 int cmdSynth(int argc, const char** argv) {
   std::string kind, out;
   long long n = 0, seed = 1;
-  OIIO::ArgParse ap;
-  ap.intro(std::string("tensorglyph synth KIND -o OUT [--n N] [--seed S]\n  KIND: ") + kKinds +
-           "\n  OUT: .vtk .vti .vtu .vtp, or .nrrd for gridded fields, or .nhdr for random (streamed)")
-      .exit_on_error(false);
-  using Args = OIIO::cspan<const char*>;
-  ap.arg("kind").hidden().action([&](auto&, Args a) {
+  OptionTable ap(std::string("tensorglyph synth KIND -o OUT [--n N] [--seed S]\n  KIND: ") + kKinds +
+           "\n  OUT: .vtk .vti .vtu .vtp, or .nrrd for gridded fields, or .nhdr for random (streamed)");
+  using Args = OptionArgs;
+  ap.arg("KIND").action([&](Args a) {
     if (!kind.empty()) throw UsageError("more than one KIND");
-    kind = a[0];
+    kind = a[1];
   });
-  ap.arg("-o OUT").help("output file").action([&](auto&, Args a) { out = a[1]; });
-  ap.arg("--n N").help("size: grid side (helix, boussinesq) or glyph count (random)").action([&](auto&, Args a) {
+  ap.arg("-o OUT").help("output file").action([&](Args a) { out = a[1]; });
+  ap.arg("--n N").help("size: grid side (helix, boussinesq) or glyph count (random)").action([&](Args a) {
     n = parseInt("--n", a[1], 0, 4000000000LL);
   });
-  ap.arg("--seed S").help("random seed").action([&](auto&, Args a) { seed = parseInt("--seed", a[1], 0, std::numeric_limits<long long>::max()); });
-  parseArgs(ap, argc, argv);
+  ap.arg("--seed S").help("random seed").action([&](Args a) { seed = parseInt("--seed", a[1], 0, std::numeric_limits<long long>::max()); });
+  parseCommandLine(ap, argc, argv);
   if (kind.empty() || out.empty()) throw UsageError(std::string("KIND and -o OUT are required; KIND is one of ") + kKinds);
   checkOutputPath("-o", out);
 

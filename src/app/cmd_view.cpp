@@ -15,7 +15,7 @@
 #include <optional>
 #include <string>
 
-#include "app/arg_parse.h"
+#include "app/option_table.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/scene_flags.h"
@@ -52,33 +52,31 @@ struct ViewOptions : SceneFlags {
 
 ViewOptions parse(int argc, const char** argv) {
   ViewOptions o;
-  OIIO::ArgParse ap;
-  ap.intro("tensorglyph view [INPUT] [options]\n"
+  OptionTable ap("tensorglyph view [INPUT] [options]\n"
            "  mouse: left drag orbits, right or middle drag pans, wheel zooms\n"
-           "  keys: R resets the view, S saves a screenshot, Q or Esc quits")
-      .exit_on_error(false);
-  using Args = OIIO::cspan<const char*>;
+           "  keys: R resets the view, S saves a screenshot, Q or Esc quits");
+  using Args = OptionArgs;
   addInputArg(ap, o.input);
-  ap.arg("--size W H").help("window size (default 1280 800)").action([&](auto&, Args a) {
+  ap.arg("--size W H").help("window size (default 1280 800)").action([&](Args a) {
     o.width = parseIntIn("--size", a[1], 64, kMaxFrameSide);
     o.height = parseIntIn("--size", a[2], 64, kMaxFrameSide);
   });
   ap.arg("--glyph KIND").help("ellipsoid (default; the built-in scene: superquadric), superquadric, "
-                                  "or Teem's cylinder or box").action([&](auto&, Args a) {
+                                  "or Teem's cylinder or box").action([&](Args a) {
     o.glyph = a[1];
     o.look.glyphGiven = true;
   });
-  ap.arg("--gamma G").help("superquadric sharpness, >= 0 (default 3)").action([&](auto&, Args a) {
+  ap.arg("--gamma G").help("superquadric sharpness, >= 0 (default 3)").action([&](Args a) {
     o.gamma = parseDouble("--gamma", a[1]);
   });
-  ap.arg("--fa-min F").help("hide glyphs with FA below F").action([&](auto&, Args a) { o.faMin = parseDoubleIn("--fa-min", a[1], 0.0, 1.0); });
-  ap.arg("--color MODE").help(std::string(kColorModeNames)).action([&](auto&, Args a) { o.color = a[1]; });
+  ap.arg("--fa-min F").help("hide glyphs with FA below F").action([&](Args a) { o.faMin = parseDoubleIn("--fa-min", a[1], 0.0, 1.0); });
+  ap.arg("--color MODE").help(std::string(kColorModeNames)).action([&](Args a) { o.color = a[1]; });
   ap.arg("--script FILE").help("run the commands in FILE (see README, \"Viewer\"), then exit")
-      .action([&](auto&, Args a) { o.script = a[1]; });
+      .action([&](Args a) { o.script = a[1]; });
   ap.arg("--screenshot-prefix P").help("key S saves P0000.png, P0001.png, ... (default tensorglyph-view-)")
-      .action([&](auto&, Args a) { o.shotPrefix = a[1]; });
+      .action([&](Args a) { o.shotPrefix = a[1]; });
   o.addSceneFlags(ap);
-  parseArgs(ap, argc, argv);
+  parseCommandLine(ap, argc, argv);
   return o;
 }
 

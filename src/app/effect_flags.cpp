@@ -44,44 +44,44 @@ glm::vec4 parseOutlineColor(std::string_view flag, std::span<const char* const> 
   return c;
 }
 
-void EffectFlags::addTo(OIIO::ArgParse& ap) {
-  using Args = OIIO::cspan<const char*>;
+void EffectFlags::addTo(OptionTable& ap) {
+  using Args = OptionArgs;
   const render::AoParams a;
   const render::OutlineParams o;
-  ap.arg("--ao").help("screen-space ambient occlusion: glyphs in a dense field darken each other").action([&](auto&, Args) {
+  ap.arg("--ao").help("screen-space ambient occlusion: glyphs in a dense field darken each other").action([&](Args) {
     ao.enabled = true;
   });
   std::ostringstream autoRadius;
   autoRadius << "occlusion radius in world units (default: " << render::AoParams::kAutoRadius
              << " typical glyph diameters, the 99th-percentile glyph's)";
   ap.arg("--ao-radius R").help(autoRadius.str())
-      .action([&](auto&, Args v) {
+      .action([&](Args v) {
         ao.radius = parseAoRadius("--ao-radius", v[1]);
         aoTuned = true;
       });
   ap.arg("--ao-strength S").help(withDefault("occlusion weight, 0..4; 1 takes all ambient and head light from a fully "
                                              "occluded point", a.strength))
-      .action([&](auto&, Args v) {
+      .action([&](Args v) {
         ao.strength = parseAoStrength("--ao-strength", v[1]);
         aoTuned = true;
       });
-  ap.arg("--ao-samples N").help(withDefault("hemisphere samples per pixel, 4..64", a.samples)).action([&](auto&, Args v) {
+  ap.arg("--ao-samples N").help(withDefault("hemisphere samples per pixel, 4..64", a.samples)).action([&](Args v) {
     ao.samples = parseAoSamples("--ao-samples", v[1]);
     aoTuned = true;
   });
-  ap.arg("--outlines").help("silhouette and crease lines where glyph, depth or normal change").action([&](auto&, Args) {
+  ap.arg("--outlines").help("silhouette and crease lines where glyph, depth or normal change").action([&](Args) {
     outline.enabled = true;
   });
-  ap.arg("--outline-width W").help(withDefault("line width in pixels, 0.25..8", o.width)).action([&](auto&, Args v) {
+  ap.arg("--outline-width W").help(withDefault("line width in pixels, 0.25..8", o.width)).action([&](Args v) {
     outline.width = parseOutlineWidth("--outline-width", v[1]);
     outlineTuned = true;
   });
-  ap.arg("--outline-color R G B A").help("line colour, 0..1; A blends (default 0 0 0 1)").action([&](auto&, Args v) {
+  ap.arg("--outline-color R G B A").help("line colour, 0..1; A blends (default 0 0 0 1)").action([&](Args v) {
     outline.color = parseOutlineColor("--outline-color", std::span<const char* const>(v.data() + 1, 4));
     outlineTuned = true;
   });
   ap.arg("--outline-crease DEG").help(withDefault("normals turning more than this draw a crease line, 1..179", o.creaseDeg))
-      .action([&](auto&, Args v) {
+      .action([&](Args v) {
         outline.creaseDeg = parseOutlineCrease("--outline-crease", v[1]);
         outlineTuned = true;
       });

@@ -6,7 +6,7 @@
 #include <span>
 #include <string_view>
 
-#include <OpenImageIO/argparse.h>
+#include "app/option_table.h"
 #include <glm/vec4.hpp>
 
 #include "render/renderer.h"
@@ -28,7 +28,7 @@ struct EffectFlags {
 
   // --ao --ao-radius --ao-strength --ao-samples --outlines --outline-width
   // --outline-color --outline-crease
-  void addTo(OIIO::ArgParse& ap);
+  void addTo(OptionTable& ap);
   // A parameter flag without its effect's switch is a usage error: it would
   // silently do nothing.
   void validate() const;

@@ -8,30 +8,30 @@
 
 namespace tg::app {
 
-void FieldFlags::addTo(OIIO::ArgParse& ap, bool scaling) {
-  using Args = OIIO::cspan<const char*>;
+void FieldFlags::addTo(OptionTable& ap, bool scaling) {
+  using Args = OptionArgs;
   io::Selection& sel = read.selection;
   ap.arg("--array NAME").help("VTK: the point array holding the tensors (9, 6, 4 or 3 components)")
-      .action([&](auto&, Args a) { read.arrayName = a[1]; });
+      .action([&](Args a) { read.arrayName = a[1]; });
   ap.arg("--layout L").help("NIfTI component order: fsl (xx xy xz yy yz zz), nifti (SYMMATRIX: xx xy yy xz yz zz), "
                             "mrtrix (xx yy zz xy xz yz) or vtk (xx yy zz xy yz xz); default from the header")
-      .action([&](auto&, Args a) { read.layout = a[1]; });
+      .action([&](Args a) { read.layout = a[1]; });
   ap.arg("--frame F").help("NIfTI tensor axes: voxel, fsl (voxel, i reversed when det > 0) or world; default: the "
                            "layout's (fsl: fsl, mrtrix: world, else voxel)")
-      .action([&](auto&, Args a) { read.frame = a[1]; });
-  ap.arg("--mask FILE").help("scalar volume on the same grid (.nrrd .nhdr .nii .nii.gz .vti)").action([&](auto&, Args a) {
+      .action([&](Args a) { read.frame = a[1]; });
+  ap.arg("--mask FILE").help("scalar volume on the same grid (.nrrd .nhdr .nii .nii.gz .vti)").action([&](Args a) {
     sel.maskPath = a[1];
   });
-  ap.arg("--mask-min V").help("keep voxels whose mask value is >= V (default 0.5)").action([&](auto&, Args a) {
+  ap.arg("--mask-min V").help("keep voxels whose mask value is >= V (default 0.5)").action([&](Args a) {
     sel.maskMin = parseDouble("--mask-min", a[1]);
   });
   ap.arg("--confidence-min C").help("masked NRRD tensors: keep confidence >= C (default 0.5)")
-      .action([&](auto&, Args a) {
+      .action([&](Args a) {
         sel.confidenceMin = parseDouble("--confidence-min", a[1]);
         read.confidenceGiven = true;
       });
   ap.arg("--slice SPEC").help("axis:index[:thickness], e.g. z:40 or z:40:5 (a slab centred on 40)")
-      .action([&](auto&, Args a) {
+      .action([&](Args a) {
         try {
           sel.slice = io::parseSlice(a[1]);
         } catch (const std::invalid_argument& e) {
@@ -39,27 +39,30 @@ void FieldFlags::addTo(OIIO::ArgParse& ap, bool scaling) {
         }
       });
   ap.arg("--stride N").help("every N-th voxel along each axis (every N-th point of a point set)")
-      .action([&](auto&, Args a) { sel.stride = parseInt("--stride", a[1]); });
-  ap.arg("--roi X0 Y0 Z0 X1 Y1 Z1").help("keep samples inside this box (WC)").action([&](auto&, Args a) {
+      .action([&](Args a) { sel.stride = parseInt("--stride", a[1]); });
+  ap.arg("--roi X0 Y0 Z0 X1 Y1 Z1").help("keep samples inside this box (WC)").action([&](Args a) {
     std::array<double, 6> b;
     for (int k = 0; k < 6; ++k) b[k] = parseDouble("--roi", a[1 + k]);
     sel.roiWC = b;
   });
-  ap.arg("--cl-min V").help("hide glyphs with Westin's linear measure cl below V").action([&](auto&, Args a) {
+  ap.arg("--cl-min V").help("hide glyphs with Westin's linear measure cl below V").action([&](Args a) {
     glyph.clMin = parseDouble("--cl-min", a[1]);
   });
-  ap.arg("--cp-min V").help("hide glyphs with Westin's planar measure cp below V").action([&](auto&, Args a) {
+  ap.arg("--cp-min V").help("hide glyphs with Westin's planar measure cp below V").action([&](Args a) {
     glyph.cpMin = parseDouble("--cp-min", a[1]);
   });
   ap.arg("--min-eigenvalue E").help("raise eigenvalues below E to E (shape only; FA is from the data)")
-      .action([&](auto&, Args a) { glyph.minEigenvalue = parseDouble("--min-eigenvalue", a[1]); });
+      .action([&](Args a) { glyph.minEigenvalue = parseDouble("--min-eigenvalue", a[1]); });
   if (!scaling) return;
+  // Sizing is a frame parameter: the glyph records hold eigenvalues, not sizes.
+  const bool reloads = ap.reloadsDefault();
+  ap.setReloadsDefault(false);
   ap.arg("--scale S").help("with --scale-mode absolute (the default when given alone): world units per eigenvalue "
                            "unit; else a factor on the mode's size")
-      .action([&](auto&, Args a) { scale = parseDouble("--scale", a[1]); });
+      .action([&](Args a) { scale = parseDouble("--scale", a[1]); });
   ap.arg("--scale-mode M").help("absolute, max (largest eigenvalue -> S sample spacings across) or spacing (default: "
                                 "99th percentile -> S sample spacings)")
-      .action([&](auto&, Args a) {
+      .action([&](Args a) {
         const std::string m = a[1];
         if (m == "absolute") scaleMode = tensor::ScaleMode::Absolute;
         else if (m == "max") scaleMode = tensor::ScaleMode::Max;
@@ -68,7 +71,7 @@ void FieldFlags::addTo(OIIO::ArgParse& ap, bool scaling) {
       });
   ap.arg("--magnitude M").help("how a glyph's largest |eigenvalue| m sets its size, shape ratios and signs kept: "
                                "linear (default), log (lambda0 ln(1 + m/lambda0)) or shape (every glyph the same size)")
-      .action([&](auto&, Args a) {
+      .action([&](Args a) {
         const auto m = tensor::magnitudeNamed(a[1]);
         if (!m) throw UsageError(std::string("--magnitude: unknown mapping \"") + a[1] + "\"; choose " +
                                  tensor::kMagnitudeNames);
@@ -76,10 +79,11 @@ void FieldFlags::addTo(OIIO::ArgParse& ap, bool scaling) {
       });
   ap.arg("--lambda0 L").help("--magnitude log: the knee; shape: the size every glyph gets (default: the median "
                              "|eigenvalue|)")
-      .action([&](auto&, Args a) { sizing.lambda0 = parseDouble("--lambda0", a[1]); });
+      .action([&](Args a) { sizing.lambda0 = parseDouble("--lambda0", a[1]); });
   ap.arg("--clamp N").help("no glyph wider than N sample spacings, its shape kept (vtkTensorGlyph's ClampScaling); "
                            "0: off (default 2 with --scale-mode spacing or max, off with absolute)")
-      .action([&](auto&, Args a) { sizing.clampSpacings = parseDoubleIn("--clamp", a[1], 0.0, 1e6); });
+      .action([&](Args a) { sizing.clampSpacings = parseDoubleIn("--clamp", a[1], 0.0, 1e6); });
+  ap.setReloadsDefault(reloads);
 }
 
 void FieldFlags::validate() const {

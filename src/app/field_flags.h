@@ -4,7 +4,7 @@
 #include <optional>
 #include <string>
 
-#include <OpenImageIO/argparse.h>
+#include "app/option_table.h"
 
 #include "io/readers.h"
 #include "tensor/glyph.h"
@@ -22,7 +22,7 @@ struct FieldFlags {
   // --array --layout --frame --mask --mask-min --confidence-min --slice --stride
   // --roi --cl-min --cp-min --min-eigenvalue, and with `scaling` also
   // --scale, --scale-mode, --magnitude, --lambda0 and --clamp.
-  void addTo(OIIO::ArgParse& ap, bool scaling);
+  void addTo(OptionTable& ap, bool scaling);
   // Throws UsageError; called before anything is loaded.
   void validate() const;
   // World units per eigenvalue unit. --scale alone is absolute (as Teem's

@@ -25,13 +25,13 @@ void checkLegendText(std::string_view flag, std::string_view text) {
       throw UsageError(std::string(flag) + ": control characters cannot be shown");
 }
 
-void LegendFlags::addTo(OIIO::ArgParse& ap) {
-  using Args = OIIO::cspan<const char*>;
+void LegendFlags::addTo(OptionTable& ap) {
+  using Args = OptionArgs;
   ap.arg("--legend").help("draw a legend: the colour key (a bar, or for dec a sphere of directions) and a scale bar")
-      .action([this](auto&, Args) { params.enabled = true; });
+      .action([this](Args) { params.enabled = true; });
   ap.arg("--legend-corner C").help(std::string("the legend's corner: ") + kLegendCornerNames + " (default " +
                                        legendCornerName(render::LegendParams{}.corner) + ")")
-      .action([this](auto&, Args a) {
+      .action([this](Args a) {
         const auto c = legendCornerNamed(a[1]);
         if (!c) throw UsageError(std::string("--legend-corner: unknown corner \"") + a[1] + "\"; choose " +
                                  kLegendCornerNames);
@@ -39,17 +39,17 @@ void LegendFlags::addTo(OIIO::ArgParse& ap) {
         detailGiven = true;
       });
   ap.arg("--units TEXT").help("units of the tensor values in the legend, e.g. MPa or mm^2/s (default none)")
-      .action([this](auto&, Args a) {
+      .action([this](Args a) {
         params.units = a[1];
         detailGiven = true;
       });
   ap.arg("--length-units TEXT").help("units of positions for the scale bar, e.g. mm (default \"world units\")")
-      .action([this](auto&, Args a) {
+      .action([this](Args a) {
         params.lengthUnits = a[1];
         detailGiven = true;
       });
   ap.arg("--legend-text-scale K").help("legend text height, K x 13 pixels, 1..8 (default: 1 per 700 image rows)")
-      .action([this](auto&, Args a) {
+      .action([this](Args a) {
         params.textScale = parseIntIn("--legend-text-scale", a[1], 1, render::kMaxLegendTextScale);
         detailGiven = true;
       });

@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-#include <OpenImageIO/argparse.h>
+#include "app/option_table.h"
 
 #include "render/legend_params.h"
 
@@ -24,7 +24,7 @@ struct LegendFlags {
   render::LegendParams params;
   bool detailGiven = false;  // any legend flag other than --legend
 
-  void addTo(OIIO::ArgParse& ap);
+  void addTo(OptionTable& ap);
   // Throws UsageError; called before anything is loaded.
   void validate() const;
 };

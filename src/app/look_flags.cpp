@@ -6,12 +6,12 @@
 
 namespace tg::app {
 
-void LookFlags::addTo(OIIO::ArgParse& ap) {
-  using Args = OIIO::cspan<const char*>;
-  ap.arg("--no-shadows").help("the built-in scene without its shadows").action([this](auto&, Args) { noShadows = true; });
-  ap.arg("--no-ao").help("... without its ambient occlusion").action([this](auto&, Args) { noAo = true; });
-  ap.arg("--no-outlines").help("... without its outlines").action([this](auto&, Args) { noOutlines = true; });
-  ap.arg("--no-legend").help("... without its legend").action([this](auto&, Args) { noLegend = true; });
+void LookFlags::addTo(OptionTable& ap) {
+  using Args = OptionArgs;
+  ap.arg("--no-shadows").help("the built-in scene without its shadows").action([this](Args) { noShadows = true; });
+  ap.arg("--no-ao").help("... without its ambient occlusion").action([this](Args) { noAo = true; });
+  ap.arg("--no-outlines").help("... without its outlines").action([this](Args) { noOutlines = true; });
+  ap.arg("--no-legend").help("... without its legend").action([this](Args) { noLegend = true; });
 }
 
 void LookFlags::validate(bool shadows, bool ao, bool outlines, bool legend) const {

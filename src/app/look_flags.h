@@ -5,7 +5,7 @@
 // --no-shadows, --no-ao, --no-outlines and --no-legend turn an effect off.
 // A field read from a file has no preferred look: every effect is off unless
 // asked for (README, "Depth cues and legends", says why).
-#include <OpenImageIO/argparse.h>
+#include "app/option_table.h"
 
 #include "render/renderer.h"
 
@@ -25,7 +25,7 @@ struct LookFlags {
   bool glyphGiven = false;  // set by the command's own --glyph action
   bool noShadows = false, noAo = false, noOutlines = false, noLegend = false;
 
-  void addTo(OIIO::ArgParse& ap);
+  void addTo(OptionTable& ap);
   // UsageError for an effect both asked for and refused (--ao --no-ao).
   void validate(bool shadows, bool ao, bool outlines, bool legend) const;
   // `p` holds what the flags asked for; the look fills in the rest for an

@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "app/arg_parse.h"
+#include "app/option_table.h"
 #include "app/cli_values.h"
 
 namespace tg::app {
@@ -12,8 +12,8 @@ std::optional<render::MeshMode> meshModeNamed(std::string_view name) {
   return std::nullopt;
 }
 
-void MeshFlags::addTo(OIIO::ArgParse& ap) {
-  using Args = OIIO::cspan<const char*>;
+void MeshFlags::addTo(OptionTable& ap) {
+  using Args = OptionArgs;
   const render::MeshParams d;
   auto given = [this](const char* flag) {
     if (firstParameterFlag.empty()) firstParameterFlag = flag;
@@ -21,13 +21,13 @@ void MeshFlags::addTo(OIIO::ArgParse& ap) {
   ap.arg("--mesh FILE")
       .help("draw a surface with the glyphs (repeatable): .vtp .vtk .stl .obj .ply, or the outer surface of a "
             ".vtu/.vts volume mesh")
-      .action([this](auto&, Args a) { files.emplace_back(a[1]); });
+      .action([this](Args a) { files.emplace_back(a[1]); });
   ap.arg("--mesh-from-input").help("draw the boundary of the FEM mesh the tensors came from (a .vtu/.vtk input)")
-      .action([this](auto&, Args) { fromInput = true; });
+      .action([this](Args) { fromInput = true; });
   ap.arg("--mesh-mode MODE")
       .help(std::string("how meshes are drawn: opaque, see-through (the front layer blended over the glyphs) or "
                         "edges (feature edges); default ") + render::meshModeName(d.mode))
-      .action([this, given](auto&, Args a) {
+      .action([this, given](Args a) {
         given("--mesh-mode");
         const auto m = meshModeNamed(a[1]);
         if (!m) throw UsageError("--mesh-mode: unknown mode \"" + std::string(a[1]) + "\"; choose " + kMeshModeNames);
@@ -35,21 +35,21 @@ void MeshFlags::addTo(OIIO::ArgParse& ap) {
       });
   ap.arg("--mesh-color R G B")
       .help("mesh colour, 0..1 (default " + formatNumber(d.color.r) + " " + formatNumber(d.color.g) + " " + formatNumber(d.color.b) + ")")
-      .action([this, given](auto&, Args a) {
+      .action([this, given](Args a) {
         given("--mesh-color");
         for (int k = 0; k < 3; ++k) params.color[k] = float(parseDoubleIn("--mesh-color", a[1 + std::size_t(k)], 0.0, 1.0));
       });
   ap.arg("--mesh-opacity A")
       .help("see-through: opacity of a face seen head-on, rising towards the outline (0..1, default " +
             formatNumber(d.opacity) + ")")
-      .action([this, given](auto&, Args a) {
+      .action([this, given](Args a) {
         given("--mesh-opacity");
         params.opacity = float(parseDoubleIn("--mesh-opacity", a[1], 0.0, 1.0));
       });
   ap.arg("--mesh-feature-angle DEG")
       .help("edges: draw creases sharper than this, and every boundary edge (0..180, default " +
             formatNumber(d.featureAngleDeg) + ")")
-      .action([this, given](auto&, Args a) {
+      .action([this, given](Args a) {
         given("--mesh-feature-angle");
         params.featureAngleDeg = float(parseDoubleIn("--mesh-feature-angle", a[1], 0.0, 180.0));
       });

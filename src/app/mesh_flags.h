@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include <OpenImageIO/argparse.h>
+#include "app/option_table.h"
 #include <glm/vec3.hpp>
 
 #include "app/output_check.h"
@@ -24,7 +24,7 @@ struct MeshFlags {
   render::MeshParams params;
   std::string firstParameterFlag;  // a --mesh-* parameter flag given, for validate()
 
-  void addTo(OIIO::ArgParse& ap);
+  void addTo(OptionTable& ap);
   // UsageError for a parameter flag without a mesh, and for --mesh-from-input
   // without an input file (the built-in scene has no FEM mesh).
   void validate(const std::string& input) const;

@@ -7,12 +7,12 @@
 
 namespace tg::app {
 
-void PickFlags::addTo(OIIO::ArgParse& ap) {
-  using Args = OIIO::cspan<const char*>;
-  ap.arg("--pick I J")
+void PickFlags::addTo(OptionTable& ap) {
+  using Args = OptionArgs;
+  ap.arg("--pick I J").commandLineOnly()
       .help("print what pixel (I, J) shows as one line of JSON on stdout: column I, row J from the top "
             "(repeatable; README, \"Picking\")")
-      .action([this](auto&, Args a) {
+      .action([this](Args a) {
         pixels.push_back(
             {parseIntIn("--pick", a[1], 0, kMaxFrameSide - 1), parseIntIn("--pick", a[2], 0, kMaxFrameSide - 1)});
       });

@@ -3,7 +3,7 @@
 // Lines on stdout after the image is written (app/pick_json.h).
 #include <vector>
 
-#include <OpenImageIO/argparse.h>
+#include "app/option_table.h"
 
 #include "app/pick.h"
 
@@ -12,7 +12,7 @@ namespace tg::app {
 struct PickFlags {
   std::vector<PixelIJ> pixels;  // in the order given
 
-  void addTo(OIIO::ArgParse& ap);
+  void addTo(OptionTable& ap);
   // UsageError for a pixel outside the width x height image: checked before
   // anything is loaded or rendered.
   void validate(int width, int height) const;

@@ -23,13 +23,18 @@ struct SceneFlags {
   MeshFlags mesh;
   LookFlags look;
 
-  void addSceneFlags(OIIO::ArgParse& ap) {
+  // The field's selection, the slice planes and the meshes are loaded and
+  // uploaded; the rest, the field's sizing included, are frame parameters.
+  void addSceneFlags(OptionTable& ap) {
+    const bool reloads = ap.reloadsDefault();
+    ap.setReloadsDefault(true);
     field.addTo(ap, true);
+    slices.addTo(ap);
+    mesh.addTo(ap);
+    ap.setReloadsDefault(reloads);
     legend.addTo(ap);
     effects.addTo(ap);
     shadow.addTo(ap);
-    slices.addTo(ap);
-    mesh.addTo(ap);
     look.addTo(ap);
   }
   // UsageError for the first group whose flags do not fit; `input` is the

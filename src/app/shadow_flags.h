@@ -3,7 +3,7 @@
 // flags, whose help quotes the struct's defaults.
 #include <string>
 
-#include <OpenImageIO/argparse.h>
+#include "app/option_table.h"
 
 #include "render/shadow_pass.h"
 
@@ -13,7 +13,7 @@ struct ShadowFlags {
   render::ShadowParams params;
   std::string firstParameterFlag;  // a --shadow-* flag given, for the check below
 
-  void addTo(OIIO::ArgParse& ap);
+  void addTo(OptionTable& ap);
   // UsageError for a parameter flag without --shadows (it would do nothing).
   void validate() const;
 };

@@ -35,8 +35,8 @@ render::PlaneSpec parsePlane(const std::string& text) {
 
 }  // namespace
 
-void SliceFlags::addTo(OIIO::ArgParse& ap) {
-  using Args = OIIO::cspan<const char*>;
+void SliceFlags::addTo(OptionTable& ap) {
+  using Args = OptionArgs;
   const render::SliceParams d;
   auto param = [this](const char* flag) {
     if (firstParameterFlag.empty()) firstParameterFlag = flag;
@@ -44,16 +44,16 @@ void SliceFlags::addTo(OIIO::ArgParse& ap) {
   ap.arg("--underlay SOURCE")
       .help("scalar volume under the glyphs: .nrrd .nhdr .nii .nii.gz .mif .mih .vti on any grid, placed by its "
             "own index-to-world map; or fa, md, cl, cp of the field itself (default fa when only --plane is given)")
-      .action([this](auto&, Args a) {
+      .action([this](Args a) {
         if (!*a[1]) throw UsageError("--underlay needs a file or fa, md, cl or cp");
         underlay = a[1];
       });
   ap.arg("--plane SLICE")
       .help("a slice plane of the underlay's grid, SLICE = x|y|z:INDEX (repeatable; default with --underlay: the middle z slice)")
-      .action([this](auto&, Args a) { planes.push_back(parsePlane(a[1])); });
+      .action([this](Args a) { planes.push_back(parsePlane(a[1])); });
   ap.arg("--plane-at PX PY PZ NX NY NZ")
       .help("an oblique slice plane through point P with normal N, in world coordinates (repeatable)")
-      .action([this](auto&, Args a) {
+      .action([this](Args a) {
         render::PlaneSpec p;
         p.axis = -1;
         p.pointWC = parseVec3("--plane-at", std::span<const char* const>(a.data() + 1, 3));
@@ -63,7 +63,7 @@ void SliceFlags::addTo(OIIO::ArgParse& ap) {
       });
   ap.arg("--underlay-colormap NAME")
       .help(std::string("gray (default) or viridis"))
-      .action([this, param](auto&, Args a) {
+      .action([this, param](Args a) {
         param("--underlay-colormap");
         const auto c = render::colormapNamed(a[1]);
         if (!c) throw UsageError(std::string("--underlay-colormap: unknown colormap \"") + a[1] + "\"; choose " +
@@ -73,7 +73,7 @@ void SliceFlags::addTo(OIIO::ArgParse& ap) {
   ap.arg("--underlay-window LO HI")
       .help("values mapped onto the colormap's ends (default: percentiles " + formatNumber(d.percentileLo) + " and " +
             formatNumber(d.percentileHi) + " of the volume's finite values)")
-      .action([this, param](auto&, Args a) {
+      .action([this, param](Args a) {
         param("--underlay-window");
         const double lo = parseDouble("--underlay-window", a[1]), hi = parseDouble("--underlay-window", a[2]);
         if (!(lo < hi)) throw UsageError("--underlay-window: LO must be below HI");
@@ -82,7 +82,7 @@ void SliceFlags::addTo(OIIO::ArgParse& ap) {
   ap.arg("--underlay-percentiles LO HI")
       .help("without --underlay-window: the percentiles (0..100) of the volume's finite values mapped onto the "
             "colormap's ends (default " + formatNumber(d.percentileLo) + " " + formatNumber(d.percentileHi) + ")")
-      .action([this, param](auto&, Args a) {
+      .action([this, param](Args a) {
         param("--underlay-percentiles");
         const double lo = parseDoubleIn("--underlay-percentiles", a[1], 0.0, 100.0);
         const double hi = parseDoubleIn("--underlay-percentiles", a[2], 0.0, 100.0);
@@ -93,14 +93,14 @@ void SliceFlags::addTo(OIIO::ArgParse& ap) {
       });
   ap.arg("--underlay-nearest")
       .help("sample the nearest voxel (for masks and labels) instead of trilinear interpolation (the default)")
-      .action([this, param](auto&, Args) {
+      .action([this, param](Args) {
         param("--underlay-nearest");
         params.linear = false;
       });
   ap.arg("--plane-offset R")
       .help("draw planes R largest glyph radii behind themselves, away from the viewer, so glyphs centred on "
             "them are not cut; 0: true depth (default " + formatNumber(d.depthOffsetRadii) + ")")
-      .action([this, param](auto&, Args a) {
+      .action([this, param](Args a) {
         param("--plane-offset");
         params.depthOffsetRadii = parseDoubleIn("--plane-offset", a[1], 0.0, 100.0);
       });

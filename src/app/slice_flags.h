@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include <OpenImageIO/argparse.h>
+#include "app/option_table.h"
 
 #include "io/tensor_field.h"
 #include "render/renderer.h"
@@ -24,7 +24,7 @@ struct SliceFlags {
   std::string firstParameterFlag;  // an --underlay-* flag given, for validate()
   bool percentilesGiven = false;
 
-  void addTo(OIIO::ArgParse& ap);
+  void addTo(OptionTable& ap);
   // UsageError for a parameter flag without a plane or an underlay.
   void validate() const;
   bool any() const { return !underlay.empty() || !planes.empty(); }

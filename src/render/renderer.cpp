@@ -61,6 +61,7 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   }
   culling_.upload(set, buffer_);
   gl::checkError(gl_, "GlyphRenderer::upload");
+  ++uploads_;
 }
 
 void GlyphRenderer::setCamera(const gl::Program& prog, const Camera& cam) const { setCameraUniforms(prog, cam); }

@@ -115,6 +115,9 @@ class GlyphRenderer {
 
   // Uploads the records once; later frames change uniforms only.
   void upload(const tensor::GlyphSet& set);
+  // How many times upload() has run: parameter changes must leave it alone
+  // (the viewer's and the Python module's tests count).
+  std::uint64_t uploadCount() const { return uploads_; }
   // Sets the programs' parameter uniforms: all a change of gamma, threshold,
   // scale, colour, slab or lighting costs on the CPU. render() calls it when
   // `p` differs from the last parameters.
@@ -204,6 +207,7 @@ class GlyphRenderer {
   std::unique_ptr<ShadowPass> shadow_;  // built on first use
   GLuint vao_ = 0, buffer_ = 0, stats_ = 0;
   GLsizei count_ = 0;
+  std::uint64_t uploads_ = 0;
   bool hasOccluders_ = false;  // spheres or definite glyphs uploaded
   std::uint64_t occlusionPrepasses_ = 0, shadowMapPasses_ = 0;
   glm::dvec3 centresLoWC_{0.0}, centresHiWC_{0.0};  // of the uploaded glyphs

@@ -1,0 +1,45 @@
+#pragma once
+// The options of `render`, defined once: the command line (cmd_render.cpp)
+// and the Python module (python/) register the same table, so that names,
+// defaults and checks cannot drift.
+#include <optional>
+#include <string>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "app/option_table.h"
+#include "app/pick_flags.h"
+#include "app/scene.h"
+#include "app/scene_flags.h"
+#include "render/camera.h"
+#include "render/renderer.h"
+#include "tensor/glyph_scale.h"
+
+namespace tg::app {
+
+struct RenderOptions : SceneFlags {
+  std::string input, output, backend = "osmesa", glyph = "ellipsoid", color = "dec";
+  PickFlags pick;
+  int width = 1024, height = 768;
+  double gamma = 3.0;
+  std::optional<double> faMin, fov, ortho;
+  std::optional<glm::dvec3> eye, lookAt, up;
+  glm::vec4 background{0.08f, 0.08f, 0.10f, 1.0f};
+  int repeat = 0, tessellate = 0, maxIterations = render::MarchParams{}.maxIterations;
+  double epsilon = render::MarchParams{}.epsilon;
+  bool verbose = false, stats = false;
+};
+
+
+// Registers every option of `render` on `table`, each writing into `o`.
+void addRenderOptions(OptionTable& table, RenderOptions& o);
+// Every parameter checked before anything is loaded or created (UsageError).
+// `toFile`: -o is required and checked (the command line); the Python module
+// returns images instead.
+void validateRenderOptions(const RenderOptions& o, bool toFile);
+// The camera: the flags', else the scene's preferred view, else one that
+// frames `frame` (the sample positions, not the glyphs' whole box).
+render::CameraDesc chooseCamera(const RenderOptions& o, const Scene& s, const tensor::FramingBox& frame);
+
+}  // namespace tg::app

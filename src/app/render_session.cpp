@@ -1,0 +1,120 @@
+#include "app/render_session.h"
+
+#include <algorithm>
+#include <cfloat>
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+#include <tuple>
+
+#include "app/cli_common.h"
+#include "app/field_flags.h"
+#include "app/mesh_flags.h"
+#include "app/names.h"
+#include "app/slice_flags.h"
+#include "render/legend_pass.h"
+
+namespace tg::app {
+
+RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io::MeshData> meshes, bool keepGlyphs,
+                             const char* command, const std::function<void(io::TensorField&)>& beforeUpload)
+    : scene_(std::move(scene)), command_(command) {
+  const auto t0 = Clock::now();
+  glyphs_ = tensor::buildGlyphs(scene_.field.positions, scene_.field.tensors, scene_.field.ids, 0, o.field.glyph);
+  checkDrawable(glyphs_, scene_.field.path);
+  buildMs_ = msSince(t0);
+  magnitudes_ = tensor::sampleMagnitudes(glyphs_, scene_.field.sampleSpacing);
+  const Boxes first = boxes(tensor::resolveScale(o.field.scaleParams(), magnitudes_));
+  std::optional<render::UnderlayVolume> underlay;
+  if (o.slices.any()) {
+    underlay = loadUnderlay(o.slices, scene_.field, command_);
+    for (const std::string& w : underlayWarnings(o.slices, *underlay, first.glyphsWC.lo, first.glyphsWC.hi))
+      std::fprintf(stderr, "tensorglyph %s: --underlay %s: %s\n", command_, underlay->name.c_str(), w.c_str());
+    std::tie(underlayLoWC_, underlayHiWC_) = underlay->boundsWC();
+  }
+  growByMeshes(meshes, meshLoWC_, meshHiWC_);
+  // Each stage frees what the next no longer needs, so that peak memory
+  // holds at most two copies of the glyphs (the records and the GL buffer).
+  if (beforeUpload) beforeUpload(scene_.field);
+
+  ctx_ = createContext(o.backend, o.width, o.height);
+  lib_ = std::make_unique<gl::ShaderLibrary>();
+  renderer_ = std::make_unique<render::GlyphRenderer>(ctx_->api(), *lib_, render::makeLegendPass);
+  target_ = std::make_unique<render::GBuffer>(ctx_->api(), o.width, o.height);
+  if (underlay) addSlicePlanes(*renderer_, ctx_->api(), *lib_, o.slices, std::move(*underlay), glyphs_.maxAbsEigenvalue);
+  const auto t1 = Clock::now();
+  renderer_->upload(glyphs_);
+  addMeshes(*renderer_, ctx_->api(), *lib_, meshes, o.mesh.params);
+  meshes.clear();
+  ctx_->api().Finish();
+  uploadMs_ = msSince(t1);
+  glyphCount_ = glyphs_.glyphs.size();
+  if (!keepGlyphs) {
+    kept_ = first;
+    glyphs_.glyphs = {};
+  }
+}
+
+RenderSession::~RenderSession() = default;
+
+RenderSession::Boxes RenderSession::boxes(const tensor::ResolvedScale& sized) const {
+  if (kept_) {
+    if (kept_->scale != sized.scale || !(kept_->mapping == sized.mapping))
+      throw std::logic_error("RenderSession::frame: a new scale needs the glyph records, which were dropped");
+    return *kept_;
+  }
+  Boxes b;
+  b.scale = sized.scale;
+  b.mapping = sized.mapping;
+  b.glyphsWC = tensor::glyphBoxWC(glyphs_, sized.scale, sized.mapping);
+  b.framing = tensor::framingBox(glyphs_, !scene_.field.grid, sized.typicalRadiusWC);
+  return b;
+}
+
+RenderSession::Frame RenderSession::frame(const RenderOptions& o) const {
+  Frame f;
+  f.sized = tensor::resolveScale(o.field.scaleParams(), magnitudes_);
+  render::FrameParams& params = f.params;
+  params.scale = f.sized.scale;
+  params.sizing = f.sized.mapping;
+  params.faMin = o.faMin.value_or(scene_.preferredFaMin.value_or(0.0));
+  params.color = *colorModeNamed(o.color);
+  params.glyph = *glyphKindNamed(o.glyph);
+  params.gamma = o.gamma;
+  params.march = {o.maxIterations, o.epsilon};
+  params.iterationStats = o.stats;
+  params.tessellation = o.tessellate;
+  params.background = o.background;
+  params.legend = o.legend.params;
+  params.ao = o.effects.ao;
+  params.outline = o.effects.outline;
+  params.shadow = o.shadow.params;
+  if (scene_.preferredLook) o.look.apply(*scene_.preferredLook, params, o.height);
+
+  const Boxes b = boxes(f.sized);
+  glm::dvec3 lo = b.glyphsWC.lo, hi = b.glyphsWC.hi;
+  // The camera's depth range holds the planes and meshes too (framing stays on the glyphs).
+  growDepthRange(lo, hi, underlayLoWC_, underlayHiWC_);
+  growDepthRange(lo, hi, meshLoWC_, meshHiWC_);
+  // The GPU works in single precision: a box beyond FLT_MAX draws nothing.
+  const double extent = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x), std::abs(hi.y),
+                                  std::abs(hi.z)});
+  if (!(extent <= double(FLT_MAX)))
+    throw io::InputError(std::string(command_) + ": " + scene_.field.path +
+                         ": the glyphs extend beyond the floating-point range (scale " + std::to_string(params.scale) +
+                         ")");
+  f.framing = b.framing;
+  f.camera = render::makeCamera(chooseCamera(o, scene_, f.framing), o.width, o.height, lo, hi);
+  return f;
+}
+
+void RenderSession::draw(const Frame& f) {
+  renderer_->render(f.camera, f.params, *target_);
+  ctx_->api().Finish();
+}
+
+render::FrameImage RenderSession::readback(const Frame& f, render::Channels channels) {
+  return renderer_->readback(f.camera, *target_, channels);
+}
+
+}  // namespace tg::app

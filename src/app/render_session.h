@@ -1,0 +1,86 @@
+#pragma once
+// A scene on a GL context with its glyphs uploaded once: `render` draws it a
+// frame at a time, and the Python module's Renderer redraws it for new frame
+// parameters (γ, FA threshold, scale, colour, camera, depth cues) with no
+// second upload. Options that change what is loaded (OptionTable::reloads)
+// need a new session.
+#include <cmath>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/render_options.h"
+#include "app/scene.h"
+#include "gl/context.h"
+#include "gl/shader_library.h"
+#include "io/mesh_reader.h"
+#include "render/frame_image.h"
+#include "render/gbuffer.h"
+#include "render/renderer.h"
+#include "tensor/glyph.h"
+
+namespace tg::app {
+
+class RenderSession {
+ public:
+  // Builds the glyphs from `scene` (checkDrawable), reads the underlay and
+  // uploads everything. `keepGlyphs`: keep the records on the CPU, which a
+  // change of scale needs to refit the camera's depth range; `render` drops
+  // them to hold peak memory down. `beforeUpload` may take the field's
+  // samples (a pick table) or free them before the GPU copy is made.
+  // `command` prefixes warnings on stderr.
+  RenderSession(const RenderOptions& o, Scene scene, std::vector<io::MeshData> meshes, bool keepGlyphs,
+                const char* command, const std::function<void(io::TensorField&)>& beforeUpload = {});
+  ~RenderSession();
+  RenderSession(const RenderSession&) = delete;
+  RenderSession& operator=(const RenderSession&) = delete;
+
+  // The frame parameters and camera `o` asks for. Throws io::InputError when
+  // the glyphs at this scale leave single precision's range, and
+  // std::logic_error for a new scale once the glyphs were dropped.
+  struct Frame {
+    render::FrameParams params;
+    render::Camera camera;
+    tensor::ResolvedScale sized;
+    tensor::FramingBox framing;
+  };
+  Frame frame(const RenderOptions& o) const;
+  void draw(const Frame& f);
+  render::FrameImage readback(const Frame& f, render::Channels channels);
+
+  const Scene& scene() const { return scene_; }
+  Scene& scene() { return scene_; }
+  render::GlyphRenderer& renderer() { return *renderer_; }
+  render::GBuffer& target() { return *target_; }
+  gl::Context& context() { return *ctx_; }
+  std::size_t glyphCount() const { return glyphCount_; }
+  double buildMs() const { return buildMs_; }
+  double uploadMs() const { return uploadMs_; }
+
+ private:
+  struct Boxes {  // what the glyphs' records give for one scale
+    double scale = 0.0;
+    tensor::SizeMapping mapping;
+    tensor::BoxWC glyphsWC;
+    tensor::FramingBox framing;
+  };
+  Boxes boxes(const tensor::ResolvedScale& sized) const;
+
+  Scene scene_;
+  tensor::GlyphSet glyphs_;  // the records, kept only with keepGlyphs
+  tensor::MagnitudeSample magnitudes_;
+  std::size_t glyphCount_ = 0;
+  glm::dvec3 underlayLoWC_{INFINITY}, underlayHiWC_{-INFINITY};
+  glm::dvec3 meshLoWC_{INFINITY}, meshHiWC_{-INFINITY};
+  std::optional<Boxes> kept_;  // the first options' boxes, when the records are dropped
+  std::unique_ptr<gl::Context> ctx_;
+  std::unique_ptr<gl::ShaderLibrary> lib_;
+  std::unique_ptr<render::GlyphRenderer> renderer_;
+  std::unique_ptr<render::GBuffer> target_;
+  double buildMs_ = 0.0, uploadMs_ = 0.0;
+  const char* command_;
+};
+
+}  // namespace tg::app
