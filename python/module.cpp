@@ -1,0 +1,294 @@
+// tensorglyph._core: the render core for Python. One class, Renderer, over
+// app::RenderSession: the same options table as the CLI (app/render_options.h),
+// the same readers, the same session, so the module and `render` cannot
+// drift. Keyword handling (nibabel, DIPY, value spelling) is in __init__.py.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <cstring>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "app/cli_values.h"
+#include "app/field_flags.h"
+#include "app/option_table.h"
+#include "app/render_options.h"
+#include "app/render_session.h"
+#include "app/scene.h"
+#include "io/array_field.h"
+#include "io/image_writer.h"
+#include "io/tensor_field.h"
+
+namespace py = pybind11;
+using namespace tg;
+
+namespace {
+
+// (keyword, [values]) per occurrence, in the order given.
+using OptionList = std::vector<std::pair<std::string, std::vector<std::string>>>;
+
+// Usage errors become ValueError, unknown keywords TypeError, as Python's own
+// calls report them; bad data (io::InputError) is ValueError too.
+void applyOptions(const app::OptionTable& table, const OptionList& given, const char* fn) {
+  for (const auto& [kw, values] : given) {
+    const app::OptionTable::Option* opt = table.find(kw);
+    if (!opt || opt->positional || opt->cliOnly || opt->isHidden || opt->keyword() != kw)
+      throw py::type_error(std::string(fn) + "() got an unexpected keyword argument '" + kw + "'");
+    app::OptionTable::apply(*opt, values);
+  }
+}
+
+io::ArrayRef arrayRef(const py::array& a) {
+  io::ArrayRef r;
+  r.data = a.data();
+  if (a.dtype().kind() != 'f') throw std::domain_error("values must be float32 or float64");
+  r.itemBytes = int(a.itemsize());
+  for (py::ssize_t k = 0; k < a.ndim(); ++k) {
+    r.shape.push_back(a.shape(k));
+    r.strides.push_back(a.strides(k));
+  }
+  return r;
+}
+
+// What the glyphs come from: arrays, a file, or the built-in scene.
+struct Source {
+  std::optional<py::array> tensors, positions;
+  std::optional<std::vector<double>> affine;  // 16, row-major
+  std::string layout, frame, path;
+  bool builtIn = true;
+};
+
+app::Scene loadSource(const Source& s, const app::RenderOptions& o) {
+  if (!s.tensors) return app::loadScene(s.path, o.field.read);
+  app::Scene scene;
+  io::ArrayRef t;
+  try {
+    t = arrayRef(*s.tensors);
+  } catch (const std::domain_error& e) {
+    throw std::domain_error(std::string("tensors: ") + e.what());
+  }
+  if (s.positions) {
+    io::ArrayRef p;
+    try {
+      p = arrayRef(*s.positions);
+    } catch (const std::domain_error& e) {
+      throw std::domain_error(std::string("positions: ") + e.what());
+    }
+    scene.field = io::fieldFromPoints(t, s.layout, p);
+  } else {
+    if (!s.affine) throw std::invalid_argument("affine: a volume needs its 4x4 voxel-to-world affine");
+    scene.field = io::fieldFromVolume(t, s.layout, s.affine->data(), s.frame,
+                                      o.field.read.selection);
+  }
+  app::checkLoaded(scene.field, o.field.read);
+  return scene;
+}
+
+py::array_t<float> floatImage(const std::vector<float>& v, int h, int w, int c) {
+  std::vector<py::ssize_t> shape{h, w};
+  if (c > 1) shape.push_back(c);
+  py::array_t<float> a(shape);
+  std::memcpy(a.mutable_data(), v.data(), v.size() * sizeof(float));
+  return a;
+}
+
+class Renderer {
+ public:
+  Renderer(Source source, OptionList options) : source_(std::move(source)) { rebuild(options); }
+
+  // Re-renders with `options` (all of them, not a difference): loads and
+  // uploads again only when an option that reloads (OptionTable::reloads)
+  // changed; γ, FA threshold, scale, colour, camera and depth cues do not.
+  py::dict render(const OptionList& options, bool channels) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    app::RenderOptions o;
+    app::OptionTable table;
+    app::addRenderOptions(table, o);
+    applyOptions(table, options, "render");
+    app::validateRenderOptions(o, false);
+    if (reloadKeys(table, options) != reloadKeys_) {
+      py::gil_scoped_release release;
+      build(o, options, table);
+    }
+    render::FrameImage img;
+    {
+      py::gil_scoped_release release;
+      session_->context().makeCurrent();
+      const app::RenderSession::Frame f = session_->frame(o);
+      session_->draw(f);
+      img = session_->readback(f, channels ? render::Channels::All : render::Channels::Color);
+    }
+    py::dict out;
+    py::array_t<std::uint8_t> rgba({img.height, img.width, 4});
+    const std::vector<unsigned char> px = io::toRgba8(img);
+    std::memcpy(rgba.mutable_data(), px.data(), px.size());
+    out["rgba"] = rgba;
+    if (channels) {
+      out["color"] = floatImage(img.rgba, img.height, img.width, 4);
+      out["depth"] = floatImage(img.depth, img.height, img.width, 1);
+      out["normal"] = floatImage(img.normalWC, img.height, img.width, 3);
+      py::array_t<std::uint32_t> id({img.height, img.width});
+      std::memcpy(id.mutable_data(), img.id.data(), img.id.size() * sizeof(std::uint32_t));
+      out["id"] = id;
+    }
+    out["glyphs"] = session_->glyphCount();
+    return out;
+  }
+
+  std::uint64_t uploads() const { return previousUploads_ + session_->renderer().uploadCount(); }
+  std::size_t glyphCount() const { return session_->glyphCount(); }
+
+ private:
+  // The values of every reloading option given, in order: equal lists mean
+  // the loaded scene and the upload still hold.
+  static OptionList reloadKeys(const app::OptionTable& table, const OptionList& options) {
+    OptionList keys;
+    for (const auto& kv : options)
+      if (const auto* opt = table.find(kv.first); opt && opt->reload) keys.push_back(kv);
+    return keys;
+  }
+
+  void rebuild(const OptionList& options) {
+    app::RenderOptions o;
+    app::OptionTable table;
+    app::addRenderOptions(table, o);
+    applyOptions(table, options, "Renderer");
+    app::validateRenderOptions(o, false);
+    py::gil_scoped_release release;
+    build(o, options, table);
+  }
+
+  void build(const app::RenderOptions& o, const OptionList& options, const app::OptionTable& table) {
+    app::Scene scene = loadSource(source_, o);
+    app::reportLoad(scene.field, "python");
+    std::vector<io::MeshData> meshes = o.mesh.read(source_.path, "python");
+    if (session_) previousUploads_ += session_->renderer().uploadCount();
+    session_.reset();
+    session_ = std::make_unique<app::RenderSession>(o, std::move(scene), std::move(meshes), true, "python",
+                                                    [](io::TensorField& f) { f.releaseSamples(); });
+    reloadKeys_ = reloadKeys(table, options);
+  }
+
+  Source source_;
+  std::unique_ptr<app::RenderSession> session_;
+  OptionList reloadKeys_;
+  std::uint64_t previousUploads_ = 0;
+  std::mutex mutex_;
+};
+
+template <class T>
+py::array_t<T, py::array::c_style | py::array::forcecast> channel(const py::dict& d, const char* key,
+                                                                  std::size_t count) {
+  if (!d.contains(key)) throw std::invalid_argument(std::string("image: no \"") + key + "\" channel");
+  auto a = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(d[key]);
+  if (!a || std::size_t(a.size()) != count)
+    throw std::invalid_argument(std::string("image: the \"") + key + "\" channel has the wrong size");
+  return a;
+}
+
+// Writes what render() returned through the CLI's writers: .exr takes the
+// float and geometry channels (render(..., channels=True)), every other
+// format the 8-bit image.
+void saveFrame(const py::dict& frame, const std::string& path) {
+  auto rgba = py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>::ensure(frame["rgba"]);
+  if (!rgba || rgba.ndim() != 3 || rgba.shape(2) != 4) throw std::invalid_argument("image: must be (H, W, 4) uint8");
+  render::FrameImage img;
+  img.height = int(rgba.shape(0));
+  img.width = int(rgba.shape(1));
+  const std::size_t n = std::size_t(img.width) * std::size_t(img.height);
+  if (!io::canWriteImage(path)) throw std::invalid_argument("path: no image format for \"" + path + "\"");
+  if (io::writesGeometryChannels(path)) {
+    if (!frame.contains("depth"))
+      throw std::invalid_argument("path: " + path + " stores depth, normal and id: render(..., channels=True)");
+    auto color = channel<float>(frame, "color", 4 * n);
+    auto depth = channel<float>(frame, "depth", n);
+    auto normal = channel<float>(frame, "normal", 3 * n);
+    auto id = channel<std::uint32_t>(frame, "id", n);
+    img.rgba.assign(color.data(), color.data() + 4 * n);
+    img.depth.assign(depth.data(), depth.data() + n);
+    img.normalWC.assign(normal.data(), normal.data() + 3 * n);
+    img.id.assign(id.data(), id.data() + n);
+  } else {
+    img.rgba.resize(4 * n);
+    for (std::size_t i = 0; i < img.rgba.size(); ++i) img.rgba[i] = float(rgba.data()[i]) / 255.0f;
+  }
+  py::gil_scoped_release release;
+  io::writeImage(img, path);
+}
+
+Source makeSource(std::optional<py::array> tensors, std::optional<py::array> positions,
+                  std::optional<std::vector<double>> affine, std::string layout, std::string frame, std::string path) {
+  Source s;
+  if (tensors && !path.empty()) throw std::invalid_argument("tensors: give tensors or a path, not both");
+  if (positions && !tensors) throw std::invalid_argument("positions: given without tensors");
+  if (affine && affine->size() != 16) throw std::invalid_argument("affine: must be 4x4");
+  if (positions && affine) throw std::invalid_argument("affine: applies to a volume, not to points with positions");
+  s.tensors = std::move(tensors);
+  s.positions = std::move(positions);
+  s.affine = std::move(affine);
+  s.layout = std::move(layout);
+  s.frame = std::move(frame);
+  s.path = std::move(path);
+  return s;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_core, m) {
+  m.doc() = "tensorglyph's render core (see the tensorglyph package)";
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const app::UsageError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const io::InputError& e) {
+      PyErr_SetString(PyExc_ValueError, e.what());
+    } catch (const std::domain_error& e) {
+      PyErr_SetString(PyExc_TypeError, e.what());
+    } catch (const app::HelpShown&) {
+      PyErr_SetString(PyExc_ValueError, "help is not an option here; see help(tensorglyph.render)");
+    }
+  });
+  py::class_<Renderer>(m, "Renderer")
+      .def(py::init([](std::optional<py::array> tensors, std::optional<py::array> positions,
+                       std::optional<std::vector<double>> affine, std::string layout, std::string frame,
+                       std::string path, OptionList options) {
+             return std::make_unique<Renderer>(makeSource(std::move(tensors), std::move(positions), std::move(affine),
+                                                          std::move(layout), std::move(frame), std::move(path)),
+                                               std::move(options));
+           }),
+           py::arg("tensors"), py::arg("positions"), py::arg("affine"), py::arg("layout"), py::arg("frame"),
+           py::arg("path"), py::arg("options"))
+      .def("render", &Renderer::render, py::arg("options"), py::arg("channels"))
+      .def_property_readonly("uploads", &Renderer::uploads)
+      .def_property_readonly("glyph_count", &Renderer::glyphCount);
+  // The option table, for keyword checks, docstrings and the type stubs:
+  // (keyword, flag, value names, help, reloads).
+  m.def("options", [] {
+    app::RenderOptions o;
+    app::OptionTable table;
+    app::addRenderOptions(table, o);
+    py::list out;
+    for (const auto& opt : table.options())
+      if (!opt.positional && !opt.cliOnly && !opt.isHidden)
+        out.append(py::make_tuple(opt.keyword(), opt.flag, opt.metavars, opt.helpText, opt.reload));
+    return out;
+  });
+  m.def(
+      "check",
+      [](const OptionList& options) {
+        app::RenderOptions o;
+        app::OptionTable table;
+        app::addRenderOptions(table, o);
+        applyOptions(table, options, "set");
+        app::validateRenderOptions(o, false);
+      },
+      py::arg("options"));
+  m.def("save", &saveFrame, py::arg("frame"), py::arg("path"));
+}

@@ -1,0 +1,227 @@
+"""Exact, sign-aware tensor glyphs from NumPy, nibabel and DIPY.
+
+Every keyword option is an option of ``tensorglyph render`` with the same
+name (``--fa-min`` is ``fa_min``), the same values and the same default: both
+read one option table (src/app/render_options.h). ``help(tensorglyph.render)``
+lists them.
+
+    import tensorglyph as tg
+    fig = tg.render(fit, affine=img.affine, glyph="superquadric", fa_min=0.2)
+    fig.save("brain.png")          # or show `fig` in Jupyter
+    r = tg.Renderer(fit, affine=img.affine)
+    r.set(gamma=1.5).render()      # no re-upload: r.uploads stays 1
+"""
+from __future__ import annotations
+
+import numbers
+import os
+
+import numpy as np
+
+from . import _core
+
+__all__ = ["render", "Renderer", "Figure", "save", "options"]
+
+# keyword -> (flag, value names, help, reloads)
+_OPTIONS = {kw: (flag, tuple(names), text, reloads) for kw, flag, names, text, reloads in _core.options()}
+
+
+def options():
+    """The render options: {keyword: (flag, value names, help, reloads)}."""
+    return dict(_OPTIONS)
+
+
+def _spell(kw, v):
+    if isinstance(v, (bool, np.bool_)):
+        raise TypeError(f"{kw}: expected a number or a name, not {v!r}")
+    if isinstance(v, (str, os.PathLike)):
+        return os.fspath(v)
+    if isinstance(v, numbers.Integral):
+        return str(int(v))
+    if isinstance(v, numbers.Real):
+        return repr(float(v))
+    raise TypeError(f"{kw}: cannot use a {type(v).__name__} as a value")
+
+
+def _occurrences(kw, value):
+    """A keyword's value as occurrences of its flag, each a list of strings."""
+    if kw not in _OPTIONS:
+        raise TypeError(f"unexpected keyword argument '{kw}'")
+    flag, names, _, _ = _OPTIONS[kw]
+    if value is None:
+        return []
+    if not names:  # a switch
+        if not isinstance(value, (bool, np.bool_)):
+            raise TypeError(f"{kw}: a switch takes True or False, not {value!r}")
+        return [[]] if value else []
+    scalar = isinstance(value, (str, os.PathLike, numbers.Number, np.generic))
+    if scalar:
+        return [[_spell(kw, value)]]
+    items = list(np.asarray(value, dtype=object).tolist()) if isinstance(value, np.ndarray) else list(value)
+    if len(names) == 1:  # repeated: plane=["z:10", "x:4"]
+        return [[_spell(kw, v)] for v in items]
+    if all(not isinstance(v, (list, tuple, np.ndarray)) for v in items):
+        return [[_spell(kw, v) for v in items]]
+    return [[_spell(kw, v) for v in occ] for occ in items]
+
+
+def _option_list(opts):
+    out = []
+    for kw, value in opts.items():
+        out.extend((kw, occ) for occ in _occurrences(kw, value))
+    return out
+
+
+def _nifti_layout(img):
+    hdr = img.header
+    try:
+        if hdr.get_intent()[0] == "symmetric matrix":
+            return "nifti"
+    except Exception:  # an intent nibabel does not know: not SYMMATRIX
+        pass
+    descrip = bytes(np.asarray(hdr.get("descrip", b""))).decode("latin-1", "replace")
+    return "mrtrix" if descrip.startswith("MRtrix version") else "fsl"
+
+
+def _source(tensors, positions, affine, layout, frame):
+    """(tensors array or None, positions, affine 16 floats, layout, frame, path)."""
+    path = ""
+    if tensors is None:
+        pass
+    elif isinstance(tensors, (str, os.PathLike)):
+        path, tensors = os.fspath(tensors), None
+        if not path:
+            raise ValueError("tensors: an empty path")
+    elif hasattr(tensors, "quadratic_form"):  # a DIPY TensorFit: DIPY's axes are the voxel axes
+        tensors = np.asarray(tensors.quadratic_form)
+        frame = frame or "voxel"
+        if affine is None and tensors.ndim == 5:
+            raise ValueError("affine: a DIPY TensorFit needs the image's affine (img.affine)")
+    elif hasattr(tensors, "affine") and hasattr(tensors, "dataobj"):  # a nibabel image
+        img = tensors
+        tensors = np.asanyarray(img.dataobj)
+        if tensors.ndim == 5 and tensors.shape[3] == 1:
+            tensors = tensors[:, :, :, 0, :]
+        affine = img.affine if affine is None else affine
+        layout = layout or _nifti_layout(img)
+    if tensors is not None:
+        if not isinstance(tensors, np.ndarray):
+            tensors = np.asarray(tensors)
+        if tensors.dtype.kind not in "f":
+            if tensors.dtype.kind in "iub":
+                tensors = tensors.astype(np.float64)
+            else:
+                raise TypeError(f"tensors: dtype {tensors.dtype} is not a number type")
+        if positions is None and affine is None:
+            raise ValueError("positions: tensors (N, 3, 3) or (N, 6) need positions (N, 3); "
+                             "a volume (X, Y, Z, 6 | 3, 3) needs an affine")
+    if positions is not None:
+        positions = np.asarray(positions)
+        if positions.dtype.kind in "iu":
+            positions = positions.astype(np.float64)
+    if affine is not None:
+        a = np.asarray(affine, dtype=np.float64)
+        if a.shape != (4, 4):
+            raise ValueError(f"affine: shape {a.shape} is not (4, 4)")
+        if not np.all(np.isfinite(a)):
+            raise ValueError("affine: has NaN or Inf")
+        affine = [float(x) for x in a.ravel()]
+    return tensors, positions, affine, layout or "", frame or "", path
+
+
+class Figure:
+    """A rendered frame: ``image`` (H, W, 4) uint8, and with channels=True
+    ``color`` (linear float RGBA), ``depth`` (view-axis distance, inf where
+    empty), ``normal`` (world-space) and ``id`` (input index, 0xFFFFFFFF where
+    empty). ``np.asarray(fig)`` is the image; Jupyter shows it."""
+
+    def __init__(self, frame):
+        self.image = frame["rgba"]
+        self.channels = {k: frame[k] for k in ("color", "depth", "normal", "id") if k in frame}
+        self.glyphs = frame["glyphs"]
+
+    def __array__(self, dtype=None):
+        return self.image if dtype is None else self.image.astype(dtype)
+
+    @property
+    def shape(self):
+        return self.image.shape
+
+    def save(self, path):
+        """Writes the image in any format the CLI writes (by extension)."""
+        save(self, path)
+
+    def _repr_png_(self):
+        import tempfile
+        with tempfile.TemporaryDirectory() as d:
+            p = os.path.join(d, "figure.png")
+            save(self, p)
+            with open(p, "rb") as f:
+                return f.read()
+
+
+def save(image, path):
+    """Writes a Figure (or an (H, W, 4) uint8 array) to `path`; .exr needs a
+    Figure rendered with channels=True."""
+    frame = {"rgba": np.asarray(image.image if isinstance(image, Figure) else image)}
+    if isinstance(image, Figure):
+        frame.update(image.channels)
+    _core.save(frame, os.fspath(path))
+
+
+class Renderer:
+    """Keeps the GL context and the uploaded glyphs: ``set`` changes options,
+    ``render`` draws. Changing gamma, fa_min, scale, colour, camera or depth
+    cues draws again without uploading (``uploads`` counts uploads); options
+    that change what is loaded (selection, size, meshes, planes) reload."""
+
+    def __init__(self, tensors=None, *, positions=None, affine=None, layout=None, frame=None, **options):
+        self._options = {}
+        self.set(**options)
+        t, p, a, lay, fr, path = _source(tensors, positions, affine, layout, frame)
+        self._core = _core.Renderer(t, p, a, lay, fr, path, _option_list(self._options))
+
+    def set(self, **options):
+        """Changes options (None: back to the default); returns self."""
+        for kw, value in options.items():
+            _occurrences(kw, value)  # TypeError now, not at render time
+            if value is None:
+                self._options.pop(kw, None)
+            else:
+                self._options[kw] = value
+        _core.check(_option_list(self._options))
+        return self
+
+    def render(self, channels=False, **options):
+        """Draws with the current options (updated by `options` first)."""
+        if options:
+            self.set(**options)
+        return Figure(self._core.render(_option_list(self._options), bool(channels)))
+
+    @property
+    def options(self):
+        return dict(self._options)
+
+    @property
+    def uploads(self):
+        """How many times glyphs were uploaded to the GPU."""
+        return self._core.uploads
+
+
+def render(tensors=None, *, positions=None, affine=None, layout=None, frame=None, channels=False, **options):
+    """Renders tensors (an array, a nibabel image, a DIPY TensorFit or a file
+    path; None: the built-in scene) to a Figure. See the module's docstring."""
+    return Renderer(tensors, positions=positions, affine=affine, layout=layout, frame=frame,
+                    **options).render(channels=channels)
+
+
+def _document():
+    lines = ["", "Options (as ``tensorglyph render``; value names after the keyword):"]
+    for kw, (flag, names, text, _) in _OPTIONS.items():
+        lines.append(f"    {kw}{'=' + ' '.join(names) if names else '=True'}: {text}")
+    doc = "\n".join(lines)
+    render.__doc__ += doc
+    Renderer.__doc__ += doc
+
+
+_document()
