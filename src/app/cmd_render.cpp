@@ -20,6 +20,7 @@
 #include "app/output_check.h"
 #include "app/pick_flags.h"
 #include "app/pick_json.h"
+#include "app/progress.h"
 #include "app/scene.h"
 #include "app/shadow_flags.h"
 #include "app/slice_flags.h"
@@ -43,7 +44,7 @@ struct RenderOptions : SceneFlags {
   glm::vec4 background{0.08f, 0.08f, 0.10f, 1.0f};
   int repeat = 0, tessellate = 0, maxIterations = render::MarchParams{}.maxIterations;
   double epsilon = render::MarchParams{}.epsilon;
-  bool verbose = false, stats = false;
+  bool verbose = false, stats = false, quiet = false;
 };
 
 RenderOptions parse(int argc, const char** argv) {
@@ -99,6 +100,7 @@ RenderOptions parse(int argc, const char** argv) {
     o.repeat = parseIntIn("--repeat", a[1], 0, 10000);
   });
   ap.arg("--verbose").help("report timings and memory on stderr").action([&](auto&, Args) { o.verbose = true; });
+  ap.arg("--quiet").help("no progress line on a terminal's stderr").action([&](auto&, Args) { o.quiet = true; });
   parseArgs(ap, argc, argv);
   return o;
 }
@@ -159,17 +161,23 @@ render::CameraDesc chooseCamera(const RenderOptions& o, const Scene& s, const te
 int cmdRender(int argc, const char** argv) {
   const RenderOptions o = parse(argc, argv);
   validate(o);
+  TerminalProgress progress(o.quiet);
+  const util::ProgressSink sink = progress.sink();
+  io::ReadOptions read = o.field.read;
+  read.progress = sink;
   const auto t0 = Clock::now();
-  Scene scene = loadScene(o.input, o.field.read);
+  Scene scene = loadScene(o.input, read);
   const double loadMs = msSince(t0);
+  if (sink) sink({}, 0, 0, {});  // before the load's warnings
   reportLoad(scene.field, "render");
   std::vector<io::MeshData> meshes = o.mesh.read(o.input, "render");
 
   const auto t1 = Clock::now();
   tensor::GlyphSet glyphs =
-      tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids, 0, o.field.glyph);
+      tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids, 0, o.field.glyph, sink);
   checkDrawable(glyphs, scene.field.path);
   const double buildMs = msSince(t1);
+  if (sink) sink("preparing", 0, 0, {});
   std::optional<render::UnderlayVolume> underlay;
   if (o.slices.any()) underlay = loadUnderlay(o.slices, scene.field);
   // Each stage frees what the next no longer needs, so that peak memory holds
@@ -230,12 +238,16 @@ int cmdRender(int argc, const char** argv) {
   const double uploadMs = msSince(t2);
   const std::size_t glyphCount = glyphs.glyphs.size();
   glyphs.glyphs = {};
+  const double frames = 1.0 + o.repeat;
+  if (sink) sink("rendering", 0, frames, "frames");
   const auto t3 = Clock::now();
   renderer.render(cam, params, target);
   ctx->api().Finish();
   const double frameMs = msSince(t3);
+  if (sink) sink("rendering", 1, frames, "frames");
   if (const auto* legend = static_cast<const render::LegendPass*>(renderer.legendPass())) {
     const render::LegendRect& r = legend->layout().panel;
+    if (sink && (r.x1 > float(o.width) || r.y1 > float(o.height))) sink({}, 0, 0, {});
     if (r.x1 > float(o.width) || r.y1 > float(o.height))
       std::fprintf(stderr,
                    "tensorglyph render: --legend: the legend needs %.0f x %.0f pixels and is cut off by the %d x %d "
@@ -248,7 +260,9 @@ int cmdRender(int argc, const char** argv) {
     renderer.render(cam, params, target);
     ctx->api().Finish();
     times.push_back(msSince(tk));
+    if (sink) sink("rendering", 2.0 + k, frames, "frames");
   }
+  progress.finish();
   if (o.stats) {
     const render::IterationStats st = renderer.iterationStats();
     std::fprintf(stderr, "tensorglyph render: Newton iterations: mean %.2f, max %u over %llu pixels\n", st.mean,
