@@ -53,7 +53,10 @@ std::string TerminalProgress::line(std::string_view stage, double done, double t
     const Scaled d = scaleFor(done, unit);
     s += number(done, d) + d.suffix;
   } else {
-    return s + duration(seconds);
+    // Only the time so far: to a tenth of a second while it is short.
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.1f s", seconds);
+    return s + (seconds < 10 ? std::string(buf) : duration(seconds));
   }
   if (rate > 0) {
     const Scaled r = scaleFor(rate, unit);

@@ -25,6 +25,7 @@ TEST(ProgressLine, ShowsFractionRateAndTimeLeft) {
   // Unknown total: the count and rate, or the time so far.
   EXPECT_EQ(TerminalProgress::line("writing", 3e6, 0, "tensors", 1.5), "writing: 3 M tensors, 2 M tensors/s");
   EXPECT_EQ(TerminalProgress::line("generating", 0, 0, "", 12.2), "generating: 12 s");
+  EXPECT_EQ(TerminalProgress::line("preparing", 0, 0, "", 0.64), "preparing: 0.6 s");
 }
 
 TEST(ProgressLine, DrawsOnATerminalOnlyAndClearsItself) {
