@@ -4,6 +4,7 @@
 #include <string>
 
 #include "io/tensor_field.h"
+#include "util/progress.h"
 
 namespace tg::synth {
 
@@ -33,7 +34,9 @@ io::TensorField extremesGallery(double eigenScale, double positionScale);
 io::TensorField randomField(std::size_t n, std::uint64_t seed);
 
 // The same field written straight to NRRD (detached .nhdr + .raw) in chunks,
-// never holding more than one chunk: for N up to 1e8 and beyond.
-void writeRandomNrrdStreaming(const std::string& nhdrPath, std::size_t n, std::uint64_t seed);
+// never holding more than one chunk: for N up to 1e8 and beyond. `progress`
+// hears ("writing", done, N, "tensors") once per chunk.
+void writeRandomNrrdStreaming(const std::string& nhdrPath, std::size_t n, std::uint64_t seed,
+                              const util::ProgressSink& progress = {});
 
 }  // namespace tg::synth

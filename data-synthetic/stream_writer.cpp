@@ -45,7 +45,8 @@ void removeDisplacedData(const std::string& displaced, const std::filesystem::pa
 
 }  // namespace
 
-void writeRandomNrrdStreaming(const std::string& nhdrPath, std::size_t n, std::uint64_t seed) {
+void writeRandomNrrdStreaming(const std::string& nhdrPath, std::size_t n, std::uint64_t seed,
+                              const util::ProgressSink& progress) {
   const std::filesystem::path hp(nhdrPath);
   if (hp.extension() != ".nhdr") throw std::runtime_error("writeRandomNrrdStreaming: " + nhdrPath + ": needs .nhdr");
   if (n == 0) throw std::runtime_error("writeRandomNrrdStreaming: " + nhdrPath + ": N must be positive");
@@ -58,6 +59,7 @@ void writeRandomNrrdStreaming(const std::string& nhdrPath, std::size_t n, std::u
     constexpr std::size_t kChunk = 1 << 20;
     std::vector<float> buf(6 * kChunk);
     for (std::size_t done = 0; done < n;) {
+      if (progress) progress("writing", double(done), double(n), "tensors");
       const std::size_t m = std::min(kChunk, n - done);
       for (std::size_t i = 0; i < m; ++i) rs.next(&buf[6 * i]);
       raw.write(buf.data(), sizeof(float) * 6 * m);

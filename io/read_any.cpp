@@ -63,7 +63,7 @@ TensorField readTensorField(const std::string& path, const ReadOptions& opt) {
   return readInChild(format.who, path, limitsFor(size, guarded.memoryBudget), [&](const PromiseFn& promise) {
     guarded.onPromise = promise;
     return format.read(path, guarded);
-  });
+  }, opt.progress);
 }
 
 }  // namespace tg::io

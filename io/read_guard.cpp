@@ -23,6 +23,7 @@
 #include <type_traits>
 
 #include "io/guard_wire.h"
+#include "io/read_progress.h"
 
 namespace tg::io {
 namespace {
@@ -230,7 +231,8 @@ namespace {
 // takes off: the child keeps it alive until it is sent.
 template <class Result, class Receive>
 Result resultInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
-                     const std::function<Result(const PromiseFn&)>& read, Receive receive) {
+                     const std::function<Result(const PromiseFn&)>& read, Receive receive,
+                     const util::ProgressSink& progress = {}) {
   std::optional<Result> result;
   runInChild(
       who, path, limits,
@@ -238,19 +240,20 @@ Result resultInChild(const std::string& who, const std::string& path, const Read
         auto r = std::make_shared<const Result>(read(promise));
         return [r](WireOut& w) { writeField(w, *r); };
       },
-      [&](WireIn& in) { result = receive(in); });
+      [&](WireIn& in) { result = receive(in); }, progress);
   return std::move(*result);
 }
 
 }  // namespace
 
 TensorField readInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
-                        const std::function<TensorField(const PromiseFn&)>& read) {
-  return resultInChild(who, path, limits, read, [](WireIn& in) { return readField(in); });
+                        const std::function<TensorField(const PromiseFn&)>& read, const util::ProgressSink& progress) {
+  return resultInChild(who, path, limits, read, [](WireIn& in) { return readField(in); }, progress);
 }
 
 void runInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
-                const std::function<SendFn(const PromiseFn&)>& read, const std::function<void(WireIn&)>& receive) {
+                const std::function<SendFn(const PromiseFn&)>& read, const std::function<void(WireIn&)>& receive,
+                const util::ProgressSink& progress) {
   auto fail = [&](const std::string& what) -> InputError { return InputError(who + ": " + path + ": " + what); };
   int statusFds[2], dataFds[2];
   if (::pipe2(statusFds, O_CLOEXEC) != 0) throw fail(std::string("cannot start the reader: ") + std::strerror(errno));
@@ -270,14 +273,20 @@ void runInChild(const std::string& who, const std::string& path, const ReadLimit
   auto deadline = Clock::now() + std::chrono::duration<double>(limits.headerSeconds);
   std::string status;
   bool timedOut = false;
+  auto nextReport = Clock::now();
   for (char buf[4096]; status != "O";) {
     const auto left = std::chrono::duration_cast<std::chrono::milliseconds>(deadline - Clock::now()).count();
     if (left <= 0) {
       timedOut = true;
       break;
     }
+    if (progress && Clock::now() >= nextReport) {
+      nextReport = Clock::now() + std::chrono::milliseconds(100);
+      const auto at = childReadPosition(pid);
+      progress("loading", at ? double(at->offset) : 0.0, at ? double(at->size) : 0.0, "bytes");
+    }
     pollfd p{statusIn.fd, POLLIN, 0};
-    const int r = ::poll(&p, 1, int(std::min<long long>(left, 1000)));
+    const int r = ::poll(&p, 1, int(std::min<long long>(left, progress ? 100 : 1000)));
     if (r < 0 && errno != EINTR) break;
     if (r <= 0) continue;
     const ssize_t n = ::read(statusIn.fd, buf, status.empty() ? 1 : sizeof buf);

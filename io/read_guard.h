@@ -12,6 +12,7 @@
 
 #include "io/selection.h"
 #include "io/tensor_field.h"
+#include "util/progress.h"
 
 namespace tg::io {
 
@@ -41,8 +42,11 @@ ReadLimits limitsFor(std::uint64_t fileBytes, std::uint64_t memoryBudget);
 // what it promised. Throws InputError ("who: path: problem") for a crash, a
 // limit, a timeout or the reader's own error.
 using PromiseFn = std::function<void(std::uint64_t decodedBytes, std::uint64_t memoryBytes)>;
+// `progress`, if given, hears ("loading", offset, size, "bytes") of the
+// file the child reads, about 10 times a second (io/read_progress.h).
 TensorField readInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
-                        const std::function<TensorField(const PromiseFn&)>& read);
+                        const std::function<TensorField(const PromiseFn&)>& read,
+                        const util::ProgressSink& progress = {});
 
 // The same for a scalar volume (an underlay).
 ScalarVolume readScalarInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
@@ -55,6 +59,7 @@ class WireOut;
 class WireIn;
 using SendFn = std::function<void(WireOut&)>;
 void runInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
-                const std::function<SendFn(const PromiseFn&)>& read, const std::function<void(WireIn&)>& receive);
+                const std::function<SendFn(const PromiseFn&)>& read, const std::function<void(WireIn&)>& receive,
+                const util::ProgressSink& progress = {});
 
 }  // namespace tg::io

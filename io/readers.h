@@ -7,6 +7,7 @@
 
 #include "io/selection.h"
 #include "io/tensor_field.h"
+#include "util/progress.h"
 
 namespace tg::io {
 
@@ -31,6 +32,8 @@ struct ReadOptions {
   // --confidence-min was given: the CLI refuses it for tensors without a
   // confidence value (TensorField::hasConfidence).
   bool confidenceGiven = false;
+  // Told how far readTensorField's child has read (io/read_guard.h); empty: nothing is measured.
+  util::ProgressSink progress;
 };
 
 // Bytes one kept tensor takes at the peak of a load: its sample (position,

@@ -24,6 +24,7 @@
 #include "io/array_field.h"
 #include "io/image_writer.h"
 #include "io/tensor_field.h"
+#include "util/progress.h"
 
 namespace py = pybind11;
 using namespace tg;
@@ -56,16 +57,51 @@ io::ArrayRef arrayRef(const py::array& a) {
   return r;
 }
 
+class ProgressCallback;
+
 // What the glyphs come from: arrays, a file, or the built-in scene.
 struct Source {
   std::optional<py::array> tensors, positions;
   std::optional<std::vector<double>> affine;  // 16, row-major
   std::string layout, frame, path;
-  bool builtIn = true;
+  std::shared_ptr<ProgressCallback> progress;
+};
+
+// The caller's progress callback as the core's sink: called with the GIL
+// held (the work runs without it); None gives an empty sink, which costs
+// nothing. An exception from the callback must not unwind through the
+// eigen-decomposition's worker threads: it is kept, later reports are
+// dropped, and rethrow() raises it once the work is done.
+class ProgressCallback {
+ public:
+  explicit ProgressCallback(py::object f) : f_(std::move(f)) {}
+  util::ProgressSink sink() {
+    if (f_.is_none()) return {};
+    return [this](std::string_view stage, double done, double total, std::string_view unit) {
+      if (error_) return;
+      py::gil_scoped_acquire gil;
+      try {
+        f_(std::string(stage), done, total, std::string(unit));
+      } catch (...) {
+        error_ = std::current_exception();
+      }
+    };
+  }
+  void rethrow() {
+    if (std::exception_ptr e = std::exchange(error_, nullptr)) std::rethrow_exception(e);
+  }
+
+ private:
+  py::object f_;
+  std::exception_ptr error_;
 };
 
 app::Scene loadSource(const Source& s, const app::RenderOptions& o) {
-  if (!s.tensors) return app::loadScene(s.path, o.field.read);
+  if (!s.tensors) {
+    io::ReadOptions read = o.field.read;
+    read.progress = s.progress->sink();
+    return app::loadScene(s.path, read);
+  }
   app::Scene scene;
   io::ArrayRef t;
   try {
@@ -171,8 +207,10 @@ class Renderer {
     if (session_) previousUploads_ += session_->renderer().uploadCount();
     session_.reset();
     session_ = std::make_unique<app::RenderSession>(o, std::move(scene), std::move(meshes), true, "python",
-                                                    [](io::TensorField& f) { f.releaseSamples(); });
+                                                    [](io::TensorField& f) { f.releaseSamples(); },
+                                                    source_.progress->sink());
     reloadKeys_ = reloadKeys(table, options);
+    source_.progress->rethrow();
   }
 
   Source source_;
@@ -223,8 +261,12 @@ void saveFrame(const py::dict& frame, const std::string& path) {
 }
 
 Source makeSource(std::optional<py::array> tensors, std::optional<py::array> positions,
-                  std::optional<std::vector<double>> affine, std::string layout, std::string frame, std::string path) {
+                  std::optional<std::vector<double>> affine, std::string layout, std::string frame, std::string path,
+                  py::object progress) {
   Source s;
+  if (!progress.is_none() && !PyCallable_Check(progress.ptr()))
+    throw py::type_error("progress: must be callable as f(stage, done, total, unit)");
+  s.progress = std::make_shared<ProgressCallback>(std::move(progress));
   if (tensors && !path.empty()) throw std::invalid_argument("tensors: give tensors or a path, not both");
   if (positions && !tensors) throw std::invalid_argument("positions: given without tensors");
   if (affine && affine->size() != 16) throw std::invalid_argument("affine: must be 4x4");
@@ -258,13 +300,14 @@ PYBIND11_MODULE(_core, m) {
   py::class_<Renderer>(m, "Renderer")
       .def(py::init([](std::optional<py::array> tensors, std::optional<py::array> positions,
                        std::optional<std::vector<double>> affine, std::string layout, std::string frame,
-                       std::string path, OptionList options) {
+                       std::string path, OptionList options, py::object progress) {
              return std::make_unique<Renderer>(makeSource(std::move(tensors), std::move(positions), std::move(affine),
-                                                          std::move(layout), std::move(frame), std::move(path)),
+                                                          std::move(layout), std::move(frame), std::move(path),
+                                                          std::move(progress)),
                                                std::move(options));
            }),
            py::arg("tensors"), py::arg("positions"), py::arg("affine"), py::arg("layout"), py::arg("frame"),
-           py::arg("path"), py::arg("options"))
+           py::arg("path"), py::arg("options"), py::arg("progress"))
       .def("render", &Renderer::render, py::arg("options"), py::arg("channels"))
       .def_property_readonly("uploads", &Renderer::uploads)
       .def_property_readonly("glyph_count", &Renderer::glyphCount);

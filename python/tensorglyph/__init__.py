@@ -175,11 +175,14 @@ class Renderer:
     cues draws again without uploading (``uploads`` counts uploads); options
     that change what is loaded (selection, size, meshes, planes) reload."""
 
-    def __init__(self, tensors=None, *, positions=None, affine=None, layout=None, frame=None, **options):
+    def __init__(self, tensors=None, *, positions=None, affine=None, layout=None, frame=None, progress=None,
+                 **options):
+        """`progress`: None, or f(stage, done, total, unit), called while a
+        file loads and the tensors are decomposed (total 0: not known)."""
         self._options = {}
         self.set(**options)
         t, p, a, lay, fr, path = _source(tensors, positions, affine, layout, frame)
-        self._core = _core.Renderer(t, p, a, lay, fr, path, _option_list(self._options))
+        self._core = _core.Renderer(t, p, a, lay, fr, path, _option_list(self._options), progress)
 
     def set(self, **options):
         """Changes options (None: back to the default); returns self."""
@@ -208,10 +211,11 @@ class Renderer:
         return self._core.uploads
 
 
-def render(tensors=None, *, positions=None, affine=None, layout=None, frame=None, channels=False, **options):
+def render(tensors=None, *, positions=None, affine=None, layout=None, frame=None, channels=False, progress=None,
+           **options):
     """Renders tensors (an array, a nibabel image, a DIPY TensorFit or a file
     path; None: the built-in scene) to a Figure. See the module's docstring."""
-    return Renderer(tensors, positions=positions, affine=affine, layout=layout, frame=frame,
+    return Renderer(tensors, positions=positions, affine=affine, layout=layout, frame=frame, progress=progress,
                     **options).render(channels=channels)
 
 

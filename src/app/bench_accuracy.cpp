@@ -18,6 +18,7 @@
 #include "app/frame_size.h"
 #include "app/output_check.h"
 #include "app/cli_common.h"
+#include "app/progress.h"
 #include "app/plot.h"
 #include "app/scene.h"
 #include "gl/shader_library.h"
@@ -35,6 +36,7 @@ struct Options {
   FieldFlags field;
   int width = 640, height = 480, frames = 5;
   double gamma = 3.0;
+  bool quiet = false;
   std::optional<double> faMin;
   std::vector<int> iterations{1, 2, 3, 4, 5, 6, 8, 10, 12, 15, 20, 30};
   std::vector<double> epsilons{1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
@@ -70,6 +72,7 @@ Options parse(int argc, const char** argv) {
     o.faMin = parseDoubleIn("--fa-min", a[1], 0.0, 1.0);
   });
   ap.arg("--backend NAME").help("osmesa (default), egl, glfw or auto").action([&](Args a) { o.backend = a[1]; });
+  ap.arg("--quiet").help("no progress line on a terminal's stderr").action([&](Args) { o.quiet = true; });
   o.field.addTo(ap, true);
   parseCommandLine(ap, argc, argv);
   return o;
@@ -150,10 +153,15 @@ bool plot(const std::vector<Row>& rows, const std::vector<double>& epsilons, con
 int benchAccuracy(int argc, const char** argv) {
   Options o = parse(argc, argv);
   validate(o);
+  TerminalProgress progress(o.quiet);
+  const util::ProgressSink sink = progress.sink();
+  o.field.read.progress = sink;
   Scene scene = loadScene(o.input, o.field.read);
+  if (sink) sink({}, 0, 0, {});
   reportLoad(scene.field, "bench accuracy");
   const tensor::GlyphSet glyphs =
-      tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids, 0, o.field.glyph);
+      tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids, 0, o.field.glyph, sink);
+  if (sink) sink("reference", 0, 0, {});
   checkDrawable(glyphs, scene.field.path);
   render::FrameParams params;
   const tensor::ResolvedScale sized =
@@ -185,16 +193,20 @@ int benchAccuracy(int argc, const char** argv) {
   render::GlyphRenderer renderer(ctx->api(), lib);
   render::GBuffer target(ctx->api(), o.width, o.height);
   renderer.upload(glyphs);
+  if (sink) sink({}, 0, 0, {});
   std::fprintf(stderr, "bench accuracy: %s, %zu glyphs, gamma %g, %dx%d, %s (%s); reference %.0f ms, %zu glyph pixels\n",
                scene.field.path.c_str(), glyphs.glyphs.size(), o.gamma, o.width, o.height, ctx->backendName(),
                ctx->describe().c_str(), refMs, std::size_t(std::count_if(reference.id.begin(), reference.id.end(),
                                                                          [](auto id) { return id != ref::kNoGlyph; })));
 
   std::vector<Row> rows;
+  if (sink) sink({}, 0, 0, {});  // the table goes to stdout, often the same terminal
   std::printf("%5s %8s %9s %6s %4s %9s %10s %10s %9s\n", "iter", "eps", "frame_ms", "mean", "max", "cover_%",
               "depth_p99", "depth_max", "norm_p99");
+  const double settings = double(o.epsilons.size() * o.iterations.size());
   for (double eps : o.epsilons)
     for (int it : o.iterations) {
+      if (sink) sink("settings", double(rows.size()), settings, "settings");
       params.march = {it, eps};
       params.iterationStats = false;
       renderer.render(cam, params, target);  // warm-up: compiles and caches state
@@ -211,12 +223,15 @@ int benchAccuracy(int argc, const char** argv) {
       params.iterationStats = true;  // a separate frame: the counters cost time
       renderer.render(cam, params, target);
       const Row r{it, eps, times[times.size() / 2], renderer.iterationStats(), ref::diffImages(img, reference, cam, diffOpt)};
+      if (sink) sink({}, 0, 0, {});
       std::printf("%5d %8.0e %9.2f %6.2f %4u %9.4f %10.2e %10.2e %9.3f\n", it, eps, r.frameMs, r.stats.mean,
                   r.stats.max, r.coveragePct(), r.diff.depth.p99, r.diff.depth.max, r.diff.normalDeg.p99);
       std::fflush(stdout);
+      if (r.diff.nonFinite && sink) sink({}, 0, 0, {});
       if (r.diff.nonFinite) std::fprintf(stderr, "bench accuracy: %zu non-finite GPU values\n", r.diff.nonFinite);
       rows.push_back(r);
     }
+  progress.finish();
   // The CSV is committed after the plot, so that a failure leaves neither.
   io::AtomicFile csv(o.csv);
   writeCsv(rows, csv);

@@ -3,6 +3,7 @@
 
 #include "app/bench.h"
 #include "app/cli_common.h"
+#include "app/progress.h"
 #include "app/scale_sweep.h"
 #include "gl/backends.h"
 
@@ -17,7 +18,8 @@ int benchScale(int argc, const char** argv) {
   checkScaleOptions(o);
   checkBackend(o.backend);
   auto ctx = o.requireGpu ? gl::createEglContext({false}) : createContext(o.backend, o.width, o.height);
-  runScaleSweep(*ctx, o);
+  TerminalProgress progress(o.quiet);
+  runScaleSweep(*ctx, o, progress.sink());
   return 0;
 }
 

@@ -8,6 +8,7 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/field_flags.h"
+#include "app/progress.h"
 #include "io/readers.h"
 #include "tensor/glyph.h"
 #include "tensor/glyph_scale.h"
@@ -17,18 +18,24 @@ namespace tg::app {
 int cmdInfo(int argc, const char** argv) {
   std::string input;
   FieldFlags flags;
+  bool quiet = false;
   OptionTable ap("tensorglyph info INPUT [selection flags]");
   addInputArg(ap, input);
   flags.addTo(ap, true);  // the size flags change what info reports as the default render's size
+  ap.arg("--quiet").help("no progress line on a terminal's stderr").action([&](OptionArgs) { quiet = true; });
   parseCommandLine(ap, argc, argv);
   if (input.empty()) throw UsageError("INPUT is required");
   flags.validate();
 
   checkOptionsApply(input, flags.read);
+  TerminalProgress progress(quiet);
+  flags.read.progress = progress.sink();
   const io::TensorField f = io::readTensorField(input, flags.read);
   checkLoaded(f, flags.read);
+  if (flags.read.progress) flags.read.progress({}, 0, 0, {});
   for (const std::string& w : f.warnings) std::fprintf(stderr, "tensorglyph info: %s: %s\n", f.path.c_str(), w.c_str());
-  const tensor::GlyphSet g = tensor::buildGlyphs(f.positions, f.tensors, f.ids, 0, flags.glyph);
+  const tensor::GlyphSet g = tensor::buildGlyphs(f.positions, f.tensors, f.ids, 0, flags.glyph, flags.read.progress);
+  progress.finish();
   std::size_t negDef = 0, indefinite = 0, zero = 0;
   constexpr double inf = std::numeric_limits<double>::infinity();
   double lmin[3] = {inf, inf, inf}, lmax[3] = {-inf, -inf, -inf}, faMin = inf, faMax = -inf;

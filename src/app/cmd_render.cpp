@@ -12,6 +12,7 @@
 #include "app/option_table.h"
 #include "app/pick.h"
 #include "app/pick_json.h"
+#include "app/progress.h"
 #include "app/render_options.h"
 #include "app/render_session.h"
 #include "io/image_writer.h"
@@ -26,9 +27,14 @@ int cmdRender(int argc, const char** argv) {
   addRenderOptions(table, o);
   parseCommandLine(table, argc, argv);
   validateRenderOptions(o, true);
+  TerminalProgress progress(o.quiet);
+  const util::ProgressSink sink = progress.sink();
+  io::ReadOptions read = o.field.read;
+  read.progress = sink;
   const auto t0 = Clock::now();
-  Scene loaded = loadScene(o.input, o.field.read);
+  Scene loaded = loadScene(o.input, read);
   const double loadMs = msSince(t0);
+  if (sink) sink({}, 0, 0, {});  // before the load's warnings
   reportLoad(loaded.field, "render");
   std::vector<io::MeshData> meshes = o.mesh.read(o.input, "render");
   // --pick keeps the samples (app/pick.h): 40 bytes a tensor; else they go
@@ -37,7 +43,7 @@ int cmdRender(int argc, const char** argv) {
   RenderSession session(o, std::move(loaded), std::move(meshes), false, "render", [&](io::TensorField& f) {
     if (!o.pick.pixels.empty()) pickTable.emplace(f, o.field.glyph);
     f.releaseSamples();
-  });
+  }, sink);
   const Scene& scene = session.scene();
   const RenderSession::Frame fr = session.frame(o);
   const render::FrameParams& params = fr.params;
@@ -45,11 +51,15 @@ int cmdRender(int argc, const char** argv) {
   render::GlyphRenderer& renderer = session.renderer();
   gl::Context& ctx = session.context();
   const std::size_t glyphCount = session.glyphCount();
+  const double frames = 1.0 + o.repeat;
+  if (sink) sink("rendering", 0, frames, "frames");
   const auto t3 = Clock::now();
   session.draw(fr);
   const double frameMs = msSince(t3);
+  if (sink) sink("rendering", 1, frames, "frames");
   if (const auto* legend = static_cast<const render::LegendPass*>(renderer.legendPass())) {
     const render::LegendRect& r = legend->layout().panel;
+    if (sink && (r.x1 > float(o.width) || r.y1 > float(o.height))) sink({}, 0, 0, {});
     if (r.x1 > float(o.width) || r.y1 > float(o.height))
       std::fprintf(stderr,
                    "tensorglyph render: --legend: the legend needs %.0f x %.0f pixels and is cut off by the %d x %d "
@@ -61,7 +71,9 @@ int cmdRender(int argc, const char** argv) {
     const auto tk = Clock::now();
     session.draw(fr);
     times.push_back(msSince(tk));
+    if (sink) sink("rendering", 2.0 + k, frames, "frames");
   }
+  progress.finish();
   if (o.stats) {
     const render::IterationStats st = renderer.iterationStats();
     std::fprintf(stderr, "tensorglyph render: Newton iterations: mean %.2f, max %u over %llu pixels\n", st.mean,

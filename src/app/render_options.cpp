@@ -62,6 +62,7 @@ void addRenderOptions(OptionTable& ap, RenderOptions& o) {
   ap.arg("--repeat N").commandLineOnly().help("render N more frames and report the median frame time").action([&](Args a) {
     o.repeat = parseIntIn("--repeat", a[1], 0, 10000);
   });
+  ap.arg("--quiet").commandLineOnly().help("no progress line on a terminal's stderr").action([&](Args) { o.quiet = true; });
   ap.arg("--verbose").commandLineOnly().help("report timings and memory on stderr").action([&](Args) { o.verbose = true; });
 }
 

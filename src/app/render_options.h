@@ -28,7 +28,7 @@ struct RenderOptions : SceneFlags {
   glm::vec4 background{0.08f, 0.08f, 0.10f, 1.0f};
   int repeat = 0, tessellate = 0, maxIterations = render::MarchParams{}.maxIterations;
   double epsilon = render::MarchParams{}.epsilon;
-  bool verbose = false, stats = false;
+  bool verbose = false, stats = false, quiet = false;
 };
 
 

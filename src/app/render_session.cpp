@@ -17,12 +17,14 @@
 namespace tg::app {
 
 RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io::MeshData> meshes, bool keepGlyphs,
-                             const char* command, const std::function<void(io::TensorField&)>& beforeUpload)
+                             const char* command, const std::function<void(io::TensorField&)>& beforeUpload,
+                             const util::ProgressSink& progress)
     : scene_(std::move(scene)), command_(command) {
   const auto t0 = Clock::now();
-  glyphs_ = tensor::buildGlyphs(scene_.field.positions, scene_.field.tensors, scene_.field.ids, 0, o.field.glyph);
+  glyphs_ = tensor::buildGlyphs(scene_.field.positions, scene_.field.tensors, scene_.field.ids, 0, o.field.glyph, progress);
   checkDrawable(glyphs_, scene_.field.path);
   buildMs_ = msSince(t0);
+  if (progress) progress("preparing", 0, 0, {});
   magnitudes_ = tensor::sampleMagnitudes(glyphs_, scene_.field.sampleSpacing);
   const Boxes first = boxes(tensor::resolveScale(o.field.scaleParams(), magnitudes_));
   std::optional<render::UnderlayVolume> underlay;

@@ -20,6 +20,7 @@
 #include "render/gbuffer.h"
 #include "render/renderer.h"
 #include "tensor/glyph.h"
+#include "util/progress.h"
 
 namespace tg::app {
 
@@ -30,9 +31,10 @@ class RenderSession {
   // change of scale needs to refit the camera's depth range; `render` drops
   // them to hold peak memory down. `beforeUpload` may take the field's
   // samples (a pick table) or free them before the GPU copy is made.
-  // `command` prefixes warnings on stderr.
+  // `command` prefixes warnings on stderr; `progress` hears the eigen stage.
   RenderSession(const RenderOptions& o, Scene scene, std::vector<io::MeshData> meshes, bool keepGlyphs,
-                const char* command, const std::function<void(io::TensorField&)>& beforeUpload = {});
+                const char* command, const std::function<void(io::TensorField&)>& beforeUpload = {},
+                const util::ProgressSink& progress = {});
   ~RenderSession();
   RenderSession(const RenderSession&) = delete;
   RenderSession& operator=(const RenderSession&) = delete;

@@ -20,7 +20,7 @@
 namespace tg::app {
 
 ScaleOptions parseScaleOptions(int argc, const char** argv, ScaleOptions o) {
-  enum Opt { kN = 256, kResolutions, kSize, kFrames, kBudget, kGamma, kBackend, kRequireGpu, kHelp };
+  enum Opt { kN = 256, kResolutions, kSize, kFrames, kBudget, kGamma, kBackend, kRequireGpu, kHelp, kQuiet };
   const option longOpts[] = {{"n", required_argument, nullptr, kN},
                              {"resolutions", required_argument, nullptr, kResolutions},
                              {"size", required_argument, nullptr, kSize},
@@ -30,6 +30,7 @@ ScaleOptions parseScaleOptions(int argc, const char** argv, ScaleOptions o) {
                              {"backend", required_argument, nullptr, kBackend},
                              {"require-gpu", no_argument, nullptr, kRequireGpu},
                              {"help", no_argument, nullptr, kHelp},
+                             {"quiet", no_argument, nullptr, kQuiet},
                              {nullptr, 0, nullptr, 0}};
   // getopt keeps its cursor in libc's globals: reset it (0 re-initialises
   // GNU getopt) and report errors ourselves, in one line.
@@ -57,6 +58,7 @@ ScaleOptions parseScaleOptions(int argc, const char** argv, ScaleOptions o) {
       case kBackend: o.backend = arg; break;
       case kRequireGpu: o.requireGpu = true; break;
       case kHelp: o.help = true; break;
+      case kQuiet: o.quiet = true; break;
       case ':': throw UsageError(std::string(argv[optind - 1]) + " needs a value");
       default: throw UsageError("unknown option " + std::string(argv[optind - 1]));
     }
@@ -93,7 +95,8 @@ std::string scaleUsage(const std::string& command) {
          "  --budget S          a method whose warm-up frame took over S seconds skips larger counts (default 20)\n"
          "  --gamma G           superquadric sharpness (default 3)\n"
          "  --backend NAME      osmesa, egl, glfw or auto\n"
-         "  --require-gpu       with egl: fail rather than fall back to Mesa's software renderer\n";
+         "  --require-gpu       with egl: fail rather than fall back to Mesa's software renderer\n"
+         "  --quiet             no progress line on a terminal's stderr\n";
 }
 
 namespace {
@@ -196,7 +199,7 @@ std::string field(double v, const char* fmt) {
 
 }  // namespace
 
-void runScaleSweep(gl::Context& ctx, const ScaleOptions& o) {
+void runScaleSweep(gl::Context& ctx, const ScaleOptions& o, const util::ProgressSink& progress) {
   const gl::Api& gl = ctx.api();
   const gl::ShaderLibrary lib;
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -214,8 +217,11 @@ void runScaleSweep(gl::Context& ctx, const ScaleOptions& o) {
   f << "method,resolution,n,width,height,frame_ms,gpu_ms,empty_frame_ms,covered_pct,newton_mean,"
        "gpu_bytes_per_glyph,vtk_mesh_bytes_per_glyph,coverage_error_pct,device\n";
   std::fprintf(stderr, "scale sweep: %s (%s), %dx%d\n", ctx.backendName(), ctx.describe().c_str(), o.width, o.height);
+  const double rows = double(o.counts.size() * methods.size());
+  double rowsDone = 0;
   for (double nd : o.counts) {
     const auto n = std::size_t(nd);
+    if (progress) progress("sweep", rowsDone, rows, "rows");
     const auto t0 = Clock::now();
     tensor::GlyphSet set;
     {
@@ -228,6 +234,7 @@ void runScaleSweep(gl::Context& ctx, const ScaleOptions& o) {
     render::GBuffer target(gl, o.width, o.height);
     r.upload(set);
     set.glyphs = {};
+    if (progress) progress({}, 0, 0, {});  // the row lines below, not after the progress line
     std::fprintf(stderr, "  n %zu: generated, decomposed and uploaded in %.0f ms\n", n, msSince(t0));
     // The frame's fixed part: clears and the deferred lighting pass, with
     // every glyph hidden by the threshold (compacted away in the warm-up).
@@ -236,6 +243,8 @@ void runScaleSweep(gl::Context& ctx, const ScaleOptions& o) {
     empty.faMin = 10.0;
     const FrameTime emptyT = timeFrames(gl, r, cam, empty, target, o.frames);
     for (Method& m : methods) {
+      if (progress) progress("sweep", rowsDone, rows, "rows");
+      ++rowsDone;
       if (m.skipped) continue;
       const render::FrameParams p = paramsFor(m, scale, o.gamma);
       // A tessellated frame of a million glyphs or more is long; one timed frame says enough.
@@ -256,6 +265,7 @@ void runScaleSweep(gl::Context& ctx, const ScaleOptions& o) {
         << field(ft.wallMs, "%.3f") << ',' << field(ft.gpuMs, "%.3f") << ',' << field(emptyT.wallMs, "%.3f") << ','
         << field(covered, "%.2f") << ',' << field(newton, "%.3f") << ',' << field(bytes, "%.2f") << ','
         << field(vtk, "%.0f") << ',' << field(m.coveragePct, "%.4f") << ",\"" << ctx.describe() << "\"\n";
+      if (progress) progress({}, 0, 0, {});
       std::fprintf(stderr, "  %-22s n %-10zu %10.2f ms (GPU %.2f, empty %.2f), %.1f%% covered, %.1f B/glyph%s\n",
                    m.name.c_str(), n, ft.wallMs, ft.gpuMs, emptyT.wallMs, covered, bytes,
                    m.skipped ? "; larger counts skipped" : "");

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "gl/context.h"
+#include "util/progress.h"
 
 namespace tg::app {
 
@@ -16,7 +17,7 @@ struct ScaleOptions {
   std::string csv;
   std::string backend = "osmesa";
   bool requireGpu = false;  // refuse a software renderer (a GPU run must not time llvmpipe)
-  bool help = false;
+  bool help = false, quiet = false;
   std::vector<double> counts{1e4, 1e5, 1e6};
   std::vector<int> resolutions{8, 16, 32, 64};
   int width = 1920, height = 1080, frames = 3;
@@ -34,6 +35,7 @@ std::string scaleUsage(const std::string& command);
 
 // Runs the sweep on `ctx` (current) and writes the CSV through a temporary
 // file, renamed into place only when every row is written.
-void runScaleSweep(gl::Context& ctx, const ScaleOptions& o);
+// `progress` hears ("sweep", rows done, rows, "rows") before each row.
+void runScaleSweep(gl::Context& ctx, const ScaleOptions& o, const util::ProgressSink& progress = {});
 
 }  // namespace tg::app

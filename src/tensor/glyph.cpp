@@ -162,7 +162,8 @@ GlyphGroup glyphGroup(const GlyphRecord& g) {
 }
 
 GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> tensors,
-                     std::span<const std::uint32_t> ids, unsigned threads, const GlyphOptions& opt) {
+                     std::span<const std::uint32_t> ids, unsigned threads, const GlyphOptions& opt,
+                     const util::ProgressSink& progress) {
   const std::size_t n = positions.size() / 3;
   if (positions.size() != 3 * n || tensors.size() != 6 * n || (!ids.empty() && ids.size() != n))
     throw std::invalid_argument("buildGlyphs: positions, tensors and ids disagree in count");
@@ -180,8 +181,20 @@ GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> te
     auto job = [&, b, e, c] {
       buildRange(positions, tensors, ids, b, e, set.glyphs.data(), parts[c], opt, filtering ? dropped.data() : nullptr);
     };
-    if (c + 1 == chunks) job();
-    else pool.emplace_back(job);
+    if (c + 1 < chunks) {
+      pool.emplace_back(job);
+    } else if (!progress) {
+      job();
+    } else {
+      // The other threads run at the same pace: this share stands for all.
+      constexpr std::size_t kStep = 65536;
+      for (std::size_t s = b; s < e; s += kStep) {
+        progress("eigen", double(s - b) * double(n) / double(e - b), double(n), "tensors");
+        buildRange(positions, tensors, ids, s, std::min(e, s + kStep), set.glyphs.data(), parts[c], opt,
+                   filtering ? dropped.data() : nullptr);
+      }
+      progress("eigen", double(n), double(n), "tensors");
+    }
   }
   for (auto& t : pool) t.join();
   if (filtering) {

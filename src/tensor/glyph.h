@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "util/mapped_array.h"
+#include "util/progress.h"
 
 #include <glm/vec3.hpp>
 
@@ -66,9 +67,11 @@ struct GlyphOptions {
 
 // Input: N positions (x y z) and N tensors (xx xy xz yy yz zz), all finite;
 // ids[i] is the input index reported for glyph i (empty: 0..N-1).
-// Runs on up to `threads` threads (0: hardware concurrency).
+// Runs on up to `threads` threads (0: hardware concurrency). `progress`
+// hears ("eigen", done, N, "tensors") every 64k tensors of the calling thread.
 GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> tensors,
-                     std::span<const std::uint32_t> ids, unsigned threads = 0, const GlyphOptions& opt = {});
+                     std::span<const std::uint32_t> ids, unsigned threads = 0, const GlyphOptions& opt = {},
+                     const util::ProgressSink& progress = {});
 
 
 // Rotation matrix columns from a record's quaternion (the eigenvectors).

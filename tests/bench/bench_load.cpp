@@ -112,6 +112,24 @@ void loadAndEigenGuarded(benchmark::State& st) {
   st.SetItemsProcessed(std::int64_t(st.iterations()) * std::int64_t(n));
 }
 
+// The same with progress on, as on a terminal: the parent reads the child's
+// file offset 10 times a second, and the eigen-decomposition reports every
+// 64k tensors. The difference to loadAndEigenGuarded is what progress costs.
+void loadAndEigenGuardedProgress(benchmark::State& st) {
+  const std::string& path = fileFor(st.range(0));
+  std::size_t n = 0, reports = 0;
+  io::ReadOptions opt;
+  opt.progress = [&reports](std::string_view, double, double, std::string_view) { ++reports; };
+  for (auto _ : st) {
+    const io::TensorField f = io::readTensorField(path, opt);
+    const tensor::GlyphSet g = tensor::buildGlyphs(f.positions, f.tensors, f.ids, 1, {}, opt.progress);
+    n = g.glyphs.size();
+    benchmark::DoNotOptimize(g.glyphs.data());
+  }
+  st.counters["reports"] = benchmark::Counter(double(reports) / double(st.iterations()));
+  st.SetItemsProcessed(std::int64_t(st.iterations()) * std::int64_t(n));
+}
+
 // The guard's fixed cost per file: fork, limits, the socket and wait, on one tensor.
 void guardPerFile(benchmark::State& st) {
   const std::string& path = fileFor(1);
@@ -192,6 +210,7 @@ BENCHMARK(eigensolveOnly)->Arg(1 << 21)->Unit(benchmark::kMillisecond)->UseRealT
 BENCHMARK(eigensolveBlockOnly)->Arg(1 << 21)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(loadAndEigen)->Arg(1 << 21)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(loadAndEigenGuarded)->Arg(1 << 21)->Unit(benchmark::kMillisecond)->UseRealTime();
+BENCHMARK(loadAndEigenGuardedProgress)->Arg(1 << 21)->Unit(benchmark::kMillisecond)->UseRealTime();
 BENCHMARK(guardPerFile)->Unit(benchmark::kMicrosecond)->UseRealTime();
 BENCHMARK(unguardedPerFile)->Unit(benchmark::kMicrosecond)->UseRealTime();
 

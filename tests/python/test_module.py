@@ -193,6 +193,25 @@ class Interactive(unittest.TestCase):
         self.assertEqual(r.uploads, 2, "a new selection must load and upload")
         print("ms per change from Python: " + ", ".join(f"{k} {v:.1f}" for k, v in times.items()), file=sys.stderr)
 
+    def test_progress_reaches_a_python_callback(self):
+        import nibabel as nib
+        n = (40, 40, 50)  # 80,000 tensors: more than one 65,536-tensor block
+        fsl = np.zeros(n + (6,), np.float32)
+        fsl[..., 0], fsl[..., 3], fsl[..., 5] = 3.0, 1.0, 0.5
+        calls = []
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "dt.nii")
+            nib.save(nib.Nifti1Image(fsl, np.eye(4)), path)
+            tg.render(path, size=(32, 24), progress=lambda *a: calls.append(a))
+            self.assertIn(("eigen", 80000.0, 80000.0, "tensors"), calls)
+
+            def fail(*a):
+                raise KeyError("from the callback")
+            with self.assertRaises(KeyError):
+                tg.render(path, size=(32, 24), progress=fail)
+            with self.assertRaises(TypeError):
+                tg.render(path, progress=3)
+
     def test_two_renderers_in_two_threads(self):
         t, p = points(50)
         alone = [tg.render(t, positions=p, size=(96, 64), gamma=g, glyph="superquadric").image for g in (1.0, 4.0)]
