@@ -1,5 +1,3 @@
-#include <teem/nrrd.h>
-
 #include <unistd.h>
 
 #include <filesystem>
@@ -10,8 +8,8 @@
 #include "data-synthetic/generators.h"
 #include "data-synthetic/random_tensors.h"
 #include "io/atomic_file.h"
+#include "io/format_modules.h"
 #include "io/input_files.h"
-#include "io/nrrd_save.h"
 
 namespace tg::synth {
 namespace {
@@ -51,6 +49,8 @@ void writeRandomNrrdStreaming(const std::string& nhdrPath, std::size_t n, std::u
   if (hp.extension() != ".nhdr") throw std::runtime_error("writeRandomNrrdStreaming: " + nhdrPath + ": needs .nhdr");
   if (n == 0) throw std::runtime_error("writeRandomNrrdStreaming: " + nhdrPath + ": N must be positive");
   const GridDims dims = gridDims(n);
+  // Before the data: a missing module must not cost the data's writing first.
+  const io::TeemFormats& teem = io::teemFormats("writeRandomNrrdStreaming", nhdrPath);
 
   // Data first, in 1M-tensor chunks, each write checked.
   io::AtomicFile raw(io::AtomicFile::UniqueName{}, hp.parent_path().string(), hp.stem().string(), ".raw");
@@ -70,32 +70,11 @@ void writeRandomNrrdStreaming(const std::string& nhdrPath, std::size_t n, std::u
   }
 
   // The header, by Teem, without data: it names the data file.
-  Nrrd* nrrd = nrrdNew();
-  float placeholder = 0;  // never read: skipData
-  const std::size_t sizes[4] = {6, dims.x, dims.y, dims.z};
-  const int kinds[4] = {nrrdKind3DSymMatrix, nrrdKindSpace, nrrdKindSpace, nrrdKindSpace};
-  const double spacings[4] = {AIR_NAN, 1.0, 1.0, 1.0};
-  NrrdIoState* nio = nrrdIoStateNew();
-  nio->detachedHeader = AIR_TRUE;
-  nio->skipData = AIR_TRUE;
-  nio->encoding = nrrdEncodingRaw;
-  const unsigned idx = airArrayLenIncr(nio->dataFNArr, 1);
-  nio->dataFN[idx] = airStrdup(std::filesystem::path(raw.target()).filename().c_str());
   io::AtomicFile header(nhdrPath);
-  std::int64_t size = 0;
-  try {
-    if (nrrdWrap_nva(nrrd, &placeholder, nrrdTypeFloat, 4, sizes))
-      throw std::runtime_error("writeRandomNrrdStreaming: " + nhdrPath + ": Teem cannot describe the grid");
-    nrrdAxisInfoSet_nva(nrrd, nrrdAxisInfoKind, kinds);
-    nrrdAxisInfoSet_nva(nrrd, nrrdAxisInfoSpacing, spacings);
-    size = io::writeNrrdTo(header, nrrd, nio, "writeRandomNrrdStreaming");
-  } catch (...) {
-    nrrdIoStateNix(nio);
-    nrrdNix(nrrd);
-    throw;
-  }
-  nrrdIoStateNix(nio);
-  nrrdNix(nrrd);
+  const std::size_t grid[3] = {dims.x, dims.y, dims.z};
+  const std::int64_t size =
+      teem.writeRawTensorHeader(nhdrPath, header.fd(), grid, std::filesystem::path(raw.target()).filename().string(),
+                                "writeRandomNrrdStreaming");
   // From here a failure must remove the data itself: it is no longer
   // registered for removal, so that no signal can take it from under a
   // committed header (at worst it is left unnamed).

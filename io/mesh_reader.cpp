@@ -27,8 +27,7 @@
 #include <vtkTriangleFilter.h>
 #include <vtkUnstructuredGrid.h>
 
-#include "io/guard_wire.h"
-#include "io/read_guard.h"
+#include "io/format_impl.h"
 #include "io/readers.h"
 #include "io/vtk_capture.h"
 #include "io/vtk_dataset.h"
@@ -38,36 +37,6 @@ namespace {
 
 [[noreturn]] void fail(const std::string& path, const std::string& what) {
   throw InputError("readMesh: " + path + ": " + what);
-}
-
-std::string extensionOf(const std::string& path) {
-  const auto dot = path.find_last_of('.');
-  if (dot == std::string::npos || path.find('/', dot) != std::string::npos) return "";
-  std::string ext = path.substr(dot + 1);
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  return ext;
-}
-
-std::uint64_t checkedFileSize(const std::string& path) {
-  struct stat st {};
-  if (stat(path.c_str(), &st) != 0) fail(path, "no such file");
-  if (S_ISDIR(st.st_mode)) fail(path, "is a directory");
-  if (!S_ISREG(st.st_mode)) fail(path, "not a regular file");
-  if (st.st_size == 0) fail(path, "file is empty");
-  return std::uint64_t(st.st_size);
-}
-
-void checkExtension(const std::string& path, MeshSource source) {
-  const std::string ext = extensionOf(path);
-  if (source == MeshSource::FemBoundary) {
-    if (ext != "vtu" && ext != "vtk")
-      fail(path, "--mesh-from-input needs an FEM mesh input (.vtu or a legacy .vtk unstructured grid), not \"." + ext +
-                     "\"");
-    return;
-  }
-  for (const char* e : {"vtp", "vtk", "stl", "obj", "ply", "vtu", "vts"})
-    if (ext == e) return;
-  fail(path, "unknown mesh extension \"." + ext + "\"; supported: .vtp .vtk .stl .obj .ply, and .vtu .vts (outer surface)");
 }
 
 // A binary STL is an 80-byte header, a triangle count and 50 bytes per
@@ -239,10 +208,11 @@ MeshData toMesh(vtkPolyData* pd, const std::string& path, const NonFiniteText* n
   return m;
 }
 
-MeshData readWith(const std::string& path, MeshSource source, std::uint64_t budget, const PromiseFn& promise) {
-  const std::uint64_t size = checkedFileSize(path);
-  checkExtension(path, source);
-  const std::string ext = extensionOf(path);
+}  // namespace
+
+MeshData impl::readMesh(const std::string& path, MeshSource source, std::uint64_t budget, const PromiseFn& promise) {
+  const std::uint64_t size = checkMeshFile(path, source);
+  const std::string ext = meshExtension(path);
   MeshData m;
   if (ext == "stl" || ext == "obj" || ext == "ply") {
     if (ext == "stl") checkStl(path, size);
@@ -312,49 +282,6 @@ MeshData readWith(const std::string& path, MeshSource source, std::uint64_t budg
   }
   m.description += ", " + std::to_string(m.triangleCount()) + " triangles";
   return m;
-}
-
-constexpr std::uint32_t kMeshWireMagic = 0x54474d31;  // "TGM1"
-
-}  // namespace
-
-MeshData readMeshInProcess(const std::string& path, MeshSource source, std::uint64_t memoryBudget) {
-  return readWith(path, source, memoryBudget, nullptr);
-}
-
-MeshData readMesh(const std::string& path, MeshSource source) {
-  const std::uint64_t size = checkedFileSize(path);
-  checkExtension(path, source);
-  const std::uint64_t budget = defaultMemoryBudget();
-  MeshData out;
-  runInChild(
-      "readMesh", path, limitsFor(size, budget),
-      [&](const PromiseFn& promise) -> SendFn {
-        auto m = std::make_shared<const MeshData>(readWith(path, source, budget, promise));
-        return [m](WireOut& w) {
-          w.pod(kMeshWireMagic);
-          w.str(m->path);
-          w.str(m->description);
-          w.pod(std::uint64_t(m->skippedNonFinite));
-          w.array(m->positionsWC);
-          w.array(m->triangles);
-        };
-      },
-      [&](WireIn& in) {
-        if (in.pod<std::uint32_t>() != kMeshWireMagic) throw std::runtime_error("the reader's result is malformed");
-        out.path = in.str();
-        out.description = in.str();
-        out.skippedNonFinite = std::size_t(in.pod<std::uint64_t>());
-        in.array(out.positionsWC);
-        in.array(out.triangles);
-      });
-  // The child's indices are checked here, where they are used: a reader
-  // that returned garbage must not index past the vertices on the GPU.
-  const std::size_t nv = out.vertexCount();
-  if (out.positionsWC.size() % 3 || out.triangles.size() % 3 ||
-      std::any_of(out.triangles.begin(), out.triangles.end(), [nv](std::uint32_t i) { return i >= nv; }))
-    fail(path, "the reader's triangles index past its vertices");
-  return out;
 }
 
 }  // namespace tg::io

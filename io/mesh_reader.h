@@ -39,4 +39,11 @@ MeshData readMesh(const std::string& path, MeshSource source);
 // The same without the child process, for the fuzzers.
 MeshData readMeshInProcess(const std::string& path, MeshSource source, std::uint64_t memoryBudget = 0);
 
+// The checks readMesh makes before reading: the file exists, is a regular,
+// non-empty file and has an extension `source` accepts. Returns its size;
+// throws InputError "readMesh: path: problem".
+std::uint64_t checkMeshFile(const std::string& path, MeshSource source);
+// The extension of `path`, lower case, without the dot ("" when none).
+std::string meshExtension(const std::string& path);
+
 }  // namespace tg::io

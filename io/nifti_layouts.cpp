@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "io/readers.h"
 #include "io/volume_sink.h"
 
 namespace tg::io {
@@ -23,6 +24,8 @@ const NiftiLayout* niftiLayoutNamed(std::string_view name) {
     if (name == l.name) return &l;
   return nullptr;
 }
+
+bool isNiftiLayout(const std::string& name) { return niftiLayoutNamed(name) != nullptr; }
 
 std::optional<TensorFrame> tensorFrameNamed(std::string_view name) {
   if (name == "voxel") return TensorFrame::Voxel;

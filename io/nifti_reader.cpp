@@ -13,6 +13,7 @@
 #include <memory>
 #include <string_view>
 
+#include "io/format_impl.h"
 #include "io/nifti_layouts.h"
 #include "io/readers.h"
 #include "io/selection.h"
@@ -276,7 +277,7 @@ Convention convention(const std::string& path, const nifti_image& nim, const Rea
 
 }  // namespace
 
-TensorField readNifti(const std::string& path, const ReadOptions& opt) {
+TensorField impl::readNifti(const std::string& path, const ReadOptions& opt) {
   const Image nim = readHeader(path);
   TensorField f;
   f.path = path;
@@ -353,9 +354,7 @@ TensorField readNifti(const std::string& path, const ReadOptions& opt) {
   return f;
 }
 
-bool isNiftiLayout(const std::string& name) { return niftiLayoutNamed(name) != nullptr; }
-
-ScalarVolume readNiftiScalar(const std::string& path, const int dims[3]) {
+ScalarVolume impl::readNiftiScalar(const std::string& path, const int* dims) {
   const Image nim = readHeader(path);
   VolumeGeometry g;
   const std::uint64_t voxels = spatialVoxels(path, *nim, g);

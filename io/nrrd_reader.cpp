@@ -17,7 +17,7 @@
 #include <functional>
 #include <memory>
 
-#include "io/input_files.h"
+#include "io/format_impl.h"
 #include "io/readers.h"
 #include "io/teem_util.h"
 #include "io/volume_sink.h"
@@ -75,7 +75,7 @@ std::unique_ptr<Header> readHeader(const std::string& path) {
   // a FIFO blocks; stat tells without opening.
   std::vector<std::string> dataFiles;
   try {
-    dataFiles = nrrdDataFiles(path);
+    dataFiles = impl::nrrdDataFiles(path);
   } catch (const InputError&) {
     // A header it cannot parse: nrrdLoad below reports the same fault as ours.
   }
@@ -416,7 +416,7 @@ ComponentLayout layoutOf(const std::string& path, const Nrrd* n, TensorField& f)
 
 }  // namespace
 
-TensorField readNrrd(const std::string& path, const ReadOptions& opt) {
+TensorField impl::readNrrd(const std::string& path, const ReadOptions& opt) {
   const auto h = readHeader(path);
   Nrrd* n = h->nrrd;
   if (n->dim < 3 || n->dim > 4)
@@ -495,7 +495,7 @@ TensorField readNrrd(const std::string& path, const ReadOptions& opt) {
   return f;
 }
 
-ScalarVolume readNrrdScalar(const std::string& path, const int dims[3]) {
+ScalarVolume impl::readNrrdScalar(const std::string& path, const int* dims) {
   const auto h = readHeader(path);
   Nrrd* n = h->nrrd;
   if (n->dim != 3) fail(path, "a mask or underlay must have 3 axes, this has " + std::to_string(n->dim));

@@ -11,9 +11,10 @@
 
 namespace tg::io {
 
-std::int64_t writeNrrdTo(AtomicFile& out, const Nrrd* nrrd, NrrdIoState* nio, const std::string& caller) {
-  auto fail = [&](const std::string& what) { throw std::runtime_error(caller + ": " + out.target() + ": " + what); };
-  const int fd = dup(out.fd());
+std::int64_t writeNrrdTo(int out, const std::string& target, const Nrrd* nrrd, NrrdIoState* nio,
+                         const std::string& caller) {
+  auto fail = [&](const std::string& what) { throw std::runtime_error(caller + ": " + target + ": " + what); };
+  const int fd = dup(out);
   FILE* file = fd >= 0 ? fdopen(fd, "wb") : nullptr;
   if (!file) {
     if (fd >= 0) close(fd);

@@ -1,15 +1,16 @@
 #include <teem/biff.h>
 #include <teem/nrrd.h>
 
+#include <memory>
 #include <stdexcept>
 
 #include "io/nrrd_save.h"
 #include "io/teem_util.h"
-#include "io/writers.h"
+#include "io/format_impl.h"
 
 namespace tg::io {
 
-void writeNrrd(const TensorField& f, const std::string& path, const double m[9]) {
+std::int64_t impl::writeNrrd(const TensorField& f, const std::string& path, int fd, const double m[9]) {
   if (!f.grid) throw std::runtime_error("writeNrrd: " + path + ": field has no grid");
   const GridInfo& g = *f.grid;
   const std::size_t n = std::size_t(g.dims[0]) * g.dims[1] * g.dims[2];
@@ -43,9 +44,9 @@ void writeNrrd(const TensorField& f, const std::string& path, const double m[9])
     for (int r = 0; r < 3; ++r) nrrd->measurementFrame[c][r] = m[r * 3 + c];  // Teem: [column][row]
   NrrdIoState* nio = nrrdIoStateNew();
   nio->encoding = nrrdEncodingGzip;
+  std::int64_t size = 0;
   try {
-    AtomicFile out(path);
-    out.commit(writeNrrdTo(out, nrrd, nio, "writeNrrd"));
+    size = writeNrrdTo(fd, path, nrrd, nio, "writeNrrd");
   } catch (...) {
     nrrdIoStateNix(nio);
     done();
@@ -53,6 +54,27 @@ void writeNrrd(const TensorField& f, const std::string& path, const double m[9])
   }
   nrrdIoStateNix(nio);
   done();
+  return size;
+}
+
+std::int64_t impl::writeRawTensorHeader(const std::string& path, int fd, const std::size_t dims[3],
+                                        const std::string& dataFile, const std::string& caller) {
+  std::unique_ptr<Nrrd, Nrrd* (*)(Nrrd*)> nrrd(nrrdNew(), nrrdNix);
+  std::unique_ptr<NrrdIoState, NrrdIoState* (*)(NrrdIoState*)> nio(nrrdIoStateNew(), nrrdIoStateNix);
+  float placeholder = 0;  // never read: skipData
+  const std::size_t sizes[4] = {6, dims[0], dims[1], dims[2]};
+  const int kinds[4] = {nrrdKind3DSymMatrix, nrrdKindSpace, nrrdKindSpace, nrrdKindSpace};
+  const double spacings[4] = {AIR_NAN, 1.0, 1.0, 1.0};
+  nio->detachedHeader = AIR_TRUE;
+  nio->skipData = AIR_TRUE;
+  nio->encoding = nrrdEncodingRaw;
+  const unsigned idx = airArrayLenIncr(nio->dataFNArr, 1);
+  nio->dataFN[idx] = airStrdup(dataFile.c_str());
+  if (nrrdWrap_nva(nrrd.get(), &placeholder, nrrdTypeFloat, 4, sizes))
+    throw std::runtime_error(caller + ": " + path + ": Teem cannot describe the grid");
+  nrrdAxisInfoSet_nva(nrrd.get(), nrrdAxisInfoKind, kinds);
+  nrrdAxisInfoSet_nva(nrrd.get(), nrrdAxisInfoSpacing, spacings);
+  return writeNrrdTo(fd, path, nrrd.get(), nio.get(), caller);
 }
 
 }  // namespace tg::io

@@ -24,6 +24,7 @@
 
 #include "io/guard_wire.h"
 #include "io/read_progress.h"
+#include "io/module_loader.h"
 
 namespace tg::io {
 namespace {
@@ -76,8 +77,9 @@ TensorField readField(WireIn& r) {
 
 // ---- The status pipe: one letter, then the text -------------------------
 // 'P' + 8 bytes: a promise of decoded bytes; 'O': the field follows on the
-// data socket; 'E' + text: the reader's InputError; 'M' + text: out of memory;
-// 'X' + text: any other exception, which the parent words with the file.
+// data socket; 'E' + text: the reader's InputError or ModuleError, verbatim;
+// 'M' + text: out of memory; 'X' + text: any other exception, which the
+// parent words with the file.
 
 std::string sizeText(std::uint64_t bytes) {
   return bytes >= (std::uint64_t(1) << 20) ? std::to_string(bytes >> 20) + " MiB"
@@ -172,6 +174,10 @@ void readVolume(WireIn& r, ScalarVolume& v) {
     w.finish();  // with `send`'s data alive: the parent may be copying from it
     _exit(0);
   } catch (const InputError& e) {
+    sendAll(statusFd, "E", 1);
+    sendAll(statusFd, e.what(), std::strlen(e.what()));
+  } catch (const ModuleError& e) {
+    // A format module that did not load: the message names it, not the file.
     sendAll(statusFd, "E", 1);
     sendAll(statusFd, e.what(), std::strlen(e.what()));
   } catch (const std::bad_alloc&) {

@@ -29,6 +29,7 @@
 #include <vtkXMLDataParser.h>
 #include <vtkXMLReader.h>
 
+#include "io/format_impl.h"
 #include "io/read_guard.h"
 #include "io/readers.h"
 #include "io/selection.h"
@@ -398,7 +399,7 @@ ReadResult readDataSet(const std::string& path, const ReadOptions& opt, const in
   return read;
 }
 
-void checkVtkLegacyHeader(const std::string& path) {
+void impl::checkVtkLegacyHeader(const std::string& path) {
   struct stat st {};
   if (stat(path.c_str(), &st) != 0) fail(path, "cannot open file");
   checkLegacyCounts(path, std::uint64_t(st.st_size));
@@ -410,7 +411,7 @@ void checkVtkLegacyHeader(const std::string& path) {
     fail(path, !sink.first().empty() ? sink.first() : !said.first().empty() ? said.first() : "not a legacy VTK dataset");
 }
 
-void checkVtkXmlHeader(const std::string& path) {
+void impl::checkVtkXmlHeader(const std::string& path) {
   struct stat st {};
   if (stat(path.c_str(), &st) != 0) fail(path, "cannot open file");
   vtkNew<vtkXMLUnstructuredGridReader> r;
@@ -425,7 +426,7 @@ void checkVtkXmlHeader(const std::string& path) {
   if (!said.first().empty()) fail(path, said.first());
 }
 
-ScalarVolume readVtiScalar(const std::string& path, const int dims[3]) {
+ScalarVolume impl::readVtiScalar(const std::string& path, const int* dims) {
   // An underlay (no dims) is held to the load's memory before VTK decodes it.
   ReadOptions opt;
   if (!dims) opt.memoryBudget = defaultMemoryBudget();
@@ -446,7 +447,7 @@ ScalarVolume readVtiScalar(const std::string& path, const int dims[3]) {
   return v;
 }
 
-TensorField readVtk(const std::string& path, const ReadOptions& opt) {
+TensorField impl::readVtk(const std::string& path, const ReadOptions& opt) {
   if (const std::string o = inapplicableOption(InputFormat::Vtk, opt); !o.empty())
     fail(path, o + " does not apply to VTK, whose tensors have a fixed order in world axes");
   const ReadResult read = readDataSet(path, opt);

@@ -12,8 +12,7 @@
 
 #include <stdexcept>
 
-#include "io/atomic_file.h"
-#include "io/writers.h"
+#include "io/format_impl.h"
 
 namespace tg::io {
 namespace {
@@ -33,7 +32,7 @@ vtkSmartPointer<vtkFloatArray> tensorArray(const TensorField& f) {
 
 }  // namespace
 
-void writeVtk(const TensorField& f, const std::string& path) {
+std::string impl::encodeVtk(const TensorField& f, const std::string& path) {
   const std::string ext = path.substr(path.find_last_of('.') + 1);
   vtkSmartPointer<vtkDataSet> ds;
   if (ext == "vti") {
@@ -62,7 +61,8 @@ void writeVtk(const TensorField& f, const std::string& path) {
   }
   ds->GetPointData()->SetTensors(tensorArray(f));
   // VTK's writers lose the error of their last buffered write, so they write
-  // into memory and the bytes go to the file through AtomicFile's checks.
+  // into memory and writeVtk puts the bytes in the file through AtomicFile's
+  // checks.
   int ok = 0;
   std::string bytes;
   if (ext == "vtk") {
@@ -87,9 +87,7 @@ void writeVtk(const TensorField& f, const std::string& path) {
     throw std::runtime_error("writeVtk: " + path + ": unknown extension");
   }
   if (!ok || bytes.empty()) throw std::runtime_error("writeVtk: " + path + ": VTK writer failed");
-  AtomicFile out(path);
-  out.write(bytes.data(), bytes.size());
-  out.commit(std::int64_t(bytes.size()));
+  return bytes;
 }
 
 }  // namespace tg::io

@@ -7,6 +7,8 @@
 
 #include <glm/gtc/type_ptr.hpp>
 
+#include "gl/program_cache.h"
+
 namespace tg::gl {
 namespace {
 
@@ -34,7 +36,18 @@ Program::Program(const Api& gl, const ShaderLibrary& lib, std::initializer_list<
       throw std::runtime_error("Program: no stage of " + std::string(stages.begin()->path) + " declares option \"" +
                                std::string(e) + "\"");
   }
+  const ProgramCache cache(gl);
+  std::string key;
+  if (cache.enabled()) {
+    std::vector<std::pair<GLenum, std::string_view>> keyed;
+    for (std::size_t k = 0; k < sources.size(); ++k) keyed.emplace_back(stages.begin()[k].stage, sources[k].text);
+    key = cache.key(keyed);
+    id_ = gl.CreateProgram();
+    if (cache.load(id_, key)) return;
+    gl.DeleteProgram(id_);
+  }
   id_ = gl.CreateProgram();
+  if (cache.enabled()) gl.ProgramParameteri(id_, GL_PROGRAM_BINARY_RETRIEVABLE_HINT, GL_TRUE);
   std::vector<GLuint> shaders;
   auto cleanup = [&] {
     for (GLuint s : shaders) gl.DeleteShader(s);
@@ -70,6 +83,7 @@ Program::Program(const Api& gl, const ShaderLibrary& lib, std::initializer_list<
     gl.DeleteProgram(id_);
     throw std::runtime_error("Program: linking " + std::string(stages.begin()->path) + " failed:\n" + log.c_str());
   }
+  cache.store(id_, key);
 }
 
 Program::~Program() {

@@ -66,13 +66,13 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
 
 void GlyphRenderer::setCamera(const gl::Program& prog, const Camera& cam) const { setCameraUniforms(prog, cam); }
 
-// Null where a marching program has not been built yet.
+// Null where a marching or tessellated program has not been built yet.
 std::array<const gl::Program*, 4> GlyphRenderer::glyphPrograms() const {
-  return {&ellipsoid_, superquadric_.get(), superquadricStats_.get(), &tessellated_.program()};
+  return {&ellipsoid_, superquadric_.get(), superquadricStats_.get(), tessellated_.program()};
 }
 
 std::array<const gl::Program*, 3> GlyphRenderer::shapePrograms() const {
-  return {superquadric_.get(), superquadricStats_.get(), &tessellated_.program()};
+  return {superquadric_.get(), superquadricStats_.get(), tessellated_.program()};
 }
 
 void GlyphRenderer::setShapeUniforms(const gl::Program& prog, const FrameParams& p, const FrameParams* old) const {
@@ -101,6 +101,17 @@ const gl::Program& GlyphRenderer::marchProgram(bool stats, const FrameParams& p)
     slot->set("uMdRange", glm::vec2(mdMin_, mdMax_));
   }
   return *slot;
+}
+
+// The tessellated baseline's program, compiled on its first frame, as the march's.
+const gl::Program& GlyphRenderer::tessellatedProgram(const FrameParams& p) {
+  if (!tessellated_.program()) {
+    const gl::Program& prog = tessellated_.build();
+    setGlyphUniforms(prog, p, nullptr);
+    setShapeUniforms(prog, p, nullptr);
+    prog.set("uMdRange", glm::vec2(mdMin_, mdMax_));
+  }
+  return *tessellated_.program();
 }
 
 void GlyphRenderer::setParams(const FrameParams& p) {
@@ -243,7 +254,7 @@ void GlyphRenderer::useGlyphProgram(const gl::Program& prog, const Camera& cam) 
 // ellipsoids; at gamma > 0 only spheres are.
 void GlyphRenderer::drawGlyphs(const Camera& cam, const FrameParams& p, int split, bool stats, bool occluders) {
   if (p.tessellation > 0) {
-    setCamera(tessellated_.program(), cam);
+    setCamera(tessellatedProgram(p), cam);
     tessellated_.draw(p.tessellation, std::size_t(count_));
     return;
   }

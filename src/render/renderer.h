@@ -142,6 +142,7 @@ class GlyphRenderer {
   std::uint64_t shadowMapPasses() const { return shadowMapPasses_; }
   // Whether a frame has needed the Newton march (its program is built then).
   bool marchProgramBuilt() const { return superquadric_ || superquadricStats_; }
+  bool tessellatedProgramBuilt() const { return tessellated_.program() != nullptr; }
   bool shadowPassBuilt() const { return shadow_ != nullptr; }
   int shadowMapSize() const { return shadow_ ? shadow_->mapSize() : 0; }  // texels a side, of the last map
   // GPU memory held for the uploaded glyphs: records, culling's ranges and
@@ -180,6 +181,7 @@ class GlyphRenderer {
   void drawGlyphs(const Camera& cam, const FrameParams& p, int split, bool stats, bool occluders);
   // The marching program (with Newton counting when `stats`), built on first use.
   const gl::Program& marchProgram(bool stats, const FrameParams& p);
+  const gl::Program& tessellatedProgram(const FrameParams& p);
   void setShapeUniforms(const gl::Program& prog, const FrameParams& p, const FrameParams* old) const;
   // Programs that draw glyphs, and those of them that take the superquadric
   // shape uniforms; null where a marching program is not built yet.

@@ -7,9 +7,16 @@
 
 namespace tg::render {
 
-TessellatedGlyphs::TessellatedGlyphs(const gl::Api& gl, const gl::ShaderLibrary& lib)
-    : gl_(gl), program_(gl, lib, {{GL_VERTEX_SHADER, "tessellated.vert"}, {GL_FRAGMENT_SHADER, "tessellated.frag"}}) {
+TessellatedGlyphs::TessellatedGlyphs(const gl::Api& gl, const gl::ShaderLibrary& lib) : gl_(gl), lib_(lib) {
   gl.CreateVertexArrays(1, &vao_);
+}
+
+const gl::Program& TessellatedGlyphs::build() {
+  if (!program_)
+    program_ = std::make_unique<gl::Program>(
+        gl_, lib_, std::initializer_list<gl::StageSource>{{GL_VERTEX_SHADER, "tessellated.vert"},
+                                                          {GL_FRAGMENT_SHADER, "tessellated.frag"}});
+  return *program_;
 }
 
 TessellatedGlyphs::~TessellatedGlyphs() {
@@ -44,8 +51,9 @@ void TessellatedGlyphs::draw(int r, std::size_t count) {
     gl_.VertexArrayElementBuffer(vao_, indices_);
     resolution_ = r;
   }
-  program_.set("uResolution", r);
-  gl_.UseProgram(program_.id());
+  const gl::Program& prog = build();
+  prog.set("uResolution", r);
+  gl_.UseProgram(prog.id());
   gl_.BindVertexArray(vao_);
   gl_.DrawElementsInstanced(GL_TRIANGLES, 6 * r * r, GL_UNSIGNED_SHORT, nullptr, GLsizei(count));
   gl::checkError(gl_, "TessellatedGlyphs::draw");

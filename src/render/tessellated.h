@@ -4,6 +4,7 @@
 // vtkSuperquadricSource of theta and phi resolution R draws. It exists to be
 // measured against the ray-cast glyphs (`bench scale`, `render --tessellate`).
 #include <cstddef>
+#include <memory>
 
 #include "gl/program.h"
 
@@ -18,9 +19,12 @@ class TessellatedGlyphs {
   TessellatedGlyphs(const TessellatedGlyphs&) = delete;
   TessellatedGlyphs& operator=(const TessellatedGlyphs&) = delete;
 
-  const gl::Program& program() const { return program_; }
+  // The program, compiled on the first call: only the baseline's own frames
+  // (--tessellate, `bench scale`) pay for it. program() is null until then.
+  const gl::Program& build();
+  const gl::Program* program() const { return program_.get(); }
   // Draws `count` glyphs from the records bound at binding 0, with the
-  // program's uniforms already set (camera included).
+  // built program's uniforms already set (camera included).
   void draw(int resolution, std::size_t count);
   // Bytes of GPU memory the shared mesh takes (its index buffer).
   std::size_t meshBytes() const { return meshBytes_; }
@@ -31,7 +35,8 @@ class TessellatedGlyphs {
 
  private:
   const gl::Api& gl_;
-  gl::Program program_;
+  const gl::ShaderLibrary& lib_;
+  std::unique_ptr<gl::Program> program_;
   GLuint vao_ = 0, indices_ = 0;
   int resolution_ = 0;
   std::size_t meshBytes_ = 0;

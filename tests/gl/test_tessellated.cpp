@@ -29,3 +29,31 @@ TEST_F(GlFixture, TessellatedBaselineConvergesToTheReference) {
   // At 64 x 64 the polygon's chords sit within a pixel of the surface here.
   EXPECT_LT(previous, 0.02);
 }
+
+// The baseline's program is compiled by its first frame, never by a
+// ray-cast one, and takes the frame's parameters when it is: a renderer that
+// drew other frames first gives the same image as a fresh one.
+TEST_F(GlFixture, TessellatedProgramIsBuiltByTheFirstTessellatedFrame) {
+  const auto set = test::glyphsOf(synth::randomField(64, 3));
+  const auto cam = test::cameraFor(set, 0.6, test::oblique(set, 12.0, render::Projection::Perspective), 120, 90);
+  render::FrameParams p;
+  p.scale = 0.6;
+  p.glyph = render::GlyphKind::Superquadric;
+  p.gamma = 1.5;
+  ctx_->makeCurrent();
+  render::GlyphRenderer r(ctx_->api(), *lib_);
+  render::GBuffer target(ctx_->api(), cam.width, cam.height);
+  r.upload(set);
+  r.render(cam, p, target);
+  EXPECT_FALSE(r.tessellatedProgramBuilt());
+  p.gamma = 3.0;
+  p.tessellation = 16;
+  r.render(cam, p, target);
+  EXPECT_TRUE(r.tessellatedProgramBuilt());
+  const auto late = r.readback(cam, target);
+  const auto fresh = draw(set, cam, p);
+  ASSERT_EQ(late.id.size(), fresh.id.size());
+  EXPECT_GT(std::count_if(late.id.begin(), late.id.end(), [](std::uint32_t id) { return id != ref::kNoGlyph; }), 500);
+  EXPECT_TRUE(late.id == fresh.id);
+  EXPECT_TRUE(late.rgba == fresh.rgba);
+}

@@ -1,0 +1,34 @@
+#pragma once
+// What the VTK, Teem and NIfTI modules implement (io/format_modules.h): the
+// entries of their tables. The rest of the program calls the functions of
+// readers.h, writers.h and mesh_reader.h instead, which find the module.
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "io/format_modules.h"
+
+namespace tg::io::impl {
+
+// tensorglyph-vtk.so: io/vtk_reader.cpp, io/mesh_reader.cpp, io/vtk_writer.cpp.
+TensorField readVtk(const std::string& path, const ReadOptions& opt);
+void checkVtkLegacyHeader(const std::string& path);
+void checkVtkXmlHeader(const std::string& path);
+ScalarVolume readVtiScalar(const std::string& path, const int* dims);
+MeshData readMesh(const std::string& path, MeshSource source, std::uint64_t memoryBudget, const PromiseFn& promise);
+std::string encodeVtk(const TensorField& f, const std::string& path);
+
+// tensorglyph-teem.so: io/nrrd_reader.cpp, io/nrrd_files.cpp, io/nrrd_writer.cpp.
+TensorField readNrrd(const std::string& path, const ReadOptions& opt);
+ScalarVolume readNrrdScalar(const std::string& path, const int* dims);
+std::vector<std::string> nrrdDataFiles(const std::string& header);
+std::int64_t writeNrrd(const TensorField& f, const std::string& path, int fd, const double frame[9]);
+std::int64_t writeRawTensorHeader(const std::string& path, int fd, const std::size_t dims[3],
+                                  const std::string& dataFile, const std::string& caller);
+
+// tensorglyph-nifti.so: io/nifti_reader.cpp.
+TensorField readNifti(const std::string& path, const ReadOptions& opt);
+ScalarVolume readNiftiScalar(const std::string& path, const int* dims);
+
+}  // namespace tg::io::impl

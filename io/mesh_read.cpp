@@ -1,0 +1,84 @@
+// readMesh's guarded child and the checks it makes first; the reading itself
+// is the VTK module's (io/mesh_reader.cpp, io/format_modules.h).
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <memory>
+
+#include "io/format_modules.h"
+#include "io/guard_wire.h"
+#include "io/mesh_reader.h"
+#include "io/read_guard.h"
+
+namespace tg::io {
+namespace {
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+  throw InputError("readMesh: " + path + ": " + what);
+}
+
+constexpr std::uint32_t kMeshWireMagic = 0x54474d31;  // "TGM1"
+
+}  // namespace
+
+std::string meshExtension(const std::string& path) {
+  const auto dot = path.find_last_of('.');
+  if (dot == std::string::npos || path.find('/', dot) != std::string::npos) return "";
+  std::string ext = path.substr(dot + 1);
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  return ext;
+}
+
+std::uint64_t checkMeshFile(const std::string& path, MeshSource source) {
+  struct stat st {};
+  if (stat(path.c_str(), &st) != 0) fail(path, "no such file");
+  if (S_ISDIR(st.st_mode)) fail(path, "is a directory");
+  if (!S_ISREG(st.st_mode)) fail(path, "not a regular file");
+  if (st.st_size == 0) fail(path, "file is empty");
+  const std::string ext = meshExtension(path);
+  if (source == MeshSource::FemBoundary) {
+    if (ext != "vtu" && ext != "vtk")
+      fail(path, "--mesh-from-input needs an FEM mesh input (.vtu or a legacy .vtk unstructured grid), not \"." + ext +
+                     "\"");
+    return std::uint64_t(st.st_size);
+  }
+  for (const char* e : {"vtp", "vtk", "stl", "obj", "ply", "vtu", "vts"})
+    if (ext == e) return std::uint64_t(st.st_size);
+  fail(path, "unknown mesh extension \"." + ext + "\"; supported: .vtp .vtk .stl .obj .ply, and .vtu .vts (outer surface)");
+}
+
+MeshData readMesh(const std::string& path, MeshSource source) {
+  const std::uint64_t size = checkMeshFile(path, source);
+  const std::uint64_t budget = defaultMemoryBudget();
+  MeshData out;
+  runInChild(
+      "readMesh", path, limitsFor(size, budget),
+      [&](const PromiseFn& promise) -> SendFn {
+        auto m = std::make_shared<const MeshData>(vtkFormats("readMesh", path).readMesh(path, source, budget, promise));
+        return [m](WireOut& w) {
+          w.pod(kMeshWireMagic);
+          w.str(m->path);
+          w.str(m->description);
+          w.pod(std::uint64_t(m->skippedNonFinite));
+          w.array(m->positionsWC);
+          w.array(m->triangles);
+        };
+      },
+      [&](WireIn& in) {
+        if (in.pod<std::uint32_t>() != kMeshWireMagic) throw std::runtime_error("the reader's result is malformed");
+        out.path = in.str();
+        out.description = in.str();
+        out.skippedNonFinite = std::size_t(in.pod<std::uint64_t>());
+        in.array(out.positionsWC);
+        in.array(out.triangles);
+      });
+  // The child's indices are checked here, where they are used: a reader
+  // that returned garbage must not index past the vertices on the GPU.
+  const std::size_t nv = out.vertexCount();
+  if (out.positionsWC.size() % 3 || out.triangles.size() % 3 ||
+      std::any_of(out.triangles.begin(), out.triangles.end(), [nv](std::uint32_t i) { return i >= nv; }))
+    fail(path, "the reader's triangles index past its vertices");
+  return out;
+}
+
+}  // namespace tg::io

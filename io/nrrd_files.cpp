@@ -1,0 +1,122 @@
+// nrrdDataFiles (io/input_files.h), in the Teem module (io/format_modules.h).
+#include <fcntl.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <teem/air.h>
+#include <teem/nrrd.h>
+
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "io/format_impl.h"
+#include "io/teem_util.h"
+
+namespace tg::io {
+namespace {
+
+// A %d-numbered data file list longer than this is refused rather than spelt out.
+constexpr unsigned kMaxDataFiles = 100000;
+
+[[noreturn]] void fail(const std::string& path, const std::string& what) {
+  throw InputError("nrrdDataFiles: " + path + ": " + what);
+}
+
+struct HeaderState {
+  Nrrd* nrrd = nrrdNew();
+  NrrdIoState* nio = nrrdIoStateNew();
+  FILE* file = nullptr;
+  ~HeaderState() {
+    if (file) std::fclose(file);
+    nrrdIoStateNix(nio);
+    nrrdNuke(nrrd);
+  }
+};
+
+// Opens a regular file without blocking on a FIFO or device at that name.
+FILE* openRegular(const std::string& path) {
+  const int fd = open(path.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC);
+  if (fd < 0) return nullptr;
+  struct stat st {};
+  if (fstat(fd, &st) != 0 || !S_ISREG(st.st_mode)) {
+    close(fd);
+    return nullptr;
+  }
+  fcntl(fd, F_SETFL, fcntl(fd, F_GETFL) & ~O_NONBLOCK);
+  FILE* f = fdopen(fd, "rb");
+  if (!f) close(fd);
+  return f;
+}
+
+// The name a "%d"-style format gives `index`: Teem passes the header's format
+// string to sprintf; here only one %d (with flags and width) is substituted.
+std::string numbered(const std::string& header, const std::string& format, long long index) {
+  const auto pct = format.find('%');
+  auto end = format.find_first_not_of("0123456789+- ", pct + 1);
+  if (pct == std::string::npos || end == std::string::npos || format[end] != 'd' ||
+      format.find('%', end + 1) != std::string::npos)
+    fail(header, "data file format \"" + format + "\" needs exactly one %d");
+  std::string spec(1, '%');
+  spec.append(format, pct + 1, end - pct - 1).append("lld");
+  char num[64];
+  std::snprintf(num, sizeof num, spec.c_str(), index);
+  std::string name = format.substr(0, pct);
+  return name.append(num).append(format, end + 1);
+}
+
+std::string resolved(const std::string& dir, const std::string& name) {
+  return name.front() == '/' ? name : (std::filesystem::path(dir) / name).string();
+}
+
+}  // namespace
+
+std::vector<std::string> impl::nrrdDataFiles(const std::string& header) {
+  HeaderState h;
+  h.file = openRegular(header);
+  if (!h.file) return {};  // missing or not a regular file: the reader says so
+  const std::filesystem::path hp(header);
+  const std::string dir = hp.has_parent_path() ? hp.parent_path().string() : ".";
+  unsigned len = 0;
+  if (_nrrdOneLine(&len, h.nio, h.file) || len == 0 || !nrrdFormatNRRD->contentStartsLike(h.nio))
+    return {};  // not NRRD: the reader says so
+  // Teem's header loop (_nrrdFormatNRRD_read) up to its "data file" field,
+  // without the step that opens the data files. Comments and key:=value
+  // lines are skipped (nothing here needs them, and Teem's key/value list
+  // grows quadratically); every other field goes through Teem's own parser,
+  // as the LIST form checks the header is complete.
+  for (;;) {
+    h.nio->pos = 0;
+    if (_nrrdOneLine(&len, h.nio, h.file)) fail(header, teemNrrdError());
+    if (len <= 1) return {};  // end of the header: the data is attached
+    const char* line = h.nio->line;
+    const char* colon = std::strstr(line, ": ");
+    if (line[0] == '#' || !colon) continue;  // comments, key:=value, or lines the reader refuses
+    const int field = airEnumVal(nrrdField, std::string(line, colon).c_str());
+    if (field == nrrdField_unknown || field == nrrdField_comment || field == nrrdField_keyvalue) continue;
+    if (h.nio->seen[field]) fail(header, std::string("field \"") + airEnumStr(nrrdField, field) + "\" given twice");
+    h.nio->pos = int(colon + 2 - line + std::strspn(colon + 2, " \t"));
+    if (nrrdFieldInfoParse[field](h.file, h.nrrd, h.nio, AIR_TRUE)) fail(header, teemNrrdError());
+    h.nio->seen[field] = AIR_TRUE;
+    if (field == nrrdField_data_file) break;  // a LIST has read the rest of the file
+  }
+  std::vector<std::string> files;
+  if (h.nio->dataFNFormat) {
+    // Counted here: Teem's _nrrdDataFNNumber steps through every index, and
+    // "0 1999999999 1" took seconds before the limit below could say no.
+    const long long step = h.nio->dataFNStep, lo = h.nio->dataFNMin, hi = h.nio->dataFNMax;
+    if (step == 0 || (hi - lo) / step < 0) fail(header, "data file range is empty or its step is 0");
+    const unsigned long long n = static_cast<unsigned long long>((hi - lo) / step) + 1;
+    if (n > kMaxDataFiles) fail(header, std::to_string(n) + " data files; at most 100000 are accepted");
+    for (long long i = lo, k = 0; static_cast<unsigned long long>(k) < n; i += step, ++k)
+      files.push_back(resolved(dir, numbered(header, h.nio->dataFNFormat, i)));
+  } else {
+    for (unsigned k = 0; k < h.nio->dataFNArr->len; ++k) {
+      const std::string name = h.nio->dataFN[k];
+      if (!name.empty() && name != "-") files.push_back(resolved(dir, name));
+    }
+  }
+  return files;
+}
+
+}  // namespace tg::io
