@@ -1,0 +1,85 @@
+"""Renders a dataset's point tensors with the plugin in pvbatch; the tests'
+and the benchmark's one ParaView driver.
+
+  pvbatch render_glyphs.py --plugin SO --input FILE --output PNG
+          [--size W H] [--eye X Y Z --look-at X Y Z --up X Y Z --fov DEG]
+          [--glyph N] [--gamma G] [--scale-mode N] [--scale S] [--color N]
+          [--slice-normal X Y Z --slice-origin X Y Z] [--background R G B]
+
+Under mpiexec every rank reads its share of a partitioned file (.pvtu) and
+IceT composites the ranks' images. --slice adds a ParaView slice of the same
+dataset, drawn as a surface, to check that the two mix by depth.
+"""
+import argparse
+import sys
+
+from paraview import simple
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--plugin", required=True)
+    ap.add_argument("--input", required=True)
+    ap.add_argument("--output", required=True)
+    ap.add_argument("--size", type=int, nargs=2, default=[400, 300])
+    ap.add_argument("--eye", type=float, nargs=3)
+    ap.add_argument("--look-at", type=float, nargs=3)
+    ap.add_argument("--up", type=float, nargs=3, default=[0, 1, 0])
+    ap.add_argument("--fov", type=float, default=30.0)
+    ap.add_argument("--glyph", type=int, default=0)
+    ap.add_argument("--gamma", type=float, default=3.0)
+    ap.add_argument("--scale-mode", type=int, default=2)
+    ap.add_argument("--scale", type=float, default=1.0)
+    ap.add_argument("--color", type=int, default=0)
+    ap.add_argument("--slice-normal", type=float, nargs=3)
+    ap.add_argument("--slice-origin", type=float, nargs=3)
+    ap.add_argument("--no-glyphs", action="store_true")
+    ap.add_argument("--background", type=float, nargs=3, default=[0.08, 0.08, 0.10])
+    a = ap.parse_args()
+
+    simple.LoadPlugin(a.plugin, remote=False, ns=globals())
+    reader = simple.OpenDataFile(a.input)
+    if reader is None:
+        sys.exit("render_glyphs.py: %s: ParaView has no reader for it" % a.input)
+    view = simple.CreateRenderView()
+    view.ViewSize = a.size
+    view.OrientationAxesVisibility = 0
+    # FXAA (on in Debian's defaults) smooths edges after compositing; the
+    # CLI's picture has none, and the comparison is pixel by pixel.
+    view.UseFXAA = 0
+    if hasattr(view, "UseColorPaletteForBackground"):
+        view.UseColorPaletteForBackground = 0
+    view.Background = a.background
+    if not a.no_glyphs:
+        disp = simple.Show(reader, view)
+        disp.SetRepresentationType("Tensor Glyphs (ray cast)")
+        disp.TensorGlyphKind = a.glyph
+        disp.TensorGlyphGamma = a.gamma
+        disp.TensorGlyphScaleMode = a.scale_mode
+        disp.TensorGlyphScaleFactor = a.scale
+        disp.TensorGlyphColorMode = a.color
+    if a.slice_normal:
+        sl = simple.Slice(Input=reader)
+        sl.SliceType = "Plane"
+        sl.SliceType.Origin = a.slice_origin
+        sl.SliceType.Normal = a.slice_normal
+        sdisp = simple.Show(sl, view)
+        sdisp.SetRepresentationType("Surface")
+        simple.ColorBy(sdisp, None)
+        sdisp.AmbientColor = sdisp.DiffuseColor = [0.9, 0.9, 0.9]
+    # paraview.simple resets the camera on a view's first render: render
+    # once, then place the camera.
+    simple.Render(view)
+    if a.eye:
+        view.CameraPosition = a.eye
+        view.CameraFocalPoint = a.look_at
+        view.CameraViewUp = a.up
+        view.CameraViewAngle = a.fov
+    else:
+        view.ResetCamera()
+    simple.Render(view)
+    simple.SaveScreenshot(a.output, view, ImageResolution=a.size)
+
+
+if __name__ == "__main__":
+    main()
