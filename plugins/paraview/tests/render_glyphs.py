@@ -6,8 +6,9 @@ and the benchmark's one ParaView driver.
           [--glyph N] [--gamma G] [--scale-mode N] [--scale S] [--color N]
           [--slice-normal X Y Z --slice-origin X Y Z] [--background R G B]
 
-Under mpiexec every rank reads its share of a partitioned file (.pvtu) and
-IceT composites the ranks' images. --slice adds a ParaView slice of the same
+Under mpiexec, --redistribute spreads the dataset over the ranks (or give a
+partitioned .pvtu); each rank draws its own glyphs and IceT composites the
+ranks' images by depth. --slice adds a ParaView slice of the same
 dataset, drawn as a surface, to check that the two mix by depth.
 """
 import argparse
@@ -34,6 +35,9 @@ def main():
     ap.add_argument("--slice-normal", type=float, nargs=3)
     ap.add_argument("--slice-origin", type=float, nargs=3)
     ap.add_argument("--no-glyphs", action="store_true")
+    ap.add_argument("--redistribute", action="store_true",
+                    help="spread the dataset over the MPI ranks (ParaView's RedistributeDataSet)")
+    ap.add_argument("--fxaa", action="store_true")
     ap.add_argument("--background", type=float, nargs=3, default=[0.08, 0.08, 0.10])
     a = ap.parse_args()
 
@@ -41,12 +45,14 @@ def main():
     reader = simple.OpenDataFile(a.input)
     if reader is None:
         sys.exit("render_glyphs.py: %s: ParaView has no reader for it" % a.input)
+    if a.redistribute:
+        reader = simple.RedistributeDataSet(Input=reader)
     view = simple.CreateRenderView()
     view.ViewSize = a.size
     view.OrientationAxesVisibility = 0
     # FXAA (on in Debian's defaults) smooths edges after compositing; the
     # CLI's picture has none, and the comparison is pixel by pixel.
-    view.UseFXAA = 0
+    view.UseFXAA = 1 if a.fxaa else 0
     if hasattr(view, "UseColorPaletteForBackground"):
         view.UseColorPaletteForBackground = 0
     view.Background = a.background
