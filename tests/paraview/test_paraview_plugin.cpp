@@ -4,9 +4,13 @@
 #include <gtest/gtest.h>
 #include <OpenImageIO/imageio.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -39,6 +43,22 @@ Image readImage(const fs::path& p) {
   img.px.resize(std::size_t(s.width) * s.height * s.nchannels);
   if (!in->read_image(0, 0, 0, s.nchannels, OIIO::TypeDesc::FLOAT, img.px.data())) img = {};
   return img;
+}
+
+// The CLI's EXR "id" channel (uint32: each pixel's glyph input index, or
+// kNoGlyph), rows top to bottom.
+constexpr std::uint32_t kNoGlyph = 0xFFFFFFFFu;
+std::vector<std::uint32_t> readIds(const fs::path& p, const Image& img) {
+  std::vector<std::uint32_t> ids;
+  auto in = OIIO::ImageInput::open(p.string());
+  if (!in) return ids;
+  const auto& names = in->spec().channelnames;
+  const auto it = std::find(names.begin(), names.end(), "id");
+  if (it == names.end()) return ids;
+  const int ch = int(it - names.begin());
+  ids.resize(std::size_t(img.width) * img.height);
+  if (!in->read_image(0, 0, ch, ch + 1, OIIO::TypeDesc::UINT32, ids.data())) ids.clear();
+  return ids;
 }
 
 std::string skipReason() {
@@ -197,5 +217,108 @@ TEST_P(ParaViewMpi, PictureEqualsTheSerialOne) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Ranks, ParaViewMpi, ::testing::Values(2, 4));
+
+// A display rectangle (ParaView's: origin bottom left, corners inclusive).
+struct Rect {
+  int x0, y0, x1, y1;
+  std::string args() const {
+    return " --select " + std::to_string(x0) + " " + std::to_string(y0) + " " + std::to_string(x1) + " " +
+           std::to_string(y1);
+  }
+};
+
+// The glyph ids the CLI's id channel shows inside `r`.
+std::set<std::uint32_t> idsIn(const std::vector<std::uint32_t>& ids, const Image& img, const Rect& r) {
+  std::set<std::uint32_t> out;
+  for (int y = r.y0; y <= r.y1; ++y)
+    for (int x = r.x0; x <= r.x1; ++x) {
+      const std::uint32_t id = ids[std::size_t(img.height - 1 - y) * img.width + x];
+      if (id != kNoGlyph) out.insert(id);
+    }
+  return out;
+}
+
+// ParaView's surface point selection (SelectSurfacePoints, what "Select
+// Points On" and hovering do) over the glyphs returns the glyphs' input
+// point ids. The CLI's id channel (same field and camera, and the two
+// pictures are equal pixel for pixel) says which glyph each pixel shows:
+// a 3 x 3 rectangle inside one glyph selects exactly that glyph's point,
+// not a glyph far away; a 40 x 40 rectangle selects exactly the glyphs the
+// CLI shows in it. Glyphs have no cells: a cell selection there is empty.
+TEST_F(ParaViewPlugin, SelectionReturnsTheGlyphsPointIds) {
+  TG_SKIP_WITHOUT_PARAVIEW();
+  const fs::path exr = dir / "cli.exr", pv = dir / "pv.png", sel = dir / "selection.txt";
+  const CmdResult c = tg::test::runBinary("render " + kKitten + " -o " + exr.string() + " " + kCamera, dir);
+  ASSERT_EQ(c.code, 0) << c.err;
+  const Image img = readImage(exr);
+  const std::vector<std::uint32_t> ids = readIds(exr, img);
+  ASSERT_EQ(ids.size(), std::size_t(img.width) * img.height);
+  const int w = img.width, h = img.height;
+  auto idAt = [&](int x, int y) { return ids[std::size_t(h - 1 - y) * w + x]; };  // display coordinates
+  // The first glyph (bottom up) that covers a 3 x 3 block alone.
+  std::set<std::uint32_t> all(ids.begin(), ids.end());
+  all.erase(kNoGlyph);
+  ASSERT_GT(all.size(), 100u);
+  auto solid = [&](const Rect& r, std::uint32_t id) {
+    for (int y = r.y0; y <= r.y1; ++y)
+      for (int x = r.x0; x <= r.x1; ++x)
+        if (idAt(x, y) != id) return false;
+    return true;
+  };
+  std::uint32_t target = kNoGlyph;
+  Rect inside{};
+  for (int y = 1; y < h - 1 && target == kNoGlyph; ++y)
+    for (int x = 1; x < w - 1 && target == kNoGlyph; ++x) {
+      const Rect r{x - 1, y - 1, x + 1, y + 1};
+      if (idAt(x, y) != kNoGlyph && solid(r, idAt(x, y))) {
+        target = idAt(x, y);
+        inside = r;
+      }
+    }
+  ASSERT_NE(target, kNoGlyph) << "no glyph covers a 3 x 3 block";
+  // A glyph drawn far from it.
+  std::uint32_t far = kNoGlyph;
+  double farthest = 0;
+  for (int y = 0; y < h; ++y)
+    for (int x = 0; x < w; ++x) {
+      const double d = std::hypot(x - inside.x0, y - inside.y0);
+      if (idAt(x, y) != kNoGlyph && d > farthest) {
+        farthest = d;
+        far = idAt(x, y);
+      }
+    }
+  ASSERT_GT(farthest, 100.0);
+  const Rect block{w / 2 - 20, h / 2 - 20, w / 2 + 19, h / 2 + 19};
+  const std::set<std::uint32_t> shown = idsIn(ids, img, block);
+  ASSERT_GT(shown.size(), 10u) << "the centre block must show many glyphs";
+
+  std::string cells = block.args();
+  cells.replace(0, 9, " --select-cells");
+  const CmdResult r = runPvbatch("--output " + pv.string() + " " + kCamera + inside.args() + block.args() + cells +
+                                     " --selection-out " + sel.string(),
+                                 dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::set<std::uint32_t> picked[2];
+  long cellsPicked = 0;
+  std::ifstream in(sel);
+  std::string kind;
+  int rect = 0;
+  long id = 0;
+  while (in >> kind >> rect >> id) {
+    ASSERT_GE(id, 0);
+    if (kind == "cells") {
+      ++cellsPicked;
+      continue;
+    }
+    ASSERT_EQ(kind, "points");
+    ASSERT_TRUE(rect == 0 || rect == 1);
+    picked[rect].insert(std::uint32_t(id));
+  }
+  EXPECT_EQ(cellsPicked, 0);
+  EXPECT_TRUE(picked[0].count(target)) << "glyph " << target << " not selected";
+  EXPECT_FALSE(picked[0].count(far)) << "far glyph " << far << " selected";
+  EXPECT_EQ(picked[0], std::set<std::uint32_t>{target});
+  EXPECT_EQ(picked[1], shown);
+}
 
 }  // namespace

@@ -5,16 +5,24 @@ and the benchmark's one ParaView driver.
           [--size W H] [--eye X Y Z --look-at X Y Z --up X Y Z --fov DEG]
           [--glyph N] [--gamma G] [--scale-mode N] [--scale S] [--color N]
           [--slice-normal X Y Z --slice-origin X Y Z] [--background R G B]
+          [--select X0 Y0 X1 Y1 ... --select-cells X0 Y0 X1 Y1 ...
+           --selection-out TXT]
 
 Under mpiexec, --redistribute spreads the dataset over the ranks (or give a
 partitioned .pvtu); each rank draws its own glyphs and IceT composites the
 ranks' images by depth. --slice adds a ParaView slice of the same
 dataset, drawn as a surface, to check that the two mix by depth.
+
+--select selects the surface points in a rectangle of display pixels
+(origin bottom left, corners inclusive) as ParaView's "Select Points On"
+does, after the screenshot, --select-cells the surface cells ("Select Cells
+On"); --selection-out lists what each rectangle selected, "points K ID" or
+"cells K ID" per line (K counts each kind's rectangles from 0).
 """
 import argparse
 import sys
 
-from paraview import simple
+from paraview import selection, servermanager, simple
 
 
 def main():
@@ -38,6 +46,9 @@ def main():
     ap.add_argument("--redistribute", action="store_true",
                     help="spread the dataset over the MPI ranks (ParaView's RedistributeDataSet)")
     ap.add_argument("--fxaa", action="store_true")
+    ap.add_argument("--select", type=int, nargs=4, action="append", default=[])
+    ap.add_argument("--select-cells", type=int, nargs=4, action="append", default=[])
+    ap.add_argument("--selection-out")
     ap.add_argument("--background", type=float, nargs=3, default=[0.08, 0.08, 0.10])
     a = ap.parse_args()
 
@@ -85,6 +96,31 @@ def main():
         view.ResetCamera()
     simple.Render(view)
     simple.SaveScreenshot(a.output, view, ImageResolution=a.size)
+    if a.select or a.select_cells:
+        with open(a.selection_out, "w") as f:
+            for kind, rects in (("points", a.select), ("cells", a.select_cells)):
+                for k, rect in enumerate(rects):
+                    for pid in select_ids(reader, view, rect, kind):
+                        f.write("%s %d %d\n" % (kind, k, pid))
+
+
+def select_ids(source, view, rect, kind):
+    """The point or cell ids ParaView's surface selection in `rect` yields."""
+    simple.ClearSelection(source)
+    if kind == "points":
+        selection.SelectSurfacePoints(Rectangle=rect, View=view)
+    else:
+        selection.SelectSurfaceCells(Rectangle=rect, View=view)
+    ids = []
+    found = source.SMProxy.GetSelectionInput(0)
+    if found is None:
+        return ids
+    app = servermanager._getPyProxy(found)
+    for node in (app.Input if app.GetXMLName() == "AppendSelections" else [app]):
+        if node.GetXMLName() != "IDSelectionSource" or node.FieldType != kind[:-1].upper():
+            sys.exit("render_glyphs.py: unexpected selection %s" % node.GetXMLName())
+        ids += list(node.IDs)[1::2]  # (process, id) pairs
+    return sorted(set(ids))
 
 
 if __name__ == "__main__":

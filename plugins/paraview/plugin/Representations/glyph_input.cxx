@@ -187,6 +187,13 @@ SizingInfo sizingInfo(vtkPolyData* prepared) {
   return info;
 }
 
+vtkIdType largestId(vtkPolyData* prepared) {
+  const vtkIdType n = prepared ? prepared->GetNumberOfPoints() : 0;
+  auto* ids = n ? vtkTypeUInt32Array::SafeDownCast(prepared->GetPointData()->GetArray(kIdArray)) : nullptr;
+  if (!ids) return -1;
+  return vtkIdType(*std::max_element(ids->GetPointer(0), ids->GetPointer(0) + n));
+}
+
 bool glyphBounds(vtkPolyData* prepared, const tensor::ScaleParams& p, double out[6]) {
   if (!prepared || prepared->GetNumberOfPoints() == 0) return false;
   const SizingInfo info = sizingInfo(prepared);

@@ -4,6 +4,7 @@
 #include <span>
 
 #include <vtkSmartPointer.h>
+#include <vtkType.h>
 
 #include "tensor/glyph.h"
 #include "tensor/glyph_scale.h"
@@ -41,6 +42,9 @@ vtkSmartPointer<vtkPolyData> prepareGlyphInput(vtkDataSet* input, vtkDataArray* 
 // prepareGlyphInput stored of the whole dataset.
 tensor::GlyphSet buildGlyphSet(vtkPolyData* prepared);
 SizingInfo sizingInfo(vtkPolyData* prepared);
+
+// The largest input point id among the prepared points; -1 when none.
+vtkIdType largestId(vtkPolyData* prepared);
 
 // The points' bounds grown by the reach of the largest glyph of the whole
 // dataset at `p` (no glyphs are built); false when there are no points.

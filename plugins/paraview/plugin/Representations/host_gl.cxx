@@ -127,8 +127,10 @@ HostComposite::HostComposite(const gl::Api& gl, const gl::ShaderLibrary& lib)
 HostComposite::~HostComposite() { gl_.DeleteVertexArrays(1, &vao_); }
 
 void HostComposite::draw(const render::Camera& cam, const render::GBuffer& target, const double hostProjVCCC[16],
-                         int originX, int originY) const {
+                         int originX, int originY, const CompositeOutput& out) const {
   render::setCameraUniforms(program_, cam);
+  program_.set("uOutput", int(out.kind));
+  program_.set("uSelectColor", out.constant);
   program_.set("uOriginDC", glm::vec2(float(originX), float(originY)));
   program_.set("uHostZRow", glm::vec4(float(hostProjVCCC[8]), float(hostProjVCCC[9]), float(hostProjVCCC[10]),
                                       float(hostProjVCCC[11])));

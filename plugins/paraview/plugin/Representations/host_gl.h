@@ -52,8 +52,18 @@ class HostState {
   std::array<GLint, 16> textures_{};
 };
 
-// Draws the lit glyphs of `target` into the bound host framebuffer: colour,
-// and gl_FragDepth re-projected through the host's view -> clip matrix
+// What the composite writes as colour (shaders/host_composite.frag): the lit
+// glyphs, or what one of the host's selection passes reads back: a constant
+// colour (prop, composite or process id), or each glyph's input point id
+// split into its low 24 bits (RGB bytes) and its bits 24..31 (red).
+struct CompositeOutput {
+  enum class Kind { Lit = 0, Constant = 1, IdLow24 = 2, IdHigh8 = 3 };
+  Kind kind = Kind::Lit;
+  glm::vec3 constant{0.0f};
+};
+
+// Draws the glyphs of `target` into the bound host framebuffer: colour as
+// `out` says, and gl_FragDepth re-projected through the host's view -> clip matrix
 // (`hostProjVCCC`, row-major, GL's [-1, 1] clip depth and glDepthRange 0..1),
 // depth-tested against what the host drew before. Pixels without a glyph are
 // left alone.
@@ -64,7 +74,7 @@ class HostComposite {
   HostComposite(const HostComposite&) = delete;
   HostComposite& operator=(const HostComposite&) = delete;
   void draw(const render::Camera& cam, const render::GBuffer& target, const double hostProjVCCC[16], int originX,
-            int originY) const;
+            int originY, const CompositeOutput& out = {}) const;
 
  private:
   const gl::Api& gl_;

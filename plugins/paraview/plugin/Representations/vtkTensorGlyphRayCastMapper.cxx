@@ -4,6 +4,8 @@
 #include <optional>
 
 #include <vtkCamera.h>
+#include <vtkDataObject.h>
+#include <vtkHardwareSelector.h>
 #include <vtkInformation.h>
 #include <vtkMath.h>
 #include <vtkMatrix4x4.h>
@@ -41,6 +43,7 @@ struct vtkTensorGlyphRayCastMapper::Internals {
   glm::dvec3 centresLo{0.0}, centresHi{0.0};
   double maxAbsEigenvalue = 0;
   std::size_t count = 0;
+  vtkIdType maxId = -1;  // the largest input point id among the glyphs
   vtkMTimeType built = 0;  // input time of `glyphs`
   vtkPolyData* builtFrom = nullptr;
 
@@ -63,6 +66,7 @@ struct vtkTensorGlyphRayCastMapper::Internals {
     centresHi = glyphs.boundsMaxWC;
     maxAbsEigenvalue = glyphs.maxAbsEigenvalue;
     count = glyphs.glyphs.size();
+    maxId = paraview::largestId(input);
     builtFrom = input;
     built = t;
     return true;
@@ -88,6 +92,48 @@ tensor::ResolvedScale resolve(vtkTensorGlyphRayCastMapper& m, const paraview::Si
   p.factor = m.GetScaleFactor();
   return tensor::resolveScale(p, s.sample);
 }
+
+// One prop's render inside one of VTK's hardware selection passes
+// (vtkHardwareSelector: the renderer draws the scene once per pass and reads
+// the colours back). Begun and ended around the draw as VTK's own mappers
+// do; says what the composite writes in this pass.
+class SelectionPass {
+ public:
+  SelectionPass(vtkHardwareSelector* sel, vtkIdType maxId) : sel_(sel) {
+    if (!sel_) return;
+    sel_->BeginRenderProp();
+    const int pass = sel_->GetCurrentPass();
+    if (pass == vtkHardwareSelector::COMPOSITE_INDEX_PASS) sel_->RenderCompositeIndex(1);
+    // Ids of 2^24 and more need the high pass.
+    sel_->UpdateMaximumPointId(maxId);
+    using Kind = paraview::CompositeOutput::Kind;
+    out_.kind = Kind::Constant;
+    if (sel_->GetFieldAssociation() != vtkDataObject::FIELD_ASSOCIATION_POINTS) {
+      // Glyphs stand for points and have no cells: in a cell selection they
+      // hide what is behind them (black with depth: no prop) but are never
+      // selected themselves.
+      return;
+    }
+    if (pass == vtkHardwareSelector::POINT_ID_LOW24) {
+      out_.kind = Kind::IdLow24;
+    } else if (pass == vtkHardwareSelector::POINT_ID_HIGH24) {
+      out_.kind = Kind::IdHigh8;
+    } else {  // actor, composite and process passes: the selector's colour
+      const float* c = sel_->GetPropColorValue();
+      out_.constant = glm::vec3(c[0], c[1], c[2]);
+    }
+  }
+  ~SelectionPass() {
+    if (sel_) sel_->EndRenderProp();
+  }
+  SelectionPass(const SelectionPass&) = delete;
+  SelectionPass& operator=(const SelectionPass&) = delete;
+  const paraview::CompositeOutput& output() const { return out_; }
+
+ private:
+  vtkHardwareSelector* sel_;
+  paraview::CompositeOutput out_;
+};
 
 }  // namespace
 
@@ -118,6 +164,7 @@ void vtkTensorGlyphRayCastMapper::Render(vtkRenderer* ren, vtkActor*) {
   double ms = 0;
   if (in.refresh(input, ms)) this->LastBuildMilliseconds = ms;
   if (in.count == 0) return;
+  const SelectionPass selection(ren->GetSelector(), in.maxId);
   try {
     if (!in.gl) {
       in.gl.emplace();
@@ -173,7 +220,7 @@ void vtkTensorGlyphRayCastMapper::Render(vtkRenderer* ren, vtkActor*) {
     g.host.api.BindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(saved.drawFramebuffer()));
     g.host.api.ClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
     vtkMatrix4x4* proj = vc->GetProjectionTransformMatrix(double(width) / double(height), -1, 1);
-    g.composite->draw(cam, *g.target, proj->GetData(), x0, y0);
+    g.composite->draw(cam, *g.target, proj->GetData(), x0, y0, selection.output());
   } catch (const std::exception& e) {
     vtkErrorMacro(<< e.what());
   }

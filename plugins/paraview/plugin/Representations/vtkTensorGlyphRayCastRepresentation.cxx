@@ -79,6 +79,8 @@ bool vtkTensorGlyphRayCastRepresentation::AddToView(vtkView* view) {
   auto* rview = vtkPVRenderView::SafeDownCast(view);
   if (!rview) return false;
   rview->GetRenderer()->AddActor(this->Actor);
+  // Picking and selections find this representation through its actor.
+  rview->RegisterPropForHardwareSelection(this, this->Actor);
   return this->Superclass::AddToView(view);
 }
 
@@ -86,6 +88,7 @@ bool vtkTensorGlyphRayCastRepresentation::RemoveFromView(vtkView* view) {
   auto* rview = vtkPVRenderView::SafeDownCast(view);
   if (!rview) return false;
   rview->GetRenderer()->RemoveActor(this->Actor);
+  rview->UnRegisterPropForHardwareSelection(this, this->Actor);
   return this->Superclass::RemoveFromView(view);
 }
 
