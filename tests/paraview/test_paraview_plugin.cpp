@@ -5,12 +5,15 @@
 #include <OpenImageIO/imageio.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <regex>
 #include <set>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -320,5 +323,142 @@ TEST_F(ParaViewPlugin, SelectionReturnsTheGlyphsPointIds) {
   EXPECT_EQ(picked[0], std::set<std::uint32_t>{target});
   EXPECT_EQ(picked[1], shown);
 }
+
+// The colour maps of shaders/lib/color.glsl, read from the file the glyph
+// shaders are built from: viridis's knots (linear in between) and the sign
+// ramp's compression and tension ends (white at 0).
+struct ShaderColormaps {
+  std::vector<std::array<double, 3>> viridis;
+  std::array<double, 3> tension{}, compression{};
+};
+
+ShaderColormaps readShaderColormaps() {
+  ShaderColormaps maps;
+  const fs::path glsl = fs::path(TG_PARAVIEW_SCRIPT).parent_path() / "../../../shaders/lib/color.glsl";
+  std::ifstream f(glsl);
+  std::stringstream text;
+  text << f.rdbuf();
+  const std::string src = text.str();
+  const std::regex vec3(R"(vec3\(([-0-9.]+), ([-0-9.]+), ([-0-9.]+)\))");
+  auto vecsIn = [&](const std::string& from, const std::string& to) {
+    std::vector<std::array<double, 3>> out;
+    const std::size_t a = src.find(from), b = src.find(to, a);
+    if (a == std::string::npos || b == std::string::npos) return out;
+    const std::string body = src.substr(a, b - a);
+    for (auto m = std::sregex_iterator(body.begin(), body.end(), vec3); m != std::sregex_iterator(); ++m)
+      out.push_back({std::stod((*m)[1]), std::stod((*m)[2]), std::stod((*m)[3])});
+    return out;
+  };
+  maps.viridis = vecsIn("vec3 viridis(float t)", "float x");
+  const auto sign = vecsIn("vec3 signRamp(float t)", "}");
+  if (sign.size() == 2) {
+    maps.tension = sign[0];
+    maps.compression = sign[1];
+  }
+  return maps;
+}
+
+std::array<double, 3> shaderColor(const ShaderColormaps& m, bool sign, double t) {
+  std::array<double, 3> c{};
+  if (sign) {  // t in -1..1
+    const auto& end = t >= 0 ? m.tension : m.compression;
+    for (int k = 0; k < 3; ++k) c[k] = 1.0 + (end[k] - 1.0) * std::abs(t);
+    return c;
+  }
+  const double x = std::clamp(t, 0.0, 1.0) * double(m.viridis.size() - 1);
+  const std::size_t i = std::min(std::size_t(x), m.viridis.size() - 2);
+  for (int k = 0; k < 3; ++k) c[k] = m.viridis[i][k] + (m.viridis[i + 1][k] - m.viridis[i][k]) * (x - double(i));
+  return c;
+}
+
+std::map<std::string, std::vector<double>> readLegend(const fs::path& p) {
+  std::map<std::string, std::vector<double>> out;
+  std::ifstream f(p);
+  std::string line, key;
+  while (std::getline(f, line)) {
+    std::istringstream s(line);
+    s >> key;
+    double v = 0;
+    while (s >> v) out[key].push_back(v);
+  }
+  return out;
+}
+
+// ParaView's own scalar bar, fed from the representation's colour legend
+// properties, shows the glyphs' colours over the range the renderer maps:
+// MD over the data's MD range (computed independently from the input's
+// tensors in pvbatch), FA over 0..1, sign over -1..1. The bar's pixels,
+// found in the screenshot as the longest vertical run right of the glyphs,
+// equal shaders/lib/color.glsl's map at their place on the bar within
+// 1.5/255 after allowing 1.5 pixels (0.6% of the range) of placement: the
+// lookup table interpolates the same knots linearly (measured: under
+// 0.5/255, the 8-bit rounding). ParaView's default map fails by far; a
+// range off by 2% of its span fails by 3/255 or more at every sample.
+class ParaViewLegend : public ParaViewPlugin, public ::testing::WithParamInterface<int> {};
+
+TEST_P(ParaViewLegend, ScalarBarShowsTheGlyphColoursAndRange) {
+  TG_SKIP_WITHOUT_PARAVIEW();
+  const int mode = GetParam();
+  const bool sign = mode == 5;
+  const ShaderColormaps maps = readShaderColormaps();
+  ASSERT_EQ(maps.viridis.size(), 9u) << "viridis's knots not found in color.glsl";
+  ASSERT_GT(maps.tension[0], 0.5) << "signRamp's ends not found in color.glsl";
+  const fs::path png = dir / "bar.png", legendFile = dir / "legend.txt";
+  const CmdResult r = runPvbatch("--output " + png.string() + " " + kCamera + " --color " + std::to_string(mode) +
+                                     " --scalar-bar --legend-out " + legendFile.string(),
+                                 dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto legend = readLegend(legendFile);
+  ASSERT_EQ(legend.count("range"), 1u);
+  ASSERT_EQ(legend.at("range").size(), 2u);
+  ASSERT_EQ(legend.at("lut_range"), legend.at("range")) << "the lookup table spans the legend's range";
+  const double lo = legend.at("range")[0], hi = legend.at("range")[1];
+  if (mode == 2) {
+    const auto& md = legend.at("md_range_of_input");
+    ASSERT_EQ(md.size(), 2u);
+    ASSERT_LT(md[0], md[1]);
+    EXPECT_NEAR(lo, md[0], 1e-6 * (md[1] - md[0]));
+    EXPECT_NEAR(hi, md[1], 1e-6 * (md[1] - md[0]));
+  } else {
+    EXPECT_EQ(lo, sign ? -1.0 : 0.0);
+    EXPECT_EQ(hi, 1.0);
+  }
+
+  const Image img = readImage(png);
+  ASSERT_EQ(img.width, 400);
+  // The bar: the longest run of non-background pixels in a column of the
+  // right quarter (rows top to bottom); its middle column.
+  int bestLen = 0, bestX = -1, bestTop = 0, lastX = -1;
+  for (int x = img.width * 3 / 4; x < img.width; ++x) {
+    int run = 0;
+    for (int y = 0; y < img.height; ++y) {
+      run = covered(img, y * img.width + x, kBackground) ? run + 1 : 0;
+      if (run > bestLen) {
+        bestLen = run;
+        bestX = lastX = x;
+        bestTop = y - run + 1;
+      } else if (run == bestLen && x != lastX && bestTop == y - run + 1) {
+        lastX = x;
+      }
+    }
+  }
+  ASSERT_GT(bestLen, img.height / 2) << "no scalar bar found";
+  const int x = (bestX + lastX) / 2, top = bestTop, bottom = bestTop + bestLen - 1;
+  for (double f = 0.05; f < 1.0; f += 0.1) {
+    const int y = bottom - int(f * bestLen);
+    const float* px = img.at(y * img.width + x);
+    double best = 1e9;
+    for (double dy = -1.5; dy <= 1.5; dy += 0.25) {
+      const double frac = (double(bottom - y) + 0.5 + dy) / double(bottom - top + 1);
+      const auto want = shaderColor(maps, sign, sign ? 2.0 * frac - 1.0 : frac);
+      double err = 0;
+      for (int k = 0; k < 3; ++k) err = std::max(err, std::abs(double(px[k]) - want[k]));
+      best = std::min(best, err);
+    }
+    EXPECT_LE(best, 1.5 / 255.0) << "error " << best * 255.0 << "/255 at " << f << " of its length (row " << y << ", column " << x << ")";
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(Modes, ParaViewLegend, ::testing::Values(1, 2, 5));
 
 }  // namespace

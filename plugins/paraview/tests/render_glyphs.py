@@ -7,6 +7,7 @@ and the benchmark's one ParaView driver.
           [--slice-normal X Y Z --slice-origin X Y Z] [--background R G B]
           [--select X0 Y0 X1 Y1 ... --select-cells X0 Y0 X1 Y1 ...
            --selection-out TXT]
+          [--scalar-bar] [--legend-out TXT]
 
 Under mpiexec, --redistribute spreads the dataset over the ranks (or give a
 partitioned .pvtu); each rank draws its own glyphs and IceT composites the
@@ -18,8 +19,14 @@ dataset, drawn as a surface, to check that the two mix by depth.
 does, after the screenshot, --select-cells the surface cells ("Select Cells
 On"); --selection-out lists what each rectangle selected, "points K ID" or
 "cells K ID" per line (K counts each kind's rectangles from 0).
+
+--scalar-bar shows ParaView's scalar bar of the glyphs' colour legend (the
+representation's TensorGlyphColorLegend* properties) on the right;
+--legend-out writes that legend and the MD range of the input's tensors,
+computed here on its own, one "KEY VALUES..." line each.
 """
 import argparse
+import math
 import sys
 
 from paraview import selection, servermanager, simple
@@ -49,6 +56,8 @@ def main():
     ap.add_argument("--select", type=int, nargs=4, action="append", default=[])
     ap.add_argument("--select-cells", type=int, nargs=4, action="append", default=[])
     ap.add_argument("--selection-out")
+    ap.add_argument("--scalar-bar", action="store_true")
+    ap.add_argument("--legend-out")
     ap.add_argument("--background", type=float, nargs=3, default=[0.08, 0.08, 0.10])
     a = ap.parse_args()
 
@@ -95,13 +104,71 @@ def main():
     else:
         view.ResetCamera()
     simple.Render(view)
+    if a.scalar_bar or a.legend_out:
+        legend = show_legend(disp, view, a.scalar_bar)
+        simple.Render(view)
     simple.SaveScreenshot(a.output, view, ImageResolution=a.size)
+    if a.legend_out:
+        legend["md_range_of_input"] = md_range(reader)
+        with open(a.legend_out, "w") as f:
+            for key, values in legend.items():
+                if key != "title":
+                    f.write(" ".join([key] + ["%.17g" % v for v in values]) + "\n")
     if a.select or a.select_cells:
         with open(a.selection_out, "w") as f:
             for kind, rects in (("points", a.select), ("cells", a.select_cells)):
                 for k, rect in enumerate(rects):
                     for pid in select_ids(reader, view, rect, kind):
                         f.write("%s %d %d\n" % (kind, k, pid))
+
+
+def show_legend(disp, view, visible):
+    """ParaView's lookup table and scalar bar for the glyphs' colours: what a
+    user does in the Python shell to label the glyphs."""
+    disp.UpdatePropertyInformation()
+    # Information properties: read with GetPropertyValue.
+    title = disp.GetPropertyValue("TensorGlyphColorLegendTitle")
+    points = list(disp.GetPropertyValue("TensorGlyphColorLegendRGBPoints"))
+    legend = {"title": title, "range": list(disp.GetPropertyValue("TensorGlyphColorLegendRange")),
+              "rgb_points": points}
+    if not title:
+        return legend
+    lut = simple.GetColorTransferFunction(title)
+    lut.ColorSpace = "RGB"
+    lut.Discretize = 0
+    lut.AutomaticRescaleRangeMode = "Never"
+    lut.RGBPoints = points
+    lut.ScalarRangeInitialized = 1
+    bar = simple.GetScalarBar(lut, view)
+    bar.Title = title
+    bar.ComponentTitle = ""
+    bar.WindowLocation = "Any Location"
+    bar.Orientation = "Vertical"
+    bar.Position = [0.8, 0.1]
+    bar.ScalarBarLength = 0.8
+    bar.DrawTickMarks = 0
+    bar.DrawTickLabels = 0
+    bar.Visibility = 1 if visible else 0
+    legend["lut_range"] = [lut.RGBPoints[0], lut.RGBPoints[-4]]
+    return legend
+
+
+def md_range(reader):
+    """The input's mean diffusivity (trace / 3) range over points with finite
+    tensors: the range the MD colour mode must map."""
+    data = servermanager.Fetch(reader)
+    tensors = data.GetPointData().GetTensors()
+    if tensors is None:
+        sys.exit("render_glyphs.py: the input has no active point tensors")
+    nc = tensors.GetNumberOfComponents()
+    lo, hi = math.inf, -math.inf
+    for i in range(tensors.GetNumberOfTuples()):
+        t = tensors.GetTuple(i)
+        if not all(math.isfinite(v) for v in t):
+            continue
+        md = (t[0] + t[4] + t[8]) / 3.0 if nc == 9 else (t[0] + t[1] + t[2]) / 3.0
+        lo, hi = min(lo, md), max(hi, md)
+    return [lo, hi]
 
 
 def select_ids(source, view, rect, kind):

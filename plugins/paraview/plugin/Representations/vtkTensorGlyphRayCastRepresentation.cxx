@@ -15,6 +15,7 @@
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
 
+#include "color_legend.h"
 #include "glyph_input.h"
 #include "vtkTensorGlyphRayCastMapper.h"
 
@@ -90,6 +91,29 @@ bool vtkTensorGlyphRayCastRepresentation::RemoveFromView(vtkView* view) {
   rview->GetRenderer()->RemoveActor(this->Actor);
   rview->UnRegisterPropForHardwareSelection(this, this->Actor);
   return this->Superclass::RemoveFromView(view);
+}
+
+// The legend follows the colour mode and the data: recomputed on each ask.
+const char* vtkTensorGlyphRayCastRepresentation::GetColorLegendTitle() {
+  this->LegendTitle = tg::paraview::colorLegend(this->Mapper->GetColorMode(),
+                                                tg::paraview::sizingInfo(this->Prepared)).title;
+  return this->LegendTitle.c_str();
+}
+
+double* vtkTensorGlyphRayCastRepresentation::GetColorLegendRange() {
+  const auto legend = tg::paraview::colorLegend(this->Mapper->GetColorMode(), tg::paraview::sizingInfo(this->Prepared));
+  this->LegendRange[0] = legend.lo;
+  this->LegendRange[1] = legend.hi;
+  return this->LegendRange;
+}
+
+vtkDoubleArray* vtkTensorGlyphRayCastRepresentation::GetColorLegendRGBPoints() {
+  const auto legend = tg::paraview::colorLegend(this->Mapper->GetColorMode(), tg::paraview::sizingInfo(this->Prepared));
+  this->LegendPoints->Initialize();
+  this->LegendPoints->SetNumberOfTuples(vtkIdType(4 * legend.points.size()));
+  for (std::size_t i = 0; i < legend.points.size(); ++i)
+    for (std::size_t k = 0; k < 4; ++k) this->LegendPoints->SetValue(vtkIdType(4 * i + k), legend.points[i][k]);
+  return this->LegendPoints;
 }
 
 // Setters: changing a look needs a render only, never new data.

@@ -5,7 +5,10 @@
 #ifndef vtkTensorGlyphRayCastRepresentation_h
 #define vtkTensorGlyphRayCastRepresentation_h
 
+#include <string>
+
 #include "TensorGlyphRayCastRepresentationsModule.h"
+#include "vtkDoubleArray.h"
 #include "vtkNew.h"
 #include "vtkPVDataRepresentation.h"
 
@@ -43,6 +46,14 @@ public:
 
   vtkTensorGlyphRayCastMapper* GetMapper();
 
+  // The colour legend of the current colour mode over the whole dataset, as
+  // the glyphs are drawn (color_legend.h), for ParaView's lookup table and
+  // scalar bar: the mapped quantity's name (empty for DEC), its range, and
+  // the colormap as RGBPoints (value r g b per control point).
+  const char* GetColorLegendTitle();
+  double* GetColorLegendRange() VTK_SIZEHINT(2);
+  vtkDoubleArray* GetColorLegendRGBPoints();
+
 protected:
   vtkTensorGlyphRayCastRepresentation();
   ~vtkTensorGlyphRayCastRepresentation() override;
@@ -55,6 +66,9 @@ protected:
   vtkNew<vtkTensorGlyphRayCastMapper> Mapper;
   vtkNew<vtkActor> Actor;
   vtkNew<vtkPolyData> Prepared;
+  std::string LegendTitle;
+  double LegendRange[2] = {0.0, 1.0};
+  vtkNew<vtkDoubleArray> LegendPoints;
 
 private:
   vtkTensorGlyphRayCastRepresentation(const vtkTensorGlyphRayCastRepresentation&) = delete;
