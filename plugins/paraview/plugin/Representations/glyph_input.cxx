@@ -1,0 +1,210 @@
+#include "glyph_input.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <vtkCommunicator.h>
+#include <vtkDataArray.h>
+#include <vtkDoubleArray.h>
+#include <vtkFieldData.h>
+#include <vtkFloatArray.h>
+#include <vtkImageData.h>
+#include <vtkMultiProcessController.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+#include <vtkTypeUInt32Array.h>
+
+#include "io/tensor_field.h"
+
+namespace tg::paraview {
+namespace {
+
+// xx xy xz yy yz zz from ParaView's symmetric order XX YY ZZ XY YZ XZ.
+void symFromParaView(const double* t, double s6[6]) {
+  s6[0] = t[0];
+  s6[1] = t[3];
+  s6[2] = t[5];
+  s6[3] = t[1];
+  s6[4] = t[4];
+  s6[5] = t[2];
+}
+
+double gridSpacing(vtkDataSet* input) {
+  auto* image = vtkImageData::SafeDownCast(input);
+  if (!image) return 0.0;
+  int dims[3];
+  double spacing[3];
+  image->GetDimensions(dims);
+  image->GetSpacing(spacing);
+  double s = INFINITY;
+  for (int k = 0; k < 3; ++k)
+    if (dims[k] > 1) s = std::min(s, std::abs(spacing[k]));
+  return std::isfinite(s) ? s : 0.0;
+}
+
+template <class T>
+vtkSmartPointer<vtkDoubleArray> doubles(const char* name, const T& values) {
+  auto a = vtkSmartPointer<vtkDoubleArray>::New();
+  a->SetName(name);
+  a->SetNumberOfTuples(vtkIdType(values.size()));
+  std::copy(values.begin(), values.end(), a->GetPointer(0));
+  return a;
+}
+
+}  // namespace
+
+vtkSmartPointer<vtkPolyData> prepareGlyphInput(vtkDataSet* input, vtkDataArray* tensors,
+                                               vtkMultiProcessController* controller) {
+  io::TensorField f;
+  const vtkIdType n = input ? input->GetNumberOfPoints() : 0;
+  if (n > 0 && tensors) {
+    const int nc = tensors->GetNumberOfComponents();
+    if (nc != 9 && nc != 6)
+      throw std::invalid_argument(std::string("prepareGlyphInput: array '") +
+                                  (tensors->GetName() ? tensors->GetName() : "") + "' has " + std::to_string(nc) +
+                                  " components; tensors need 9 (3x3) or 6 (XX YY ZZ XY YZ XZ)");
+    if (std::uint64_t(n) > io::kMaxInputs)
+      throw std::invalid_argument("prepareGlyphInput: " + std::to_string(n) + " points; at most " +
+                                  std::to_string(io::kMaxInputs) + " fit the id channel");
+    double p[3], t[9], s6[6];
+    for (vtkIdType i = 0; i < n; ++i) {
+      input->GetPoint(i, p);
+      tensors->GetTuple(i, t);
+      if (nc == 9) {
+        f.addFull(std::uint32_t(i), p, t);
+      } else {
+        symFromParaView(t, s6);
+        f.addSym(std::uint32_t(i), p, s6);
+      }
+    }
+  }
+  const std::size_t kept = f.size();
+  double spacing = gridSpacing(input);
+  if (spacing <= 0.0) spacing = io::estimateSampleSpacing(f.positions);
+  const tensor::GlyphSet glyphs = tensor::buildGlyphs(f.positions, f.tensors, f.ids);
+  SizingInfo info;
+  info.sample = tensor::sampleMagnitudes(glyphs, spacing);
+  const bool any = kept > 0;
+  info.mdMin = any ? glyphs.mdMin : INFINITY;
+  info.mdMax = any ? glyphs.mdMax : -INFINITY;
+  info.eigenMin = any ? glyphs.eigenvalueMin : INFINITY;
+  info.eigenMax = any ? glyphs.eigenvalueMax : -INFINITY;
+
+  if (controller && controller->GetNumberOfProcesses() > 1) {
+    // Every rank sizes and colours by the whole dataset, so that a
+    // distributed picture equals the serial one: the union of the ranks'
+    // magnitude samples, the largest magnitude, the ranges, and the median
+    // of the ranks' sample spacings (ranks without points give none).
+    const int ranks = controller->GetNumberOfProcesses();
+    std::vector<double> mine = info.sample.sorted;
+    const vtkIdType myCount = vtkIdType(mine.size());
+    std::vector<vtkIdType> counts(ranks), offsets(ranks);
+    controller->AllGather(&myCount, counts.data(), 1);
+    vtkIdType total = 0;
+    for (int r = 0; r < ranks; ++r) {
+      offsets[r] = total;
+      total += counts[r];
+    }
+    std::vector<double> all(std::size_t(total) + 1);
+    controller->AllGatherV(mine.data(), all.data(), myCount, counts.data(), offsets.data());
+    all.resize(std::size_t(total));
+    std::sort(all.begin(), all.end());
+    info.sample.sorted = std::move(all);
+    const double mySpacing = any ? info.sample.spacing : NAN;
+    std::vector<double> spacings(ranks);
+    controller->AllGather(&mySpacing, spacings.data(), 1);
+    spacings.erase(std::remove_if(spacings.begin(), spacings.end(), [](double s) { return !(s > 0.0); }),
+                   spacings.end());
+    std::sort(spacings.begin(), spacings.end());
+    info.sample.spacing = spacings.empty() ? 0.0 : spacings[(spacings.size() - 1) / 2];
+    const double lows[3] = {-info.sample.maxAbs, info.mdMin, info.eigenMin};
+    const double highs[2] = {info.mdMax, info.eigenMax};
+    double lowOut[3], highOut[2];
+    controller->AllReduce(lows, lowOut, 3, vtkCommunicator::MIN_OP);
+    controller->AllReduce(highs, highOut, 2, vtkCommunicator::MAX_OP);
+    info.sample.maxAbs = -lowOut[0];
+    info.mdMin = lowOut[1];
+    info.eigenMin = lowOut[2];
+    info.mdMax = highOut[0];
+    info.eigenMax = highOut[1];
+  }
+
+  auto out = vtkSmartPointer<vtkPolyData>::New();
+  auto points = vtkSmartPointer<vtkPoints>::New();
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(vtkIdType(kept));
+  auto tensorOut = vtkSmartPointer<vtkFloatArray>::New();
+  tensorOut->SetName(kTensorArray);
+  tensorOut->SetNumberOfComponents(6);
+  tensorOut->SetNumberOfTuples(vtkIdType(kept));
+  auto ids = vtkSmartPointer<vtkTypeUInt32Array>::New();
+  ids->SetName(kIdArray);
+  ids->SetNumberOfTuples(vtkIdType(kept));
+  if (kept > 0) {
+    std::copy(f.positions.begin(), f.positions.end(), static_cast<float*>(points->GetVoidPointer(0)));
+    std::copy(f.tensors.begin(), f.tensors.end(), tensorOut->GetPointer(0));
+    std::copy(f.ids.begin(), f.ids.end(), ids->GetPointer(0));
+  }
+  out->SetPoints(points);
+  out->GetPointData()->AddArray(tensorOut);
+  out->GetPointData()->AddArray(ids);
+  out->GetFieldData()->AddArray(doubles(kSampleArray, info.sample.sorted));
+  const double scalars[6] = {info.sample.maxAbs, info.sample.spacing, info.mdMin, info.mdMax, info.eigenMin,
+                             info.eigenMax};
+  out->GetFieldData()->AddArray(doubles(kInfoArray, std::span<const double>(scalars)));
+  return out;
+}
+
+tensor::GlyphSet buildGlyphSet(vtkPolyData* prepared) {
+  const vtkIdType n = prepared ? prepared->GetNumberOfPoints() : 0;
+  auto* t = n ? vtkFloatArray::SafeDownCast(prepared->GetPointData()->GetArray(kTensorArray)) : nullptr;
+  auto* ids = n ? vtkTypeUInt32Array::SafeDownCast(prepared->GetPointData()->GetArray(kIdArray)) : nullptr;
+  auto* pts = n ? vtkFloatArray::SafeDownCast(prepared->GetPoints()->GetData()) : nullptr;
+  if (!t || !ids || !pts) return tensor::buildGlyphs({}, {}, {});
+  const std::size_t count = std::size_t(n);
+  return tensor::buildGlyphs({pts->GetPointer(0), 3 * count}, {t->GetPointer(0), 6 * count},
+                             {ids->GetPointer(0), count});
+}
+
+SizingInfo sizingInfo(vtkPolyData* prepared) {
+  SizingInfo info;
+  if (!prepared) return info;
+  auto* sample = vtkDoubleArray::SafeDownCast(prepared->GetFieldData()->GetArray(kSampleArray));
+  auto* scalars = vtkDoubleArray::SafeDownCast(prepared->GetFieldData()->GetArray(kInfoArray));
+  if (!sample || !scalars || scalars->GetNumberOfTuples() != 6) return info;
+  info.sample.sorted.assign(sample->GetPointer(0), sample->GetPointer(0) + sample->GetNumberOfTuples());
+  const double* s = scalars->GetPointer(0);
+  info.sample.maxAbs = s[0];
+  info.sample.spacing = s[1];
+  info.mdMin = s[2];
+  info.mdMax = s[3];
+  info.eigenMin = s[4];
+  info.eigenMax = s[5];
+  return info;
+}
+
+vtkIdType largestId(vtkPolyData* prepared) {
+  const vtkIdType n = prepared ? prepared->GetNumberOfPoints() : 0;
+  auto* ids = n ? vtkTypeUInt32Array::SafeDownCast(prepared->GetPointData()->GetArray(kIdArray)) : nullptr;
+  if (!ids) return -1;
+  return vtkIdType(*std::max_element(ids->GetPointer(0), ids->GetPointer(0) + n));
+}
+
+bool glyphBounds(vtkPolyData* prepared, const tensor::ScaleParams& p, double out[6]) {
+  if (!prepared || prepared->GetNumberOfPoints() == 0) return false;
+  const SizingInfo info = sizingInfo(prepared);
+  const tensor::ResolvedScale sized = tensor::resolveScale(p, info.sample);
+  const double reach = tensor::kGlyphReach * tensor::glyphRadiusWC(sized.scale, sized.mapping, info.sample.maxAbs);
+  prepared->GetPoints()->GetBounds(out);
+  for (int k = 0; k < 3; ++k) {
+    out[2 * k] -= reach;
+    out[2 * k + 1] += reach;
+  }
+  return true;
+}
+
+}  // namespace tg::paraview

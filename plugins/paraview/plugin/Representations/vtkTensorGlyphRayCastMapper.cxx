@@ -1,0 +1,246 @@
+#include "vtkTensorGlyphRayCastMapper.h"
+
+#include <chrono>
+#include <optional>
+
+#include <vtkCamera.h>
+#include <vtkDataObject.h>
+#include <vtkHardwareSelector.h>
+#include <vtkInformation.h>
+#include <vtkMath.h>
+#include <vtkMatrix4x4.h>
+#include <vtkObjectFactory.h>
+#include <vtkOpenGLRenderWindow.h>
+#include <vtkPolyData.h>
+#include <vtkRenderer.h>
+
+#include "glyph_input.h"
+#include "host_gl.h"
+#include "render/renderer.h"
+
+namespace {
+
+using namespace tg;
+
+// GL objects of one host context: made on the first frame in it, dropped in
+// ReleaseGraphicsResources (while that context is current).
+struct GLState {
+  vtkOpenGLRenderWindow* window = nullptr;
+  paraview::HostGL host;
+  gl::ShaderLibrary lib;
+  std::unique_ptr<render::GlyphRenderer> renderer;
+  std::unique_ptr<render::GBuffer> target;
+  std::unique_ptr<paraview::HostComposite> composite;
+  vtkMTimeType uploaded = 0;  // input time of the records on the GPU
+};
+
+}  // namespace
+
+struct vtkTensorGlyphRayCastMapper::Internals {
+  std::optional<GLState> gl;
+  tensor::GlyphSet glyphs;  // the CPU copy: dropped once uploaded
+  paraview::SizingInfo sizing;
+  glm::dvec3 centresLo{0.0}, centresHi{0.0};
+  double maxAbsEigenvalue = 0;
+  std::size_t count = 0;
+  vtkIdType maxId = -1;  // the largest input point id among the glyphs
+  vtkMTimeType built = 0;  // input time of `glyphs`
+  vtkPolyData* builtFrom = nullptr;
+
+  // Rebuilds the glyphs when the input changed since the last build.
+  bool refresh(vtkPolyData* input, double& buildMs) {
+    const vtkMTimeType t = input ? input->GetMTime() : 0;
+    if (input == builtFrom && t == built) return false;
+    const auto t0 = std::chrono::steady_clock::now();
+    glyphs = paraview::buildGlyphSet(input);
+    buildMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    sizing = paraview::sizingInfo(input);
+    // Colours map the whole dataset's ranges (all ranks), not this piece's.
+    if (sizing.mdMin <= sizing.mdMax) {
+      glyphs.mdMin = sizing.mdMin;
+      glyphs.mdMax = sizing.mdMax;
+      glyphs.eigenvalueMin = sizing.eigenMin;
+      glyphs.eigenvalueMax = sizing.eigenMax;
+    }
+    centresLo = glyphs.boundsMinWC;
+    centresHi = glyphs.boundsMaxWC;
+    maxAbsEigenvalue = glyphs.maxAbsEigenvalue;
+    count = glyphs.glyphs.size();
+    maxId = paraview::largestId(input);
+    builtFrom = input;
+    built = t;
+    return true;
+  }
+};
+
+vtkStandardNewMacro(vtkTensorGlyphRayCastMapper);
+
+vtkTensorGlyphRayCastMapper::vtkTensorGlyphRayCastMapper() : Impl(std::make_unique<Internals>()) {}
+
+vtkTensorGlyphRayCastMapper::~vtkTensorGlyphRayCastMapper() = default;
+
+int vtkTensorGlyphRayCastMapper::FillInputPortInformation(int, vtkInformation* info) {
+  info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
+  return 1;
+}
+
+namespace {
+
+tensor::ResolvedScale resolve(vtkTensorGlyphRayCastMapper& m, const paraview::SizingInfo& s) {
+  tensor::ScaleParams p;
+  p.mode = tensor::ScaleMode(m.GetScaleMode());
+  p.factor = m.GetScaleFactor();
+  return tensor::resolveScale(p, s.sample);
+}
+
+// One prop's render inside one of VTK's hardware selection passes
+// (vtkHardwareSelector: the renderer draws the scene once per pass and reads
+// the colours back). Begun and ended around the draw as VTK's own mappers
+// do; says what the composite writes in this pass.
+class SelectionPass {
+ public:
+  SelectionPass(vtkHardwareSelector* sel, vtkIdType maxId) : sel_(sel) {
+    if (!sel_) return;
+    sel_->BeginRenderProp();
+    const int pass = sel_->GetCurrentPass();
+    if (pass == vtkHardwareSelector::COMPOSITE_INDEX_PASS) sel_->RenderCompositeIndex(1);
+    // Ids of 2^24 and more need the high pass.
+    sel_->UpdateMaximumPointId(maxId);
+    using Kind = paraview::CompositeOutput::Kind;
+    out_.kind = Kind::Constant;
+    if (sel_->GetFieldAssociation() != vtkDataObject::FIELD_ASSOCIATION_POINTS) {
+      // Glyphs stand for points and have no cells: in a cell selection they
+      // hide what is behind them (black with depth: no prop) but are never
+      // selected themselves.
+      return;
+    }
+    if (pass == vtkHardwareSelector::POINT_ID_LOW24) {
+      out_.kind = Kind::IdLow24;
+    } else if (pass == vtkHardwareSelector::POINT_ID_HIGH24) {
+      out_.kind = Kind::IdHigh8;
+    } else {  // actor, composite and process passes: the selector's colour
+      const float* c = sel_->GetPropColorValue();
+      out_.constant = glm::vec3(c[0], c[1], c[2]);
+    }
+  }
+  ~SelectionPass() {
+    if (sel_) sel_->EndRenderProp();
+  }
+  SelectionPass(const SelectionPass&) = delete;
+  SelectionPass& operator=(const SelectionPass&) = delete;
+  const paraview::CompositeOutput& output() const { return out_; }
+
+ private:
+  vtkHardwareSelector* sel_;
+  paraview::CompositeOutput out_;
+};
+
+}  // namespace
+
+double vtkTensorGlyphRayCastMapper::GetResolvedScale() {
+  auto* input = vtkPolyData::SafeDownCast(this->GetInputDataObject(0, 0));
+  return resolve(*this, paraview::sizingInfo(input)).scale;
+}
+
+double* vtkTensorGlyphRayCastMapper::GetBounds() {
+  auto* input = vtkPolyData::SafeDownCast(this->GetInputDataObject(0, 0));
+  tensor::ScaleParams p;
+  p.mode = tensor::ScaleMode(this->ScaleMode);
+  p.factor = this->ScaleFactor;
+  if (!paraview::glyphBounds(input, p, this->Bounds)) vtkMath::UninitializeBounds(this->Bounds);
+  return this->Bounds;
+}
+
+void vtkTensorGlyphRayCastMapper::Render(vtkRenderer* ren, vtkActor*) {
+  auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
+  auto* input = vtkPolyData::SafeDownCast(this->GetInputDataObject(0, 0));
+  if (!window || !input) return;
+  Internals& in = *this->Impl;
+  if (in.gl && in.gl->window != window) {
+    // Another context: its records went with the old one's objects.
+    in.gl.reset();
+    in.builtFrom = nullptr;
+  }
+  double ms = 0;
+  if (in.refresh(input, ms)) this->LastBuildMilliseconds = ms;
+  if (in.count == 0) return;
+  const SelectionPass selection(ren->GetSelector(), in.maxId);
+  try {
+    if (!in.gl) {
+      in.gl.emplace();
+      in.gl->window = window;
+      in.gl->host = paraview::loadHostGL();
+    }
+    GLState& g = *in.gl;
+    const paraview::HostState saved(g.host);
+    saved.neutral();
+    if (!g.renderer) g.renderer = std::make_unique<render::GlyphRenderer>(g.host.api, g.lib);
+    if (!g.composite) g.composite = std::make_unique<paraview::HostComposite>(g.host.api, g.lib);
+    if (g.uploaded != in.built) {
+      g.renderer->upload(in.glyphs);
+      g.uploaded = in.built;
+      in.glyphs.glyphs = {};  // on the GPU now
+    }
+    int width = 0, height = 0, x0 = 0, y0 = 0;
+    ren->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+    if (width <= 0 || height <= 0) return;
+    if (!g.target || g.target->width() != width || g.target->height() != height)
+      g.target = std::make_unique<render::GBuffer>(g.host.api, width, height);
+
+    // The host's camera, as the CLI's --eye/--look-at/--up/--fov (or --ortho).
+    vtkCamera* vc = ren->GetActiveCamera();
+    render::CameraDesc desc;
+    vc->GetPosition(&desc.eyeWC.x);
+    vc->GetFocalPoint(&desc.lookAtWC.x);
+    vc->GetViewUp(&desc.upWC.x);
+    desc.projection = vc->GetParallelProjection() ? render::Projection::Orthographic : render::Projection::Perspective;
+    desc.fovYDeg = vc->GetViewAngle();
+    desc.orthoHeight = 2.0 * vc->GetParallelScale();
+    const tensor::ResolvedScale sized = resolve(*this, in.sizing);
+    render::FrameParams p;
+    p.scale = sized.scale;
+    p.sizing = sized.mapping;
+    p.faMin = this->FAThreshold;
+    p.glyph = render::GlyphKind(this->GlyphKind);
+    p.gamma = this->Gamma;
+    p.march = {this->MarchIterations, this->MarchEpsilon};
+    p.color = render::ColorMode(this->ColorMode);
+    p.ao.enabled = this->AmbientOcclusion;
+    p.outline.enabled = this->Outlines;
+    p.shadow.enabled = this->Shadows;
+    tensor::GlyphSet box;  // the depth range: what glyphBoxWC needs of the uploaded set
+    box.boundsMinWC = in.centresLo;
+    box.boundsMaxWC = in.centresHi;
+    box.maxAbsEigenvalue = in.maxAbsEigenvalue;
+    const auto [lo, hi] = tensor::glyphBoxWC(box, p.scale, p.sizing);
+    const render::Camera cam = render::makeCamera(desc, width, height, lo, hi);
+    g.renderer->render(cam, p, *g.target);
+
+    // Back into the host's framebuffer, depth in the host's convention.
+    g.host.api.BindFramebuffer(GL_DRAW_FRAMEBUFFER, GLuint(saved.drawFramebuffer()));
+    g.host.api.ClipControl(GL_LOWER_LEFT, GL_NEGATIVE_ONE_TO_ONE);
+    vtkMatrix4x4* proj = vc->GetProjectionTransformMatrix(double(width) / double(height), -1, 1);
+    g.composite->draw(cam, *g.target, proj->GetData(), x0, y0, selection.output());
+  } catch (const std::exception& e) {
+    vtkErrorMacro(<< e.what());
+  }
+}
+
+void vtkTensorGlyphRayCastMapper::ReleaseGraphicsResources(vtkWindow* win) {
+  auto& g = this->Impl->gl;
+  if (g && g->window == win) {
+    // The host makes its context current before releasing resources.
+    g->composite.reset();
+    g->target.reset();
+    g->renderer.reset();
+    g.reset();
+  }
+  this->Impl->builtFrom = nullptr;  // the records must be uploaded again
+}
+
+void vtkTensorGlyphRayCastMapper::PrintSelf(ostream& os, vtkIndent indent) {
+  this->Superclass::PrintSelf(os, indent);
+  os << indent << "GlyphKind: " << this->GlyphKind << "\n" << indent << "Gamma: " << this->Gamma << "\n";
+  os << indent << "ScaleMode: " << this->ScaleMode << "\n" << indent << "ScaleFactor: " << this->ScaleFactor << "\n";
+  os << indent << "ColorMode: " << this->ColorMode << "\n" << indent << "FAThreshold: " << this->FAThreshold << "\n";
+}

@@ -1,0 +1,78 @@
+// "Tensor Glyphs (ray cast)": a representation for any dataset with point
+// tensors. Each rank turns its own piece into the mapper's input
+// (glyph_input.h) and draws it; in a distributed view IceT composites the
+// ranks' images by depth.
+#ifndef vtkTensorGlyphRayCastRepresentation_h
+#define vtkTensorGlyphRayCastRepresentation_h
+
+#include <string>
+
+#include "TensorGlyphRayCastRepresentationsModule.h"
+#include "vtkDoubleArray.h"
+#include "vtkNew.h"
+#include "vtkPVDataRepresentation.h"
+
+class vtkActor;
+class vtkPolyData;
+class vtkTensorGlyphRayCastMapper;
+
+class TENSORGLYPHRAYCASTREPRESENTATIONS_EXPORT vtkTensorGlyphRayCastRepresentation
+  : public vtkPVDataRepresentation
+{
+public:
+  static vtkTensorGlyphRayCastRepresentation* New();
+  vtkTypeMacro(vtkTensorGlyphRayCastRepresentation, vtkPVDataRepresentation);
+  void PrintSelf(ostream& os, vtkIndent indent) override;
+
+  int ProcessViewRequest(vtkInformationRequestKey* request_type, vtkInformation* inInfo,
+    vtkInformation* outInfo) override;
+  void SetVisibility(bool val) override;
+
+  // The mapper's settings (vtkTensorGlyphRayCastMapper.h), forwarded.
+  void SetGlyphKind(int v);
+  void SetGamma(double v);
+  void SetScaleMode(int v);
+  void SetScaleFactor(double v);
+  void SetFAThreshold(double v);
+  void SetColorMode(int v);
+  void SetMarchIterations(int v);
+  void SetMarchEpsilon(double v);
+  void SetAmbientOcclusion(bool v);
+  void SetOutlines(bool v);
+  void SetShadows(bool v);
+  // The representation's shared properties that do not apply are accepted
+  // and ignored, so the GeometryRepresentation extension can forward them.
+  void SetOpacity(double) {}
+
+  vtkTensorGlyphRayCastMapper* GetMapper();
+
+  // The colour legend of the current colour mode over the whole dataset, as
+  // the glyphs are drawn (color_legend.h), for ParaView's lookup table and
+  // scalar bar: the mapped quantity's name (empty for DEC), its range, and
+  // the colormap as RGBPoints (value r g b per control point).
+  const char* GetColorLegendTitle();
+  double* GetColorLegendRange() VTK_SIZEHINT(2);
+  vtkDoubleArray* GetColorLegendRGBPoints();
+
+protected:
+  vtkTensorGlyphRayCastRepresentation();
+  ~vtkTensorGlyphRayCastRepresentation() override;
+
+  int FillInputPortInformation(int port, vtkInformation* info) override;
+  int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
+  bool AddToView(vtkView* view) override;
+  bool RemoveFromView(vtkView* view) override;
+
+  vtkNew<vtkTensorGlyphRayCastMapper> Mapper;
+  vtkNew<vtkActor> Actor;
+  vtkNew<vtkPolyData> Prepared;
+  std::string LegendTitle;
+  double LegendRange[2] = {0.0, 1.0};
+  vtkNew<vtkDoubleArray> LegendPoints;
+
+private:
+  vtkTensorGlyphRayCastRepresentation(const vtkTensorGlyphRayCastRepresentation&) = delete;
+  void operator=(const vtkTensorGlyphRayCastRepresentation&) = delete;
+};
+
+#endif

@@ -1,0 +1,194 @@
+"""Renders a dataset's point tensors with the plugin in pvbatch; the tests'
+and the benchmark's one ParaView driver.
+
+  pvbatch render_glyphs.py --plugin SO --input FILE --output PNG
+          [--size W H] [--eye X Y Z --look-at X Y Z --up X Y Z --fov DEG]
+          [--glyph N] [--gamma G] [--scale-mode N] [--scale S] [--color N]
+          [--slice-normal X Y Z --slice-origin X Y Z] [--background R G B]
+          [--select X0 Y0 X1 Y1 ... --select-cells X0 Y0 X1 Y1 ...
+           --selection-out TXT]
+          [--scalar-bar] [--legend-out TXT]
+
+Under mpiexec, --redistribute spreads the dataset over the ranks (or give a
+partitioned .pvtu); each rank draws its own glyphs and IceT composites the
+ranks' images by depth. --slice adds a ParaView slice of the same
+dataset, drawn as a surface, to check that the two mix by depth.
+
+--select selects the surface points in a rectangle of display pixels
+(origin bottom left, corners inclusive) as ParaView's "Select Points On"
+does, after the screenshot, --select-cells the surface cells ("Select Cells
+On"); --selection-out lists what each rectangle selected, "points K ID" or
+"cells K ID" per line (K counts each kind's rectangles from 0).
+
+--scalar-bar shows ParaView's scalar bar of the glyphs' colour legend (the
+representation's TensorGlyphColorLegend* properties) on the right;
+--legend-out writes that legend and the MD range of the input's tensors,
+computed here on its own, one "KEY VALUES..." line each.
+"""
+import argparse
+import math
+import sys
+
+from paraview import selection, servermanager, simple
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--plugin", required=True)
+    ap.add_argument("--input", required=True)
+    ap.add_argument("--output", required=True)
+    ap.add_argument("--size", type=int, nargs=2, default=[400, 300])
+    ap.add_argument("--eye", type=float, nargs=3)
+    ap.add_argument("--look-at", type=float, nargs=3)
+    ap.add_argument("--up", type=float, nargs=3, default=[0, 1, 0])
+    ap.add_argument("--fov", type=float, default=30.0)
+    ap.add_argument("--glyph", type=int, default=0)
+    ap.add_argument("--gamma", type=float, default=3.0)
+    ap.add_argument("--scale-mode", type=int, default=2)
+    ap.add_argument("--scale", type=float, default=1.0)
+    ap.add_argument("--color", type=int, default=0)
+    ap.add_argument("--slice-normal", type=float, nargs=3)
+    ap.add_argument("--slice-origin", type=float, nargs=3)
+    ap.add_argument("--no-glyphs", action="store_true")
+    ap.add_argument("--redistribute", action="store_true",
+                    help="spread the dataset over the MPI ranks (ParaView's RedistributeDataSet)")
+    ap.add_argument("--fxaa", action="store_true")
+    ap.add_argument("--select", type=int, nargs=4, action="append", default=[])
+    ap.add_argument("--select-cells", type=int, nargs=4, action="append", default=[])
+    ap.add_argument("--selection-out")
+    ap.add_argument("--scalar-bar", action="store_true")
+    ap.add_argument("--legend-out")
+    ap.add_argument("--background", type=float, nargs=3, default=[0.08, 0.08, 0.10])
+    a = ap.parse_args()
+
+    simple.LoadPlugin(a.plugin, remote=False, ns=globals())
+    reader = simple.OpenDataFile(a.input)
+    if reader is None:
+        sys.exit("render_glyphs.py: %s: ParaView has no reader for it" % a.input)
+    if a.redistribute:
+        reader = simple.RedistributeDataSet(Input=reader)
+    view = simple.CreateRenderView()
+    view.ViewSize = a.size
+    view.OrientationAxesVisibility = 0
+    # FXAA (on in Debian's defaults) smooths edges after compositing; the
+    # CLI's picture has none, and the comparison is pixel by pixel.
+    view.UseFXAA = 1 if a.fxaa else 0
+    if hasattr(view, "UseColorPaletteForBackground"):
+        view.UseColorPaletteForBackground = 0
+    view.Background = a.background
+    if not a.no_glyphs:
+        disp = simple.Show(reader, view)
+        disp.SetRepresentationType("Tensor Glyphs (ray cast)")
+        disp.TensorGlyphKind = a.glyph
+        disp.TensorGlyphGamma = a.gamma
+        disp.TensorGlyphScaleMode = a.scale_mode
+        disp.TensorGlyphScaleFactor = a.scale
+        disp.TensorGlyphColorMode = a.color
+    if a.slice_normal:
+        sl = simple.Slice(Input=reader)
+        sl.SliceType = "Plane"
+        sl.SliceType.Origin = a.slice_origin
+        sl.SliceType.Normal = a.slice_normal
+        sdisp = simple.Show(sl, view)
+        sdisp.SetRepresentationType("Surface")
+        simple.ColorBy(sdisp, None)
+        sdisp.AmbientColor = sdisp.DiffuseColor = [0.9, 0.9, 0.9]
+    # paraview.simple resets the camera on a view's first render: render
+    # once, then place the camera.
+    simple.Render(view)
+    if a.eye:
+        view.CameraPosition = a.eye
+        view.CameraFocalPoint = a.look_at
+        view.CameraViewUp = a.up
+        view.CameraViewAngle = a.fov
+    else:
+        view.ResetCamera()
+    simple.Render(view)
+    if a.scalar_bar or a.legend_out:
+        legend = show_legend(disp, view, a.scalar_bar)
+        simple.Render(view)
+    simple.SaveScreenshot(a.output, view, ImageResolution=a.size)
+    if a.legend_out:
+        legend["md_range_of_input"] = md_range(reader)
+        with open(a.legend_out, "w") as f:
+            for key, values in legend.items():
+                if key != "title":
+                    f.write(" ".join([key] + ["%.17g" % v for v in values]) + "\n")
+    if a.select or a.select_cells:
+        with open(a.selection_out, "w") as f:
+            for kind, rects in (("points", a.select), ("cells", a.select_cells)):
+                for k, rect in enumerate(rects):
+                    for pid in select_ids(reader, view, rect, kind):
+                        f.write("%s %d %d\n" % (kind, k, pid))
+
+
+def show_legend(disp, view, visible):
+    """ParaView's lookup table and scalar bar for the glyphs' colours: what a
+    user does in the Python shell to label the glyphs."""
+    disp.UpdatePropertyInformation()
+    # Information properties: read with GetPropertyValue.
+    title = disp.GetPropertyValue("TensorGlyphColorLegendTitle")
+    points = list(disp.GetPropertyValue("TensorGlyphColorLegendRGBPoints"))
+    legend = {"title": title, "range": list(disp.GetPropertyValue("TensorGlyphColorLegendRange")),
+              "rgb_points": points}
+    if not title:
+        return legend
+    lut = simple.GetColorTransferFunction(title)
+    lut.ColorSpace = "RGB"
+    lut.Discretize = 0
+    lut.AutomaticRescaleRangeMode = "Never"
+    lut.RGBPoints = points
+    lut.ScalarRangeInitialized = 1
+    bar = simple.GetScalarBar(lut, view)
+    bar.Title = title
+    bar.ComponentTitle = ""
+    bar.WindowLocation = "Any Location"
+    bar.Orientation = "Vertical"
+    bar.Position = [0.8, 0.1]
+    bar.ScalarBarLength = 0.8
+    bar.DrawTickMarks = 0
+    bar.DrawTickLabels = 0
+    bar.Visibility = 1 if visible else 0
+    legend["lut_range"] = [lut.RGBPoints[0], lut.RGBPoints[-4]]
+    return legend
+
+
+def md_range(reader):
+    """The input's mean diffusivity (trace / 3) range over points with finite
+    tensors: the range the MD colour mode must map."""
+    data = servermanager.Fetch(reader)
+    tensors = data.GetPointData().GetTensors()
+    if tensors is None:
+        sys.exit("render_glyphs.py: the input has no active point tensors")
+    nc = tensors.GetNumberOfComponents()
+    lo, hi = math.inf, -math.inf
+    for i in range(tensors.GetNumberOfTuples()):
+        t = tensors.GetTuple(i)
+        if not all(math.isfinite(v) for v in t):
+            continue
+        md = (t[0] + t[4] + t[8]) / 3.0 if nc == 9 else (t[0] + t[1] + t[2]) / 3.0
+        lo, hi = min(lo, md), max(hi, md)
+    return [lo, hi]
+
+
+def select_ids(source, view, rect, kind):
+    """The point or cell ids ParaView's surface selection in `rect` yields."""
+    simple.ClearSelection(source)
+    if kind == "points":
+        selection.SelectSurfacePoints(Rectangle=rect, View=view)
+    else:
+        selection.SelectSurfaceCells(Rectangle=rect, View=view)
+    ids = []
+    found = source.SMProxy.GetSelectionInput(0)
+    if found is None:
+        return ids
+    app = servermanager._getPyProxy(found)
+    for node in (app.Input if app.GetXMLName() == "AppendSelections" else [app]):
+        if node.GetXMLName() != "IDSelectionSource" or node.FieldType != kind[:-1].upper():
+            sys.exit("render_glyphs.py: unexpected selection %s" % node.GetXMLName())
+        ids += list(node.IDs)[1::2]  # (process, id) pairs
+    return sorted(set(ids))
+
+
+if __name__ == "__main__":
+    main()

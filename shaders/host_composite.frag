@@ -1,0 +1,50 @@
+#version 450 core
+// Copies the lit glyphs into a host application's framebuffer (the ParaView
+// plugin, plugins/paraview): the colour, and the depth re-projected into the
+// host's convention, so that the host's own geometry and the glyphs hide each
+// other correctly. Pixels without a glyph are discarded.
+//
+// In the host's selection passes (VTK's hardware selector) the colour is what
+// the pass reads back instead: a constant (the prop, composite or process id
+// the selector chose), or the glyph's input point id, its low 24 bits as RGB
+// bytes or bits 24..31 in red. VTK 9.2's selector reads the id as written:
+// whether a pixel holds any id at all comes from its actor pass.
+#include "lib/camera.glsl"
+
+layout(binding = 0) uniform sampler2D uColor;
+layout(binding = 1) uniform sampler2D uDepth;  // reversed window depth
+layout(binding = 2) uniform usampler2D uId;
+
+uniform vec2 uOriginDC;   // the host viewport's lower-left corner, pixels
+uniform vec4 uHostZRow;   // rows 2 and 3 of the host's view -> clip matrix
+uniform vec4 uHostWRow;
+uniform int uOutput;      // kOutput* below
+uniform vec3 uSelectColor;  // kOutputConstant's colour
+
+out vec4 oColor;
+
+const uint kNoGlyph = 0xFFFFFFFFu;
+const int kOutputLit = 0, kOutputConstant = 1, kOutputIdLow24 = 2, kOutputIdHigh8 = 3;
+
+vec3 bytes(uint v) { return vec3(v & 0xFFu, (v >> 8) & 0xFFu, (v >> 16) & 0xFFu) / 255.0; }
+
+void main() {
+  vec2 fragDC = gl_FragCoord.xy - uOriginDC;
+  ivec2 p = ivec2(fragDC);
+  uint id = texelFetch(uId, p, 0).r;
+  if (id == kNoGlyph) discard;
+  vec3 originVC, dirVC;
+  rayThroughFragment(fragDC, originVC, dirVC);
+  vec4 pVC = vec4(originVC + viewDepthFromWindowDepth(texelFetch(uDepth, p, 0).r) * dirVC, 1.0);
+  // The host's clip depth; glDepthRange(0, 1) maps [-1, 1] to [0, 1].
+  gl_FragDepth = clamp(0.5 * dot(uHostZRow, pVC) / dot(uHostWRow, pVC) + 0.5, 0.0, 1.0);
+  if (uOutput == kOutputConstant) {
+    oColor = vec4(uSelectColor, 1.0);
+  } else if (uOutput == kOutputIdLow24) {
+    oColor = vec4(bytes(id), 1.0);
+  } else if (uOutput == kOutputIdHigh8) {
+    oColor = vec4(float(id >> 24) / 255.0, 0.0, 0.0, 1.0);
+  } else {
+    oColor = vec4(texelFetch(uColor, p, 0).rgb, 1.0);
+  }
+}

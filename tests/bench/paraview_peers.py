@@ -1,0 +1,169 @@
+"""ParaView's TensorGlyph filter (superquadric source, resolution 16) against
+the plugin's "Tensor Glyphs (ray cast)", in one pvbatch run, on the same data
+and camera. A benchmark, not a test.
+
+  PYTHONPATH=/opt/tg-paraview-python/usr/lib/python3/dist-packages \\
+  xvfb-run -a pvbatch tests/bench/paraview_peers.py --plugin SO --cli build/tensorglyph \\
+      [--input FILE] [--frames N] [--size W H] [--out DIR]
+
+Per renderer: build time and first frames together (from creating the
+filter or representation to the first picture at the benchmark's camera: the
+plugin builds its glyphs inside its update and first frame), median frame of N (the camera turns
+a degree between frames), resident memory it added (VmRSS; llvmpipe keeps
+GPU buffers in host memory), and coverage error: the share of the reference's
+glyph pixels whose coverage (glyph or background) differs, plus those covered
+only by the renderer. The reference is the CLI's picture of the same glyphs
+(tensorglyph render, exact ray casts: the project's tests hold it to src/ref).
+Prints a table, with ratios filter / plugin.
+"""
+import argparse
+import os
+import statistics
+import subprocess
+import time
+
+from paraview import simple
+from vtkmodules.vtkIOImage import vtkPNGReader
+
+EYE, AT, UP, FOV = [40, 70, 170], [-1.5, 41.8, 5.6], [0, 1, 0], 30.0
+BG = [0.08, 0.08, 0.10]
+
+
+def rss_mib():
+    with open("/proc/self/status") as f:
+        for line in f:
+            if line.startswith("VmRSS:"):
+                return int(line.split()[1]) / 1024.0
+    return 0.0
+
+
+def coverage(path):
+    r = vtkPNGReader()
+    r.SetFileName(path)
+    r.Update()
+    s = r.GetOutput().GetPointData().GetScalars()
+    bg = [round(255 * c) for c in BG]
+    return [any(abs(s.GetComponent(i, c) - bg[c]) > 1.5 for c in range(3)) for i in range(s.GetNumberOfTuples())]
+
+
+def coverage_error(ref, got):
+    wrong = sum(1 for a, b in zip(ref, got) if a != b)
+    return wrong / max(1, sum(ref))
+
+
+def make_view(size):
+    view = simple.CreateRenderView()
+    view.ViewSize = size
+    view.OrientationAxesVisibility = 0
+    view.UseFXAA = 0
+    if hasattr(view, "UseColorPaletteForBackground"):
+        view.UseColorPaletteForBackground = 0
+    view.Background = BG
+    return view
+
+
+def place_camera(view):
+    view.CameraPosition, view.CameraFocalPoint, view.CameraViewUp, view.CameraViewAngle = EYE, AT, UP, FOV
+
+
+def frames(view, n):
+    times = []
+    for _ in range(n):
+        view.GetActiveCamera().Azimuth(1.0)
+        t = time.perf_counter()
+        simple.Render(view)
+        times.append(1000 * (time.perf_counter() - t))
+    return statistics.median(times)
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--plugin", required=True)
+    ap.add_argument("--cli", required=True)
+    ap.add_argument("--input", default=os.path.join(os.path.dirname(__file__),
+                                                   "../../../shared/data/real/tsv-kitten-stress/kitten-stress.vtu"))
+    ap.add_argument("--frames", type=int, default=5)
+    ap.add_argument("--size", type=int, nargs=2, default=[400, 300])
+    ap.add_argument("--out", default="/tmp/tg_paraview_peers")
+    a = ap.parse_args()
+    os.makedirs(a.out, exist_ok=True)
+    simple.LoadPlugin(a.plugin, remote=False, ns=globals())
+    reader = simple.OpenDataFile(a.input)
+    reader.UpdatePipeline()
+    cam = ["--eye"] + [str(v) for v in EYE] + ["--look-at"] + [str(v) for v in AT] + ["--fov", str(FOV)]
+    size = ["--size", str(a.size[0]), str(a.size[1])]
+    ref_png = os.path.join(a.out, "reference.png")
+    # Absolute scale, no clamp: vtkTensorGlyph's own sizing (eigenvalues times ScaleFactor).
+    scale = 0.0089
+    subprocess.run([a.cli, "render", a.input, "-o", ref_png, "--glyph", "superquadric", "--gamma", "3",
+                    "--scale-mode", "absolute", "--scale", str(scale)] + size + cam, check=True)
+    ref = coverage(ref_png)
+    rows = {}
+
+    # The plugin first, so that the filter's freed memory does not hide its own.
+    # The plugin: its glyph build happens in the first frame.
+    view = make_view(a.size)
+    rss0 = rss_mib()
+    t = time.perf_counter()
+    disp = simple.Show(reader, view)
+    disp.SetRepresentationType("Tensor Glyphs (ray cast)")
+    disp.TensorGlyphKind = 1
+    disp.TensorGlyphGamma = 3.0
+    disp.TensorGlyphScaleMode = 0
+    disp.TensorGlyphScaleFactor = scale
+    simple.Render(view)
+    place_camera(view)
+    simple.Render(view)
+    first = 1000 * (time.perf_counter() - t)
+    png = os.path.join(a.out, "plugin.png")
+    simple.SaveScreenshot(png, view, ImageResolution=a.size)
+    # The plugin's classes have no Python wrapping: its glyph build (the
+    # representation's input preparation and the mapper's eigen-decomposition)
+    # is inside its update and first frame, reported together.
+    build = 0.0
+    median = frames(view, a.frames)
+    plugin_row = (build, first, median, rss_mib() - rss0,
+                  coverage_error(ref, coverage(png)))
+    simple.Delete(disp)
+    simple.Delete(view)
+
+    # ParaView's own filter: one superquadric source per point, on the CPU.
+    view = make_view(a.size)
+    rss0 = rss_mib()
+    t = time.perf_counter()
+    glyphs = simple.TensorGlyph(Input=reader, GlyphType="Superquadric")
+    glyphs.Tensors = ["POINTS", "stress"]
+    glyphs.GlyphType.ThetaResolution = 16
+    glyphs.GlyphType.PhiResolution = 16
+    # vtkSuperquadricSource has radius 0.5: twice the factor gives the
+    # semi-axes |eigenvalue| * scale, as the plugin's glyphs have.
+    glyphs.ScaleFactor = 2 * scale
+    glyphs.UpdatePipeline()
+    build = 1000 * (time.perf_counter() - t)
+    disp = simple.Show(glyphs, view)
+    simple.ColorBy(disp, None)
+    t = time.perf_counter()
+    simple.Render(view)
+    place_camera(view)
+    simple.Render(view)
+    first = 1000 * (time.perf_counter() - t)
+    png = os.path.join(a.out, "tensorglyph_filter.png")
+    simple.SaveScreenshot(png, view, ImageResolution=a.size)
+    median = frames(view, a.frames)
+    rows["ParaView TensorGlyph (superquadric, res 16)"] = (build, first, median, rss_mib() - rss0,
+                                                           coverage_error(ref, coverage(png)))
+    rows["plugin: Tensor Glyphs (ray cast)"] = plugin_row
+
+    print("%-46s %16s %10s %10s %9s" % ("renderer", "build+first ms", "frame ms", "RSS MiB", "cov err"))
+    for name in ["ParaView TensorGlyph (superquadric, res 16)", "plugin: Tensor Glyphs (ray cast)"]:
+        b, f, m, r, c = rows[name]
+        print("%-46s %16.1f %10.1f %10.1f %8.2f%%" % (name, b + f, m, r, 100 * c))
+    (fb, ff, fm, fr, fc) = rows["ParaView TensorGlyph (superquadric, res 16)"]
+    (pb, pf, pm, pr, pc) = rows["plugin: Tensor Glyphs (ray cast)"]
+    ratio = lambda x, y: x / y if y > 0 else float("inf")
+    print("%-46s %15.1fx %9.1fx %9.1fx %8.1fx" % ("ratio filter / plugin", ratio(fb + ff, pb + pf), ratio(fm, pm),
+                                                  ratio(fr, pr), ratio(fc, pc)))
+
+
+if __name__ == "__main__":
+    main()
