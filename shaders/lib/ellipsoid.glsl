@@ -31,6 +31,24 @@ bool ellipsoidRectNDC(mat4 pmt, out vec4 rect) {
   return true;
 }
 
+// As above, with a bound on each edge's rounding error: s^2 = b^2 - a c loses
+// the digits that b^2 and a c share (a small glyph far off-centre), and an
+// error e in s^2 moves the edges by e / (2 s |a|).
+bool ellipsoidRectNDC(mat4 pmt, out vec4 rect, out vec2 errNDC) {
+  errNDC = vec2(0.0);
+  if (!ellipsoidRectNDC(pmt, rect)) return false;
+  vec4 r1 = vec4(pmt[0][0], pmt[1][0], pmt[2][0], pmt[3][0]);
+  vec4 r2 = vec4(pmt[0][1], pmt[1][1], pmt[2][1], pmt[3][1]);
+  vec4 r4 = vec4(pmt[0][3], pmt[1][3], pmt[2][3], pmt[3][3]);
+  float a = formD(r4, r4);
+  vec2 b = vec2(formD(r1, r4), formD(r2, r4));
+  vec2 ac = a * vec2(formD(r1, r1), formD(r2, r2));
+  vec2 s2 = b * b - ac;
+  // 8 ulp of the larger term covers the products, the sums and the sqrt.
+  errNDC = 8.0 * 1.2e-7 * (b * b + abs(ac)) / (2.0 * sqrt(max(s2, 1e-37)) * abs(a)) + 1.2e-7 * (rect.zw - rect.xy);
+  return true;
+}
+
 // Sigg et al. eq. (7), with the ray parametrised by view depth t instead of
 // window depth z_w. z_w is a projective function of t, so the roots are the
 // same points; t keeps float precision that z_w compresses away with distance.

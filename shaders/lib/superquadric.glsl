@@ -46,6 +46,15 @@ vec4 superquadricShape(vec3 l, float gamma) {
   return vec4(max(s.xyz, vec3(kMinShapeExponent)), s.w);
 }
 
+// Every shape lies within this distance of the GC origin, so within the
+// glyph's ellipsoid grown by it: |(x, y)| <= 2^max(0, (1 - a)/2) s (Hoelder on
+// the 2/a-norm), and s^2 + z^2 <= 2^(1 - min(b, c, 1)) where
+// s^(2/b) + |z|^(2/c) <= 1; never beyond the cube's corner. 1 for ellipsoids.
+float superquadricReach(vec3 shape) {
+  float m = min(min(shape.y, shape.z), 1.0);
+  return min(exp2(0.5 * (max(0.0, 1.0 - shape.x) + 1.0 - m)), sqrt(3.0));
+}
+
 // g(p) = (s^(2/b) + |z|^(2/c))^(b/2), s = (|x|^(2/a) + |y|^(2/a))^(a/2), and
 // its gradient. Powers are taken of ratios in [0, 1] or in log2, so exponents
 // up to 1000 neither overflow nor divide by zero.
