@@ -17,7 +17,6 @@ in SuperquadricFS {
   flat vec3 centreVC;
   flat mat3 gcFromVC;
   flat vec3 shape;
-  flat float reach;
   flat vec3 color;
   flat vec3 signWeightsGC;
   flat uint id;
@@ -42,12 +41,6 @@ void main() {
   vec3 o = fin.gcFromVC * (originVC + tc * dirVC - fin.centreVC);
   vec3 d = fin.gcFromVC * dirVC;
   float dl = length(d);
-  // A ray that passes outside the shape's reach cannot hit: a hit needs a
-  // point with h <= 0, or (convex: |grad g| <= sqrt(3)) a Newton step under
-  // eps, which needs h < sqrt(3) eps; the margin covers both and rounding.
-  float oa = dot(o, d) / dl;
-  float r = fin.reach * (1.0 + 2.0 * uEpsilon + 1e-3);
-  if (dot(o, o) - oa * oa > r * r) discard;
   // The box's entry is the nearest this glyph can be on the ray: behind the
   // occluders it cannot win the depth test, so it skips the march.
   if (pixelOccluded(ivec2(gl_FragCoord.xy), tc + unitCubeSpan(o, d / dl).x / dl, 4.0 * uEpsilon / dl)) discard;

@@ -22,7 +22,6 @@ out SuperquadricFS {
   flat vec3 centreVC;
   flat mat3 gcFromVC;  // rows: GC axes in VC over their lengths; GC z is the symmetry axis
   flat vec3 shape;
-  flat float reach;   // superquadricReach(shape)
   flat vec3 color;
   flat vec3 signWeightsGC;
   flat uint id;
@@ -81,7 +80,6 @@ void main() {
   vs.centreVC = centreVC;
   vs.gcFromVC = transpose(mat3(e0 / dot(e0, e0), e1 / dot(e1, e1), e2 / dot(e2, e2)));
   vs.shape = shape.xyz;
-  vs.reach = reach;
   vs.color = glyphColor(uColorMode, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, uMdRange);
   vs.signWeightsGC = uColorMode != kColorSign ? vec3(0.0)
       : signWeights(vec3(g.eigenvalues_id[src.x], g.eigenvalues_id[src.y], g.eigenvalues_id[src.z]),
