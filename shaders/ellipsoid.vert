@@ -39,11 +39,9 @@ void main() {
   mat4 tVC = mat4(vec4(rotVC[0] * axes.x, 0.0), vec4(rotVC[1] * axes.y, 0.0),
                   vec4(rotVC[2] * axes.z, 0.0), vec4(centreVC, 1.0));
   vec4 rect;
-  vec2 err;
-  if (!ellipsoidRectNDC(uProjVCCC * tVC, rect, err)) rect = vec4(-1.0, -1.0, 1.0, 1.0);
-  // A quarter pixel of margin beyond the rounding error, so that pixel centres
-  // on the exact edge are kept.
-  vec2 px = 0.5 / uViewportDC + err;
+  if (!ellipsoidRectNDC(uProjVCCC * tVC, rect)) rect = vec4(-1.0, -1.0, 1.0, 1.0);
+  // A quarter pixel of margin so that pixel centres on the exact edge are kept.
+  vec2 px = 0.5 / uViewportDC;
   rect = clamp(rect + vec4(-px, px), -1.0, 1.0);
   if (rect.x >= rect.z || rect.y >= rect.w) return;
 

@@ -64,11 +64,10 @@ void main() {
   float reach = superquadricReach(shape.xyz);
   nearest = max(nearest, -centreVC.z - reach * max(axes.x, max(axes.y, axes.z)));
   vec4 rectR;
-  vec2 errR;
   if (!crossesEyePlane &&
       ellipsoidRectNDC(uProjVCCC * mat4(vec4(reach * e0, 0.0), vec4(reach * e1, 0.0), vec4(reach * e2, 0.0),
-                                        vec4(centreVC, 1.0)), rectR, errR))
-    rect = vec4(max(rect.xy, rectR.xy - errR), min(rect.zw, rectR.zw + errR));
+                                        vec4(centreVC, 1.0)), rectR))
+    rect = vec4(max(rect.xy, rectR.xy), min(rect.zw, rectR.zw));
   // A quarter pixel of margin so that pixel centres on the exact edge are kept.
   vec2 px = 0.5 / uViewportDC;
   rect = clamp(rect + vec4(-px, px), -1.0, 1.0);
