@@ -40,8 +40,8 @@ void main() {
                   vec4(rotVC[2] * axes.z, 0.0), vec4(centreVC, 1.0));
   vec4 rect;
   if (!ellipsoidRectNDC(uProjVCCC * tVC, rect)) rect = vec4(-1.0, -1.0, 1.0, 1.0);
-  // One pixel of margin so that pixel centres on the exact edge are kept.
-  vec2 px = 2.0 / uViewportDC;
+  // A quarter pixel of margin so that pixel centres on the exact edge are kept.
+  vec2 px = 0.5 / uViewportDC;
   rect = clamp(rect + vec4(-px, px), -1.0, 1.0);
   if (rect.x >= rect.z || rect.y >= rect.w) return;
 

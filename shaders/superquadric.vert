@@ -58,7 +58,18 @@ void main() {
   float farthest = -centreVC.z + length(axes);
   if (farthest < uNearVC || (uOrtho == 1 && nearest > uFarVC)) return;
   if (crossesEyePlane) rect = vec4(-1.0, -1.0, 1.0, 1.0);
-  vec2 px = 2.0 / uViewportDC;
+  // The shape also lies within its ellipsoid grown by its reach: where that
+  // ellipsoid's rectangle is tighter than the box's (a rotated box's corners
+  // reach far out), only pixels that cannot hit are left out.
+  float reach = superquadricReach(shape.xyz);
+  nearest = max(nearest, -centreVC.z - reach * max(axes.x, max(axes.y, axes.z)));
+  vec4 rectR;
+  if (!crossesEyePlane &&
+      ellipsoidRectNDC(uProjVCCC * mat4(vec4(reach * e0, 0.0), vec4(reach * e1, 0.0), vec4(reach * e2, 0.0),
+                                        vec4(centreVC, 1.0)), rectR))
+    rect = vec4(max(rect.xy, rectR.xy), min(rect.zw, rectR.zw));
+  // A quarter pixel of margin so that pixel centres on the exact edge are kept.
+  vec2 px = 0.5 / uViewportDC;
   rect = clamp(rect + vec4(-px, px), -1.0, 1.0);
   if (rect.x >= rect.z || rect.y >= rect.w) return;
   // Wholly behind the occluders: no fragment of it could win the depth test.

@@ -16,17 +16,21 @@ float formD(vec4 u, vec4 v) { return dot(u.xyz, v.xyz) - u.w * v.w; }
 // Sigg et al. eq. (5): tight NDC rectangle (xmin, ymin, xmax, ymax) of the
 // ellipsoid whose parameter->clip transform is pmt. Returns false when the
 // ellipsoid meets the eye plane (w = 0): then no finite rectangle exists.
+// The roots are taken about the centre x0 = b / a, rows shifted by x0 r4:
+// b^2 - a c directly loses the digits that b^2 and a c share, for a small
+// glyph off-centre up to a pixel; shifted, both terms are of the half-width's
+// size and the edges are good to float rounding of x0.
 bool ellipsoidRectNDC(mat4 pmt, out vec4 rect) {
   vec4 r1 = vec4(pmt[0][0], pmt[1][0], pmt[2][0], pmt[3][0]);
   vec4 r2 = vec4(pmt[0][1], pmt[1][1], pmt[2][1], pmt[3][1]);
   vec4 r4 = vec4(pmt[0][3], pmt[1][3], pmt[2][3], pmt[3][3]);
   float a = formD(r4, r4);
   if (!(a < 0.0)) return false;
-  float bx = formD(r1, r4), cx = formD(r1, r1);
-  float by = formD(r2, r4), cy = formD(r2, r2);
-  vec2 b = vec2(bx, by);
-  vec2 s = sqrt(max(b * b - a * vec2(cx, cy), 0.0));
-  vec2 lo = (b + s) / a, hi = (b - s) / a;  // a < 0, so (b + s)/a is the smaller root
+  vec2 x0 = vec2(formD(r1, r4), formD(r2, r4)) / a;
+  vec4 u1 = r1 - x0.x * r4, u2 = r2 - x0.y * r4;
+  vec2 b = vec2(formD(u1, r4), formD(u2, r4));  // zero but for the rounding of x0
+  vec2 s = sqrt(max(b * b - a * vec2(formD(u1, u1), formD(u2, u2)), 0.0));
+  vec2 lo = x0 + (b + s) / a, hi = x0 + (b - s) / a;  // a < 0, so (b + s)/a is the smaller root
   rect = vec4(min(lo, hi), max(lo, hi));
   return true;
 }

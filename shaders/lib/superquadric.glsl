@@ -23,27 +23,52 @@ vec4 kindlmann2004(vec3 l, float gamma, bool mirrored) {
   return vec4(ab, ab.y, linear != mirrored ? 0.0 : 2.0);
 }
 
+// The spherical triangle of Schultz and Kindlmann's shape space that holds l,
+// its corners' shapes and the symmetry axis, chosen first so that the
+// barycentric weights (three atan each) are computed once: every branch of a
+// selection runs on a SIMD renderer such as llvmpipe.
 vec4 schultz2010(vec3 l) {
   const float r2 = 0.70710678, r3 = 0.57735027;
   const vec3 B = vec3(1, 0, 0), C = vec3(r2, r2, 0), D = vec3(r3, -r3, -r3), E = vec3(r2, 0, -r2),
              F = vec3(r3, r3, -r3), G = vec3(0, -r2, -r2), H = vec3(0, 0, -1);
   const vec3 funk = vec3(0, 4, 2), thrn = vec3(1, 4, 4), octa = vec3(0, 2, 2), cone = vec3(1, 2, 2);
   vec3 n = normalize(l / max(abs(l.x), abs(l.z)));  // pre-scaled: |l|^2 may overflow float
-  if (l.y >= -l.z) return vec4(mat3(octa, thrn, cone) * sphericalBarycentric(B, F, C, n), 2.0);
-  if (l.x >= -l.z) {
-    if (l.y >= 0.0) return vec4(mat3(octa, funk, thrn) * sphericalBarycentric(B, E, F, n), 2.0);
-    return vec4(mat3(cone, thrn, funk) * sphericalBarycentric(B, D, E, n), 0.0);
+  vec3 p0, p1, p2;
+  mat3 corners;
+  float axis;
+  if (l.y >= -l.z) {
+    p0 = B; p1 = F; p2 = C; corners = mat3(octa, thrn, cone); axis = 2.0;
+  } else if (l.x >= -l.z) {
+    if (l.y >= 0.0) {
+      p0 = B; p1 = E; p2 = F; corners = mat3(octa, funk, thrn); axis = 2.0;
+    } else {
+      p0 = B; p1 = D; p2 = E; corners = mat3(cone, thrn, funk); axis = 0.0;
+    }
+  } else if (l.x < -l.y) {
+    p0 = D; p1 = G; p2 = H; corners = mat3(thrn, cone, octa); axis = 0.0;
+  } else if (l.y < 0.0) {
+    p0 = E; p1 = D; p2 = H; corners = mat3(funk, thrn, octa); axis = 0.0;
+  } else {
+    p0 = F; p1 = E; p2 = H; corners = mat3(thrn, funk, cone); axis = 2.0;
   }
-  if (l.x < -l.y) return vec4(mat3(thrn, cone, octa) * sphericalBarycentric(D, G, H, n), 0.0);
-  if (l.y < 0.0) return vec4(mat3(funk, thrn, octa) * sphericalBarycentric(E, D, H, n), 0.0);
-  return vec4(mat3(thrn, funk, cone) * sphericalBarycentric(F, E, H, n), 2.0);
+  return vec4(corners * sphericalBarycentric(p0, p1, p2, n), axis);
 }
 
 vec4 superquadricShape(vec3 l, float gamma) {
   if (l.x == 0.0 && l.z == 0.0) return vec4(1.0, 1.0, 1.0, 2.0);
-  vec4 s = l.z > 0.0 ? kindlmann2004(l, gamma, false)
-         : l.x < 0.0 ? kindlmann2004(-l.zyx, gamma, true) : schultz2010(l);
+  // Definite either way: one Kindlmann shape, of l or of the mirrored -l.zyx.
+  bool negative = !(l.z > 0.0);
+  vec4 s = l.z > 0.0 || l.x < 0.0 ? kindlmann2004(negative ? -l.zyx : l, gamma, negative) : schultz2010(l);
   return vec4(max(s.xyz, vec3(kMinShapeExponent)), s.w);
+}
+
+// Every shape lies within this distance of the GC origin, so within the
+// glyph's ellipsoid grown by it: |(x, y)| <= 2^max(0, (1 - a)/2) s (Hoelder on
+// the 2/a-norm), and s^2 + z^2 <= 2^(1 - min(b, c, 1)) where
+// s^(2/b) + |z|^(2/c) <= 1; never beyond the cube's corner. 1 for ellipsoids.
+float superquadricReach(vec3 shape) {
+  float m = min(min(shape.y, shape.z), 1.0);
+  return min(exp2(0.5 * (max(0.0, 1.0 - shape.x) + 1.0 - m)), sqrt(3.0));
 }
 
 // g(p) = (s^(2/b) + |z|^(2/c))^(b/2), s = (|x|^(2/a) + |y|^(2/a))^(a/2), and

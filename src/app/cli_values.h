@@ -2,6 +2,7 @@
 // Strict parsing of command-line values, shared by the subcommands and the
 // EGL-only benchmark executable (so it depends on nothing but the C++ library).
 #include <chrono>
+#include <ctime>
 #include <span>
 #include <stdexcept>
 #include <string>
@@ -54,6 +55,15 @@ std::vector<T> parseList(std::string_view flag, std::string_view text, Parse par
 using Clock = std::chrono::steady_clock;
 inline double msSince(Clock::time_point t) {
   return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+}
+
+// CPU time of the whole process (every thread, llvmpipe's rasterisers
+// too) in ms: on a shared machine a frame's CPU time varies far less than
+// its wall time.
+inline double processCpuMs() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return double(t.tv_sec) * 1e3 + double(t.tv_nsec) * 1e-6;
 }
 
 // A value as the help texts quote defaults ("%g").

@@ -66,11 +66,13 @@ int cmdRender(int argc, const char** argv) {
                    "image; use a larger --size, or --legend-text-scale 1\n",
                    double(r.x1 - r.x0), double(r.y1 - r.y0), o.width, o.height);
   }
-  std::vector<double> times;
+  std::vector<double> times, cpuTimes;
   for (int k = 0; k < o.repeat; ++k) {
     const auto tk = Clock::now();
+    const double cpuK = processCpuMs();
     session.draw(fr);
     times.push_back(msSince(tk));
+    cpuTimes.push_back(processCpuMs() - cpuK);
     if (sink) sink("rendering", 2.0 + k, frames, "frames");
   }
   progress.finish();
@@ -95,7 +97,10 @@ int cmdRender(int argc, const char** argv) {
                  "  load %.1f ms, eigen %.1f ms, upload %.1f ms, first frame %.1f ms",
                  glyphCount, o.width, o.height, ctx.backendName(), ctx.describe().c_str(), loadMs,
                  session.buildMs(), session.uploadMs(), frameMs);
-    if (!times.empty()) std::fprintf(stderr, ", median of %zu frames %.2f ms", times.size(), times[times.size() / 2]);
+    std::sort(cpuTimes.begin(), cpuTimes.end());
+    if (!times.empty())
+      std::fprintf(stderr, ", median of %zu frames %.2f ms (CPU, all threads: %.2f ms)", times.size(),
+                   times[times.size() / 2], cpuTimes[cpuTimes.size() / 2]);
     std::fprintf(stderr, "\n  %llu glyphs drawn (after FA and frustum culling), scale %.6g, fa-min %.3g, peak RSS %.1f MiB\n",
                  static_cast<unsigned long long>(drawn), params.scale, params.faMin,
                  double(peakRssBytes()) / (1024.0 * 1024.0));
