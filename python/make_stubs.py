@@ -31,12 +31,11 @@ from typing import Any, Callable, Sequence
 import numpy as np
 from numpy.typing import ArrayLike, NDArray
 
-class Figure:
-    image: NDArray[np.uint8]
+class Figure(NDArray[np.uint8]):
     channels: dict[str, NDArray[Any]]
     glyphs: int
-    shape: tuple[int, int, int]
-    def __array__(self, dtype: Any = None) -> NDArray[Any]: ...
+    @property
+    def image(self) -> NDArray[np.uint8]: ...
     def save(self, path: str | os.PathLike[str]) -> None: ...
     def _repr_png_(self) -> bytes: ...
 

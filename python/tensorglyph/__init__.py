@@ -129,29 +129,35 @@ def _source(tensors, positions, affine, layout, frame):
     return tensors, positions, affine, layout or "", frame or "", path
 
 
-class Figure:
-    """A rendered frame: ``image`` (H, W, 4) uint8, and with channels=True
+class Figure(np.ndarray):
+    """A rendered frame: the (H, W, 4) uint8 image itself, a NumPy array that
+    Jupyter shows as a picture. With channels=True, ``channels`` holds
     ``color`` (linear float RGBA), ``depth`` (view-axis distance, inf where
-    empty), ``normal`` (world-space) and ``id`` (input index, 0xFFFFFFFF where
-    empty). ``np.asarray(fig)`` is the image; Jupyter shows it."""
+    empty), ``normal`` (world-space) and ``id`` (input index, 0xFFFFFFFF
+    where empty); ``glyphs`` is the number of glyphs uploaded."""
 
-    def __init__(self, frame):
-        self.image = frame["rgba"]
-        self.channels = {k: frame[k] for k in ("color", "depth", "normal", "id") if k in frame}
-        self.glyphs = frame["glyphs"]
+    def __new__(cls, frame):
+        fig = np.asarray(frame["rgba"]).view(cls)
+        fig.channels = {k: frame[k] for k in ("color", "depth", "normal", "id") if k in frame}
+        fig.glyphs = frame["glyphs"]
+        return fig
 
-    def __array__(self, dtype=None):
-        return self.image if dtype is None else self.image.astype(dtype)
+    def __array_finalize__(self, obj):
+        self.channels = getattr(obj, "channels", {})
+        self.glyphs = getattr(obj, "glyphs", 0)
 
     @property
-    def shape(self):
-        return self.image.shape
+    def image(self):
+        """The image as a plain ndarray."""
+        return self.view(np.ndarray)
 
     def save(self, path):
         """Writes the image in any format the CLI writes (by extension)."""
         save(self, path)
 
     def _repr_png_(self):
+        if self.ndim != 3 or self.shape[2] != 4 or self.dtype != np.uint8:
+            return None  # a slice or a computed array: NumPy's own repr
         import tempfile
         with tempfile.TemporaryDirectory() as d:
             p = os.path.join(d, "figure.png")
@@ -163,7 +169,8 @@ class Figure:
 def save(image, path):
     """Writes a Figure (or an (H, W, 4) uint8 array) to `path`; .exr needs a
     Figure rendered with channels=True."""
-    frame = {"rgba": np.asarray(image.image if isinstance(image, Figure) else image)}
+    frame = {"rgba": np.ascontiguousarray(np.asarray(image).view(np.ndarray) if isinstance(image, Figure)
+                                          else np.asarray(image))}
     if isinstance(image, Figure):
         frame.update(image.channels)
     _core.save(frame, os.fspath(path))

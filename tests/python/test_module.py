@@ -165,8 +165,10 @@ class BadInput(unittest.TestCase):
     def test_exr_needs_channels_and_png_bytes_are_a_png(self):
         t, p = points()
         fig = tg.render(t, positions=p, size=(32, 24))
-        self.assertEqual(fig.image.shape, (24, 32, 4))
-        self.assertEqual(fig.image.dtype, np.uint8)
+        self.assertIsInstance(fig, np.ndarray)
+        self.assertEqual(fig.shape, (24, 32, 4))
+        self.assertEqual(fig.dtype, np.uint8)
+        self.assertIsNone(fig[:, :, :3]._repr_png_())
         self.assertTrue(fig._repr_png_().startswith(b"\x89PNG"))
         with tempfile.TemporaryDirectory() as d:
             with self.assertRaises(ValueError):
