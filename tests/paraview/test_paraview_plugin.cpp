@@ -86,15 +86,18 @@ std::string skipReason() {
 // once (other jobs on the machine) can race for it, and a rank then fails to
 // open its window: such a run is tried again, up to three times.
 CmdResult runPvbatch(const std::string& args, const fs::path& scratch, int ranks = 1) {
-  // A hard limit: one 4-rank run once hung until ctest's timeout on a loaded
-  // machine; timeout signals the whole group (xvfb-run, mpiexec, the ranks).
-  std::string launcher = std::string("timeout -k 10 240 env PYTHONPATH=") + TG_PARAVIEW_PYTHONPATH +
+  // A hard limit: MPI runs have hung (2 of about 10 full-suite runs, never
+  // when run alone; cause not found), so a run that times out is tried again
+  // like one whose window failed. timeout signals the whole group (xvfb-run,
+  // mpiexec, the ranks). A normal run takes 5-15 s.
+  std::string launcher = std::string("timeout -k 10 120 env PYTHONPATH=") + TG_PARAVIEW_PYTHONPATH +
                          " xvfb-run -a -s '-screen 0 640x480x24' ";
   if (ranks > 1)
     launcher += "mpiexec --allow-run-as-root --oversubscribe -n " + std::to_string(ranks) + " ";
   launcher += "pvbatch " TG_PARAVIEW_SCRIPT " --plugin " TG_PARAVIEW_PLUGIN " --input " + kKitten;
   CmdResult r = tg::test::runBinary(args, scratch, launcher);
-  for (int retry = 0; retry < 2 && r.code != 0 && r.err.find("CreateAWindow") != std::string::npos; ++retry)
+  for (int retry = 0; retry < 2 && r.code != 0 && (r.err.find("CreateAWindow") != std::string::npos || r.code == 124);
+       ++retry)
     r = tg::test::runBinary(args, scratch, launcher);
   return r;
 }
