@@ -130,7 +130,10 @@ FrameTime timeFrames(const gl::Api& gl, render::GlyphRenderer& r, const render::
     GLuint64 ns[2] = {0, 0};
     gl.GetQueryObjectui64v(q[0], GL_QUERY_RESULT, &ns[0]);
     gl.GetQueryObjectui64v(q[1], GL_QUERY_RESULT, &ns[1]);
-    gpuMs = double(ns[1] - ns[0]) * 1e-6;
+    // On multi-second frames (an H200 at 10^8 glyphs) the second stamp came
+    // back below the first: the unsigned span wrapped to 1.8e12 ms. Such a
+    // frame has no GPU time.
+    gpuMs = ns[1] >= ns[0] ? double(ns[1] - ns[0]) * 1e-6 : std::nan("");
     return wall;
   };
   FrameTime ft;
@@ -143,9 +146,14 @@ FrameTime timeFrames(const gl::Api& gl, render::GlyphRenderer& r, const render::
   }
   gl.DeleteQueries(2, q);
   std::sort(wall.begin(), wall.end());
-  std::sort(gpuV.begin(), gpuV.end());
   ft.wallMs = wall[wall.size() / 2];
-  ft.gpuMs = gpuV[gpuV.size() / 2];
+  // One frame without a GPU time makes the column's median meaningless: none.
+  if (std::any_of(gpuV.begin(), gpuV.end(), [](double g) { return std::isnan(g); })) {
+    ft.gpuMs = std::nan("");
+  } else {
+    std::sort(gpuV.begin(), gpuV.end());
+    ft.gpuMs = gpuV[gpuV.size() / 2];
+  }
   return ft;
 }
 
