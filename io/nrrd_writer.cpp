@@ -61,7 +61,9 @@ std::int64_t impl::writeRawTensorHeader(const std::string& path, int fd, const s
                                         const std::string& dataFile, const std::string& caller) {
   std::unique_ptr<Nrrd, Nrrd* (*)(Nrrd*)> nrrd(nrrdNew(), nrrdNix);
   std::unique_ptr<NrrdIoState, NrrdIoState* (*)(NrrdIoState*)> nio(nrrdIoStateNew(), nrrdIoStateNix);
-  float placeholder = 0;  // never read: skipData
+  // nrrdWrap needs a data pointer to describe the grid; with skipData Teem
+  // writes the header alone and never reads it.
+  float unreadValue = 0;
   const std::size_t sizes[4] = {6, dims[0], dims[1], dims[2]};
   const int kinds[4] = {nrrdKind3DSymMatrix, nrrdKindSpace, nrrdKindSpace, nrrdKindSpace};
   const double spacings[4] = {AIR_NAN, 1.0, 1.0, 1.0};
@@ -70,7 +72,7 @@ std::int64_t impl::writeRawTensorHeader(const std::string& path, int fd, const s
   nio->encoding = nrrdEncodingRaw;
   const unsigned idx = airArrayLenIncr(nio->dataFNArr, 1);
   nio->dataFN[idx] = airStrdup(dataFile.c_str());
-  if (nrrdWrap_nva(nrrd.get(), &placeholder, nrrdTypeFloat, 4, sizes))
+  if (nrrdWrap_nva(nrrd.get(), &unreadValue, nrrdTypeFloat, 4, sizes))
     throw std::runtime_error(caller + ": " + path + ": Teem cannot describe the grid");
   nrrdAxisInfoSet_nva(nrrd.get(), nrrdAxisInfoKind, kinds);
   nrrdAxisInfoSet_nva(nrrd.get(), nrrdAxisInfoSpacing, spacings);

@@ -51,25 +51,23 @@ RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io
   ctx_->api().Finish();
   uploadMs_ = msSince(t1);
   glyphCount_ = glyphs_.glyphs.size();
-  if (!keepGlyphs) {
-    kept_ = first;
-    glyphs_.glyphs = {};
-  }
+  if (!keepGlyphs) glyphs_.glyphs = {};
 }
 
 RenderSession::~RenderSession() = default;
 
+// The boxes are O(N) in the glyphs: computed again only when the scale
+// changes, so redrawing for γ, colour or camera costs nothing here.
 RenderSession::Boxes RenderSession::boxes(const tensor::ResolvedScale& sized) const {
-  if (kept_) {
-    if (kept_->scale != sized.scale || !(kept_->mapping == sized.mapping))
-      throw std::logic_error("RenderSession::frame: a new scale needs the glyph records, which were dropped");
-    return *kept_;
-  }
+  if (last_ && last_->scale == sized.scale && last_->mapping == sized.mapping) return *last_;
+  if (glyphs_.glyphs.empty() && last_)
+    throw std::logic_error("RenderSession::frame: a new scale needs the glyph records, which were dropped");
   Boxes b;
   b.scale = sized.scale;
   b.mapping = sized.mapping;
   b.glyphsWC = tensor::glyphBoxWC(glyphs_, sized.scale, sized.mapping);
   b.framing = tensor::framingBox(glyphs_, !scene_.field.grid, sized.typicalRadiusWC);
+  last_ = b;
   return b;
 }
 

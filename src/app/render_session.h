@@ -76,7 +76,7 @@ class RenderSession {
   std::size_t glyphCount_ = 0;
   glm::dvec3 underlayLoWC_{INFINITY}, underlayHiWC_{-INFINITY};
   glm::dvec3 meshLoWC_{INFINITY}, meshHiWC_{-INFINITY};
-  std::optional<Boxes> kept_;  // the first options' boxes, when the records are dropped
+  mutable std::optional<Boxes> last_;  // for the last scale asked; all that is left once the records go
   std::unique_ptr<gl::Context> ctx_;
   std::unique_ptr<gl::ShaderLibrary> lib_;
   std::unique_ptr<render::GlyphRenderer> renderer_;
