@@ -23,7 +23,7 @@
 namespace tg::io {
 
 struct VtkFormats {
-  static constexpr int kVersion = 1;
+  static constexpr int kVersion = 2;
   int version;
   TensorField (*readVtk)(const std::string& path, const ReadOptions& opt);
   void (*checkLegacyHeader)(const std::string& path);
@@ -37,7 +37,7 @@ struct VtkFormats {
 };
 
 struct TeemFormats {
-  static constexpr int kVersion = 1;
+  static constexpr int kVersion = 2;
   int version;
   TensorField (*readNrrd)(const std::string& path, const ReadOptions& opt);
   ScalarVolume (*readNrrdScalar)(const std::string& path, const int* dims);
@@ -54,7 +54,7 @@ struct TeemFormats {
 };
 
 struct NiftiFormats {
-  static constexpr int kVersion = 1;
+  static constexpr int kVersion = 2;
   int version;
   TensorField (*readNifti)(const std::string& path, const ReadOptions& opt);
   ScalarVolume (*readNiftiScalar)(const std::string& path, const int* dims);

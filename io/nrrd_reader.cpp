@@ -18,6 +18,7 @@
 #include <memory>
 
 #include "io/format_impl.h"
+#include "io/raw_samples.h"
 #include "io/readers.h"
 #include "io/teem_util.h"
 #include "io/volume_sink.h"
@@ -136,37 +137,6 @@ double loadULLong(const void* p) {
 
 double (*loaderFor(int type))(const void*) { return type == nrrdTypeULLong ? loadULLong : nrrdDLoad[type]; }
 
-template <class T>
-void widen(const char* src, std::size_t m, double* out) {
-  for (std::size_t i = 0; i < m; ++i) {
-    T v;
-    std::memcpy(&v, src + i * sizeof(T), sizeof v);
-    out[i] = double(v);
-  }
-}
-
-// A chunk of native-order values as doubles: one loop per type, which the
-// compiler vectorises, where Teem's loader is a call through a pointer for
-// every value (a third of a raw float load's time).
-void toDoubles(int type, const char* src, std::size_t m, double* out) {
-  switch (type) {
-    case nrrdTypeChar: return widen<signed char>(src, m, out);
-    case nrrdTypeUChar: return widen<unsigned char>(src, m, out);
-    case nrrdTypeShort: return widen<std::int16_t>(src, m, out);
-    case nrrdTypeUShort: return widen<std::uint16_t>(src, m, out);
-    case nrrdTypeInt: return widen<std::int32_t>(src, m, out);
-    case nrrdTypeUInt: return widen<std::uint32_t>(src, m, out);
-    case nrrdTypeLLong: return widen<std::int64_t>(src, m, out);
-    case nrrdTypeULLong: return widen<std::uint64_t>(src, m, out);
-    case nrrdTypeFloat: return widen<float>(src, m, out);
-    case nrrdTypeDouble: return widen<double>(src, m, out);
-    default: {
-      double (*load)(const void*) = loaderFor(type);
-      for (std::size_t i = 0; i < m; ++i) out[i] = load(src + i * nrrdTypeSize[type]);
-    }
-  }
-}
-
 // The data must fit in what follows the header: raw bytes as they are, text
 // at one byte a value at least (two a byte in hex), gzip within deflate's
 // ratio. Checked before anything is sized from the header.
@@ -181,6 +151,38 @@ void checkEncodedSize(const std::string& path, const Header& h, std::uint64_t co
                    std::to_string(enc == nrrdEncodingRaw ? avail : 0));
   if (enc == nrrdEncodingGzip && bytes > avail * kMaxGzipRatio)
     fail(path, "header describes more data than the gzip stream can hold");
+}
+
+RawType rawTypeOf(int type) {
+  switch (type) {
+    case nrrdTypeChar: return RawType::I8;
+    case nrrdTypeUChar: return RawType::U8;
+    case nrrdTypeShort: return RawType::I16;
+    case nrrdTypeUShort: return RawType::U16;
+    case nrrdTypeInt: return RawType::I32;
+    case nrrdTypeUInt: return RawType::U32;
+    case nrrdTypeLLong: return RawType::I64;
+    case nrrdTypeULLong: return RawType::U64;
+    case nrrdTypeFloat: return RawType::F32;
+    case nrrdTypeDouble: return RawType::F64;
+    default: throw std::logic_error("rawTypeOf: NRRD type " + std::to_string(type) + " has no raw form");
+  }
+}
+
+// The open data file's absolute path, as the kernel names it, for the guard's
+// parent to open; "" where it has none (then the child reads the data).
+std::string dataPathOf(const Header& h) {
+  char link[64], target[4096];
+  std::snprintf(link, sizeof link, "/proc/self/fd/%d", fileno(h.nio->dataFile));
+  const ssize_t n = ::readlink(link, target, sizeof target);
+  if (n <= 0 || std::size_t(n) >= sizeof target || target[0] != '/') return "";
+  const std::string p(target, std::size_t(n));
+  struct stat named {}, open {};
+  // A deleted or renamed file: the name no longer leads to it.
+  if (::stat(p.c_str(), &named) != 0 || ::fstat(fileno(h.nio->dataFile), &open) != 0 ||
+      named.st_dev != open.st_dev || named.st_ino != open.st_ino)
+    return "";
+  return p;
 }
 
 // Streams `count` values, `record` at a time (a voxel's values never straddle
@@ -312,7 +314,7 @@ void decode(const std::string& path, Header& h, std::uint64_t count, std::size_t
     const std::size_t m = want / tsize;
     if (swap)
       for (std::size_t i = 0; i < m; ++i) std::reverse(buf.data() + i * tsize, buf.data() + (i + 1) * tsize);
-    toDoubles(n->type, buf.data(), m, vals.data());
+    rawToDoubles(rawTypeOf(n->type), buf.data(), m, vals.data());
     consume(vals.data(), m);
     done += want;
   }
@@ -479,19 +481,24 @@ TensorField impl::readNrrd(const std::string& path, const ReadOptions& opt) {
   const std::uint64_t values = voxels * std::uint64_t(layout.count);
   checkEncodedSize(path, *h, values);
   promiseData("readNrrd", path, opt, values * nrrdTypeSize[n->type], sel.keptBound(voxels));
-  // Reserved up front only where the file has been seen to hold every voxel
-  // (found by fuzz_nrrd: a 300-byte header reserved 3.6 GB).
-  if (h->nio->encoding == nrrdEncodingRaw && sel.selectsAll() &&
-      values * nrrdTypeSize[n->type] <= bytesAfterHeader(*h))
-    f.reserve(std::size_t(voxels));
+  if (h->nio->encoding == nrrdEncodingRaw) {
+    RawSamples raw{dataPathOf(*h), std::uint64_t(std::ftell(h->nio->dataFile)), rawTypeOf(n->type),
+                   nrrdTypeSize[n->type] > 1 && h->nio->endian != airMyEndian(), g, layout};
+    // The guard's parent reads the values (io/raw_samples.h); a mask is
+    // read here, beside the data, so that selection stays in the child.
+    if (opt.deferRaw && opt.selection.maskPath.empty() && !raw.dataPath.empty()) {
+      *opt.deferRaw = std::move(raw);
+      return f;
+    }
+    readRawSamples("readNrrd", path, raw, opt, f, fileno(h->nio->dataFile));
+    return f;
+  }
   VolumeSink sink(f, g, layout, sel, opt.selection.confidenceMin);
   decode(path, *h, values, std::size_t(layout.count), [&](const double* v, std::size_t m) {
     sink.pushVoxels(v, m);
   });
   sink.finish();
-  if (layout.full && sink.maxAsymmetry() > 1e-3)
-    f.warnings.push_back("3D-matrix tensors are asymmetric (max |D - Dᵀ| / |D| = " +
-                         std::to_string(sink.maxAsymmetry()) + "); drawn symmetrised, (D + Dᵀ)/2");
+  sink.warnIfAsymmetric();
   return f;
 }
 

@@ -1,7 +1,12 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <memory>
+#include <optional>
+#include <utility>
 
+#include "io/guard_wire.h"
+#include "io/raw_samples.h"
 #include "io/read_guard.h"
 #include "io/readers.h"
 
@@ -60,10 +65,33 @@ TensorField readTensorField(const std::string& path, const ReadOptions& opt) {
   const Format format = formatOf(path);
   ReadOptions guarded = opt;
   if (!guarded.memoryBudget) guarded.memoryBudget = defaultMemoryBudget();
-  return readInChild(format.who, path, limitsFor(size, guarded.memoryBudget), [&](const PromiseFn& promise) {
-    guarded.onPromise = promise;
-    return format.read(path, guarded);
-  }, opt.progress);
+  // Uncompressed volume data comes back described, not decoded: the child
+  // parses the header with the library, this process reads the values
+  // (io/raw_samples.h).
+  TensorField field;
+  std::optional<RawSamples> raw;
+  runInChild(
+      format.who, path, limitsFor(size, guarded.memoryBudget),
+      [&](const PromiseFn& promise) -> SendFn {
+        guarded.onPromise = promise;
+        auto out = std::make_shared<std::pair<TensorField, std::optional<RawSamples>>>();
+        guarded.deferRaw = &out->second;
+        out->first = format.read(path, guarded);
+        return [out](WireOut& w) {
+          sendField(w, out->first);
+          sendRaw(w, out->second);
+        };
+      },
+      [&](WireIn& in) {
+        field = receiveField(in);
+        raw = receiveRaw(in);
+      },
+      opt.progress);
+  if (raw) {
+    guarded.onPromise = nullptr;
+    readRawSamples(format.who, path, *raw, guarded, field);
+  }
+  return field;
 }
 
 }  // namespace tg::io

@@ -210,6 +210,9 @@ struct Fd {
 
 }  // namespace
 
+void sendField(WireOut& w, const TensorField& f) { writeField(w, f); }
+TensorField receiveField(WireIn& r) { return readField(r); }
+
 std::uint64_t defaultMemoryBudget() {
   const std::uint64_t phys = std::uint64_t(::sysconf(_SC_PHYS_PAGES)) * std::uint64_t(::sysconf(_SC_PAGESIZE));
   std::uint64_t budget = phys / 5 * 4;

@@ -48,6 +48,13 @@ TensorField readInChild(const std::string& who, const std::string& path, const R
                         const std::function<TensorField(const PromiseFn&)>& read,
                         const util::ProgressSink& progress = {});
 
+class WireOut;
+class WireIn;
+// A field on the wire, every member: readInChild's format, for callers of
+// runInChild that send more after it.
+void sendField(WireOut& w, const TensorField& f);
+TensorField receiveField(WireIn& r);
+
 // The same for a scalar volume (an underlay).
 ScalarVolume readScalarInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
                                const std::function<ScalarVolume(const PromiseFn&)>& read);
@@ -55,8 +62,6 @@ ScalarVolume readScalarInChild(const std::string& who, const std::string& path, 
 // The same for any result: in the child, `read` returns a function that puts
 // its result on the wire (holding what it sends alive), and in the parent
 // `receive` takes it off; readInChild above is this with a TensorField.
-class WireOut;
-class WireIn;
 using SendFn = std::function<void(WireOut&)>;
 void runInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
                 const std::function<SendFn(const PromiseFn&)>& read, const std::function<void(WireIn&)>& receive,

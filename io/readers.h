@@ -3,6 +3,7 @@
 // throws InputError with a one-line message naming the file and the problem.
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 
 #include "io/selection.h"
@@ -10,6 +11,8 @@
 #include "util/progress.h"
 
 namespace tg::io {
+
+struct RawSamples;
 
 // Options that apply to one format only are refused by the other readers.
 struct ReadOptions {
@@ -32,6 +35,10 @@ struct ReadOptions {
   // --confidence-min was given: the CLI refuses it for tensors without a
   // confidence value (TensorField::hasConfidence).
   bool confidenceGiven = false;
+  // Set by readTensorField's child process: a volume reader whose data is
+  // uncompressed and selected without a mask describes it here and returns
+  // the field without samples; the parent reads them (io/raw_samples.h).
+  std::optional<RawSamples>* deferRaw = nullptr;
   // Told how far readTensorField's child has read (io/read_guard.h); empty: nothing is measured.
   util::ProgressSink progress;
 };

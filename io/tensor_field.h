@@ -69,28 +69,32 @@ struct TensorField {
   // volume readers call it once a voxel.
   void addSym(std::uint32_t id, const double p[3], const double s6[6]) {
     ++totalPoints;
-    // Checked in float: a finite double beyond FLT_MAX would be stored as Inf.
-    // Only a failure asks the doubles whether the file held the NaN/Inf
-    // or the value overflowed.
-    const float v[9] = {float(p[0]),  float(p[1]),  float(p[2]),  float(s6[0]), float(s6[1]),
-                        float(s6[2]), float(s6[3]), float(s6[4]), float(s6[5])};
-    bool fits = true;
-    for (float x : v) fits &= std::isfinite(x);
-    if (!fits) {
+    float v[9];
+    if (!admitSample(p, s6, v)) return;
+    std::copy(v, v + 3, positions.extend(3));
+    std::copy(v + 3, v + 9, tensors.extend(6));
+    ids.push_back(id);
+  }
+  // addSym's test without the append: true and the sample as floats
+  // (position, then tensor) in `v`, or false with the sample counted skipped.
+  // A Frobenius norm within FLT_MAX bounds every component, so it and the
+  // position's magnitudes say whether every float is finite (a finite double
+  // beyond FLT_MAX would be stored as Inf); NaN fails each comparison. Only a
+  // failure asks whether the file held a NaN/Inf or the value overflowed.
+  bool admitSample(const double p[3], const double s6[6], float v[9]) {
+    constexpr double kMax = FLT_MAX;
+    const double norm2 = s6[0] * s6[0] + s6[3] * s6[3] + s6[5] * s6[5] + 2 * (s6[1] * s6[1] + s6[2] * s6[2] + s6[4] * s6[4]);
+    const bool fits = (norm2 <= kMax * kMax) & (std::abs(p[0]) <= kMax) & (std::abs(p[1]) <= kMax) & (std::abs(p[2]) <= kMax);
+    if (!fits) [[unlikely]] {
       bool finite = true;
       for (int k = 0; k < 3; ++k) finite &= std::isfinite(p[k]);
       for (int k = 0; k < 6; ++k) finite &= std::isfinite(s6[k]);
       ++(finite ? skippedOverflow : skippedNonFinite);
-      return;
+      return false;
     }
-    const double norm2 = s6[0] * s6[0] + s6[3] * s6[3] + s6[5] * s6[5] + 2 * (s6[1] * s6[1] + s6[2] * s6[2] + s6[4] * s6[4]);
-    if (!(norm2 <= double(FLT_MAX) * double(FLT_MAX))) {
-      ++skippedOverflow;
-      return;
-    }
-    std::copy(v, v + 3, positions.extend(3));
-    std::copy(v + 3, v + 9, tensors.extend(6));
-    ids.push_back(id);
+    for (int k = 0; k < 3; ++k) v[k] = float(p[k]);
+    for (int k = 0; k < 6; ++k) v[3 + k] = float(s6[k]);
+    return true;
   }
   void reserve(std::size_t n) {
     positions.reserve(3 * n);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 namespace tg::io {
 
@@ -30,7 +31,40 @@ void VolumeSink::push(const double* v) {
 
 void VolumeSink::pushVoxels(const double* v, std::size_t values) {
   const std::size_t step = std::size_t(layout_.count);
-  for (std::size_t i = 0; i < values; i += step) push(v + i);
+  if (!sel_.selectsAll() || layout_.confidence >= 0 || layout_.full) {
+    for (std::size_t i = 0; i < values; i += step) push(v + i);
+    return;
+  }
+  // Every voxel kept as it is (the usual load): one capacity check for the
+  // whole chunk and no call per voxel, which halved a raw load's decode time.
+  const std::size_t m = values / step, before = f_.ids.size();
+  float* posWC = f_.positions.extend(3 * m);
+  float* ten = f_.tensors.extend(6 * m);
+  std::uint32_t* ids = f_.ids.extend(m);
+  std::size_t kept = 0;
+  for (std::size_t i = 0; i < m; ++i, v += step) {
+    double p[3], s[6];
+    positionWC(g_, ijk_, p);
+    if (++ijk_[0] == g_.dims[0]) {
+      ijk_[0] = 0;
+      if (++ijk_[1] == g_.dims[1]) {
+        ijk_[1] = 0;
+        ++ijk_[2];
+      }
+    }
+    for (int k = 0; k < 6; ++k) s[k] = v[layout_.sym[std::size_t(k)]];
+    if (g_.tensorToWC) congruence(g_.tensorToWC->data(), s, s);
+    ++f_.totalPoints;
+    float r[9];
+    const std::uint64_t index = next_++;
+    if (!f_.admitSample(p, s, r)) continue;
+    std::copy(r, r + 3, posWC + 3 * kept);
+    std::copy(r + 3, r + 9, ten + 6 * kept);
+    ids[kept++] = std::uint32_t(index);
+  }
+  f_.positions.resize(3 * (before + kept));
+  f_.tensors.resize(6 * (before + kept));
+  f_.ids.resize(before + kept);
 }
 
 void VolumeSink::positionOf(std::uint64_t index, double p[3]) const {
@@ -86,6 +120,12 @@ void VolumeSink::finish() {
   }
   f_.grid = gi;
   f_.sampleSpacing = std::isfinite(minSpacing) ? minSpacing : estimateSampleSpacing(f_.positions);
+}
+
+void VolumeSink::warnIfAsymmetric() {
+  if (layout_.full && maxAsym_ > 1e-3)
+    f_.warnings.push_back("3D-matrix tensors are asymmetric (max |D - Dᵀ| / |D| = " + std::to_string(maxAsym_) +
+                          "); drawn symmetrised, (D + Dᵀ)/2");
 }
 
 GridPlacement placementOf(const VolumeGeometry& g) {

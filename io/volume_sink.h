@@ -47,6 +47,9 @@ class VolumeSink {
   void finish();
   // Asymmetric 3D-matrix input: the largest |D - Dᵀ| / |D| seen.
   double maxAsymmetry() const { return maxAsym_; }
+  // A warning in the field where that exceeds 1e-3: the tensors are drawn
+  // symmetrised, which the user should know.
+  void warnIfAsymmetric();
 
  private:
   void positionOf(std::uint64_t index, double pWC[3]) const;

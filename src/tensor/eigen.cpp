@@ -187,7 +187,9 @@ Eigensystem eigensolve(const SymTensor& t) {
 
 TG_LANE_CLONES void eigensolveBlock(const float* t, std::size_t n, EigenBlock& out) {
   n = std::min(n, kEigenBlock);
-  alignas(64) double in[6][kEigenBlock] = {};  // lanes >= n stay zero: diagonal, no work
+  alignas(64) double in[6][kEigenBlock];
+  if (n < kEigenBlock)  // lanes >= n are zero: diagonal, no work
+    for (auto& c : in) std::fill(c + n, c + kEigenBlock, 0.0);
   for (std::size_t k = 0; k < n; ++k)
     for (int c = 0; c < 6; ++c) in[c][k] = double(t[6 * k + std::size_t(c)]);
   bool ok[kEigenBlock];

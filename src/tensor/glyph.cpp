@@ -57,16 +57,21 @@ template <class T>
 }
 
 // Records for tensors [begin, end), a block of kEigenBlock at a time: the
-// eigensystems and the per-glyph scalars run on SIMD lanes, then the
-// records are written one by one.
+// eigensystems, the per-glyph scalars and the range statistics run on SIMD
+// lanes, then the records are written one by one, each with its group
+// (glyphGroup) for groupTiles, which then need not read the records again.
 TG_LANE_CLONES void buildRange(std::span<const float> pos, std::span<const float> ten,
                 std::span<const std::uint32_t> ids, std::size_t begin, std::size_t end,
-                GlyphRecord* out, Partial& p, const GlyphOptions& opt, char* dropped) {
+                GlyphRecord* out, std::uint8_t* groups, Partial& p, const GlyphOptions& opt, char* dropped) {
   constexpr std::size_t B = kEigenBlock;
   EigenBlock eb;
-  alignas(64) double md[B], fa[B], quat[4][B];
+  alignas(64) double fa[B], quat[4][B];
   bool drop[B];
   const Lanes4 clamp = splat<Lanes4>(opt.minEigenvalue ? *opt.minEigenvalue : -std::numeric_limits<double>::infinity());
+  const Lanes4 inf = splat<Lanes4>(std::numeric_limits<double>::infinity()), zero = splat<Lanes4>(0.0);
+  Lanes4 mdLo = inf, mdHi = -inf, eLo = inf, eHi = -inf, absHi = zero;
+  float lo[3], hi[3];
+  for (int c = 0; c < 3; ++c) lo[c] = std::numeric_limits<float>::infinity(), hi[c] = -lo[c];
   for (std::size_t b = begin; b < end; b += B) {
     const std::size_t n = std::min(B, end - b);
     eigensolveBlock(&ten[6 * b], n, eb);
@@ -78,12 +83,21 @@ TG_LANE_CLONES void buildRange(std::span<const float> pos, std::span<const float
         v[i] = {load4(&eb.vectors[i][0][k]), load4(&eb.vectors[i][1][k]), load4(&eb.vectors[i][2][k])};
       }
       const AnisotropyOf<Lanes4> an = anisotropy(l[0], l[1], l[2]);
-      store4(&md[k], an.md);
       store4(&fa[k], an.fa);
       const auto dr = an.cl < opt.clMin || an.cp < opt.cpMin;
       for (std::size_t j = 0; j < kLanes; ++j) drop[k + j] = dr[j] != 0;
       // Clamping keeps the descending order: max(., m) is monotonic.
-      for (int i = 0; i < 3; ++i) store4(&eb.values[i][k], lmax(l[i], clamp));
+      for (int i = 0; i < 3; ++i) l[i] = lmax(l[i], clamp);
+      for (int i = 0; i < 3; ++i) store4(&eb.values[i][k], l[i]);
+      // The statistics of the glyphs kept: lanes past the block's end and
+      // dropped ones take the neutral values.
+      const Lanes4 lane = splat<Lanes4>(double(k)) + Lanes4{0, 1, 2, 3};
+      const auto kept = lane < splat<Lanes4>(double(n)) && !dr;
+      mdLo = lmin(mdLo, kept ? an.md : inf);
+      mdHi = lmax(mdHi, kept ? an.md : -inf);
+      eLo = lmin(eLo, kept ? l[2] : inf);
+      eHi = lmax(eHi, kept ? l[0] : -inf);
+      absHi = lmax(absHi, kept ? lmax(labs(l[0]), labs(l[2])) : zero);
       Lanes4 q[4];
       frameQuaternion(v, q);
       for (int c = 0; c < 4; ++c) store4(&quat[c][k], q[c]);
@@ -98,31 +112,37 @@ TG_LANE_CLONES void buildRange(std::span<const float> pos, std::span<const float
       g.fa = static_cast<float>(fa[k]);
       g.id = ids.empty() ? static_cast<std::uint32_t>(i) : ids[i];
       for (int c = 0; c < 4; ++c) g.frameWC[c] = static_cast<float>(quat[c][k]);
+      groups[i] = static_cast<std::uint8_t>(glyphGroup(g));
       if (dropped) {
         dropped[i] = drop[k];
         if (drop[k]) continue;  // compacted away; not in the bounds
       }
-      const glm::dvec3 c(g.posWC[0], g.posWC[1], g.posWC[2]);
-      p.lo = glm::min(p.lo, c);
-      p.hi = glm::max(p.hi, c);
-      p.maxAbs = std::max({p.maxAbs, std::abs(eb.values[0][k]), std::abs(eb.values[2][k])});
-      p.mdMin = std::min(p.mdMin, md[k]);
-      p.mdMax = std::max(p.mdMax, md[k]);
-      p.eigenMin = std::min(p.eigenMin, eb.values[2][k]);
-      p.eigenMax = std::max(p.eigenMax, eb.values[0][k]);
+      for (int c = 0; c < 3; ++c) {
+        lo[c] = std::min(lo[c], g.posWC[c]);
+        hi[c] = std::max(hi[c], g.posWC[c]);
+      }
     }
+  }
+  for (std::size_t j = 0; j < kLanes; ++j) {
+    p.mdMin = std::min(p.mdMin, mdLo[j]);
+    p.mdMax = std::max(p.mdMax, mdHi[j]);
+    p.eigenMin = std::min(p.eigenMin, eLo[j]);
+    p.eigenMax = std::max(p.eigenMax, eHi[j]);
+    p.maxAbs = std::max(p.maxAbs, absHi[j]);
+  }
+  for (int c = 0; c < 3; ++c) {
+    p.lo[c] = std::min(p.lo[c], double(lo[c]));
+    p.hi[c] = std::max(p.hi[c], double(hi[c]));
   }
 }
 
 // Orders one tile stably by group: a counting scatter through a stack copy,
 // skipped when the tile is already in order (the usual case for a volume of
 // one kind of tensor).
-GlyphTile groupTile(GlyphRecord* g, std::size_t n) {
-  std::uint8_t group[kTileGlyphs];
+GlyphTile groupTile(GlyphRecord* g, const std::uint8_t* group, std::size_t n) {
   std::size_t count[3] = {0, 0, 0};
   bool ordered = true;
   for (std::size_t i = 0; i < n; ++i) {
-    group[i] = static_cast<std::uint8_t>(glyphGroup(g[i]));
     ordered = ordered && (i == 0 || group[i] >= group[i - 1]);
     ++count[group[i]];
   }
@@ -135,13 +155,13 @@ GlyphTile groupTile(GlyphRecord* g, std::size_t n) {
   return {static_cast<std::uint16_t>(count[0]), static_cast<std::uint16_t>(count[0] + count[1])};
 }
 
-void groupTiles(GlyphSet& set, std::size_t threads) {
+void groupTiles(GlyphSet& set, const std::uint8_t* groups, std::size_t threads) {
   const std::size_t n = set.glyphs.size(), tiles = (n + kTileGlyphs - 1) / kTileGlyphs;
   set.tiles.resize(tiles);
   auto job = [&](std::size_t b, std::size_t e) {
     for (std::size_t t = b; t < e; ++t) {
       const std::size_t first = t * kTileGlyphs;
-      set.tiles[t] = groupTile(&set.glyphs[first], std::min(kTileGlyphs, n - first));
+      set.tiles[t] = groupTile(&set.glyphs[first], groups + first, std::min(kTileGlyphs, n - first));
     }
   };
   std::vector<std::thread> pool;
@@ -171,6 +191,8 @@ GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> te
   set.glyphs.extend(n);  // every record is written by buildRange
   const bool filtering = opt.clMin > 0 || opt.cpMin > 0;
   std::vector<char> dropped(filtering ? n : 0);
+  util::MappedArray<std::uint8_t> groups;
+  groups.extend(n);  // every entry is written by buildRange
   if (threads == 0) threads = std::max(1u, std::thread::hardware_concurrency());
   // Below ~64k tensors a thread costs more than it saves.
   const std::size_t chunks = std::clamp<std::size_t>(n / 65536, 1, threads);
@@ -179,7 +201,8 @@ GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> te
   for (std::size_t c = 0; c < chunks; ++c) {
     const std::size_t b = n * c / chunks, e = n * (c + 1) / chunks;
     auto job = [&, b, e, c] {
-      buildRange(positions, tensors, ids, b, e, set.glyphs.data(), parts[c], opt, filtering ? dropped.data() : nullptr);
+      buildRange(positions, tensors, ids, b, e, set.glyphs.data(), groups.data(), parts[c], opt,
+                 filtering ? dropped.data() : nullptr);
     };
     if (c + 1 < chunks) {
       pool.emplace_back(job);
@@ -190,8 +213,8 @@ GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> te
       constexpr std::size_t kStep = 65536;
       for (std::size_t s = b; s < e; s += kStep) {
         progress("eigen", double(s - b) * double(n) / double(e - b), double(n), "tensors");
-        buildRange(positions, tensors, ids, s, std::min(e, s + kStep), set.glyphs.data(), parts[c], opt,
-                   filtering ? dropped.data() : nullptr);
+        buildRange(positions, tensors, ids, s, std::min(e, s + kStep), set.glyphs.data(), groups.data(), parts[c],
+                   opt, filtering ? dropped.data() : nullptr);
       }
       progress("eigen", double(n), double(n), "tensors");
     }
@@ -200,7 +223,10 @@ GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> te
   if (filtering) {
     std::size_t w = 0;
     for (std::size_t i = 0; i < n; ++i)
-      if (!dropped[i]) set.glyphs[w++] = set.glyphs[i];
+      if (!dropped[i]) {
+        groups[w] = groups[i];
+        set.glyphs[w++] = set.glyphs[i];
+      }
     set.droppedByShape = n - w;
     set.glyphs.resize(w);
   }
@@ -222,7 +248,7 @@ GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> te
   set.mdMax = all.mdMax;
   set.eigenvalueMin = all.eigenMin;
   set.eigenvalueMax = all.eigenMax;
-  groupTiles(set, chunks);
+  groupTiles(set, groups.data(), chunks);
   return set;
 }
 

@@ -5,10 +5,19 @@
 // read them.
 #include <gtest/gtest.h>
 
+#include <sys/socket.h>
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <cmath>
+#include <cstring>
 #include <filesystem>
+#include <optional>
 
 #include "data-synthetic/generators.h"
+#include "io/guard_wire.h"
 #include "io/io_test_util.h"
+#include "io/raw_samples.h"
 #include "io/readers.h"
 #include "io/writers.h"
 
@@ -90,4 +99,187 @@ TEST(ReadGuard, AnEmptyFieldCrossesWithoutWaiting) {
   EXPECT_EQ(guarded.size(), 0u);
   EXPECT_EQ(guarded.unselected, 60u);
   expectSame(guarded, io::readTensorFieldInProcess(p.string(), o), p.string());
+}
+
+// ---- Raw data read by the parent (io/raw_samples.h) ------------------------
+
+namespace {
+
+// Voxel v's value k is (v + 1) * 10 + k, in the header's type and byte order.
+template <class T>
+std::string rawValues(int voxels, int count, bool bigEndian) {
+  std::string s;
+  for (int v = 0; v < voxels; ++v)
+    for (int k = 0; k < count; ++k) {
+      const T x = T((v + 1) * 10 + k);
+      std::string b(reinterpret_cast<const char*>(&x), sizeof x);
+      if (bigEndian) std::reverse(b.begin(), b.end());
+      s += b;
+    }
+  return s;
+}
+
+}  // namespace
+
+// The child hands back where the data lies; the parent reads it. Every type,
+// both byte orders, detached data in another directory, a byte skip, a
+// measurement frame, a selection and a non-finite tensor give what the same
+// read gives in one process.
+TEST(ReadGuard, RawDataReadByTheParentIsTheInProcessField) {
+  const fs::path d = test::scratchDir("read_guard_raw");
+  fs::create_directories(d / "data");
+  struct Case {
+    const char* name;
+    const char* type;
+    std::string bytes;
+    bool big;
+  } cases[] = {{"uchar", "uchar", rawValues<std::uint8_t>(24, 6, false), false},
+               {"short-be", "short", rawValues<std::int16_t>(24, 6, true), true},
+               {"uint64", "uint64", rawValues<std::uint64_t>(24, 6, false), false},
+               {"double-be", "double", rawValues<double>(24, 6, true), true}};
+  for (const Case& c : cases) {
+    const std::string hdr = std::string("NRRD0004\ntype: ") + c.type +
+                            "\ndimension: 4\nsizes: 6 4 3 2\nkinds: 3D-symmetric-matrix space space space\n"
+                            "space: left-posterior-superior\nspace directions: none (0,2,0) (1,0,0) (0,0,3)\n"
+                            "measurement frame: (0,1,0) (-1,0,0) (0,0,1)\nencoding: raw\nendian: " +
+                            (c.big ? "big" : "little") + "\nbyte skip: 5\ndata file: data/" + c.name + ".raw\n";
+    test::writeFile(d / (std::string(c.name) + ".nhdr"), hdr);
+    test::writeFile(d / "data" / (std::string(c.name) + ".raw"), "SKIP!" + c.bytes);
+    const fs::path p = d / (std::string(c.name) + ".nhdr");
+    // The same values as text, which Teem decodes in the child: the raw
+    // read's values are right, not only the same in both processes.
+    std::string text;
+    for (int v = 0; v < 24; ++v)
+      for (int k = 0; k < 6; ++k) text += std::to_string((v + 1) * 10 + k) + " ";
+    std::string ascii = hdr.substr(0, hdr.find("encoding:")) + "encoding: ascii\n\n" + text + "\n";
+    test::writeFile(d / (std::string(c.name) + ".ascii.nrrd"), ascii);
+    const io::TensorField fromText = io::readTensorField((d / (std::string(c.name) + ".ascii.nrrd")).string(), {});
+    const io::TensorField fromRaw = io::readTensorField(p.string(), {});
+    EXPECT_EQ(fromRaw.tensors, fromText.tensors) << c.name;
+    EXPECT_EQ(fromRaw.positions, fromText.positions) << c.name;
+    for (const long long stride : {1LL, 2LL}) {
+      io::ReadOptions o;
+      o.selection.stride = stride;
+      const io::TensorField guarded = io::readTensorField(p.string(), o);
+      const io::TensorField direct = io::readTensorFieldInProcess(p.string(), o);
+      ASSERT_EQ(direct.size(), stride == 1 ? 24u : 4u) << c.name;
+      expectSame(guarded, direct, std::string(c.name) + " stride " + std::to_string(stride));
+    }
+  }
+  // A NaN among float values: skipped and counted on the parent's side too.
+  std::string values = rawValues<float>(6, 6, false);
+  const float nan = std::nanf("");
+  std::memcpy(&values[4 * (6 * 2 + 3)], &nan, 4);
+  test::writeFile(d / "nan.nrrd", "NRRD0004\ntype: float\ndimension: 4\nsizes: 6 3 2 1\n"
+                                  "kinds: 3D-symmetric-matrix domain domain domain\nencoding: raw\nendian: little\n\n" +
+                                      values);
+  const io::TensorField guarded = io::readTensorField((d / "nan.nrrd").string(), {});
+  EXPECT_EQ(guarded.size(), 5u);
+  EXPECT_EQ(guarded.skippedNonFinite, 1u);
+  EXPECT_FLOAT_EQ(guarded.tensors[6 * 2], 40.0f);  // voxel 3's xx: voxel 2 was skipped
+  expectSame(guarded, io::readTensorFieldInProcess((d / "nan.nrrd").string(), {}), "nan");
+}
+
+// Where a reader is asked to defer, it returns the field without samples and
+// says where they are: raw data only, and never with a mask (read in the child).
+TEST(ReadGuard, OnlyUncompressedUnmaskedDataIsDeferred) {
+  const fs::path d = test::scratchDir("read_guard_raw");
+  const std::string hdr = "NRRD0004\ntype: float\ndimension: 4\nsizes: 6 2 2 1\n"
+                          "kinds: 3D-symmetric-matrix domain domain domain\nendian: little\n";
+  test::writeFile(d / "defer.nrrd", hdr + "encoding: raw\n\n" + rawValues<float>(4, 6, false));
+  std::optional<io::RawSamples> raw;
+  io::ReadOptions o;
+  o.deferRaw = &raw;
+  const io::TensorField f = io::readTensorFieldInProcess((d / "defer.nrrd").string(), o);
+  EXPECT_EQ(f.size(), 0u);
+  ASSERT_TRUE(raw);
+  EXPECT_EQ(raw->dataPath, fs::canonical(d / "defer.nrrd").string());
+  EXPECT_EQ(raw->offset, fs::file_size(d / "defer.nrrd") - 4 * 24);
+  EXPECT_EQ(raw->type, io::RawType::F32);
+  EXPECT_EQ(raw->geometry.dims[0], 2);
+  EXPECT_EQ(raw->layout.count, 6);
+
+  raw.reset();
+  o.selection.maskPath = (d / "mask.nrrd").string();
+  test::writeFile(d / "mask.nrrd", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 2 2 1\nencoding: raw\n\n" +
+                                       std::string("\1\0\1\1", 4));
+  const io::TensorField masked = io::readTensorFieldInProcess((d / "defer.nrrd").string(), o);
+  EXPECT_FALSE(raw);
+  EXPECT_EQ(masked.size(), 3u);
+  EXPECT_EQ(masked.masked, 1u);
+}
+
+// The descriptor the child sends is checked before the parent sizes anything
+// from it; a well-formed one crosses unchanged.
+TEST(ReadGuard, TheRawDescriptorIsCheckedOnArrival) {
+  io::RawSamples good;
+  good.dataPath = "/tmp/x.raw";
+  good.offset = 17;
+  good.type = io::RawType::I16;
+  good.swap = true;
+  good.geometry.dims[0] = 3;
+  good.geometry.tensorToWC = std::array<double, 9>{0, 1, 0, -1, 0, 0, 0, 0, 1};
+  good.layout.count = 7;
+  good.layout.confidence = 0;
+  good.layout.sym = {1, 2, 3, 4, 5, 6};
+  auto roundTrip = [](const std::optional<io::RawSamples>& r) {
+    int fds[2];
+    EXPECT_EQ(::socketpair(AF_UNIX, SOCK_STREAM, 0, fds), 0);
+    io::WireOut out(fds[0]);
+    io::sendRaw(out, r);
+    out.finish();
+    io::WireIn in(fds[1], ::getpid(), io::WireIn::Clock::now() + std::chrono::seconds(5), 1 << 20);
+    struct Close {
+      int a, b;
+      ~Close() { ::close(a), ::close(b); }
+    } close{fds[0], fds[1]};
+    return io::receiveRaw(in);
+  };
+  const auto back = roundTrip(good);
+  ASSERT_TRUE(back);
+  EXPECT_EQ(back->dataPath, good.dataPath);
+  EXPECT_EQ(back->offset, 17u);
+  EXPECT_EQ(back->type, io::RawType::I16);
+  EXPECT_TRUE(back->swap);
+  EXPECT_EQ(back->geometry.dims[0], 3);
+  EXPECT_EQ(back->geometry.tensorToWC, good.geometry.tensorToWC);
+  EXPECT_EQ(back->layout.sym, good.layout.sym);
+  EXPECT_FALSE(roundTrip(std::nullopt));
+
+  std::vector<io::RawSamples> bad(6, good);
+  bad[0].dataPath = "relative.raw";
+  bad[1].type = io::RawType(42);
+  bad[2].geometry.dims[1] = 0;
+  bad[3].layout.count = 0;
+  bad[4].layout.sym[5] = 7;
+  bad[5].geometry.dims[0] = bad[5].geometry.dims[1] = bad[5].geometry.dims[2] = 1 << 20;
+  for (std::size_t i = 0; i < bad.size(); ++i)
+    EXPECT_THROW(roundTrip(bad[i]), std::runtime_error) << "case " << i;
+}
+
+// The parent opens the data file itself: one swapped for a FIFO since the
+// header was read must not hang it, and one cut short is refused, named.
+TEST(ReadGuard, TheParentRefusesADataFileThatIsNotWhatTheHeaderSaid) {
+  const fs::path d = test::scratchDir("read_guard_raw");
+  io::RawSamples raw;
+  raw.geometry.dims[0] = 4;
+  raw.dataPath = (d / "short.raw").string();
+  test::writeFile(raw.dataPath, rawValues<float>(3, 6, false));
+  io::TensorField f;
+  try {
+    io::readRawSamples("readNrrd", "h.nhdr", raw, {}, f);
+    ADD_FAILURE() << "a short data file was read";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "readNrrd: h.nhdr: data is truncated: the header describes 96 bytes, the data ends after 72");
+  }
+  raw.dataPath = (d / "fifo").string();
+  fs::remove(raw.dataPath);
+  ASSERT_EQ(::mkfifo(raw.dataPath.c_str(), 0600), 0);
+  try {
+    io::readRawSamples("readNrrd", "h.nhdr", raw, {}, f);
+    ADD_FAILURE() << "a FIFO was read";
+  } catch (const io::InputError& e) {
+    EXPECT_EQ(std::string(e.what()), "readNrrd: h.nhdr: the data file is not a regular file");
+  }
+  EXPECT_EQ(f.size(), 0u);
 }
