@@ -1,19 +1,21 @@
 #pragma once
-// MRtrix data types: their names in a header, their sizes, and a converter
-// from the file's bytes (either byte order) to doubles. Used by
-// io/mif_reader.cpp only; apart so that the reader stays one job.
+// MRtrix data types: their names in a header, their sizes, and how the
+// file's bytes are converted to doubles (io/raw_samples.h, either byte
+// order). Used by io/mif_reader.cpp only; apart so that the reader stays one
+// job.
 #include <cstddef>
 #include <string>
 #include <string_view>
 
-namespace tg::io {
+#include "io/raw_samples.h"
 
-using MifConvert = void (*)(const char* src, std::size_t n, double* dst);
+namespace tg::io {
 
 struct MifDataType {
   std::string name;  // as the header spells it
   int bytes = 0;
-  MifConvert convert = nullptr;
+  RawType type = RawType::F32;
+  bool swap = false;  // stored in the other byte order
 };
 
 // MRtrix's names, case-insensitive; a multi-byte type without LE/BE is the

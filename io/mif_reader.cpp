@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "io/mif_datatype.h"
+#include "io/raw_samples.h"
 #include "io/readers.h"
 #include "io/selection.h"
 #include "io/volume_sink.h"
@@ -366,7 +367,7 @@ void streamValues(const std::string& path, const Image& im, std::size_t record, 
   for (std::uint64_t done = 0; done < h.values;) {
     const std::size_t want = std::size_t(std::min<std::uint64_t>(chunk, h.values - done));
     readAt(path, im.data.get(), raw.data(), want * tsize, h.dataOffset + done * tsize);
-    h.type.convert(raw.data(), want, vals.data());
+    rawToDoubles(h.type.type, h.type.swap, raw.data(), want, vals.data());
     if (h.scaled)
       for (std::size_t i = 0; i < want; ++i) vals[i] = h.offset + h.scale * vals[i];
     consume(static_cast<const double*>(vals.data()), want);
@@ -478,46 +479,50 @@ TensorField readMif(const std::string& path, const ReadOptions& opt) {
   const GridPlacement placed = placementOf(g);
   const Selector sel(opt.selection, path, g.dims, &placed);
   promiseData("readMif", path, opt, 6 * voxels * std::uint64_t(h.type.bytes), sel.keptBound(voxels));
-  VolumeSink sink(f, g, cl, sel, 0.0);
   if (fileOrderIsIndexOrder(h)) {
-    if (sel.selectsAll()) f.reserve(std::size_t(voxels));
-    streamValues(path, im, 6, [&](const double* v, std::size_t m) {
-      sink.pushVoxels(v, m);
-    });
-  } else {
-    // Any other layout: the kept voxels' components are gathered first,
-    // then handed to the sink in index order, as NIfTI's volumes are.
-    constexpr std::uint32_t kDropped = UINT32_MAX;
-    std::vector<std::uint32_t> kept, slotOf;  // empty: every voxel is kept, slot = index
-    if (!sel.selectsAll()) {
-      slotOf.assign(std::size_t(voxels), kDropped);
-      for (std::uint64_t v = 0; v < voxels; ++v)
-        if (sink.accept(v)) {
-          slotOf[std::size_t(v)] = std::uint32_t(kept.size());
-          kept.push_back(std::uint32_t(v));
-        }
+    // Voxel by voxel, as a raw NRRD: the guard's parent reads the values
+    // (io/raw_samples.h), where no mask needs reading beside them.
+    RawSamples raw{pathOfOpenFile(im.data.get()), h.dataOffset, h.type.type, h.type.swap, g, cl, h.offset, h.scale};
+    if (opt.deferRaw && opt.selection.maskPath.empty() && !raw.dataPath.empty()) {
+      *opt.deferRaw = std::move(raw);
+      return f;
     }
-    const std::size_t keptCount = sel.selectsAll() ? std::size_t(voxels) : kept.size();
-    // On huge pages: faulting 4 KiB pages in was most of this path's cost
-    // (bench_load, loadMif at 256^3: 100k faults a load).
-    std::vector<float> comps;
-    util::reserveHuge(comps, 6 * keptCount);
-    comps.resize(6 * keptCount);
-    Walk walk(h);
-    streamValues(path, im, 6, [&](const double* v, std::size_t m) {
-      for (std::size_t i = 0; i < m; ++i, walk.next()) {
-        const std::size_t slot = slotOf.empty() ? std::size_t(walk.voxel()) : slotOf[std::size_t(walk.voxel())];
-        if (slot != kDropped) comps[6 * slot + walk.comp()] = float(v[i]);
+    readRawSamples("readMif", path, raw, opt, f, im.data.get(), &sel);
+    return f;
+  }
+  VolumeSink sink(f, g, cl, sel, 0.0);
+  // Any other layout: the kept voxels' components are gathered first,
+  // then handed to the sink in index order, as NIfTI's volumes are.
+  constexpr std::uint32_t kDropped = UINT32_MAX;
+  std::vector<std::uint32_t> kept, slotOf;  // empty: every voxel is kept, slot = index
+  if (!sel.selectsAll()) {
+    slotOf.assign(std::size_t(voxels), kDropped);
+    for (std::uint64_t v = 0; v < voxels; ++v)
+      if (sink.accept(v)) {
+        slotOf[std::size_t(v)] = std::uint32_t(kept.size());
+        kept.push_back(std::uint32_t(v));
       }
-    });
-    f.reserve(keptCount);
-    double v6[6];
-    for (std::size_t s = 0; s < keptCount; ++s) {
-      std::copy(&comps[6 * s], &comps[6 * s] + 6, v6);
-      // Every voxel in index order is push()'s case, placed incrementally.
-      if (kept.empty()) sink.push(v6);
-      else sink.pushAccepted(kept[s], v6);
+  }
+  const std::size_t keptCount = sel.selectsAll() ? std::size_t(voxels) : kept.size();
+  // On huge pages: faulting 4 KiB pages in was most of this path's cost
+  // (bench_load, loadMif at 256^3: 100k faults a load).
+  std::vector<float> comps;
+  util::reserveHuge(comps, 6 * keptCount);
+  comps.resize(6 * keptCount);
+  Walk walk(h);
+  streamValues(path, im, 6, [&](const double* v, std::size_t m) {
+    for (std::size_t i = 0; i < m; ++i, walk.next()) {
+      const std::size_t slot = slotOf.empty() ? std::size_t(walk.voxel()) : slotOf[std::size_t(walk.voxel())];
+      if (slot != kDropped) comps[6 * slot + walk.comp()] = float(v[i]);
     }
+  });
+  f.reserve(keptCount);
+  double v6[6];
+  for (std::size_t s = 0; s < keptCount; ++s) {
+    std::copy(&comps[6 * s], &comps[6 * s] + 6, v6);
+    // Every voxel in index order is push()'s case, placed incrementally.
+    if (kept.empty()) sink.push(v6);
+    else sink.pushAccepted(kept[s], v6);
   }
   sink.finish();
   return f;

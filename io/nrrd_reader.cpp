@@ -169,22 +169,6 @@ RawType rawTypeOf(int type) {
   }
 }
 
-// The open data file's absolute path, as the kernel names it, for the guard's
-// parent to open; "" where it has none (then the child reads the data).
-std::string dataPathOf(const Header& h) {
-  char link[64], target[4096];
-  std::snprintf(link, sizeof link, "/proc/self/fd/%d", fileno(h.nio->dataFile));
-  const ssize_t n = ::readlink(link, target, sizeof target);
-  if (n <= 0 || std::size_t(n) >= sizeof target || target[0] != '/') return "";
-  const std::string p(target, std::size_t(n));
-  struct stat named {}, open {};
-  // A deleted or renamed file: the name no longer leads to it.
-  if (::stat(p.c_str(), &named) != 0 || ::fstat(fileno(h.nio->dataFile), &open) != 0 ||
-      named.st_dev != open.st_dev || named.st_ino != open.st_ino)
-    return "";
-  return p;
-}
-
 // Streams `count` values, `record` at a time (a voxel's values never straddle
 // two calls), into `consume(const double* values, size_t n)`.
 template <class Consume>
@@ -314,7 +298,7 @@ void decode(const std::string& path, Header& h, std::uint64_t count, std::size_t
     const std::size_t m = want / tsize;
     if (swap)
       for (std::size_t i = 0; i < m; ++i) std::reverse(buf.data() + i * tsize, buf.data() + (i + 1) * tsize);
-    rawToDoubles(rawTypeOf(n->type), buf.data(), m, vals.data());
+    rawToDoubles(rawTypeOf(n->type), false, buf.data(), m, vals.data());
     consume(vals.data(), m);
     done += want;
   }
@@ -482,7 +466,7 @@ TensorField impl::readNrrd(const std::string& path, const ReadOptions& opt) {
   checkEncodedSize(path, *h, values);
   promiseData("readNrrd", path, opt, values * nrrdTypeSize[n->type], sel.keptBound(voxels));
   if (h->nio->encoding == nrrdEncodingRaw) {
-    RawSamples raw{dataPathOf(*h), std::uint64_t(std::ftell(h->nio->dataFile)), rawTypeOf(n->type),
+    RawSamples raw{pathOfOpenFile(fileno(h->nio->dataFile)), std::uint64_t(std::ftell(h->nio->dataFile)), rawTypeOf(n->type),
                    nrrdTypeSize[n->type] > 1 && h->nio->endian != airMyEndian(), g, layout};
     // The guard's parent reads the values (io/raw_samples.h); a mask is
     // read here, beside the data, so that selection stays in the child.
@@ -490,7 +474,7 @@ TensorField impl::readNrrd(const std::string& path, const ReadOptions& opt) {
       *opt.deferRaw = std::move(raw);
       return f;
     }
-    readRawSamples("readNrrd", path, raw, opt, f, fileno(h->nio->dataFile));
+    readRawSamples("readNrrd", path, raw, opt, f, fileno(h->nio->dataFile), &sel);
     return f;
   }
   VolumeSink sink(f, g, layout, sel, opt.selection.confidenceMin);

@@ -5,7 +5,11 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <bit>
+#include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <type_traits>
 #include <stdexcept>
 #include <vector>
 
@@ -20,31 +24,49 @@ namespace {
 // memory for values it had just written.
 constexpr std::size_t kChunkBytes = 1 << 17;
 
-template <class T>
+template <class U>
+U swapBytes(U u) {
+  if constexpr (sizeof(U) == 2) return __builtin_bswap16(u);
+  else if constexpr (sizeof(U) == 4) return __builtin_bswap32(u);
+  else if constexpr (sizeof(U) == 8) return __builtin_bswap64(u);
+  else return u;
+}
+
+template <class T, bool Swap>
 void widen(const char* src, std::size_t m, double* out) {
+  using U = std::conditional_t<sizeof(T) == 1, std::uint8_t,
+                               std::conditional_t<sizeof(T) == 2, std::uint16_t,
+                                                  std::conditional_t<sizeof(T) == 4, std::uint32_t, std::uint64_t>>>;
   for (std::size_t i = 0; i < m; ++i) {
-    T v;
-    std::memcpy(&v, src + i * sizeof(T), sizeof v);
-    out[i] = double(v);
+    U u;
+    std::memcpy(&u, src + i * sizeof(T), sizeof u);
+    if constexpr (Swap) u = swapBytes(u);
+    out[i] = double(std::bit_cast<T>(u));
   }
+}
+
+template <class T>
+void widen(bool swap, const char* src, std::size_t m, double* out) {
+  if (swap) widen<T, true>(src, m, out);
+  else widen<T, false>(src, m, out);
 }
 
 }  // namespace
 
 // One loop per type, which the compiler vectorises, where Teem's loader is
 // a call through a pointer for every value (a third of a raw float load).
-void rawToDoubles(RawType type, const char* src, std::size_t m, double* out) {
+void rawToDoubles(RawType type, bool swap, const char* src, std::size_t m, double* out) {
   switch (type) {
-    case RawType::I8: return widen<std::int8_t>(src, m, out);
-    case RawType::U8: return widen<std::uint8_t>(src, m, out);
-    case RawType::I16: return widen<std::int16_t>(src, m, out);
-    case RawType::U16: return widen<std::uint16_t>(src, m, out);
-    case RawType::I32: return widen<std::int32_t>(src, m, out);
-    case RawType::U32: return widen<std::uint32_t>(src, m, out);
-    case RawType::I64: return widen<std::int64_t>(src, m, out);
-    case RawType::U64: return widen<std::uint64_t>(src, m, out);
-    case RawType::F32: return widen<float>(src, m, out);
-    case RawType::F64: return widen<double>(src, m, out);
+    case RawType::I8: return widen<std::int8_t>(false, src, m, out);
+    case RawType::U8: return widen<std::uint8_t>(false, src, m, out);
+    case RawType::I16: return widen<std::int16_t>(swap, src, m, out);
+    case RawType::U16: return widen<std::uint16_t>(swap, src, m, out);
+    case RawType::I32: return widen<std::int32_t>(swap, src, m, out);
+    case RawType::U32: return widen<std::uint32_t>(swap, src, m, out);
+    case RawType::I64: return widen<std::int64_t>(swap, src, m, out);
+    case RawType::U64: return widen<std::uint64_t>(swap, src, m, out);
+    case RawType::F32: return widen<float>(swap, src, m, out);
+    case RawType::F64: return widen<double>(swap, src, m, out);
   }
 }
 
@@ -76,8 +98,22 @@ std::size_t rawTypeBytes(RawType t) {
   return 0;
 }
 
+std::string pathOfOpenFile(int fd) {
+  char link[64], target[4096];
+  std::snprintf(link, sizeof link, "/proc/self/fd/%d", fd);
+  const ssize_t n = ::readlink(link, target, sizeof target);
+  if (n <= 0 || std::size_t(n) >= sizeof target || target[0] != '/') return "";
+  const std::string p(target, std::size_t(n));
+  struct stat named {}, open {};
+  // A deleted or renamed file: the name no longer leads to it.
+  if (::stat(p.c_str(), &named) != 0 || ::fstat(fd, &open) != 0 || named.st_dev != open.st_dev ||
+      named.st_ino != open.st_ino)
+    return "";
+  return p;
+}
+
 void readRawSamples(const char* who, const std::string& path, const RawSamples& raw, const ReadOptions& opt,
-                    TensorField& f, int dataFd) {
+                    TensorField& f, int dataFd, const Selector* sel) {
   auto fail = [&](const std::string& what) { return InputError(std::string(who) + ": " + path + ": " + what); };
   const VolumeGeometry& g = raw.geometry;
   const std::uint64_t voxels = std::uint64_t(g.dims[0]) * std::uint64_t(g.dims[1]) * std::uint64_t(g.dims[2]);
@@ -94,13 +130,17 @@ void readRawSamples(const char* who, const std::string& path, const RawSamples& 
     throw fail("data is truncated: the header describes " + std::to_string(bytes) + " bytes, the data ends after " +
                std::to_string(size - std::min(size, raw.offset)));
 
-  const GridPlacement placed = placementOf(g);
-  const Selector sel(opt.selection, path, g.dims, &placed);
-  // The file holds every value (checked above), so the kept samples are
-  // bounded by it; the budget is checked again all the same.
-  promiseData(who, path, opt, bytes, sel.keptBound(voxels));
-  if (sel.selectsAll()) f.reserve(std::size_t(voxels));
-  VolumeSink sink(f, g, raw.layout, sel, opt.selection.confidenceMin);
+  std::optional<Selector> own;
+  if (!sel) {
+    // The file holds every value (checked above), so the kept samples are
+    // bounded by it; the budget is checked here all the same.
+    const GridPlacement placed = placementOf(g);
+    sel = &own.emplace(opt.selection, path, g.dims, &placed);
+    promiseData(who, path, opt, bytes, sel->keptBound(voxels));
+  }
+  if (sel->selectsAll()) f.reserve(std::size_t(voxels));
+  VolumeSink sink(f, g, raw.layout, *sel, opt.selection.confidenceMin);
+  const bool scaled = !(raw.intercept == 0 && raw.slope == 1);
   const std::size_t record = count * tsize;
   const std::size_t chunk = std::max<std::size_t>(1, kChunkBytes / record) * record;
   std::vector<char> buf(std::size_t(std::min<std::uint64_t>(chunk, bytes)));
@@ -117,9 +157,9 @@ void readRawSamples(const char* who, const std::string& path, const RawSamples& 
       got += std::size_t(r);
     }
     const std::size_t m = want / tsize;
-    if (raw.swap)
-      for (std::size_t i = 0; i < m; ++i) std::reverse(buf.data() + i * tsize, buf.data() + (i + 1) * tsize);
-    rawToDoubles(raw.type, buf.data(), m, vals.data());
+    rawToDoubles(raw.type, raw.swap, buf.data(), m, vals.data());
+    if (scaled)
+      for (std::size_t i = 0; i < m; ++i) vals[i] = raw.intercept + raw.slope * vals[i];
     sink.pushVoxels(vals.data(), m);
     done += want;
   }
@@ -148,6 +188,8 @@ void sendRaw(WireOut& w, const std::optional<RawSamples>& raw) {
   w.pod(l.confidence);
   w.pod(std::uint8_t(l.full));
   w.pod(l.sym);
+  w.pod(raw->intercept);
+  w.pod(raw->slope);
 }
 
 std::optional<RawSamples> receiveRaw(WireIn& r) {
@@ -172,6 +214,8 @@ std::optional<RawSamples> receiveRaw(WireIn& r) {
   l.confidence = r.pod<int>();
   l.full = flag();
   l.sym = r.pod<std::array<int, 6>>();
+  raw.intercept = r.pod<double>();
+  raw.slope = r.pod<double>();
 
   bool ok = !raw.dataPath.empty() && raw.dataPath.front() == '/' &&
             raw.dataPath.find('\0') == std::string::npos && type <= std::uint8_t(RawType::F64);
@@ -182,6 +226,7 @@ std::optional<RawSamples> receiveRaw(WireIn& r) {
     voxels *= std::uint64_t(std::max(d, 1));
     ok = ok && voxels <= (std::uint64_t(1) << 40);
   }
+  ok = ok && std::isfinite(raw.intercept) && std::isfinite(raw.slope);
   ok = ok && l.count >= 1 && l.count <= 16 && l.confidence >= -1 && l.confidence < l.count && (!l.full || l.count >= 9);
   for (int s : l.sym) ok = ok && s >= 0 && s < l.count;
   if (!ok) throw std::runtime_error("the reader's result is malformed");

@@ -21,8 +21,9 @@ class WireIn;
 
 enum class RawType : std::uint8_t { I8, U8, I16, U16, I32, U32, I64, U64, F32, F64 };
 std::size_t rawTypeBytes(RawType t);
-// `m` native-order values of type `type` at `src`, as doubles.
-void rawToDoubles(RawType type, const char* src, std::size_t m, double* out);
+// `m` values of type `type` at `src`, in the other byte order if `swap`, as
+// doubles.
+void rawToDoubles(RawType type, bool swap, const char* src, std::size_t m, double* out);
 
 struct RawSamples {
   std::string dataPath;      // absolute: the header's own file, or its detached data file
@@ -31,6 +32,8 @@ struct RawSamples {
   bool swap = false;         // stored in the other byte order
   VolumeGeometry geometry;
   ComponentLayout layout;
+  // value = intercept + slope * stored (MRtrix's "scaling"), where not 0, 1.
+  double intercept = 0, slope = 1;
 };
 
 // The voxels of `raw` (layout.count values each, i fastest) through a
@@ -39,9 +42,16 @@ struct RawSamples {
 // InputError("who: path: ..."): a data file that is not a regular file or
 // that ends before the data. opt.progress hears ("loading", bytes read,
 // bytes, "bytes"). `dataFd`: the data file already open (the reader's own,
-// left open), or -1 to open raw.dataPath.
+// left open), or -1 to open raw.dataPath. `sel`: the reader's selector, its
+// promise made (promiseData); null: one is made from opt and the promise
+// checked against opt's budget, as the guard's parent does.
 void readRawSamples(const char* who, const std::string& path, const RawSamples& raw, const ReadOptions& opt,
-                    TensorField& f, int dataFd = -1);
+                    TensorField& f, int dataFd = -1, const Selector* sel = nullptr);
+
+// The absolute path of an open file, as the kernel names it, for the guard's
+// parent to open; "" where the name no longer leads to that file (deleted,
+// renamed) or there is none: then the child reads the data itself.
+std::string pathOfOpenFile(int fd);
 
 // On the guard's wire, after the field. receiveRaw checks what the child
 // sent before anything is sized from it: std::runtime_error("the reader's

@@ -84,7 +84,7 @@ struct TensorField {
   bool admitSample(const double p[3], const double s6[6], float v[9]) {
     constexpr double kMax = FLT_MAX;
     const double norm2 = s6[0] * s6[0] + s6[3] * s6[3] + s6[5] * s6[5] + 2 * (s6[1] * s6[1] + s6[2] * s6[2] + s6[4] * s6[4]);
-    const bool fits = (norm2 <= kMax * kMax) & (std::abs(p[0]) <= kMax) & (std::abs(p[1]) <= kMax) & (std::abs(p[2]) <= kMax);
+    const bool fits = norm2 <= kMax * kMax && std::abs(p[0]) <= kMax && std::abs(p[1]) <= kMax && std::abs(p[2]) <= kMax;
     if (!fits) [[unlikely]] {
       bool finite = true;
       for (int k = 0; k < 3; ++k) finite &= std::isfinite(p[k]);

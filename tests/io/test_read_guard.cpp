@@ -17,6 +17,7 @@
 #include "data-synthetic/generators.h"
 #include "io/guard_wire.h"
 #include "io/io_test_util.h"
+#include "io/mif_fixture.h"
 #include "io/raw_samples.h"
 #include "io/readers.h"
 #include "io/writers.h"
@@ -282,4 +283,32 @@ TEST(ReadGuard, TheParentRefusesADataFileThatIsNotWhatTheHeaderSaid) {
     EXPECT_EQ(std::string(e.what()), "readNrrd: h.nhdr: the data file is not a regular file");
   }
   EXPECT_EQ(f.size(), 0u);
+}
+
+// MRtrix images stored voxel by voxel take the same path: scaling, byte
+// order and a detached .mih data file arrive as the in-process read has them.
+TEST(ReadGuard, MrtrixRawDataReadByTheParentIsTheInProcessField) {
+  const fs::path d = test::scratchDir("read_guard_mif");
+  for (const char* type : {"Int16BE", "Float64LE", "UInt8"}) {
+    test::MifFixture fx;
+    fx.datatype = type;
+    fx.scaling = "0.5,0.25";
+    fx.fillDistinct(std::string(type) == "Int16BE");
+    const fs::path mif = d / (std::string(type) + ".mif"), mih = d / (std::string(type) + ".mih");
+    test::writeMif(mif, fx);
+    test::writeMih(mih, fx, std::string(type) + ".dat", 100);
+    for (const fs::path& p : {mif, mih}) {
+      std::optional<io::RawSamples> raw;
+      io::ReadOptions o;
+      o.deferRaw = &raw;
+      io::readTensorFieldInProcess(p.string(), o);
+      ASSERT_TRUE(raw) << p;  // the parent reads it
+      EXPECT_EQ(raw->slope, 0.25) << p;
+      const io::TensorField guarded = io::readTensorField(p.string(), {});
+      ASSERT_EQ(guarded.size(), fx.voxels()) << p;
+      // xx of voxel 1, stored as mrtrix[1][0]: 0.5 + 0.25 * stored.
+      EXPECT_FLOAT_EQ(guarded.tensors[6], float(0.5 + 0.25 * fx.mrtrix[1][0])) << p;
+      expectSame(guarded, io::readTensorFieldInProcess(p.string(), {}), p.string());
+    }
+  }
 }
