@@ -10,7 +10,10 @@
 
 layout(local_size_x = 64) in;
 
-struct DrawCommand {  // DrawElementsIndirectCommand
+// DrawElementsIndirectCommand for quads; for point sprites the same 20 bytes
+// hold a DrawArraysIndirectCommand (count, instanceCount, first, baseInstance)
+// and a pad.
+struct DrawCommand {
   uint count;
   uint instanceCount;
   uint firstIndex;
@@ -23,6 +26,7 @@ layout(std430, binding = 6) buffer Visible { uint visibleGlyphs; };
 uniform vec4 uFrustumWC[8];  // six frustum planes, then two slab planes
 uniform int uCompacted;
 uniform int uRangeCount;
+uniform int uPointSprites;
 
 void main() {
   uint k = linearWorkGroup() * 64u + gl_LocalInvocationID.x;
@@ -42,6 +46,8 @@ void main() {
     outside = outside || dot(pl.xyz, centre) + dot(abs(pl.xyz), halfWC) + pl.w < 0.0;
   }
   uint n = outside ? 0u : uCompacted != 0 ? keptCount[k] : r.firstCount.y;
-  commands[k] = DrawCommand(6u * n, n > 0u ? 1u : 0u, 0u, int(4u * r.firstCount.x), 0u);
+  uint drawn = n > 0u ? 1u : 0u;
+  commands[k] = uPointSprites != 0 ? DrawCommand(n, drawn, r.firstCount.x, 0, 0u)
+                                   : DrawCommand(6u * n, drawn, 0u, int(4u * r.firstCount.x), 0u);
   if (n > 0u) atomicAdd(visibleGlyphs, n);
 }

@@ -41,6 +41,12 @@ void main() {
   vec3 o = fin.gcFromVC * (originVC + tc * dirVC - fin.centreVC);
   vec3 d = fin.gcFromVC * dirVC;
   float dl = length(d);
+  // The shape lies within the sphere of radius superquadricReach in GC: a
+  // ray that passes it by (with room for the march's tolerance) cannot hit,
+  // and most of a thin glyph's rectangle is such rays.
+  vec3 q = o - dot(o, d) / (dl * dl) * d;
+  float reach = superquadricReach(fin.shape) * (1.0 + 1e-3) + 4.0 * uEpsilon;
+  if (dot(q, q) > reach * reach) discard;
   // The box's entry is the nearest this glyph can be on the ray: behind the
   // occluders it cannot win the depth test, so it skips the march.
   if (pixelOccluded(ivec2(gl_FragCoord.xy), tc + unitCubeSpan(o, d / dl).x / dl, 4.0 * uEpsilon / dl)) discard;

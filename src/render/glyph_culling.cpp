@@ -41,7 +41,7 @@ void GlyphCulling::upload(const tensor::GlyphSet& set, GLuint glyphBuffer) {
   centresLo_ = set.boundsMinWC;
   centresHi_ = set.boundsMaxWC;
   maxAbsEigenvalue_ = set.maxAbsEigenvalue;
-  compacted_ = indirect_ = false;
+  compacted_ = indirect_ = points_ = false;
   passes_ = {};
   const std::size_t n = table_.ranges.size();
   if (n == 0) return;
@@ -62,9 +62,10 @@ void GlyphCulling::dispatch(const gl::Program& prog, std::size_t workgroups) con
 }
 
 void GlyphCulling::prepare(const Camera& cam, double scale, const tensor::SizeMapping& sizing, double faMin,
-                           const Slab& slab, bool frustum) {
+                           const Slab& slab, bool frustum, bool points) {
   const std::size_t n = table_.ranges.size();
   compacted_ = indirect_ = false;
+  points_ = points;
   if (n == 0) return;
   // Same float comparison as the shaders: a threshold at or below every
   // glyph's FA hides nothing and costs nothing.
@@ -124,6 +125,7 @@ void GlyphCulling::prepare(const Camera& cam, double scale, const tensor::SizeMa
   cull_.set("uMaxRadiusWC", float(sizing.maxRadiusWC));
   cull_.set("uCompacted", compacted_ ? 1 : 0);
   cull_.set("uRangeCount", int(n));
+  cull_.set("uPointSprites", points_ ? 1 : 0);
   dispatch(cull_, (n + 63) / 64);
   gl_.MemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   ++passes_.commandPasses;
@@ -133,12 +135,12 @@ void GlyphCulling::prepare(const Camera& cam, double scale, const tensor::SizeMa
 void GlyphCulling::draw(const QuadSprites& sprites, int g0, int g1) const {
   if (g0 >= g1 || table_.ranges.empty()) return;
   if (!indirect_) {
-    sprites.draw(runs_[std::size_t(4 * g0 + g1)]);
+    sprites.draw(runs_[std::size_t(4 * g0 + g1)], points_);
     return;
   }
   if (compacted_) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeptIndexBinding, keptIndex_);
   const GLuint b = table_.groupStart[std::size_t(g0)], e = table_.groupStart[std::size_t(g1)];
-  sprites.drawIndirect(commands_, GLsizei(b), GLsizei(e - b));
+  sprites.drawIndirect(commands_, GLsizei(b), GLsizei(e - b), points_);
 }
 
 std::size_t GlyphCulling::gpuBytes() const {

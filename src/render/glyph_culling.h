@@ -46,15 +46,17 @@ class GlyphCulling {
   // Runs what this frame needs; `frustum` false keeps every range (to
   // measure the culling). A slab (axis >= 0) culls ranges wholly outside it.
   // Glyphs are sized by `scale` and `sizing` (tensor/glyph_scale.h).
+  // `points`: this frame's sprites are points (render/sprite_primitive.h).
   void prepare(const Camera& cam, double scale, const tensor::SizeMapping& sizing, double faMin, const Slab& slab,
-               bool frustum);
+               bool frustum, bool points = false);
   // Draws the glyphs of groups [g0, g1) (tensor::GlyphGroup) with the bound
   // program, whose uCompacted must be compacted().
   void draw(const QuadSprites& sprites, int g0, int g1) const;
   // A frame drawn by other means (the tessellated baseline) draws every glyph.
-  void bypass() { compacted_ = indirect_ = false; }
+  void bypass() { compacted_ = indirect_ = points_ = false; }
 
   bool compacted() const { return compacted_; }
+  bool pointSprites() const { return points_; }
   bool indirect() const { return indirect_; }
   // Glyphs the last prepared frame sent to the vertex stage: those passing
   // the threshold in ranges that passed the frustum test. Waits for the GPU
@@ -86,7 +88,7 @@ class GlyphCulling {
   GLuint glyphs_ = 0, ranges_ = 0, keptCount_ = 0, keptIndex_ = 0, commands_ = 0, visible_ = 0;
   gl::AsyncCounter drawnCounter_;
   float compactedFor_ = 0;
-  bool compacted_ = false, indirect_ = false;
+  bool compacted_ = false, indirect_ = false, points_ = false;
   Passes passes_;
 };
 

@@ -27,7 +27,22 @@ QuadSprites::~QuadSprites() {
   gl_.DeleteBuffers(1, &indices_);
 }
 
-void QuadSprites::draw(std::span<const GlyphRun> runs) const {
+void QuadSprites::draw(std::span<const GlyphRun> runs, bool points) const {
+  if (points) {
+    std::vector<GLint> firsts;
+    std::vector<GLsizei> counts;
+    for (const GlyphRun& r : runs) {
+      if (std::int64_t(r.first) + r.count > std::int64_t(INT32_MAX))
+        throw std::runtime_error("QuadSprites::draw: glyph range beyond 2^31");
+      firsts.push_back(GLint(r.first));
+      counts.push_back(GLsizei(r.count));
+    }
+    if (counts.empty()) return;
+    gl_.BindVertexArray(vao_);
+    gl_.Enable(GL_PROGRAM_POINT_SIZE);
+    gl_.MultiDrawArrays(GL_POINTS, firsts.data(), counts.data(), GLsizei(counts.size()));
+    return;
+  }
   std::vector<GLsizei> counts;
   std::vector<const void*> offsets;
   std::vector<GLint> baseVertices;
@@ -48,12 +63,17 @@ void QuadSprites::draw(std::span<const GlyphRun> runs) const {
                                   GLsizei(counts.size()), baseVertices.data());
 }
 
-void QuadSprites::drawIndirect(GLuint commands, GLsizei first, GLsizei count) const {
+void QuadSprites::drawIndirect(GLuint commands, GLsizei first, GLsizei count, bool points) const {
   if (count <= 0) return;
   gl_.BindVertexArray(vao_);
   gl_.BindBuffer(GL_DRAW_INDIRECT_BUFFER, commands);
-  gl_.MultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_SHORT,
-                                reinterpret_cast<const void*>(std::size_t(first) * std::size_t(kIndirectCommandBytes)), count, 0);
+  const auto* offset = reinterpret_cast<const void*>(std::size_t(first) * std::size_t(kIndirectCommandBytes));
+  if (points) {
+    gl_.Enable(GL_PROGRAM_POINT_SIZE);
+    gl_.MultiDrawArraysIndirect(GL_POINTS, offset, count, GLsizei(kIndirectCommandBytes));
+  } else {
+    gl_.MultiDrawElementsIndirect(GL_TRIANGLES, GL_UNSIGNED_SHORT, offset, count, 0);
+  }
   gl_.BindBuffer(GL_DRAW_INDIRECT_BUFFER, 0);
 }
 

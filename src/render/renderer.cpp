@@ -8,6 +8,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render/camera_uniforms.h"
+#include "render/sprite_primitive.h"
 
 namespace tg::render {
 
@@ -27,6 +28,9 @@ GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib, Ov
   gl.CreateVertexArrays(1, &vao_);
   gl.CreateBuffers(1, &stats_);
   gl.NamedBufferStorage(stats_, 3 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  GLfloat pointRange[2] = {0, 0};
+  gl.GetFloatv(GL_POINT_SIZE_RANGE, pointRange);
+  maxPointPx_ = double(pointRange[1]);
 }
 
 GlyphRenderer::~GlyphRenderer() {
@@ -217,7 +221,7 @@ Camera GlyphRenderer::renderShadowMap(const Camera& cam, const FrameParams& p, i
   const Camera light = lightCamera(cam, keyWC, lo, hi, p.shadow);
   const bool tessellated = p.tessellation > 0;
   if (tessellated) culling_.bypass();
-  else culling_.prepare(light, p.scale, p.sizing, p.faMin, p.slab, p.frustumCulling);
+  else culling_.prepare(light, p.scale, p.sizing, p.faMin, p.slab, p.frustumCulling, pointSprites(light, p));
   beginGlyphs();
   // The view's occlusion pre-pass, from the light: the march is most of the map's cost.
   const bool occluders = !tessellated && split < 3 && p.occlusionPrepass && hasOccluders_;
@@ -235,6 +239,12 @@ Camera GlyphRenderer::renderShadowMap(const Camera& cam, const FrameParams& p, i
   return light;
 }
 
+bool GlyphRenderer::pointSprites(const Camera& cam, const FrameParams& p) const {
+  return p.pointSprites &&
+         pointSpritesFit(cam, centresLoWC_, centresHiWC_,
+                         tensor::kGlyphReach * tensor::glyphRadiusWC(p.scale, p.sizing, maxAbsEigenvalue_), maxPointPx_);
+}
+
 void GlyphRenderer::beginGlyphs() const {
   gl_.Enable(GL_DEPTH_TEST);
   gl_.DepthFunc(GL_GREATER);  // reversed Z
@@ -245,6 +255,7 @@ void GlyphRenderer::beginGlyphs() const {
 void GlyphRenderer::useGlyphProgram(const gl::Program& prog, const Camera& cam) const {
   setCamera(prog, cam);
   prog.set("uCompacted", culling_.compacted() ? 1 : 0);
+  prog.set("uPointSprites", culling_.pointSprites() ? 1 : 0);
   gl_.UseProgram(prog.id());
 }
 
@@ -287,7 +298,7 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   if (!p.shadow.enabled) shadow_.reset();
   else if (count_ > 0 || !context_.empty()) light = renderShadowMap(cam, p, split);
   if (tessellated) culling_.bypass();
-  else culling_.prepare(cam, p.scale, p.sizing, p.faMin, p.slab, p.frustumCulling);
+  else culling_.prepare(cam, p.scale, p.sizing, p.faMin, p.slab, p.frustumCulling, pointSprites(cam, p));
   if (count_ > 0) beginGlyphs();
   const bool marching = count_ > 0 && !tessellated && split < 3;
   // Only mixed-sign glyphs (a stress field) give no occluders: no pre-pass.

@@ -72,6 +72,9 @@ struct FrameParams {
   // Superquadrics: an exact ellipsoid depth pass first, so that fragments of
   // glyphs hidden behind it skip the march (off only to measure what it saves).
   bool occlusionPrepass = true;
+  // One point sprite per glyph where every glyph's rectangle fits a point,
+  // else two triangles (render/sprite_primitive.h; off only to measure).
+  bool pointSprites = true;
   // > 0: draw the tessellated baseline at this resolution instead of ray
   // casting (superquadrics at `gamma`; render/tessellated.h).
   int tessellation = 0;
@@ -175,6 +178,8 @@ class GlyphRenderer {
   void setCamera(const gl::Program& prog, const Camera& cam) const;
   // Depth test and the records bound: what every glyph pass needs.
   void beginGlyphs() const;
+  // Whether this frame draws point sprites (render/sprite_primitive.h).
+  bool pointSprites(const Camera& cam, const FrameParams& p) const;
   void useGlyphProgram(const gl::Program& prog, const Camera& cam) const;
   // Every glyph `cam` sees, into the bound framebuffer; groups from `split`
   // on by the marching program (superquadrics), the counting one when `stats`.
@@ -211,6 +216,7 @@ class GlyphRenderer {
   GLsizei count_ = 0;
   std::uint64_t uploads_ = 0;
   bool hasOccluders_ = false;  // spheres or definite glyphs uploaded
+  double maxPointPx_ = 0;      // GL_POINT_SIZE_RANGE's upper end
   std::uint64_t occlusionPrepasses_ = 0, shadowMapPasses_ = 0;
   glm::dvec3 centresLoWC_{0.0}, centresHiWC_{0.0};  // of the uploaded glyphs
   double maxAbsEigenvalue_ = 0;

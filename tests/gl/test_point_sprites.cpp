@@ -1,0 +1,121 @@
+// Tier 3: point sprites (render/sprite_primitive.h) change what a frame
+// costs, never what it shows. Exact equality is the bound: the same shaders
+// see the same pixels, since every pixel a point's square adds outside the
+// rectangle misses the glyph.
+#include "render_fixture.h"
+
+#include <random>
+
+using namespace tg;
+using test::GlFixture;
+
+namespace {
+
+// A 12^3 grid of every dispatch group: each 5th tensor a sphere, each 3rd
+// definite, the rest with mixed signs.
+io::TensorField mixedGrid() {
+  io::TensorField f;
+  std::mt19937_64 rng(23);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (std::uint32_t i = 0; i < 12 * 12 * 12; ++i) {
+    const double shift = i % 3 == 0 ? 2.5 : 0.0, iso = u(rng);
+    double t[9] = {shift + u(rng), u(rng), u(rng), 0, shift + u(rng), u(rng), 0, 0, shift + u(rng)};
+    if (i % 5 == 0) t[0] = t[4] = t[8] = iso, t[1] = t[2] = t[5] = 0;
+    t[3] = t[1], t[6] = t[2], t[7] = t[5];
+    const double p[3] = {double(i % 12), double(i / 12 % 12), double(i / 144)};
+    f.addFull(i, p, t);
+  }
+  return f;
+}
+
+struct Frame {
+  render::FrameImage img;
+  bool points, indirect;
+};
+
+class PointSprites : public GlFixture {
+ protected:
+  Frame frame(const tensor::GlyphSet& set, const render::Camera& cam, const render::FrameParams& p) {
+    ctx_->makeCurrent();
+    render::GlyphRenderer r(ctx_->api(), *lib_);
+    render::GBuffer target(ctx_->api(), cam.width, cam.height);
+    r.upload(set);
+    r.render(cam, p, target);
+    return {r.readback(cam, target), r.culling().pointSprites(), r.culling().indirect()};
+  }
+};
+
+std::size_t differing(const render::FrameImage& a, const render::FrameImage& b) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < a.id.size(); ++i)
+    n += a.id[i] != b.id[i] || a.depth[i] != b.depth[i] || a.rgba[4 * i] != b.rgba[4 * i] ||
+         a.rgba[4 * i + 1] != b.rgba[4 * i + 1] || a.rgba[4 * i + 2] != b.rgba[4 * i + 2];
+  return n;
+}
+
+std::size_t covered(const render::FrameImage& a) {
+  std::size_t n = 0;
+  for (auto id : a.id) n += id != ref::kNoGlyph;
+  return n;
+}
+
+}  // namespace
+
+// Every kind, both projections, the direct draw and the indirect one (an FA
+// threshold compacts, a close camera culls ranges): byte-equal to quads.
+TEST_F(PointSprites, FramesEqualTheQuadFrames) {
+  const auto set = test::glyphsOf(mixedGrid());
+  ASSERT_GT(set.sphereCount, 0u);
+  ASSERT_GT(set.definiteCount, 0u);
+  const double scale = 0.45 / set.maxAbsEigenvalue;
+  struct Case {
+    render::GlyphKind kind;
+    double gamma, faMin, dist;
+    render::Projection proj;
+  };
+  const Case cases[] = {{render::GlyphKind::Ellipsoid, 3.0, 0.0, 40.0, render::Projection::Perspective},
+                        {render::GlyphKind::Superquadric, 3.0, 0.0, 40.0, render::Projection::Perspective},
+                        {render::GlyphKind::Superquadric, 0.0, 0.3, 40.0, render::Projection::Orthographic},
+                        {render::GlyphKind::Superquadric, 3.0, 0.0, 20.0, render::Projection::Perspective},
+                        {render::GlyphKind::Superquadric, 3.0, 0.0, 80.0, render::Projection::Perspective},
+                        {render::GlyphKind::Cylinder, 3.0, 0.3, 40.0, render::Projection::Perspective},
+                        {render::GlyphKind::Box, 3.0, 0.0, 40.0, render::Projection::Orthographic}};
+  int direct = 0, indirect = 0;
+  for (const Case& c : cases) {
+    SCOPED_TRACE(int(c.kind) * 100 + int(c.gamma) * 10 + int(c.dist));
+    const auto cam = test::cameraFor(set, scale, test::oblique(set, c.dist, c.proj), 200, 150);
+    render::FrameParams p;
+    p.scale = scale;
+    p.glyph = c.kind;
+    p.gamma = c.gamma;
+    p.faMin = c.faMin;
+    const Frame points = frame(set, cam, p);
+    p.pointSprites = false;
+    const Frame quads = frame(set, cam, p);
+    EXPECT_TRUE(points.points);
+    EXPECT_FALSE(quads.points);
+    EXPECT_EQ(points.indirect, quads.indirect);
+    (points.indirect ? indirect : direct) += 1;
+    EXPECT_GT(covered(quads.img), 1000u);
+    EXPECT_EQ(differing(points.img, quads.img), 0u);
+  }
+  EXPECT_GT(direct, 0);
+  EXPECT_GT(indirect, 0);
+}
+
+// A glyph that could outgrow the point size cap is drawn as quads: the eye
+// among the glyphs.
+TEST_F(PointSprites, TheEyeAmongTheGlyphsDrawsQuads) {
+  const auto set = test::glyphsOf(mixedGrid());
+  const double scale = 0.45 / set.maxAbsEigenvalue;
+  render::CameraDesc d = test::oblique(set, 40.0, render::Projection::Perspective);
+  d.eyeWC = 0.5 * (set.boundsMinWC + set.boundsMaxWC);
+  d.lookAtWC = d.eyeWC + glm::dvec3(1.0, 0.2, 0.1);
+  const auto cam = test::cameraFor(set, scale, d, 200, 150);
+  render::FrameParams p;
+  p.scale = scale;
+  p.glyph = render::GlyphKind::Superquadric;
+  const Frame f = frame(set, cam, p);
+  EXPECT_FALSE(f.points);
+  EXPECT_GT(covered(f.img), 1000u);
+}
