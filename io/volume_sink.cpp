@@ -15,9 +15,7 @@ VolumeSink::VolumeSink(TensorField& f, const VolumeGeometry& g, const ComponentL
                        double confidenceMin)
     : f_(f), g_(g), layout_(layout), sel_(sel), confidenceMin_(confidenceMin) {}
 
-void VolumeSink::push(const double* v) {
-  const std::uint64_t index = next_++;
-  double p[3];
+void VolumeSink::nextPosition(double p[3]) {
   positionWC(g_, ijk_, p);
   if (++ijk_[0] == g_.dims[0]) {
     ijk_[0] = 0;
@@ -26,6 +24,12 @@ void VolumeSink::push(const double* v) {
       ++ijk_[2];
     }
   }
+}
+
+void VolumeSink::push(const double* v) {
+  const std::uint64_t index = next_++;
+  double p[3];
+  nextPosition(p);
   if (sel_.admit(index, p, f_)) emit(index, p, v);
 }
 
@@ -44,14 +48,7 @@ void VolumeSink::pushVoxels(const double* v, std::size_t values) {
   std::size_t kept = 0;
   for (std::size_t i = 0; i < m; ++i, v += step) {
     double p[3], s[6];
-    positionWC(g_, ijk_, p);
-    if (++ijk_[0] == g_.dims[0]) {
-      ijk_[0] = 0;
-      if (++ijk_[1] == g_.dims[1]) {
-        ijk_[1] = 0;
-        ++ijk_[2];
-      }
-    }
+    nextPosition(p);
     for (int k = 0; k < 6; ++k) s[k] = v[layout_.sym[std::size_t(k)]];
     if (g_.tensorToWC) congruence(g_.tensorToWC->data(), s, s);
     ++f_.totalPoints;

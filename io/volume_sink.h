@@ -53,6 +53,8 @@ class VolumeSink {
 
  private:
   void positionOf(std::uint64_t index, double pWC[3]) const;
+  // The position of the voxel push() takes next, stepping to the one after.
+  void nextPosition(double pWC[3]);
   void emit(std::uint64_t index, const double pWC[3], const double* v);
   TensorField& f_;
   VolumeGeometry g_;
