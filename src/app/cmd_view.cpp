@@ -16,6 +16,7 @@
 #include <string>
 
 #include "app/option_table.h"
+#include "app/render_options.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/scene_flags.h"
@@ -43,11 +44,14 @@
 namespace tg::app {
 namespace {
 
-struct ViewOptions : SceneFlags {
-  std::string input, script, glyph = "ellipsoid", color = "dec", shotPrefix = "tensorglyph-view-";
-  int width = 1280, height = 800;
-  double gamma = 3.0;
-  std::optional<double> faMin;
+// `render`'s options where a window has use for them (render_options.h), and
+// the viewer's own.
+struct ViewOptions : RenderOptions {
+  std::string script, shotPrefix = "tensorglyph-view-";
+  ViewOptions() {
+    width = 1280;
+    height = 800;
+  }
 };
 
 ViewOptions parse(int argc, const char** argv) {
@@ -56,36 +60,19 @@ ViewOptions parse(int argc, const char** argv) {
            "  mouse: left drag orbits, right or middle drag pans, wheel zooms\n"
            "  keys: R resets the view, S saves a screenshot, Q or Esc quits");
   using Args = OptionArgs;
-  addInputArg(ap, o.input);
-  ap.arg("--size W H").help("window size (default 1280 800)").action([&](Args a) {
-    o.width = parseIntIn("--size", a[1], 64, kMaxFrameSide);
-    o.height = parseIntIn("--size", a[2], 64, kMaxFrameSide);
-  });
-  ap.arg("--glyph KIND").help("ellipsoid (default; the built-in scene: superquadric), superquadric, "
-                                  "or Teem's cylinder or box").action([&](Args a) {
-    o.glyph = a[1];
-    o.look.glyphGiven = true;
-  });
-  ap.arg("--gamma G").help("superquadric sharpness, >= 0 (default 3)").action([&](Args a) {
-    o.gamma = parseDouble("--gamma", a[1]);
-  });
-  ap.arg("--fa-min F").help("hide glyphs with FA below F").action([&](Args a) { o.faMin = parseDoubleIn("--fa-min", a[1], 0.0, 1.0); });
-  ap.arg("--color MODE").help(std::string(kColorModeNames)).action([&](Args a) { o.color = a[1]; });
+  addViewOptions(ap, o);
   ap.arg("--script FILE").help("run the commands in FILE (see README, \"Viewer\"), then exit")
       .action([&](Args a) { o.script = a[1]; });
   ap.arg("--screenshot-prefix P").help("key S saves P0000.png, P0001.png, ... (default tensorglyph-view-)")
       .action([&](Args a) { o.shotPrefix = a[1]; });
-  o.addSceneFlags(ap);
   parseCommandLine(ap, argc, argv);
   return o;
 }
 
 void validate(const ViewOptions& o) {
-  checkFrameSize("--size", o.width, o.height);
-  if (!glyphKindNamed(o.glyph)) throw UsageError("--glyph: unknown kind \"" + o.glyph + "\"; choose " + kGlyphKindNames);
-  if (!colorModeNamed(o.color)) throw UsageError("--color: unknown mode \"" + o.color + "\"; choose " + kColorModeNames);
-  if (!(o.gamma >= 0.0 && o.gamma <= 1e4)) throw UsageError("--gamma must be within 0..10000");
-  o.validateSceneFlags(o.input);
+  validateRenderOptions(o, false);
+  // Smaller windows leave no room for the panel.
+  if (o.width < 64 || o.height < 64) throw UsageError("--size: a window is at least 64 x 64");
 }
 
 // The median of a sample, 0 for none.
@@ -139,17 +126,10 @@ int cmdView(int argc, const char** argv) {
 
   ViewState v{render::FrameParams{}, OrbitCamera(render::CameraDesc{}), 1.0, 1.0, o.field.scaleParams(),
               tensor::sampleMagnitudes(glyphs, scene.field.sampleSpacing)};
+  const tensor::ResolvedScale sized = tensor::resolveScale(v.sizing, v.magnitudes);
+  v.params = frameParams(o, scene, sized);
   resize(v);
   render::FrameParams& p = v.params;
-  p.faMin = o.faMin.value_or(scene.preferredFaMin.value_or(0.0));
-  p.color = *colorModeNamed(o.color);
-  p.glyph = *glyphKindNamed(o.glyph);
-  p.gamma = o.gamma;
-  p.legend = o.legend.params;
-  p.shadow = o.shadow.params;
-  p.ao = o.effects.ao;
-  p.outline = o.effects.outline;
-  if (scene.preferredLook) o.look.apply(*scene.preferredLook, p, o.height);
   // The planes and the script's plane steps are checked before the window opens.
   std::optional<std::pair<glm::dvec3, glm::dvec3>> underlayBox;
   if (underlay) {
@@ -161,13 +141,9 @@ int cmdView(int argc, const char** argv) {
     underlayBox = underlay->boundsWC();
   }
   checkPlaneSteps(script, v.planes, o.script);
-  {
-    // As render frames it: the sample positions (tensor::framingBox).
-    const double typical = tensor::resolveScale(v.sizing, v.magnitudes).typicalRadiusWC;
-    const tensor::FramingBox frame = tensor::framingBox(glyphs, !scene.field.grid, typical);
-    v.camera = OrbitCamera(sceneCamera(scene, frame.lo, frame.hi, render::Projection::Perspective, 30.0,
-                                       double(o.width) / o.height));
-  }
+  // As render frames it: the sample positions (tensor::framingBox), or the
+  // camera the flags give.
+  v.camera = OrbitCamera(chooseCamera(o, scene, tensor::framingBox(glyphs, !scene.field.grid, sized.typicalRadiusWC)));
 
   auto ctx = gl::createGlfwContext({o.width, o.height, true, "tensorglyph"});
   GLFWwindow* window = gl::glfwWindowOf(*ctx);

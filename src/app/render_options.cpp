@@ -15,11 +15,27 @@ namespace tg::app {
 
 void addRenderOptions(OptionTable& ap, RenderOptions& o) {
   using Args = OptionArgs;
-  auto rest = [](Args a) { return std::span<const char* const>(a.data() + 1, a.size() - 1); };
-  addInputArg(ap, o.input);
   ap.arg("-o OUT").commandLineOnly().help("output image: .png (8-bit RGBA), .exr (float RGBA Z N id), other OIIO formats")
       .action([&](Args a) { o.output = a[1]; });
-  ap.arg("--size W H").reloads().help("image size in pixels (default 1024 768)").action([&](Args a) {
+  addViewOptions(ap, o);
+  ap.arg("--tessellate R").help("draw the tessellated baseline instead: an R x R superquadric mesh per glyph, "
+                                 "as VTK's vtkTensorGlyph (4..64; needs --glyph superquadric)")
+      .action([&](Args a) { o.tessellate = parseIntIn("--tessellate", a[1], 0, render::TessellatedGlyphs::kMaxResolution); });
+  ap.arg("--backend NAME").reloads().help("osmesa (default), egl, glfw or auto").action([&](Args a) { o.backend = a[1]; });
+  o.pick.addTo(ap);
+  ap.arg("--repeat N").commandLineOnly().help("render N more frames and report the median frame time").action([&](Args a) {
+    o.repeat = parseIntIn("--repeat", a[1], 0, 10000);
+  });
+  ap.arg("--quiet").commandLineOnly().help("no progress line on a terminal's stderr").action([&](Args) { o.quiet = true; });
+  ap.arg("--verbose").commandLineOnly().help("report timings and memory on stderr").action([&](Args) { o.verbose = true; });
+}
+
+void addViewOptions(OptionTable& ap, RenderOptions& o) {
+  using Args = OptionArgs;
+  auto rest = [](Args a) { return std::span<const char* const>(a.data() + 1, a.size() - 1); };
+  addInputArg(ap, o.input);
+  const std::string size = "image size in pixels (default " + std::to_string(o.width) + " " + std::to_string(o.height) + ")";
+  ap.arg("--size W H").reloads().help(size).action([&](Args a) {
     o.width = parseIntIn("--size", a[1], 1, kMaxFrameSide);
     o.height = parseIntIn("--size", a[2], 1, kMaxFrameSide);
   });
@@ -33,9 +49,6 @@ void addRenderOptions(OptionTable& ap, RenderOptions& o) {
   });
   ap.arg("--epsilon E").help("superquadric hit tolerance, relative to glyph size (default 1e-4)")
       .action([&](Args a) { o.epsilon = parseDouble("--epsilon", a[1]); });
-  ap.arg("--tessellate R").help("draw the tessellated baseline instead: an R x R superquadric mesh per glyph, "
-                                 "as VTK's vtkTensorGlyph (4..64; needs --glyph superquadric)")
-      .action([&](Args a) { o.tessellate = parseIntIn("--tessellate", a[1], 0, render::TessellatedGlyphs::kMaxResolution); });
   ap.arg("--stats").help("report Newton iteration statistics on stderr").action([&](Args) { o.stats = true; });
   ap.arg("--gamma G").help("superquadric sharpness (Kindlmann 2004), >= 0").action([&](Args a) {
     o.gamma = parseDouble("--gamma", a[1]);
@@ -56,14 +69,7 @@ void addRenderOptions(OptionTable& ap, RenderOptions& o) {
   ap.arg("--background R G B A").help("background colour, 0..1 (default 0.08 0.08 0.1 1)").action([&](Args a) {
     for (int k = 0; k < 4; ++k) o.background[k] = float(parseDouble("--background", a[1 + k]));
   });
-  ap.arg("--backend NAME").reloads().help("osmesa (default), egl, glfw or auto").action([&](Args a) { o.backend = a[1]; });
   o.addSceneFlags(ap);
-  o.pick.addTo(ap);
-  ap.arg("--repeat N").commandLineOnly().help("render N more frames and report the median frame time").action([&](Args a) {
-    o.repeat = parseIntIn("--repeat", a[1], 0, 10000);
-  });
-  ap.arg("--quiet").commandLineOnly().help("no progress line on a terminal's stderr").action([&](Args) { o.quiet = true; });
-  ap.arg("--verbose").commandLineOnly().help("report timings and memory on stderr").action([&](Args) { o.verbose = true; });
 }
 
 // Every parameter is checked before anything is loaded or created.
@@ -94,6 +100,26 @@ void validateRenderOptions(const RenderOptions& o, bool toFile) {
                                    {"--underlay", o.slices.fromField() ? "" : o.slices.underlay}};
   for (const NamedPath& m : o.mesh.inputs()) inputs.push_back(m);
   if (toFile) refuseOutputsOverInputs({{"-o", o.output}}, inputs);
+}
+
+render::FrameParams frameParams(const RenderOptions& o, const Scene& s, const tensor::ResolvedScale& sized) {
+  render::FrameParams p;
+  p.scale = sized.scale;
+  p.sizing = sized.mapping;
+  p.faMin = o.faMin.value_or(s.preferredFaMin.value_or(0.0));
+  p.color = *colorModeNamed(o.color);
+  p.glyph = *glyphKindNamed(o.glyph);
+  p.gamma = o.gamma;
+  p.march = {o.maxIterations, o.epsilon};
+  p.iterationStats = o.stats;
+  p.tessellation = o.tessellate;
+  p.background = o.background;
+  p.legend = o.legend.params;
+  p.ao = o.effects.ao;
+  p.outline = o.effects.outline;
+  p.shadow = o.shadow.params;
+  if (s.preferredLook) o.look.apply(*s.preferredLook, p, o.height);
+  return p;
 }
 
 // One singular glyph must not shrink the view: hence the samples' box.

@@ -34,6 +34,10 @@ struct RenderOptions : SceneFlags {
 
 // Registers every option of `render` on `table`, each writing into `o`.
 void addRenderOptions(OptionTable& table, RenderOptions& o);
+// The part `view` shares: the input, the size, the glyph and its march, the
+// look, the camera, the field's selection and sizing, and the scene's
+// context items. The defaults the help text gives are o's when called.
+void addViewOptions(OptionTable& table, RenderOptions& o);
 // Every parameter checked before anything is loaded or created (UsageError).
 // `toFile`: -o is required and checked (the command line); the Python module
 // returns images instead.
@@ -41,5 +45,8 @@ void validateRenderOptions(const RenderOptions& o, bool toFile);
 // The camera: the flags', else the scene's preferred view, else one that
 // frames `frame` (the sample positions, not the glyphs' whole box).
 render::CameraDesc chooseCamera(const RenderOptions& o, const Scene& s, const tensor::FramingBox& frame);
+// The frame's parameters from the options, the scene's preferred look and
+// the resolved glyph size: what `render`, `view` and Python draw with.
+render::FrameParams frameParams(const RenderOptions& o, const Scene& s, const tensor::ResolvedScale& sized);
 
 }  // namespace tg::app

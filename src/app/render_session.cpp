@@ -74,22 +74,7 @@ RenderSession::Boxes RenderSession::boxes(const tensor::ResolvedScale& sized) co
 RenderSession::Frame RenderSession::frame(const RenderOptions& o) const {
   Frame f;
   f.sized = tensor::resolveScale(o.field.scaleParams(), magnitudes_);
-  render::FrameParams& params = f.params;
-  params.scale = f.sized.scale;
-  params.sizing = f.sized.mapping;
-  params.faMin = o.faMin.value_or(scene_.preferredFaMin.value_or(0.0));
-  params.color = *colorModeNamed(o.color);
-  params.glyph = *glyphKindNamed(o.glyph);
-  params.gamma = o.gamma;
-  params.march = {o.maxIterations, o.epsilon};
-  params.iterationStats = o.stats;
-  params.tessellation = o.tessellate;
-  params.background = o.background;
-  params.legend = o.legend.params;
-  params.ao = o.effects.ao;
-  params.outline = o.effects.outline;
-  params.shadow = o.shadow.params;
-  if (scene_.preferredLook) o.look.apply(*scene_.preferredLook, params, o.height);
+  const render::FrameParams& params = f.params = frameParams(o, scene_, f.sized);
 
   const Boxes b = boxes(f.sized);
   glm::dvec3 lo = b.glyphsWC.lo, hi = b.glyphsWC.hi;

@@ -100,6 +100,39 @@ TEST(View, ScriptedScreenshotsMatchTheHeadlessRenderer) {
   std::filesystem::remove_all(dir);
 }
 
+// The viewer takes render's camera, background and march flags from the same
+// option table (app/render_options.h): a screenshot before any step is the
+// image render draws with those flags, exactly.
+TEST(View, TakesRendersCameraAndLookFlags) {
+  if (!haveDisplay()) GTEST_SKIP() << "no X display";
+  const auto dir = tg::test::cliDir("view_flags");
+  const std::string shot = (dir / "v.png").string();
+  std::ofstream(dir / "script.txt") << "screenshot " << shot << "\n";
+  const std::string flags = " --size 320 240 --glyph superquadric --gamma 2 --no-shadows --no-ao --no-outlines"
+                            " --no-legend --eye 6 -4 5 --look-at 0.5 0 0 --up 0 0 1 --fov 40"
+                            " --background 0.2 0.3 0.4 1 --iterations 6 --color fa --fa-min 0.1";
+  const auto v = runBinary("view" + flags + " --script " + (dir / "script.txt").string(), dir);
+  ASSERT_EQ(v.code, 0) << v.err;
+  ASSERT_EQ(runBinary("render" + flags + " -o " + (dir / "r.png").string(), dir).code, 0);
+  int w = 0, h = 0;
+  const auto s = readRgba(shot, w, h), r = readRgba(dir / "r.png", w, h);
+  ASSERT_EQ(w, 320);
+  EXPECT_EQ(differing(s, r), 0u);
+  // The flags did act: the background is the one asked for, and the camera
+  // is not the default one.
+  EXPECT_EQ(int(s[0]), 51);
+  EXPECT_EQ(int(s[2]), 102);
+  std::ofstream(dir / "script2.txt") << "screenshot " << (dir / "d.png").string() << "\n";
+  const std::string plain = " --size 320 240 --glyph superquadric --gamma 2 --no-shadows --no-ao --no-outlines"
+                            " --no-legend --background 0.2 0.3 0.4 1 --iterations 6 --color fa --fa-min 0.1";
+  ASSERT_EQ(runBinary("view" + plain + " --script " + (dir / "script2.txt").string(), dir).code, 0);
+  EXPECT_GT(differing(readRgba(dir / "d.png", w, h), s), 1000u);
+  // render's own options have no meaning in a window and are refused.
+  EXPECT_EQ(runBinary("view --repeat 3", dir).code, 2);
+  EXPECT_EQ(runBinary("view --size 32 32", dir).code, 2);
+  std::filesystem::remove_all(dir);
+}
+
 // Slice planes in the viewer take render's flags; `plane N` steps hide and
 // move them. A moved plane is exactly the plane render draws at that index
 // (same offscreen target and driver), and putting everything back restores
