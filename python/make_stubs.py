@@ -5,14 +5,32 @@ import sys
 import tensorglyph
 from tensorglyph import _core
 
-TYPES = {0: "bool", 1: "str | float | int | os.PathLike[str] | Sequence[str | float]"}
+PATH = "str | os.PathLike[str]"
+# Value types by keyword; a one-value option not named here takes a float.
+STR = {"glyph", "color", "array", "slice", "scale_mode", "magnitude", "underlay_colormap", "mesh_mode",
+       "legend_corner", "units", "length_units", "backend"}
+INT = {"iterations", "stride", "ao_samples", "shadow_map_size", "tessellate"}
+# Repeatable on the command line: a list gives one value each.
+REPEATABLE = {"plane": "str", "mesh": PATH, "plane_at": "Sequence[float]"}
+# The module's own arguments (SOURCE below) already take these names.
+OWN = {"layout", "frame"}
+
+
+def value_type(kw, names):
+    if kw in REPEATABLE:
+        return f"{REPEATABLE[kw]} | Sequence[{REPEATABLE[kw]}]"
+    if not names:
+        return "bool"
+    one = "int" if kw in INT or kw == "size" else "str" if kw in STR else PATH if kw in ("mask", "underlay") else "float"
+    return one if len(names) == 1 else f"Sequence[{one}]"
 
 
 def option_params():
     out = []
     for kw, flag, names, text, _ in _core.options():
-        t = TYPES.get(len(names), "Sequence[float | str] | Sequence[Sequence[float | str]]")
-        out.append(f"    {kw}: {t} | None = None,  # {flag} {' '.join(names)}".rstrip())
+        if kw in OWN:
+            continue
+        out.append(f"    {kw}: {value_type(kw, names)} | None = None,  # {flag} {' '.join(names)}".rstrip())
     return "\n".join(out)
 
 

@@ -1,5 +1,7 @@
 """The Python module (issue 18), run by ctest with Debian's python3:
-a DIPY pipeline, the module against the CLI, bad input, uploads, threads."""
+a DIPY pipeline, the module against the CLI, bad input, uploads, threads,
+the type stubs."""
+import ast
 import os
 import subprocess
 import sys
@@ -240,3 +242,28 @@ class Interactive(unittest.TestCase):
 
 if __name__ == "__main__":
     unittest.main()
+
+
+class Stubs(unittest.TestCase):
+    """The type stubs generated from the option table (python/make_stubs.py)."""
+
+    def test_stubs_compile_and_type_every_option(self):
+        stub = os.path.join(os.path.dirname(tg.__file__), "__init__.pyi")
+        with open(stub) as f:
+            text = f.read()
+        # Valid Python: a keyword taken twice (the module's own `layout` and
+        # the table's --layout) was once a SyntaxError for every type checker.
+        compile(text, stub, "exec")
+        tree = ast.parse(text)
+        render = next(n for n in tree.body if isinstance(n, ast.FunctionDef) and n.name == "render")
+        kwargs = {a.arg: ast.unparse(a.annotation) for a in render.args.kwonlyargs}
+        for kw in tg.options():
+            self.assertIn(kw, kwargs, kw)
+        # Typed by what the value is, not every type at once.
+        self.assertEqual(kwargs["iterations"], "int | None")
+        self.assertEqual(kwargs["gamma"], "float | None")
+        self.assertEqual(kwargs["glyph"], "str | None")
+        self.assertEqual(kwargs["size"], "Sequence[int] | None")
+        self.assertEqual(kwargs["eye"], "Sequence[float] | None")
+        self.assertEqual(kwargs["mesh"], "str | os.PathLike[str] | Sequence[str | os.PathLike[str]] | None")
+        self.assertEqual(kwargs["ao"], "bool | None")
