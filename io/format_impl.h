@@ -23,6 +23,11 @@ std::string encodeVtk(const TensorField& f, const std::string& path);
 TensorField readNrrd(const std::string& path, const ReadOptions& opt);
 ScalarVolume readNrrdScalar(const std::string& path, const int* dims);
 std::vector<std::string> nrrdDataFiles(const std::string& header);
+// What nrrdDataFiles refuses in a header Teem can parse (a data file range or
+// format too long to step through): readNrrd says so before Teem opens any.
+struct NrrdDataFilesRefused : InputError {
+  using InputError::InputError;
+};
 std::int64_t writeNrrd(const TensorField& f, const std::string& path, int fd, const double frame[9]);
 std::int64_t writeRawTensorHeader(const std::string& path, int fd, const std::size_t dims[3],
                                   const std::string& dataFile, const std::string& caller);

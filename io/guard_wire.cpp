@@ -1,15 +1,20 @@
 #include "io/guard_wire.h"
 
 #include <poll.h>
+#include <sys/socket.h>
 #include <sys/uio.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cerrno>
+#include <cstring>
 #include <stdexcept>
 
 namespace tg::io {
 namespace {
+
+// At most this many descriptors ride on one message.
+constexpr std::size_t kMaxFds = 4;
 
 // The parent's reply once it has the arrays' addresses.
 constexpr char kCopied = 'D';     // it copied them itself: exit
@@ -29,6 +34,27 @@ void WireOut::send(const void* p, std::size_t n) {
 }
 
 void WireOut::finish() {
+  if (!fds_.empty()) {
+    // The descriptors ride on the first byte; the rest follows as usual.
+    if (pending_.empty() || fds_.size() > kMaxFds) _exit(3);
+    alignas(cmsghdr) char control[CMSG_SPACE(sizeof(int) * kMaxFds)] = {};
+    iovec first{pending_.data(), 1};
+    msghdr m{};
+    m.msg_iov = &first;
+    m.msg_iovlen = 1;
+    m.msg_control = control;
+    m.msg_controllen = CMSG_SPACE(sizeof(int) * fds_.size());
+    cmsghdr* c = CMSG_FIRSTHDR(&m);
+    c->cmsg_level = SOL_SOCKET;
+    c->cmsg_type = SCM_RIGHTS;
+    c->cmsg_len = CMSG_LEN(sizeof(int) * fds_.size());
+    std::memcpy(CMSG_DATA(c), fds_.data(), sizeof(int) * fds_.size());
+    ssize_t w;
+    while ((w = ::sendmsg(fd_, &m, MSG_NOSIGNAL)) < 0 && errno == EINTR) {}
+    if (w != 1) _exit(3);
+    pending_.erase(0, 1);
+    fds_.clear();
+  }
   send(pending_.data(), pending_.size());
   pending_.clear();
   if (arrays_.empty()) return;
@@ -53,12 +79,35 @@ void WireIn::bytes(void* dst, std::size_t n) {
   char* c = static_cast<char*>(dst);
   while (n > 0) {
     wait();
-    const ssize_t got = ::read(fd_, c, n);
+    // recvmsg, so that descriptors passed with these bytes are kept.
+    alignas(cmsghdr) char control[CMSG_SPACE(sizeof(int) * kMaxFds)];
+    iovec io{c, n};
+    msghdr m{};
+    m.msg_iov = &io;
+    m.msg_iovlen = 1;
+    m.msg_control = control;
+    m.msg_controllen = sizeof control;
+    const ssize_t got = ::recvmsg(fd_, &m, MSG_CMSG_CLOEXEC);
     if (got < 0 && errno == EINTR) continue;
+    for (cmsghdr* h = got > 0 ? CMSG_FIRSTHDR(&m) : nullptr; h; h = CMSG_NXTHDR(&m, h))
+      if (h->cmsg_level == SOL_SOCKET && h->cmsg_type == SCM_RIGHTS)
+        for (std::size_t k = 0; k < (h->cmsg_len - CMSG_LEN(0)) / sizeof(int); ++k) {
+          int fd;
+          std::memcpy(&fd, CMSG_DATA(h) + k * sizeof(int), sizeof fd);
+          fds_.emplace_back(fd);
+        }
+    if (got > 0 && (m.msg_flags & MSG_CTRUNC)) throw std::runtime_error("the reader's result is malformed");
     if (got <= 0) throw std::runtime_error("the reader's result is short");
     c += got;
     n -= std::size_t(got);
   }
+}
+
+util::UniqueFd WireIn::takeFd() {
+  if (fds_.empty()) throw std::runtime_error("the reader's result is malformed (a file it names did not arrive)");
+  util::UniqueFd fd = std::move(fds_.front());
+  fds_.pop_front();
+  return fd;
 }
 
 std::size_t WireIn::count(std::size_t elementBytes) {

@@ -4,9 +4,12 @@
 // address: the parent copies them straight out of the waiting child's memory
 // (process_vm_readv) into untouched storage of its own, so the copy is the
 // only pass over them; where the kernel refuses that (a seccomp profile, a
-// ptrace policy), the child writes them into the socket instead.
+// ptrace policy), the child writes them into the socket instead. Open files
+// travel as descriptors (SCM_RIGHTS), so that the parent reads the very file
+// the child checked, whatever its name leads to by then.
 #include <chrono>
 #include <cstdint>
+#include <deque>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -14,6 +17,7 @@
 #include <sys/types.h>
 
 #include "util/mapped_array.h"
+#include "util/unique_fd.h"
 
 namespace tg::io {
 
@@ -31,6 +35,9 @@ class WireOut {
     pod(std::uint64_t(s.size()));
     bytes(s.data(), s.size());
   }
+  // An open file, passed with the first bytes sent; the parent takes it with
+  // WireIn::takeFd, in the order passed. `fd` must stay open until finish().
+  void passFd(int fd) { fds_.push_back(fd); }
   // Its length and address now; its bytes only if the parent asks (finish).
   template <class T>
   void array(const util::MappedArray<T>& v) {
@@ -53,6 +60,7 @@ class WireOut {
   int fd_;
   std::string pending_;
   std::vector<Span> arrays_;
+  std::vector<int> fds_;
 };
 
 // The parent's end: exactly the bytes asked for, before a deadline.
@@ -84,6 +92,9 @@ class WireIn {
   }
   // Fills every array noted, from the child's memory or from the socket.
   void finish();
+  // The next descriptor the child passed (WireOut::passFd); throws
+  // std::runtime_error where it passed none.
+  util::UniqueFd takeFd();
 
  private:
   std::size_t count(std::size_t elementBytes);
@@ -99,6 +110,7 @@ class WireIn {
   std::uint64_t max_;
   std::uint64_t taken_ = 0;
   std::vector<Pending> arrays_;
+  std::deque<util::UniqueFd> fds_;  // received, not yet taken
 };
 
 }  // namespace tg::io

@@ -30,6 +30,7 @@
 #include "io/selection.h"
 #include "io/volume_sink.h"
 #include "util/huge_pages.h"
+#include "util/unique_fd.h"
 
 namespace tg::io {
 namespace {
@@ -48,22 +49,7 @@ constexpr int kMaxAxes = 16;
 // Transforms are written as text; below this, |RᵀR - I| is rounding.
 constexpr double kOrthoTolerance = 1e-4;
 
-class Fd {
- public:
-  explicit Fd(int fd = -1) : fd_(fd) {}
-  Fd(Fd&& o) noexcept : fd_(std::exchange(o.fd_, -1)) {}
-  Fd& operator=(Fd&& o) noexcept {
-    std::swap(fd_, o.fd_);
-    return *this;
-  }
-  ~Fd() {
-    if (fd_ >= 0) ::close(fd_);
-  }
-  int get() const { return fd_; }
-
- private:
-  int fd_;
-};
+using Fd = util::UniqueFd;
 
 // O_NONBLOCK: opening a FIFO must not wait for a writer; it is refused next.
 Fd openRegular(const std::string& path, const std::string& file, const char* role, std::uint64_t& size) {
@@ -482,8 +468,10 @@ TensorField readMif(const std::string& path, const ReadOptions& opt) {
   if (fileOrderIsIndexOrder(h)) {
     // Voxel by voxel, as a raw NRRD: the guard's parent reads the values
     // (io/raw_samples.h), where no mask needs reading beside them.
-    RawSamples raw{pathOfOpenFile(im.data.get()), h.dataOffset, h.type.type, h.type.swap, g, cl, h.offset, h.scale};
-    if (opt.deferRaw && opt.selection.maskPath.empty() && !raw.dataPath.empty()) {
+    RawSamples raw{util::UniqueFd{}, h.dataOffset, h.type.type, h.type.swap, g, cl, h.offset, h.scale};
+    if (opt.deferRaw && opt.selection.maskPath.empty()) {
+      raw.dataFd = util::UniqueFd(::fcntl(im.data.get(), F_DUPFD_CLOEXEC, 0));
+      if (!raw.dataFd) fail(path, std::string("cannot hand the data file over: ") + std::strerror(errno));
       *opt.deferRaw = std::move(raw);
       return f;
     }

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
+#include <sstream>
 
 #include "io/format_impl.h"
 #include "io/teem_util.h"
@@ -56,7 +57,8 @@ std::string numbered(const std::string& header, const std::string& format, long 
   auto end = format.find_first_not_of("0123456789+- ", pct + 1);
   if (pct == std::string::npos || end == std::string::npos || format[end] != 'd' ||
       format.find('%', end + 1) != std::string::npos)
-    fail(header, "data file format \"" + format + "\" needs exactly one %d");
+    throw impl::NrrdDataFilesRefused("nrrdDataFiles: " + header + ": data file format \"" + format +
+                               "\" needs exactly one %d");
   std::string spec(1, '%');
   spec.append(format, pct + 1, end - pct - 1).append("lld");
   char num[64];
@@ -67,6 +69,27 @@ std::string numbered(const std::string& header, const std::string& format, long 
 
 std::string resolved(const std::string& dir, const std::string& name) {
   return name.front() == '/' ? name : (std::filesystem::path(dir) / name).string();
+}
+
+// How many files MIN..MAX by STEP names, refused beyond kMaxDataFiles.
+unsigned long long rangeCount(const std::string& header, long long lo, long long hi, long long step) {
+  if (step == 0 || (hi - lo) / step < 0)
+    throw impl::NrrdDataFilesRefused("nrrdDataFiles: " + header + ": data file range is empty or its step is 0");
+  const unsigned long long n = static_cast<unsigned long long>((hi - lo) / step) + 1;
+  if (n > kMaxDataFiles)
+    throw impl::NrrdDataFilesRefused("nrrdDataFiles: " + header + ": " + std::to_string(n) +
+                                     " data files; at most 100000 are accepted");
+  return n;
+}
+
+// A "%d"-style "data file: FORMAT MIN MAX STEP" line's count, before Teem's
+// parser sees it: the parser steps through every index (_nrrdDataFNNumber),
+// and "0 1999999999 1" took seconds before any limit could say no.
+void checkDataFileRange(const std::string& header, const char* value) {
+  std::istringstream in(value);
+  std::string format;
+  long long lo = 0, hi = 0, step = 0;
+  if (in >> format >> lo >> hi >> step && format.find('%') != std::string::npos) rangeCount(header, lo, hi, step);
 }
 
 }  // namespace
@@ -96,18 +119,15 @@ std::vector<std::string> impl::nrrdDataFiles(const std::string& header) {
     if (field == nrrdField_unknown || field == nrrdField_comment || field == nrrdField_keyvalue) continue;
     if (h.nio->seen[field]) fail(header, std::string("field \"") + airEnumStr(nrrdField, field) + "\" given twice");
     h.nio->pos = int(colon + 2 - line + std::strspn(colon + 2, " \t"));
+    if (field == nrrdField_data_file) checkDataFileRange(header, line + h.nio->pos);
     if (nrrdFieldInfoParse[field](h.file, h.nrrd, h.nio, AIR_TRUE)) fail(header, teemNrrdError());
     h.nio->seen[field] = AIR_TRUE;
     if (field == nrrdField_data_file) break;  // a LIST has read the rest of the file
   }
   std::vector<std::string> files;
   if (h.nio->dataFNFormat) {
-    // Counted here: Teem's _nrrdDataFNNumber steps through every index, and
-    // "0 1999999999 1" took seconds before the limit below could say no.
     const long long step = h.nio->dataFNStep, lo = h.nio->dataFNMin, hi = h.nio->dataFNMax;
-    if (step == 0 || (hi - lo) / step < 0) fail(header, "data file range is empty or its step is 0");
-    const unsigned long long n = static_cast<unsigned long long>((hi - lo) / step) + 1;
-    if (n > kMaxDataFiles) fail(header, std::to_string(n) + " data files; at most 100000 are accepted");
+    const unsigned long long n = rangeCount(header, lo, hi, step);
     for (long long i = lo, k = 0; static_cast<unsigned long long>(k) < n; i += step, ++k)
       files.push_back(resolved(dir, numbered(header, h.nio->dataFNFormat, i)));
   } else {

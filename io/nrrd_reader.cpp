@@ -3,6 +3,7 @@
 // fixed-size chunks straight into the VolumeSink, so that no copy of the
 // file's data is ever held.
 #include <bzlib.h>
+#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include <zlib.h>
@@ -77,9 +78,12 @@ std::unique_ptr<Header> readHeader(const std::string& path) {
   std::vector<std::string> dataFiles;
   try {
     dataFiles = impl::nrrdDataFiles(path);
+  } catch (const impl::NrrdDataFilesRefused&) {
+    throw;
   } catch (const InputError&) {
     // A header it cannot parse: nrrdLoad below reports the same fault as ours.
   }
+  if (dataFiles.size() > 1) fail(path, "multiple detached data files are not supported");
   for (const std::string& data : dataFiles) {
     struct stat st {};
     if (stat(data.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) fail(path, "data file " + data + " is not a regular file");
@@ -466,15 +470,19 @@ TensorField impl::readNrrd(const std::string& path, const ReadOptions& opt) {
   checkEncodedSize(path, *h, values);
   promiseData("readNrrd", path, opt, values * nrrdTypeSize[n->type], sel.keptBound(voxels));
   if (h->nio->encoding == nrrdEncodingRaw) {
-    RawSamples raw{pathOfOpenFile(fileno(h->nio->dataFile)), std::uint64_t(std::ftell(h->nio->dataFile)), rawTypeOf(n->type),
+    const int data = fileno(h->nio->dataFile);
+    RawSamples raw{util::UniqueFd{}, std::uint64_t(std::ftell(h->nio->dataFile)), rawTypeOf(n->type),
                    nrrdTypeSize[n->type] > 1 && h->nio->endian != airMyEndian(), g, layout};
-    // The guard's parent reads the values (io/raw_samples.h); a mask is
-    // read here, beside the data, so that selection stays in the child.
-    if (opt.deferRaw && opt.selection.maskPath.empty() && !raw.dataPath.empty()) {
+    // The guard's parent reads the values (io/raw_samples.h) from a copy of
+    // this descriptor; a mask is read here, beside the data, so that
+    // selection stays in the child.
+    if (opt.deferRaw && opt.selection.maskPath.empty()) {
+      raw.dataFd = util::UniqueFd(::fcntl(data, F_DUPFD_CLOEXEC, 0));
+      if (!raw.dataFd) fail(path, std::string("cannot hand the data file over: ") + std::strerror(errno));
       *opt.deferRaw = std::move(raw);
       return f;
     }
-    readRawSamples("readNrrd", path, raw, opt, f, fileno(h->nio->dataFile), &sel);
+    readRawSamples("readNrrd", path, raw, opt, f, data, &sel);
     return f;
   }
   VolumeSink sink(f, g, layout, sel, opt.selection.confidenceMin);

@@ -1,13 +1,11 @@
 #include "io/raw_samples.h"
 
-#include <fcntl.h>
 #include <sys/stat.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <bit>
 #include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <type_traits>
 #include <stdexcept>
@@ -70,17 +68,6 @@ void rawToDoubles(RawType type, bool swap, const char* src, std::size_t m, doubl
   }
 }
 
-namespace {
-
-struct Fd {
-  int fd = -1;
-  bool owned = true;
-  ~Fd() {
-    if (fd >= 0 && owned) ::close(fd);
-  }
-};
-
-}  // namespace
 
 std::size_t rawTypeBytes(RawType t) {
   switch (t) {
@@ -98,20 +85,6 @@ std::size_t rawTypeBytes(RawType t) {
   return 0;
 }
 
-std::string pathOfOpenFile(int fd) {
-  char link[64], target[4096];
-  std::snprintf(link, sizeof link, "/proc/self/fd/%d", fd);
-  const ssize_t n = ::readlink(link, target, sizeof target);
-  if (n <= 0 || std::size_t(n) >= sizeof target || target[0] != '/') return "";
-  const std::string p(target, std::size_t(n));
-  struct stat named {}, open {};
-  // A deleted or renamed file: the name no longer leads to it.
-  if (::stat(p.c_str(), &named) != 0 || ::fstat(fd, &open) != 0 || named.st_dev != open.st_dev ||
-      named.st_ino != open.st_ino)
-    return "";
-  return p;
-}
-
 void readRawSamples(const char* who, const std::string& path, const RawSamples& raw, const ReadOptions& opt,
                     TensorField& f, int dataFd, const Selector* sel) {
   auto fail = [&](const std::string& what) { return InputError(std::string(who) + ": " + path + ": " + what); };
@@ -119,12 +92,9 @@ void readRawSamples(const char* who, const std::string& path, const RawSamples& 
   const std::uint64_t voxels = std::uint64_t(g.dims[0]) * std::uint64_t(g.dims[1]) * std::uint64_t(g.dims[2]);
   const std::size_t tsize = rawTypeBytes(raw.type), count = std::size_t(raw.layout.count);
   const std::uint64_t bytes = voxels * count * tsize;
-  // Non-blocking: a data file swapped for a FIFO since the header was read
-  // must not hang the open; only a regular file passes the check after it.
-  Fd in = dataFd >= 0 ? Fd{dataFd, false} : Fd{::open(raw.dataPath.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC)};
+  // The reader checked this descriptor; checked again, as the child's word.
   struct stat st {};
-  if (in.fd < 0) throw fail("cannot open the data file " + raw.dataPath + ": " + std::strerror(errno));
-  if (::fstat(in.fd, &st) != 0 || !S_ISREG(st.st_mode)) throw fail("the data file is not a regular file");
+  if (::fstat(dataFd, &st) != 0 || !S_ISREG(st.st_mode)) throw fail("the data file is not a regular file");
   const std::uint64_t size = std::uint64_t(st.st_size);
   if (raw.offset > size || size - raw.offset < bytes)
     throw fail("data is truncated: the header describes " + std::to_string(bytes) + " bytes, the data ends after " +
@@ -150,7 +120,7 @@ void readRawSamples(const char* who, const std::string& path, const RawSamples& 
     const std::size_t want = std::size_t(std::min<std::uint64_t>(buf.size(), bytes - done));
     std::size_t got = 0;
     while (got < want) {
-      const ssize_t r = ::pread(in.fd, buf.data() + got, want - got, off_t(raw.offset + done + got));
+      const ssize_t r = ::pread(dataFd, buf.data() + got, want - got, off_t(raw.offset + done + got));
       if (r < 0 && errno == EINTR) continue;
       if (r <= 0) throw fail("data is truncated: the header describes " + std::to_string(bytes) +
                              " bytes, the data ends after " + std::to_string(done + got));
@@ -173,7 +143,7 @@ void readRawSamples(const char* who, const std::string& path, const RawSamples& 
 void sendRaw(WireOut& w, const std::optional<RawSamples>& raw) {
   w.pod(std::uint8_t(raw.has_value()));
   if (!raw) return;
-  w.str(raw->dataPath);
+  w.passFd(raw->dataFd.get());
   w.pod(raw->offset);
   w.pod(std::uint8_t(raw->type));
   w.pod(std::uint8_t(raw->swap));
@@ -200,7 +170,7 @@ std::optional<RawSamples> receiveRaw(WireIn& r) {
   };
   if (!flag()) return std::nullopt;
   RawSamples raw;
-  raw.dataPath = r.str();
+  raw.dataFd = r.takeFd();
   raw.offset = r.pod<std::uint64_t>();
   const auto type = r.pod<std::uint8_t>();
   raw.swap = flag();
@@ -217,8 +187,7 @@ std::optional<RawSamples> receiveRaw(WireIn& r) {
   raw.intercept = r.pod<double>();
   raw.slope = r.pod<double>();
 
-  bool ok = !raw.dataPath.empty() && raw.dataPath.front() == '/' &&
-            raw.dataPath.find('\0') == std::string::npos && type <= std::uint8_t(RawType::F64);
+  bool ok = type <= std::uint8_t(RawType::F64);
   raw.type = RawType(type);
   std::uint64_t voxels = 1;
   for (int d : g.dims) {

@@ -1,9 +1,10 @@
 #pragma once
 // Uncompressed voxel data that a reader has located but not decoded. In a
 // guarded read (io/read_guard.h) the child parses the header with the
-// third-party library (Teem) and hands back only this description; the
-// parent then reads the values itself, with this code of ours, straight into
-// its own memory. Decoded in the child, the samples were written there and
+// third-party library (Teem) and hands back only this description, with the
+// data file it opened and checked as a descriptor (a name could lead to
+// another file by then); the parent then reads the values itself, with this
+// code of ours, straight into its own memory. Decoded in the child, the samples were written there and
 // copied out again, which was a fifth of a guarded load (issue 14's
 // 10 M tensors/s/core target). Compressed data stays in the child: there a
 // library decodes it.
@@ -13,6 +14,7 @@
 
 #include "io/readers.h"
 #include "io/volume_sink.h"
+#include "util/unique_fd.h"
 
 namespace tg::io {
 
@@ -26,7 +28,7 @@ std::size_t rawTypeBytes(RawType t);
 void rawToDoubles(RawType type, bool swap, const char* src, std::size_t m, double* out);
 
 struct RawSamples {
-  std::string dataPath;      // absolute: the header's own file, or its detached data file
+  util::UniqueFd dataFd;     // the data file, open: the header's own, or its detached one
   std::uint64_t offset = 0;  // of the first value
   RawType type = RawType::F32;
   bool swap = false;         // stored in the other byte order
@@ -41,17 +43,12 @@ struct RawSamples {
 // the sink's finish: what a volume reader does after its header. Errors are
 // InputError("who: path: ..."): a data file that is not a regular file or
 // that ends before the data. opt.progress hears ("loading", bytes read,
-// bytes, "bytes"). `dataFd`: the data file already open (the reader's own,
-// left open), or -1 to open raw.dataPath. `sel`: the reader's selector, its
+// bytes, "bytes"). `dataFd`: the data file, open (raw.dataFd, or the
+// reader's own where it reads in process). `sel`: the reader's selector, its
 // promise made (promiseData); null: one is made from opt and the promise
 // checked against opt's budget, as the guard's parent does.
 void readRawSamples(const char* who, const std::string& path, const RawSamples& raw, const ReadOptions& opt,
-                    TensorField& f, int dataFd = -1, const Selector* sel = nullptr);
-
-// The absolute path of an open file, as the kernel names it, for the guard's
-// parent to open; "" where the name no longer leads to that file (deleted,
-// renamed) or there is none: then the child reads the data itself.
-std::string pathOfOpenFile(int fd);
+                    TensorField& f, int dataFd, const Selector* sel = nullptr);
 
 // On the guard's wire, after the field. receiveRaw checks what the child
 // sent before anything is sized from it: std::runtime_error("the reader's

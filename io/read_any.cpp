@@ -89,7 +89,7 @@ TensorField readTensorField(const std::string& path, const ReadOptions& opt) {
       opt.progress);
   if (raw) {
     guarded.onPromise = nullptr;
-    readRawSamples(format.who, path, *raw, guarded, field);
+    readRawSamples(format.who, path, *raw, guarded, field, raw->dataFd.get());
   }
   return field;
 }

@@ -206,6 +206,16 @@ TEST(Nrrd, BadInputGetsOneLineNamingFileAndProblem) {
       {"garbage.nrrd", "NRRD0005\nthis is not a field\n", "readNrrd"},
       {"longtoken.nrrd",
        "NRRD0005\ntype: float\ndimension: 4\nsizes: 6 1 1 1\nencoding: ascii\n\n" + std::string(5000, '7'), "token"},
+      // Counted before Teem's parser steps through two billion names (3 s,
+      // then the guard's time limit, before this was checked first).
+      {"billion.nhdr",
+       "NRRD0005\ntype: float\ndimension: 4\nsizes: 6 5 4 3\nencoding: raw\nendian: little\n"
+       "data file: sl%d.raw 0 1999999999 1\n",
+       "2000000000 data files; at most 100000"},
+      {"twofiles.nhdr",
+       "NRRD0005\ntype: float\ndimension: 4\nsizes: 6 1 1 2\nencoding: raw\nendian: little\n"
+       "data file: LIST\nnodata.nhdr\ntrunc.nrrd\n",
+       "multiple detached data files"},
   };
   for (const Case& c : cases) {
     test::writeFile(d / c.file, c.bytes);

@@ -5,6 +5,7 @@
 // read them.
 #include <gtest/gtest.h>
 
+#include <fcntl.h>
 #include <sys/socket.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -181,8 +182,18 @@ TEST(ReadGuard, RawDataReadByTheParentIsTheInProcessField) {
   expectSame(guarded, io::readTensorFieldInProcess((d / "nan.nrrd").string(), {}), "nan");
 }
 
+namespace {
+
+ino_t inodeOf(int fd) {
+  struct stat st {};
+  return ::fstat(fd, &st) == 0 ? st.st_ino : 0;
+}
+
+}  // namespace
+
 // Where a reader is asked to defer, it returns the field without samples and
-// says where they are: raw data only, and never with a mask (read in the child).
+// the data file it checked, open: raw data only, and never with a mask (read
+// in the child).
 TEST(ReadGuard, OnlyUncompressedUnmaskedDataIsDeferred) {
   const fs::path d = test::scratchDir("read_guard_raw");
   const std::string hdr = "NRRD0004\ntype: float\ndimension: 4\nsizes: 6 2 2 1\n"
@@ -194,7 +205,10 @@ TEST(ReadGuard, OnlyUncompressedUnmaskedDataIsDeferred) {
   const io::TensorField f = io::readTensorFieldInProcess((d / "defer.nrrd").string(), o);
   EXPECT_EQ(f.size(), 0u);
   ASSERT_TRUE(raw);
-  EXPECT_EQ(raw->dataPath, fs::canonical(d / "defer.nrrd").string());
+  ASSERT_TRUE(raw->dataFd);
+  struct stat named {};
+  ASSERT_EQ(::stat((d / "defer.nrrd").c_str(), &named), 0);
+  EXPECT_EQ(inodeOf(raw->dataFd.get()), named.st_ino);
   EXPECT_EQ(raw->offset, fs::file_size(d / "defer.nrrd") - 4 * 24);
   EXPECT_EQ(raw->type, io::RawType::F32);
   EXPECT_EQ(raw->geometry.dims[0], 2);
@@ -210,74 +224,106 @@ TEST(ReadGuard, OnlyUncompressedUnmaskedDataIsDeferred) {
   EXPECT_EQ(masked.masked, 1u);
 }
 
+namespace {
+
+// A descriptor of 3 voxels of int16 values, its data file open.
+io::RawSamples sampleDescriptor(const fs::path& data) {
+  io::RawSamples r;
+  r.dataFd = util::UniqueFd(::open(data.c_str(), O_RDONLY | O_CLOEXEC));
+  r.offset = 17;
+  r.type = io::RawType::I16;
+  r.swap = true;
+  r.geometry.dims[0] = 3;
+  r.geometry.tensorToWC = std::array<double, 9>{0, 1, 0, -1, 0, 0, 0, 0, 1};
+  r.layout.count = 7;
+  r.layout.confidence = 0;
+  r.layout.sym = {1, 2, 3, 4, 5, 6};
+  r.intercept = 0.5;
+  r.slope = 2;
+  return r;
+}
+
+// Sends what `write` puts on a wire and takes a descriptor back off it.
+template <class Write>
+std::optional<io::RawSamples> overTheWire(Write&& write) {
+  int fds[2];
+  EXPECT_EQ(::socketpair(AF_UNIX, SOCK_STREAM, 0, fds), 0);
+  const util::UniqueFd a(fds[0]), b(fds[1]);
+  io::WireOut out(a.get());
+  write(out);
+  out.finish();
+  io::WireIn in(b.get(), ::getpid(), io::WireIn::Clock::now() + std::chrono::seconds(5), 1 << 20);
+  return io::receiveRaw(in);
+}
+
+}  // namespace
+
 // The descriptor the child sends is checked before the parent sizes anything
-// from it; a well-formed one crosses unchanged.
+// from it; a well-formed one crosses unchanged, its file passed open, so the
+// parent reads the file the child checked even after its name is reused.
 TEST(ReadGuard, TheRawDescriptorIsCheckedOnArrival) {
-  io::RawSamples good;
-  good.dataPath = "/tmp/x.raw";
-  good.offset = 17;
-  good.type = io::RawType::I16;
-  good.swap = true;
-  good.geometry.dims[0] = 3;
-  good.geometry.tensorToWC = std::array<double, 9>{0, 1, 0, -1, 0, 0, 0, 0, 1};
-  good.layout.count = 7;
-  good.layout.confidence = 0;
-  good.layout.sym = {1, 2, 3, 4, 5, 6};
-  auto roundTrip = [](const std::optional<io::RawSamples>& r) {
-    int fds[2];
-    EXPECT_EQ(::socketpair(AF_UNIX, SOCK_STREAM, 0, fds), 0);
-    io::WireOut out(fds[0]);
-    io::sendRaw(out, r);
-    out.finish();
-    io::WireIn in(fds[1], ::getpid(), io::WireIn::Clock::now() + std::chrono::seconds(5), 1 << 20);
-    struct Close {
-      int a, b;
-      ~Close() { ::close(a), ::close(b); }
-    } close{fds[0], fds[1]};
-    return io::receiveRaw(in);
-  };
-  const auto back = roundTrip(good);
+  const fs::path d = test::scratchDir("read_guard_wire");
+  test::writeFile(d / "a.raw", "the file the child checked");
+  const std::optional<io::RawSamples> good = sampleDescriptor(d / "a.raw");
+  const ino_t checked = inodeOf(good->dataFd.get());
+  // Replaced by rename, as editors and writers save: the name leads elsewhere.
+  test::writeFile(d / "b.raw", "another file");
+  fs::rename(d / "b.raw", d / "a.raw");
+  const auto back = overTheWire([&](io::WireOut& w) { io::sendRaw(w, good); });
   ASSERT_TRUE(back);
-  EXPECT_EQ(back->dataPath, good.dataPath);
+  ASSERT_TRUE(back->dataFd);
+  EXPECT_EQ(inodeOf(back->dataFd.get()), checked);
+  EXPECT_NE(back->dataFd.get(), good->dataFd.get());
   EXPECT_EQ(back->offset, 17u);
   EXPECT_EQ(back->type, io::RawType::I16);
   EXPECT_TRUE(back->swap);
   EXPECT_EQ(back->geometry.dims[0], 3);
-  EXPECT_EQ(back->geometry.tensorToWC, good.geometry.tensorToWC);
-  EXPECT_EQ(back->layout.sym, good.layout.sym);
-  EXPECT_FALSE(roundTrip(std::nullopt));
+  EXPECT_EQ(back->geometry.tensorToWC, good->geometry.tensorToWC);
+  EXPECT_EQ(back->layout.sym, good->layout.sym);
+  EXPECT_EQ(back->slope, 2.0);
+  EXPECT_FALSE(overTheWire([](io::WireOut& w) { io::sendRaw(w, std::nullopt); }));
 
-  std::vector<io::RawSamples> bad(6, good);
-  bad[0].dataPath = "relative.raw";
-  bad[1].type = io::RawType(42);
-  bad[2].geometry.dims[1] = 0;
-  bad[3].layout.count = 0;
-  bad[4].layout.sym[5] = 7;
-  bad[5].geometry.dims[0] = bad[5].geometry.dims[1] = bad[5].geometry.dims[2] = 1 << 20;
-  for (std::size_t i = 0; i < bad.size(); ++i)
-    EXPECT_THROW(roundTrip(bad[i]), std::runtime_error) << "case " << i;
+  const auto mutate = [&](auto&& change) {
+    std::optional<io::RawSamples> r = sampleDescriptor(d / "a.raw");
+    change(*r);
+    return overTheWire([&](io::WireOut& w) { io::sendRaw(w, r); });
+  };
+  EXPECT_THROW(mutate([](io::RawSamples& r) { r.type = io::RawType(42); }), std::runtime_error);
+  EXPECT_THROW(mutate([](io::RawSamples& r) { r.geometry.dims[1] = 0; }), std::runtime_error);
+  EXPECT_THROW(mutate([](io::RawSamples& r) { r.layout.count = 0; }), std::runtime_error);
+  EXPECT_THROW(mutate([](io::RawSamples& r) { r.layout.sym[5] = 7; }), std::runtime_error);
+  EXPECT_THROW(mutate([](io::RawSamples& r) { r.slope = std::nan(""); }), std::runtime_error);
+  EXPECT_THROW(mutate([](io::RawSamples& r) { r.geometry.dims[0] = r.geometry.dims[1] = r.geometry.dims[2] = 1 << 20; }),
+               std::runtime_error);
+  // A description without its file: refused, not read from some name.
+  EXPECT_THROW(overTheWire([](io::WireOut& w) {
+                 w.pod(std::uint8_t(1));
+                 w.pod(std::uint64_t(0));
+               }),
+               std::runtime_error);
 }
 
-// The parent opens the data file itself: one swapped for a FIFO since the
-// header was read must not hang it, and one cut short is refused, named.
+// The parent checks the file it was handed again: one cut short is refused,
+// named; a FIFO is no data file.
 TEST(ReadGuard, TheParentRefusesADataFileThatIsNotWhatTheHeaderSaid) {
   const fs::path d = test::scratchDir("read_guard_raw");
   io::RawSamples raw;
   raw.geometry.dims[0] = 4;
-  raw.dataPath = (d / "short.raw").string();
-  test::writeFile(raw.dataPath, rawValues<float>(3, 6, false));
+  test::writeFile(d / "short.raw", rawValues<float>(3, 6, false));
   io::TensorField f;
   try {
-    io::readRawSamples("readNrrd", "h.nhdr", raw, {}, f);
+    const util::UniqueFd in(::open((d / "short.raw").c_str(), O_RDONLY | O_CLOEXEC));
+    io::readRawSamples("readNrrd", "h.nhdr", raw, {}, f, in.get());
     ADD_FAILURE() << "a short data file was read";
   } catch (const io::InputError& e) {
     EXPECT_EQ(std::string(e.what()), "readNrrd: h.nhdr: data is truncated: the header describes 96 bytes, the data ends after 72");
   }
-  raw.dataPath = (d / "fifo").string();
-  fs::remove(raw.dataPath);
-  ASSERT_EQ(::mkfifo(raw.dataPath.c_str(), 0600), 0);
+  const fs::path fifo = d / "fifo";
+  fs::remove(fifo);
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
   try {
-    io::readRawSamples("readNrrd", "h.nhdr", raw, {}, f);
+    const util::UniqueFd in(::open(fifo.c_str(), O_RDONLY | O_NONBLOCK | O_CLOEXEC));
+    io::readRawSamples("readNrrd", "h.nhdr", raw, {}, f, in.get());
     ADD_FAILURE() << "a FIFO was read";
   } catch (const io::InputError& e) {
     EXPECT_EQ(std::string(e.what()), "readNrrd: h.nhdr: the data file is not a regular file");
