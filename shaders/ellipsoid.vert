@@ -47,7 +47,15 @@ void main() {
 
   // The quad sits at the nearest depth the glyph can have, so the fragment
   // depth only ever moves away from it (layout(depth_less) with reversed Z).
-  gl_Position = spriteCornerCC(rect, windowDepthFromViewDepth(max(dist - radius, uNearVC)));
+  float depthWin = windowDepthFromViewDepth(max(dist - radius, uNearVC));
+  gl_Position = spriteCornerCC(rect, depthWin);
+  vec2 outlineDC;
+  mat2 supportDC;
+  if (uPointSprites == 0 && uOrientedSprites != 0 && ellipseSupportDC(uProjVCCC * tVC, outlineDC, supportDC)) {
+    SpriteQuadDC quad = ellipseQuadDC(outlineDC, supportDC);
+    quad.halfSize += 0.25;  // the rectangle's margin
+    if (spriteQuadSmaller(quad, rect)) gl_Position = spriteQuadCornerCC(quad, depthWin);
+  }
   vs.centreVC = centreVC;
   vs.gcFromVC = transpose(mat3(rotVC[0] / axes.x, rotVC[1] / axes.y, rotVC[2] / axes.z));
   vs.color = glyphColor(uColorMode, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, uMdRange);

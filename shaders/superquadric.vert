@@ -47,13 +47,14 @@ void main() {
   float nearest = 1e38;
   vec4 rect = vec4(1e38, 1e38, -1e38, -1e38);
   bool crossesEyePlane = false;
+  vec2 boxNDC[8];
   for (int k = 0; k < 8; ++k) {
     vec3 c = centreVC + ((k & 1) == 0 ? -e0 : e0) + ((k & 2) == 0 ? -e1 : e1) + ((k & 4) == 0 ? -e2 : e2);
     nearest = min(nearest, -c.z);
     vec4 cc = uProjVCCC * vec4(c, 1.0);
     if (cc.w <= 0.0) crossesEyePlane = true;
-    vec2 ndc = cc.xy / cc.w;
-    rect = vec4(min(rect.xy, ndc), max(rect.zw, ndc));
+    boxNDC[k] = cc.xy / cc.w;
+    rect = vec4(min(rect.xy, boxNDC[k]), max(rect.zw, boxNDC[k]));
   }
   float farthest = -centreVC.z + length(axes);
   if (farthest < uNearVC || (uOrtho == 1 && nearest > uFarVC)) return;
@@ -63,10 +64,10 @@ void main() {
   // reach far out), only pixels that cannot hit are left out.
   float reach = superquadricReach(shape.xyz);
   nearest = max(nearest, -centreVC.z - reach * max(axes.x, max(axes.y, axes.z)));
+  mat4 reachCC = uProjVCCC * mat4(vec4(reach * e0, 0.0), vec4(reach * e1, 0.0), vec4(reach * e2, 0.0),
+                                  vec4(centreVC, 1.0));
   vec4 rectR;
-  if (!crossesEyePlane &&
-      ellipsoidRectNDC(uProjVCCC * mat4(vec4(reach * e0, 0.0), vec4(reach * e1, 0.0), vec4(reach * e2, 0.0),
-                                        vec4(centreVC, 1.0)), rectR))
+  if (!crossesEyePlane && ellipsoidRectNDC(reachCC, rectR))
     rect = vec4(max(rect.xy, rectR.xy), min(rect.zw, rectR.zw));
   // A quarter pixel of margin so that pixel centres on the exact edge are kept.
   vec2 px = 0.5 / uViewportDC;
@@ -75,7 +76,29 @@ void main() {
   // Wholly behind the occluders: no fragment of it could win the depth test.
   if (spriteOccluded(rect, nearest, 4.0 * uEpsilon * max(axes.x, max(axes.y, axes.z)))) return;
 
-  gl_Position = spriteCornerCC(rect, windowDepthFromViewDepth(max(nearest, uNearVC)));
+  float depthWin = windowDepthFromViewDepth(max(nearest, uNearVC));
+  gl_Position = spriteCornerCC(rect, depthWin);
+  vec2 outlineDC;
+  mat2 supportDC;
+  if (uPointSprites == 0 && uOrientedSprites != 0 && !crossesEyePlane &&
+      ellipseSupportDC(reachCC, outlineDC, supportDC)) {
+    // Along the reach ellipsoid's projected axes, its quad clipped to the
+    // box's corners, as the rectangle is.
+    SpriteQuadDC quad = ellipseQuadDC(outlineDC, supportDC);
+    vec2 f = vec2(-quad.axis.y, quad.axis.x);
+    vec4 span = vec4(1e38, 1e38, -1e38, -1e38);
+    for (int k = 0; k < 8; ++k) {
+      vec2 d = (boxNDC[k] + 1.0) * 0.5 * uViewportDC - quad.centre;
+      vec2 st = vec2(dot(d, quad.axis), dot(d, f));
+      span = vec4(min(span.xy, st), max(span.zw, st));
+    }
+    span = vec4(max(span.xy, -quad.halfSize), min(span.zw, quad.halfSize));
+    vec2 mid = 0.5 * (span.xy + span.zw);
+    quad.centre += mid.x * quad.axis + mid.y * f;
+    quad.halfSize = 0.5 * (span.zw - span.xy) + 0.25;  // the rectangle's margin
+    if (all(greaterThan(quad.halfSize, vec2(0.0))) && spriteQuadSmaller(quad, rect))
+      gl_Position = spriteQuadCornerCC(quad, depthWin);
+  }
   vs.centreVC = centreVC;
   vs.gcFromVC = transpose(mat3(e0 / dot(e0, e0), e1 / dot(e1, e1), e2 / dot(e2, e2)));
   vs.shape = shape.xyz;

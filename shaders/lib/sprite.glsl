@@ -6,6 +6,10 @@
 // square outside it miss the glyph as every pixel of the rectangle off its
 // silhouette does.
 //
+// Ray-cast kinds may instead draw a quad along the glyph's projected axes
+// (SpriteQuadDC below) where that is smaller. Requires lib/camera.glsl and
+// lib/ellipsoid.glsl.
+//
 // Why not the alternatives: point sprites are capped (255 px on llvmpipe,
 // GL_POINT_SIZE_RANGE), and a glyph near the camera needs up to the whole
 // viewport; a geometry shader expanding one point per glyph made llvmpipe
@@ -16,6 +20,7 @@
 layout(std430, binding = 2) readonly buffer KeptIndex { uint keptIndex[]; };
 uniform int uCompacted;
 uniform int uPointSprites;  // 1: GL_POINTS, one vertex per glyph
+uniform int uOrientedSprites;  // 1: quads may turn to the glyph's own axes
 
 uint spriteGlyphIndex() {
   uint slot = uPointSprites != 0 ? uint(gl_VertexID) : uint(gl_VertexID) >> 2u;
@@ -39,4 +44,63 @@ vec4 spriteCornerCC(vec4 rectNDC, float depthWin) {
   }
   int c = gl_VertexID & 3;
   return vec4((c & 1) == 0 ? rectNDC.x : rectNDC.z, (c & 2) == 0 ? rectNDC.y : rectNDC.w, depthWin, 1.0);
+}
+
+// An oriented quad in window pixels: centre, unit first axis (the second is
+// its perpendicular) and half-extents along them. A thin glyph seen along a
+// diagonal fills a small part of its axis-aligned rectangle; the quad along
+// its own projected axes holds the same pixels that can hit and few others.
+struct SpriteQuadDC {
+  vec2 centre;
+  vec2 axis;
+  vec2 halfSize;
+};
+
+// The projected outline of the ellipsoid whose parameter->clip transform is
+// pmt, as in ellipsoidRectNDC (Sigg et al. eq. 5) but along any direction:
+// its tangent lines with unit window normal n lie at n.centreDC +- sqrt(n^T
+// supportDC n). Returns false where it meets the eye plane.
+bool ellipseSupportDC(mat4 pmt, out vec2 centreDC, out mat2 supportDC) {
+  vec4 r1 = vec4(pmt[0][0], pmt[1][0], pmt[2][0], pmt[3][0]);
+  vec4 r2 = vec4(pmt[0][1], pmt[1][1], pmt[2][1], pmt[3][1]);
+  vec4 r4 = vec4(pmt[0][3], pmt[1][3], pmt[2][3], pmt[3][3]);
+  float a = formD(r4, r4);
+  if (!(a < 0.0)) return false;
+  vec2 x0 = vec2(formD(r1, r4), formD(r2, r4)) / a;
+  vec4 u1 = r1 - x0.x * r4, u2 = r2 - x0.y * r4;
+  vec2 b = vec2(formD(u1, r4), formD(u2, r4));
+  // Half-widths squared in NDC: (b_i b_j - a D(u_i, u_j)) / a^2; to pixels by k.
+  vec2 k = 0.5 * uViewportDC;
+  float sxx = (b.x * b.x - a * formD(u1, u1)) / (a * a), syy = (b.y * b.y - a * formD(u2, u2)) / (a * a);
+  float sxy = (b.x * b.y - a * formD(u1, u2)) / (a * a);
+  supportDC = mat2(max(sxx, 0.0) * k.x * k.x, sxy * k.x * k.y, sxy * k.x * k.y, max(syy, 0.0) * k.y * k.y);
+  centreDC = (x0 + b / a + 1.0) * k;
+  return true;
+}
+
+// The quad along the principal axes of the outline of ellipseSupportDC, the
+// smallest rectangle that holds it; half-extents without margin.
+SpriteQuadDC ellipseQuadDC(vec2 centreDC, mat2 supportDC) {
+  float p = supportDC[0][0], q = supportDC[0][1], r = supportDC[1][1];
+  // Any unit axis gives a rectangle that holds the ellipse; the principal
+  // one (where defined) the smallest.
+  float theta = q != 0.0 || p != r ? 0.5 * atan(2.0 * q, p - r) : 0.0;
+  vec2 e = vec2(cos(theta), sin(theta)), f = vec2(-e.y, e.x);
+  return SpriteQuadDC(centreDC, e, sqrt(max(vec2(dot(e, supportDC * e), dot(f, supportDC * f)), 0.0)));
+}
+
+// The corner of quad for this vertex, at window depth depthWin; no use for
+// point sprites.
+vec4 spriteQuadCornerCC(SpriteQuadDC quad, float depthWin) {
+  int c = gl_VertexID & 3;
+  vec2 s = vec2((c & 1) == 0 ? -1.0 : 1.0, (c & 2) == 0 ? -1.0 : 1.0) * quad.halfSize;
+  vec2 pDC = quad.centre + s.x * quad.axis + s.y * vec2(-quad.axis.y, quad.axis.x);
+  return vec4(pDC / uViewportDC * 2.0 - 1.0, depthWin, 1.0);
+}
+
+// Pixels of rectNDC within the viewport, against those of the quad: the
+// quad is drawn where it is the smaller.
+bool spriteQuadSmaller(SpriteQuadDC quad, vec4 rectNDC) {
+  vec2 sizeDC = (rectNDC.zw - rectNDC.xy) * 0.5 * uViewportDC;
+  return 4.0 * quad.halfSize.x * quad.halfSize.y < sizeDC.x * sizeDC.y;
 }

@@ -31,6 +31,8 @@ GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib, Ov
   GLfloat pointRange[2] = {0, 0};
   gl.GetFloatv(GL_POINT_SIZE_RANGE, pointRange);
   maxPointPx_ = double(pointRange[1]);
+  const auto* name = reinterpret_cast<const char*>(gl.GetString(GL_RENDERER));
+  orientedQuadMinPx_ = orientedQuadMinPx(name ? name : "");
 }
 
 GlyphRenderer::~GlyphRenderer() {
@@ -240,9 +242,15 @@ Camera GlyphRenderer::renderShadowMap(const Camera& cam, const FrameParams& p, i
 }
 
 bool GlyphRenderer::pointSprites(const Camera& cam, const FrameParams& p) const {
-  return p.pointSprites &&
-         pointSpritesFit(cam, centresLoWC_, centresHiWC_,
-                         tensor::kGlyphReach * tensor::glyphRadiusWC(p.scale, p.sizing, maxAbsEigenvalue_), maxPointPx_);
+  const double maxRadiusWC = tensor::glyphRadiusWC(p.scale, p.sizing, maxAbsEigenvalue_);
+  if (!p.pointSprites ||
+      !pointSpritesFit(cam, centresLoWC_, centresHiWC_, tensor::kGlyphReach * maxRadiusWC, maxPointPx_))
+    return false;
+  // Wide ray-cast glyphs pay for quads' three more vertex runs with the
+  // fragments that their own axes save (prisms keep axis-aligned quads).
+  const double typicalWC = std::min(typicalDiameter_ * p.scale, 2.0 * maxRadiusWC);
+  return !(p.orientedSprites && !isPrismKind(p.glyph) &&
+           typicalSpritePx(cam, centresLoWC_, centresHiWC_, typicalWC) >= orientedQuadMinPx_);
 }
 
 void GlyphRenderer::beginGlyphs() const {
@@ -256,6 +264,7 @@ void GlyphRenderer::useGlyphProgram(const gl::Program& prog, const Camera& cam) 
   setCamera(prog, cam);
   prog.set("uCompacted", culling_.compacted() ? 1 : 0);
   prog.set("uPointSprites", culling_.pointSprites() ? 1 : 0);
+  prog.set("uOrientedSprites", params_ && params_->orientedSprites ? 1 : 0);
   gl_.UseProgram(prog.id());
 }
 

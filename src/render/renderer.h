@@ -75,6 +75,9 @@ struct FrameParams {
   // One point sprite per glyph where every glyph's rectangle fits a point,
   // else two triangles (render/sprite_primitive.h; off only to measure).
   bool pointSprites = true;
+  // Quads along a glyph's projected axes where smaller than its axis-aligned
+  // rectangle (shaders/lib/sprite.glsl; off only to measure).
+  bool orientedSprites = true;
   // > 0: draw the tessellated baseline at this resolution instead of ray
   // casting (superquadrics at `gamma`; render/tessellated.h).
   int tessellation = 0;
@@ -223,6 +226,7 @@ class GlyphRenderer {
   float mdMin_ = 0, mdMax_ = 0;
   double eigenMin_ = 0, eigenMax_ = 0;
   double typicalDiameter_ = 1.0;  // in eigenvalue units
+  double orientedQuadMinPx_ = 0.0;  // render/sprite_primitive.h, for this renderer
   std::unique_ptr<AoPass> ao_;
   std::unique_ptr<OutlinePass> outline_;
   std::unique_ptr<gl::Program> lightingVariant_;  // lighting.frag with TG_AO and/or TG_SHADOWS

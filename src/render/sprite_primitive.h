@@ -6,6 +6,8 @@
 // twice. Points are capped in size (255 pixels on llvmpipe,
 // GL_POINT_SIZE_RANGE), so a frame draws them only when no glyph's rectangle
 // can be wider than the cap; otherwise quads.
+#include <string_view>
+
 #include <glm/vec3.hpp>
 
 #include "render/camera.h"
@@ -24,5 +26,18 @@ double spriteSizeBoundPx(const Camera& cam, const glm::dvec3& centresLoWC, const
 // at most maxPointPx pixels.
 bool pointSpritesFit(const Camera& cam, const glm::dvec3& centresLoWC, const glm::dvec3& centresHiWC,
                      double radiusWC, double maxPointPx);
+
+// The width in pixels of a glyph diameterWC across at the centre of the
+// glyph centres' bounds: what a frame's typical sprite covers. +infinity
+// where that centre is not in front of the eye.
+double typicalSpritePx(const Camera& cam, const glm::dvec3& centresLoWC, const glm::dvec3& centresHiWC,
+                       double diameterWC);
+
+// The typical sprite width (typicalSpritePx) from which quads along the
+// glyphs' projected axes (shaders/lib/sprite.glsl) cost a frame less than
+// point sprites on this renderer (GL_RENDERER): they run the vertex stage
+// four times per glyph instead of once, and save fragments by the glyph's
+// area. Measured on llvmpipe only; +infinity (points) elsewhere until measured.
+double orientedQuadMinPx(std::string_view glRenderer);
 
 }  // namespace tg::render

@@ -1,0 +1,181 @@
+// Tier 3: quads along a glyph's projected axes (shaders/lib/sprite.glsl)
+// change what a frame costs, never what it shows. Exact equality is the
+// bound, as for point sprites: every pixel that can hit lies in both the
+// axis-aligned rectangle and the oriented quad, with the same margin.
+#include "render_fixture.h"
+
+#include <random>
+#include <string>
+
+#include <glm/gtc/quaternion.hpp>
+#include <glm/mat3x3.hpp>
+
+#include "render/sprite_primitive.h"
+
+using namespace tg;
+using test::GlFixture;
+
+namespace {
+
+// A 10^3 grid of thin glyphs in random orientations: needles, discs, spheres
+// (each 7th) and mixed signs (each 5th), so that every dispatch group is
+// drawn; or needles only.
+io::TensorField thinGrid(bool needlesOnly = false) {
+  io::TensorField f;
+  std::mt19937_64 rng(41);
+  std::normal_distribution<double> n(0.0, 1.0);
+  for (std::uint32_t i = 0; i < 10 * 10 * 10; ++i) {
+    glm::dvec3 l = i % 2 == 0 ? glm::dvec3(1.0, 0.06, 0.04) : glm::dvec3(1.0, 0.9, 0.05);
+    if (needlesOnly) l = glm::dvec3(1.0, 0.06, 0.04);
+    else if (i % 7 == 0) l = glm::dvec3(0.6);
+    else if (i % 5 == 0) l.z = -0.3;
+    const glm::dmat3 r = glm::mat3_cast(glm::normalize(glm::dquat(n(rng), n(rng), n(rng), n(rng))));
+    const glm::dmat3 t = r * glm::dmat3(l.x, 0, 0, 0, l.y, 0, 0, 0, l.z) * glm::transpose(r);
+    const double t9[9] = {t[0][0], t[1][0], t[2][0], t[0][1], t[1][1], t[2][1], t[0][2], t[1][2], t[2][2]};
+    const double p[3] = {double(i % 10), double(i / 10 % 10), double(i / 100)};
+    f.addFull(i, p, t9);
+  }
+  return f;
+}
+
+struct Frame {
+  render::FrameImage img;
+  bool points;
+  GLuint64 fragments;  // fragment shader runs, the lighting pass's included
+};
+
+class OrientedSprites : public GlFixture {
+ protected:
+  Frame frame(const tensor::GlyphSet& set, const render::Camera& cam, const render::FrameParams& p) {
+    ctx_->makeCurrent();
+    const gl::Api& gl = ctx_->api();
+    render::GlyphRenderer r(gl, *lib_);
+    render::GBuffer target(gl, cam.width, cam.height);
+    r.upload(set);
+    GLuint query = 0;
+    gl.GenQueries(1, &query);  // Mesa 22 refuses statistics targets in glCreateQueries
+    gl.BeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS, query);
+    r.render(cam, p, target);
+    gl.EndQuery(GL_FRAGMENT_SHADER_INVOCATIONS);
+    GLuint64 fragments = 0;
+    gl.GetQueryObjectui64v(query, GL_QUERY_RESULT, &fragments);
+    gl.DeleteQueries(1, &query);
+    return {r.readback(cam, target), r.culling().pointSprites(), fragments};
+  }
+};
+
+std::size_t differing(const render::FrameImage& a, const render::FrameImage& b) {
+  std::size_t n = 0;
+  for (std::size_t i = 0; i < a.id.size(); ++i)
+    n += a.id[i] != b.id[i] || a.depth[i] != b.depth[i] || a.rgba[4 * i] != b.rgba[4 * i] ||
+         a.rgba[4 * i + 1] != b.rgba[4 * i + 1] || a.rgba[4 * i + 2] != b.rgba[4 * i + 2];
+  return n;
+}
+
+std::size_t covered(const render::FrameImage& a) {
+  std::size_t n = 0;
+  for (auto id : a.id) n += id != ref::kNoGlyph;
+  return n;
+}
+
+}  // namespace
+
+// Quad frames, every kind that ray casts, both projections, the direct draw
+// and the indirect one (an FA threshold compacts, a close camera culls
+// ranges): byte-equal to the axis-aligned quads, with fewer fragments shaded.
+TEST_F(OrientedSprites, FramesEqualTheRectangleFramesWithFewerFragments) {
+  const auto set = test::glyphsOf(thinGrid());
+  const double scale = 0.45 / set.maxAbsEigenvalue;
+  struct Case {
+    render::GlyphKind kind;
+    double gamma, faMin, dist;
+    render::Projection proj;
+  };
+  const Case cases[] = {{render::GlyphKind::Ellipsoid, 3.0, 0.0, 25.0, render::Projection::Perspective},
+                        {render::GlyphKind::Superquadric, 3.0, 0.0, 25.0, render::Projection::Perspective},
+                        {render::GlyphKind::Superquadric, 0.0, 0.3, 25.0, render::Projection::Orthographic},
+                        {render::GlyphKind::Superquadric, 3.0, 0.0, 9.0, render::Projection::Perspective},
+                        {render::GlyphKind::Ellipsoid, 3.0, 0.5, 40.0, render::Projection::Orthographic}};
+  for (const Case& c : cases) {
+    SCOPED_TRACE(int(c.kind) * 1000 + int(c.gamma) * 100 + int(c.dist));
+    const auto cam = test::cameraFor(set, scale, test::oblique(set, c.dist, c.proj), 480, 360);
+    render::FrameParams p;
+    p.scale = scale;
+    p.glyph = c.kind;
+    p.gamma = c.gamma;
+    p.faMin = c.faMin;
+    p.pointSprites = false;
+    const Frame oriented = frame(set, cam, p);
+    p.orientedSprites = false;
+    const Frame rects = frame(set, cam, p);
+    EXPECT_FALSE(oriented.points);
+    EXPECT_GT(covered(rects.img), 1000u);
+    EXPECT_EQ(differing(oriented.img, rects.img), 0u);
+    EXPECT_LT(oriented.fragments, rects.fragments);
+  }
+}
+
+// Needles at random angles fill a small part of their rectangles: the
+// oriented quads shade far fewer fragments (llvmpipe counts whole 4x4
+// blocks, the lighting pass's included).
+TEST_F(OrientedSprites, NeedlesShadeFarFewerFragments) {
+  const auto set = test::glyphsOf(thinGrid(true));
+  const double scale = 0.45 / set.maxAbsEigenvalue;
+  const auto cam = test::cameraFor(set, scale, test::oblique(set, 25.0, render::Projection::Perspective), 480, 360);
+  render::FrameParams p;
+  p.scale = scale;
+  p.glyph = render::GlyphKind::Superquadric;
+  p.pointSprites = false;
+  const Frame oriented = frame(set, cam, p);
+  p.orientedSprites = false;
+  const Frame rects = frame(set, cam, p);
+  EXPECT_EQ(differing(oriented.img, rects.img), 0u);
+  const double lighting = double(cam.width) * cam.height;
+  EXPECT_LT(double(oriented.fragments) - lighting, 0.7 * (double(rects.fragments) - lighting));
+}
+
+// The frame's primitive by the typical sprite's width: on llvmpipe, wide
+// glyphs draw oriented quads instead of points, and show the same pixels.
+TEST_F(OrientedSprites, WideGlyphsDrawQuadsOnLlvmpipe) {
+  const auto set = test::glyphsOf(thinGrid());
+  const double scale = 0.45 / set.maxAbsEigenvalue;
+  ctx_->makeCurrent();
+  const auto* name = reinterpret_cast<const char*>(ctx_->api().GetString(GL_RENDERER));
+  const double minPx = render::orientedQuadMinPx(name ? name : "");
+  for (const int width : {160, 640}) {
+    SCOPED_TRACE(width);
+    const auto cam = test::cameraFor(set, scale, test::oblique(set, 25.0, render::Projection::Perspective), width,
+                                     width * 3 / 4);
+    render::FrameParams p;
+    p.scale = scale;
+    p.glyph = render::GlyphKind::Superquadric;
+    const Frame chosen = frame(set, cam, p);
+    p.orientedSprites = false;
+    const Frame points = frame(set, cam, p);
+    EXPECT_TRUE(points.points);
+    const double typicalPx = render::typicalSpritePx(cam, set.boundsMinWC, set.boundsMaxWC,
+                                                     1.0 / tensor::defaultScale(set, 1.0) * scale);
+    EXPECT_EQ(chosen.points, typicalPx < minPx);
+    if (std::string(name ? name : "").find("llvmpipe") != std::string::npos) {
+      EXPECT_EQ(chosen.points, width == 160);
+    }
+    EXPECT_EQ(differing(chosen.img, points.img), 0u);
+  }
+}
+
+TEST(SpritePrimitive, TypicalWidthScalesWithTheViewport) {
+  render::CameraDesc d;
+  d.eyeWC = {0, 0, 10};
+  d.lookAtWC = {0, 0, 0};
+  d.upWC = {0, 1, 0};
+  d.fovYDeg = 90;
+  const auto cam = render::makeCamera(d, 200, 100, glm::dvec3(-1), glm::dvec3(1));
+  // tan(45 deg) = 1: 100 rows span 2 * 10 world units at depth 10.
+  EXPECT_NEAR(render::typicalSpritePx(cam, glm::dvec3(-1), glm::dvec3(1), 1.0), 5.0, 1e-9);
+  d.eyeWC = {0, 0, -10};
+  d.lookAtWC = {0, 0, -20};
+  const auto behind = render::makeCamera(d, 200, 100, glm::dvec3(-1), glm::dvec3(1));
+  EXPECT_EQ(render::typicalSpritePx(behind, glm::dvec3(-1), glm::dvec3(1), 1.0), HUGE_VAL);
+  EXPECT_EQ(render::orientedQuadMinPx("llvmpipe (LLVM 15.0.6, 256 bits)"), 14.0);
+  EXPECT_EQ(render::orientedQuadMinPx("NVIDIA H100/PCIe/SSE2"), HUGE_VAL);
+}
