@@ -115,8 +115,9 @@ void readRawSamples(const char* who, const std::string& path, const RawSamples& 
   const std::size_t chunk = std::max<std::size_t>(1, kChunkBytes / record) * record;
   std::vector<char> buf(std::size_t(std::min<std::uint64_t>(chunk, bytes)));
   std::vector<double> vals(buf.size() / tsize);
-  for (std::uint64_t done = 0; done < bytes;) {
-    if (opt.progress) opt.progress("loading", double(done), double(bytes), "bytes");
+  for (std::uint64_t done = 0, chunks = 0; done < bytes; ++chunks) {
+    // Every 4 MiB: a report per 128 KiB chunk would be 400 for 48 MB.
+    if (opt.progress && chunks % 32 == 0) opt.progress("loading", double(done), double(bytes), "bytes");
     const std::size_t want = std::size_t(std::min<std::uint64_t>(buf.size(), bytes - done));
     std::size_t got = 0;
     while (got < want) {
