@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include <charconv>
+#include <cctype>
 #include <cmath>
 #include <sstream>
 #include <filesystem>
@@ -12,6 +13,9 @@ namespace tg::app {
 double parseDouble(std::string_view flag, std::string_view text) {
   double v = 0;
   const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
+  // "--ortho --fov 30": the parser gave the next flag as the value.
+  if (text.size() > 2 && text.starts_with("--") && !std::isdigit(static_cast<unsigned char>(text[2])))
+    throw UsageError(std::string(flag) + ": a number is missing (found the option " + std::string(text) + ")");
   if (ec != std::errc() || end != text.data() + text.size() || text.empty() || !std::isfinite(v))
     throw UsageError(std::string(flag) + ": \"" + std::string(text) + "\" is not a finite number");
   return v;

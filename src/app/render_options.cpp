@@ -67,7 +67,7 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
   });
   ap.arg("--color MODE").help("dec, fa, md, cl, cp or sign (normal stress: orange tension, blue compression)").action([&](Args a) { o.color = a[1]; });
   ap.arg("--background R G B A").help("background colour, 0..1 (default 0.08 0.08 0.1 1)").action([&](Args a) {
-    for (int k = 0; k < 4; ++k) o.background[k] = float(parseDouble("--background", a[1 + k]));
+    for (int k = 0; k < 4; ++k) o.background[k] = float(parseDoubleIn("--background", a[1 + k], 0.0, 1.0));
   });
   o.addSceneFlags(ap);
 }

@@ -17,6 +17,10 @@ const char* validateCamera(const CameraDesc& d) {
   if (!finite(d.eyeWC) || !finite(d.lookAtWC) || !finite(d.upWC)) return "camera vectors must be finite";
   const glm::dvec3 v = d.lookAtWC - d.eyeWC;
   if (glm::length(v) == 0.0) return "--eye and --look-at must differ";
+  // Beyond this the view direction's length overflows, and every test below
+  // would fail for that reason instead of its own.
+  if (!std::isfinite(glm::length(v)) || !std::isfinite(glm::length(d.upWC)))
+    return "camera vectors are too large (their lengths overflow a double)";
   if (glm::length(d.upWC) == 0.0) return "--up must be non-zero";
   if (glm::length(glm::cross(glm::normalize(v), glm::normalize(d.upWC))) < 1e-9)
     return "--up must not be parallel to the view direction";

@@ -127,6 +127,11 @@ TEST(Cli, BadInputFailsWithOneLineAndNoOutput) {
       {"render -o " + out.string() + " --color rainbow", "--color"},
       {"render -o " + out.string() + " --fov 30 --ortho 2", "exclude"},
       {"render -o " + out.string() + " --eye 0 0 0 --look-at 0 0 0", "differ"},
+      // Found by an attacker run: the next flag taken as the value, a length
+      // that overflows named as a parallel up vector, a colour out of range.
+      {"render -o " + out.string() + " --ortho --fov 30", "--ortho: a number is missing (found the option --fov)"},
+      {"render -o " + out.string() + " --eye 1e300 1e300 1e300", "lengths overflow"},
+      {"render -o " + out.string() + " --background 2 0 0 1", "--background must be within 0..1"},
       {"render -o " + (d / "x.notanimage").string(), "no image format"},
       {"render -o " + out.string() + " --backend vulkan", "backend"},
       {"render", "-o OUT"},
