@@ -494,20 +494,20 @@ TensorField readMif(const std::string& path, const ReadOptions& opt) {
   const std::size_t keptCount = sel.selectsAll() ? std::size_t(voxels) : kept.size();
   // On huge pages: faulting 4 KiB pages in was most of this path's cost
   // (bench_load, loadMif at 256^3: 100k faults a load).
-  std::vector<float> comps;
-  util::reserveHuge(comps, 6 * keptCount);
+  FloatGather comps;
+  comps.reserve(6 * keptCount);
   comps.resize(6 * keptCount);
   Walk walk(h);
   streamValues(path, im, 6, [&](const double* v, std::size_t m) {
     for (std::size_t i = 0; i < m; ++i, walk.next()) {
       const std::size_t slot = slotOf.empty() ? std::size_t(walk.voxel()) : slotOf[std::size_t(walk.voxel())];
-      if (slot != kDropped) comps[6 * slot + walk.comp()] = float(v[i]);
+      if (slot != kDropped) comps.set(6 * slot + walk.comp(), v[i]);
     }
   });
   f.reserve(keptCount);
   double v6[6];
   for (std::size_t s = 0; s < keptCount; ++s) {
-    std::copy(&comps[6 * s], &comps[6 * s] + 6, v6);
+    for (std::size_t c = 0; c < 6; ++c) v6[c] = comps.get(6 * s + c);
     // Every voxel in index order is push()'s case, placed incrementally.
     if (kept.empty()) sink.push(v6);
     else sink.pushAccepted(kept[s], v6);

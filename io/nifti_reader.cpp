@@ -325,15 +325,15 @@ TensorField impl::readNifti(const std::string& path, const ReadOptions& opt) {
   // c + 1. They are kept component-major and appended as they are decoded,
   // so that memory grows with the data actually in the file, never with what
   // a (gzipped, perhaps truncated) header claims.
-  std::vector<float> comps;
-  util::reserveHuge(comps, 6 * std::size_t(keptCount));
+  FloatGather comps;
+  comps.reserve(6 * std::size_t(keptCount));
   std::uint64_t v = 0;
   std::size_t slot = 0;
   streamValues(path, *nim, 6 * voxels, [&](double x) {
     if (kept.empty()) {
-      comps.push_back(float(x));
+      comps.push_back(x);
     } else if (slot < kept.size() && kept[slot] == v) {
-      comps.push_back(float(x));
+      comps.push_back(x);
       ++slot;
     }
     if (++v == voxels) {
@@ -345,11 +345,11 @@ TensorField impl::readNifti(const std::string& path, const ReadOptions& opt) {
   double v6[6];
   const std::size_t stride = std::size_t(keptCount);
   for (std::size_t r = 0; r < stride; ++r) {
-    for (std::size_t c = 0; c < 6; ++c) v6[c] = comps[c * stride + r];
+    for (std::size_t c = 0; c < 6; ++c) v6[c] = comps.get(c * stride + r);
     sink.pushAccepted(kept.empty() ? r : kept[r], v6);
   }
   sink.finish();
-  const std::string implausible = implausibleLayoutWarning(comps, std::size_t(keptCount), *conv.layout);
+  const std::string implausible = implausibleLayoutWarning(comps.floats(), std::size_t(keptCount), *conv.layout);
   if (!implausible.empty()) f.warnings.push_back(implausible);
   return f;
 }

@@ -3,11 +3,15 @@
 // samples: index -> WC placement, the tensor frame (D_WC = T D Tᵀ), the
 // confidence threshold and the selection. NRRD and NIfTI readers decode
 // their data into it in file order (i fastest).
+#include <algorithm>
 #include <array>
+#include <cmath>
 #include <optional>
+#include <vector>
 
 #include "io/selection.h"
 #include "io/tensor_field.h"
+#include "util/huge_pages.h"
 
 namespace tg::io {
 
@@ -64,6 +68,38 @@ class VolumeSink {
   std::uint64_t next_ = 0;
   int ijk_[3] = {0, 0, 0};
   double maxAsym_ = 0;
+};
+
+// Values gathered in single precision until their voxels are complete (the
+// readers whose files hold one volume per component). A finite value beyond
+// FLT_MAX becomes Inf in a float, and its tensor would be counted as the
+// file's NaN/Inf rather than as overflow (an attacker run found MRtrix counts
+// differing by layout); such values are marked and read back as a finite
+// stand-in beyond FLT_MAX, which TensorField::addSym counts as overflow.
+class FloatGather {
+ public:
+  void reserve(std::size_t n) { util::reserveHuge(values_, n); }
+  void resize(std::size_t n) { values_.resize(n); }
+  void set(std::size_t k, double v) {
+    values_[k] = float(v);
+    if (std::isinf(values_[k]) && std::isfinite(v)) [[unlikely]] mark(k);
+  }
+  void push_back(double v) {
+    values_.push_back(float(v));
+    if (std::isinf(values_.back()) && std::isfinite(v)) [[unlikely]] mark(values_.size() - 1);
+  }
+  double get(std::size_t k) const {
+    return k < beyond_.size() && beyond_[k] ? std::copysign(1e300, double(values_[k])) : double(values_[k]);
+  }
+  const std::vector<float>& floats() const { return values_; }
+
+ private:
+  void mark(std::size_t k) {
+    if (beyond_.size() <= k) beyond_.resize(std::max(values_.capacity(), k + 1));
+    beyond_[k] = 1;
+  }
+  std::vector<float> values_;
+  std::vector<char> beyond_;  // empty until a value is marked
 };
 
 double determinant3(const double m[9]);  // row-major

@@ -185,6 +185,31 @@ TEST(Mif, NonFiniteTensorsAreSkippedAndCounted) {
   EXPECT_EQ(f.totalPoints, fx.voxels());
 }
 
+// A finite Float64 beyond single precision is an overflow, a NaN or Inf the
+// file's own, in every layout: the gathering path once kept values as floats,
+// where 1e39 became Inf and was counted as the file's (an attacker run).
+TEST(Mif, OverflowIsToldFromNonFiniteInEveryLayout) {
+  for (const auto& layout : {std::array<std::string, 4>{"+1", "+2", "+3", "+0"},
+                             std::array<std::string, 4>{"+0", "+1", "+2", "+3"},
+                             std::array<std::string, 4>{"-3", "+0", "+2", "+1"}}) {
+    test::MifFixture fx;
+    fx.datatype = "Float64LE";
+    fx.fillDistinct(true);
+    fx.mrtrix[3][4] = NAN;
+    fx.mrtrix[5][0] = 1e39;
+    fx.mrtrix[6][1] = -1e300;
+    fx.mrtrix[7][2] = INFINITY;
+    fx.mrtrix[7][3] = 1e39;  // the file's Inf decides: non-finite
+    fx.layout = layout;
+    const fs::path p = tmpDir() / "overflow.mif";
+    test::writeMif(p, fx);
+    const io::TensorField f = read(p);
+    EXPECT_EQ(f.skippedNonFinite, 2u) << layout[0];
+    EXPECT_EQ(f.skippedOverflow, 2u) << layout[0];
+    EXPECT_EQ(f.size(), fx.voxels() - 4) << layout[0];
+  }
+}
+
 TEST(Mif, MaskInAnyLayout) {
   // A 2x3x4 mask stored k fastest, j descending: keeps voxels 1, 6 and 23.
   const std::string header =
