@@ -20,16 +20,36 @@ float formD(vec4 u, vec4 v) { return dot(u.xyz, v.xyz) - u.w * v.w; }
 // b^2 - a c directly loses the digits that b^2 and a c share, for a small
 // glyph off-centre up to a pixel; shifted, both terms are of the half-width's
 // size and the edges are good to float rounding of x0.
-bool ellipsoidRectNDC(mat4 pmt, out vec4 rect) {
+// The outline's terms taken about its centre, shared by the rectangle and
+// the oriented outline (lib/sprite.glsl): a = D(r4, r4), the centre x0, the
+// rows u1, u2 shifted by x0 r4, and b = D(u_i, r4), zero but for the rounding
+// of x0. False where the ellipsoid meets the eye plane.
+struct EllipseTerms {
+  float a;
+  vec2 x0;
+  vec4 u1, u2;
+  vec2 b;
+};
+
+bool ellipseTerms(mat4 pmt, out EllipseTerms e) {
   vec4 r1 = vec4(pmt[0][0], pmt[1][0], pmt[2][0], pmt[3][0]);
   vec4 r2 = vec4(pmt[0][1], pmt[1][1], pmt[2][1], pmt[3][1]);
   vec4 r4 = vec4(pmt[0][3], pmt[1][3], pmt[2][3], pmt[3][3]);
-  float a = formD(r4, r4);
-  if (!(a < 0.0)) return false;
-  vec2 x0 = vec2(formD(r1, r4), formD(r2, r4)) / a;
-  vec4 u1 = r1 - x0.x * r4, u2 = r2 - x0.y * r4;
-  vec2 b = vec2(formD(u1, r4), formD(u2, r4));  // zero but for the rounding of x0
-  vec2 s = sqrt(max(b * b - a * vec2(formD(u1, u1), formD(u2, u2)), 0.0));
+  e.a = formD(r4, r4);
+  if (!(e.a < 0.0)) return false;
+  e.x0 = vec2(formD(r1, r4), formD(r2, r4)) / e.a;
+  e.u1 = r1 - e.x0.x * r4;
+  e.u2 = r2 - e.x0.y * r4;
+  e.b = vec2(formD(e.u1, r4), formD(e.u2, r4));
+  return true;
+}
+
+bool ellipsoidRectNDC(mat4 pmt, out vec4 rect) {
+  EllipseTerms e;
+  if (!ellipseTerms(pmt, e)) return false;
+  float a = e.a;
+  vec2 x0 = e.x0, b = e.b;
+  vec2 s = sqrt(max(b * b - a * vec2(formD(e.u1, e.u1), formD(e.u2, e.u2)), 0.0));
   vec2 lo = x0 + (b + s) / a, hi = x0 + (b - s) / a;  // a < 0, so (b + s)/a is the smaller root
   rect = vec4(min(lo, hi), max(lo, hi));
   return true;

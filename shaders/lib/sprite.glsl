@@ -61,14 +61,11 @@ struct SpriteQuadDC {
 // its tangent lines with unit window normal n lie at n.centreDC +- sqrt(n^T
 // supportDC n). Returns false where it meets the eye plane.
 bool ellipseSupportDC(mat4 pmt, out vec2 centreDC, out mat2 supportDC) {
-  vec4 r1 = vec4(pmt[0][0], pmt[1][0], pmt[2][0], pmt[3][0]);
-  vec4 r2 = vec4(pmt[0][1], pmt[1][1], pmt[2][1], pmt[3][1]);
-  vec4 r4 = vec4(pmt[0][3], pmt[1][3], pmt[2][3], pmt[3][3]);
-  float a = formD(r4, r4);
-  if (!(a < 0.0)) return false;
-  vec2 x0 = vec2(formD(r1, r4), formD(r2, r4)) / a;
-  vec4 u1 = r1 - x0.x * r4, u2 = r2 - x0.y * r4;
-  vec2 b = vec2(formD(u1, r4), formD(u2, r4));
+  EllipseTerms e;
+  if (!ellipseTerms(pmt, e)) return false;
+  float a = e.a;
+  vec2 x0 = e.x0, b = e.b;
+  vec4 u1 = e.u1, u2 = e.u2;
   // Half-widths squared in NDC: (b_i b_j - a D(u_i, u_j)) / a^2; to pixels by k.
   vec2 k = 0.5 * uViewportDC;
   float sxx = (b.x * b.x - a * formD(u1, u1)) / (a * a), syy = (b.y * b.y - a * formD(u2, u2)) / (a * a);

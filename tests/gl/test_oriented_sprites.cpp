@@ -2,6 +2,7 @@
 // change what a frame costs, never what it shows. Exact equality is the
 // bound, as for point sprites: every pixel that can hit lies in both the
 // axis-aligned rectangle and the oriented quad, with the same margin.
+#include "frame_compare.h"
 #include "render_fixture.h"
 
 #include <random>
@@ -64,20 +65,6 @@ class OrientedSprites : public GlFixture {
   }
 };
 
-std::size_t differing(const render::FrameImage& a, const render::FrameImage& b) {
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < a.id.size(); ++i)
-    n += a.id[i] != b.id[i] || a.depth[i] != b.depth[i] || a.rgba[4 * i] != b.rgba[4 * i] ||
-         a.rgba[4 * i + 1] != b.rgba[4 * i + 1] || a.rgba[4 * i + 2] != b.rgba[4 * i + 2];
-  return n;
-}
-
-std::size_t covered(const render::FrameImage& a) {
-  std::size_t n = 0;
-  for (auto id : a.id) n += id != ref::kNoGlyph;
-  return n;
-}
-
 }  // namespace
 
 // Quad frames, every kind that ray casts, both projections, the direct draw
@@ -109,8 +96,8 @@ TEST_F(OrientedSprites, FramesEqualTheRectangleFramesWithFewerFragments) {
     p.orientedSprites = false;
     const Frame rects = frame(set, cam, p);
     EXPECT_FALSE(oriented.points);
-    EXPECT_GT(covered(rects.img), 1000u);
-    EXPECT_EQ(differing(oriented.img, rects.img), 0u);
+    EXPECT_GT(test::coveredPixels(rects.img), 1000u);
+    EXPECT_EQ(test::differingPixels(oriented.img, rects.img), 0u);
     EXPECT_LT(oriented.fragments, rects.fragments);
   }
 }
@@ -129,7 +116,7 @@ TEST_F(OrientedSprites, NeedlesShadeFarFewerFragments) {
   const Frame oriented = frame(set, cam, p);
   p.orientedSprites = false;
   const Frame rects = frame(set, cam, p);
-  EXPECT_EQ(differing(oriented.img, rects.img), 0u);
+  EXPECT_EQ(test::differingPixels(oriented.img, rects.img), 0u);
   const double lighting = double(cam.width) * cam.height;
   EXPECT_LT(double(oriented.fragments) - lighting, 0.7 * (double(rects.fragments) - lighting));
 }
@@ -159,7 +146,7 @@ TEST_F(OrientedSprites, WideGlyphsDrawQuadsOnLlvmpipe) {
     if (std::string(name ? name : "").find("llvmpipe") != std::string::npos) {
       EXPECT_EQ(chosen.points, width == 160);
     }
-    EXPECT_EQ(differing(chosen.img, points.img), 0u);
+    EXPECT_EQ(test::differingPixels(chosen.img, points.img), 0u);
   }
 }
 

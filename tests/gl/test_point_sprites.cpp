@@ -2,6 +2,7 @@
 // costs, never what it shows. Exact equality is the bound: the same shaders
 // see the same pixels, since every pixel a point's square adds outside the
 // rectangle misses the glyph.
+#include "frame_compare.h"
 #include "render_fixture.h"
 
 #include <random>
@@ -45,20 +46,6 @@ class PointSprites : public GlFixture {
   }
 };
 
-std::size_t differing(const render::FrameImage& a, const render::FrameImage& b) {
-  std::size_t n = 0;
-  for (std::size_t i = 0; i < a.id.size(); ++i)
-    n += a.id[i] != b.id[i] || a.depth[i] != b.depth[i] || a.rgba[4 * i] != b.rgba[4 * i] ||
-         a.rgba[4 * i + 1] != b.rgba[4 * i + 1] || a.rgba[4 * i + 2] != b.rgba[4 * i + 2];
-  return n;
-}
-
-std::size_t covered(const render::FrameImage& a) {
-  std::size_t n = 0;
-  for (auto id : a.id) n += id != ref::kNoGlyph;
-  return n;
-}
-
 }  // namespace
 
 // Every kind, both projections, the direct draw and the indirect one (an FA
@@ -97,8 +84,8 @@ TEST_F(PointSprites, FramesEqualTheQuadFrames) {
     EXPECT_FALSE(quads.points);
     EXPECT_EQ(points.indirect, quads.indirect);
     (points.indirect ? indirect : direct) += 1;
-    EXPECT_GT(covered(quads.img), 1000u);
-    EXPECT_EQ(differing(points.img, quads.img), 0u);
+    EXPECT_GT(test::coveredPixels(quads.img), 1000u);
+    EXPECT_EQ(test::differingPixels(points.img, quads.img), 0u);
   }
   EXPECT_GT(direct, 0);
   EXPECT_GT(indirect, 0);
@@ -118,5 +105,5 @@ TEST_F(PointSprites, TheEyeAmongTheGlyphsDrawsQuads) {
   p.glyph = render::GlyphKind::Superquadric;
   const Frame f = frame(set, cam, p);
   EXPECT_FALSE(f.points);
-  EXPECT_GT(covered(f.img), 1000u);
+  EXPECT_GT(test::coveredPixels(f.img), 1000u);
 }
