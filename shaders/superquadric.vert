@@ -33,11 +33,13 @@ void main() {
   if (!glyphSelected(g.posWC_fa)) return;
   vec3 axes = glyphAxes(g.eigenvalues_id.xyz);
   if (!(max(axes.x, max(axes.y, axes.z)) > 0.0)) return;
+  vec3 centreVC = (uViewWCVC * vec4(g.posWC_fa.xyz, 1.0)).xyz;
+  // The box's half-diagonal bounds every shape.
+  if (spriteMissesEveryPixelCentre(centreVC, length(axes))) return;
   vec4 shape = superquadricShape(g.eigenvalues_id.xyz, uGamma);
 
   mat3 rotWC = quatToMat3(g.frameWC);
   mat3 rotVC = mat3(uViewWCVC) * rotWC;
-  vec3 centreVC = (uViewWCVC * vec4(g.posWC_fa.xyz, 1.0)).xyz;
   // GC axes: a cyclic permutation of the eigenvectors that puts the symmetry axis on z.
   int ax = int(shape.w);
   ivec3 src = ivec3((ax + 1) % 3, (ax + 2) % 3, ax);
