@@ -26,14 +26,13 @@ MifDataType parseMifDataType(const std::string& path, std::string_view text) {
                 {"uint16", RawType::U16},  {"int32", RawType::I32},    {"uint32", RawType::U32},
                 {"int64", RawType::I64},   {"uint64", RawType::U64},   {"float32", RawType::F32},
                 {"float64", RawType::F64}};
-  MifDataType d{std::string(text), 0, RawType::F32, false};
-  for (const auto& k : kTypes)
-    if (base == k.base) d = {d.name, int(rawTypeBytes(k.type)), k.type, rawTypeBytes(k.type) > 1 && swap};
-  if (d.bytes == 0 && (base == "bit" || base.starts_with("cfloat")))
+  const auto known = std::find_if(std::begin(kTypes), std::end(kTypes), [&](const auto& k) { return base == k.base; });
+  if (known == std::end(kTypes) && (base == "bit" || base.starts_with("cfloat")))
     fail("datatype " + std::string(text) + " is not supported; tensors need real numbers");
-  if (d.bytes == 0) fail("datatype \"" + std::string(text) + "\" is not an MRtrix data type");
+  if (known == std::end(kTypes)) fail("datatype \"" + std::string(text) + "\" is not an MRtrix data type");
+  const MifDataType d{std::string(text), known->type, rawTypeBytes(known->type) > 1 && swap};
   // "Int8LE" and the like name no real type.
-  if (d.bytes == 1 && base != t) fail("datatype \"" + std::string(text) + "\" is not an MRtrix data type");
+  if (rawTypeBytes(d.type) == 1 && base != t) fail("datatype \"" + std::string(text) + "\" is not an MRtrix data type");
   return d;
 }
 

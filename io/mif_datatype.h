@@ -13,8 +13,7 @@ namespace tg::io {
 
 struct MifDataType {
   std::string name;  // as the header spells it
-  int bytes = 0;
-  RawType type = RawType::F32;
+  RawType type = RawType::F32;  // its size: rawTypeBytes(type)
   bool swap = false;  // stored in the other byte order
 };
 

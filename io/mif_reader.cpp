@@ -313,7 +313,7 @@ Image openImage(const std::string& path, Shape&& shape) {
     im.data = openRegular(path, im.dataPath, "data file", size);
   }
   std::uint64_t bytes = 0;
-  if (__builtin_mul_overflow(h.values, std::uint64_t(h.type.bytes), &bytes))
+  if (__builtin_mul_overflow(h.values, std::uint64_t(rawTypeBytes(h.type.type)), &bytes))
     fail(path, "dim: the image size overflows");
   if (h.dataOffset > size)
     fail(path, "data offset " + std::to_string(h.dataOffset) + " is beyond the end of " + im.dataPath + " (" +
@@ -344,7 +344,7 @@ std::string dimsText(const Header& h) {
 template <class Consume>
 void streamValues(const std::string& path, const Image& im, std::size_t record, Consume&& consume) {
   const Header& h = im.h;
-  const std::size_t tsize = std::size_t(h.type.bytes);
+  const std::size_t tsize = rawTypeBytes(h.type.type);
   // h.values is a whole number of records.
   const std::size_t chunk = std::size_t(
       std::min<std::uint64_t>(std::max<std::size_t>(1, kChunkBytes / (tsize * record)) * record, h.values));
@@ -464,7 +464,7 @@ TensorField readMif(const std::string& path, const ReadOptions& opt) {
   const std::uint64_t voxels = spatialVoxels(path, h);
   const GridPlacement placed = placementOf(g);
   const Selector sel(opt.selection, path, g.dims, &placed);
-  promiseData("readMif", path, opt, 6 * voxels * std::uint64_t(h.type.bytes), sel.keptBound(voxels));
+  promiseData("readMif", path, opt, 6 * voxels * std::uint64_t(rawTypeBytes(h.type.type)), sel.keptBound(voxels));
   if (fileOrderIsIndexOrder(h)) {
     // Voxel by voxel, as a raw NRRD: the guard's parent reads the values
     // (io/raw_samples.h), where no mask needs reading beside them.

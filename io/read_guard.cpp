@@ -255,10 +255,6 @@ Result resultInChild(const std::string& who, const std::string& path, const Read
 
 }  // namespace
 
-TensorField readInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
-                        const std::function<TensorField(const PromiseFn&)>& read, const util::ProgressSink& progress) {
-  return resultInChild(who, path, limits, read, [](WireIn& in) { return readField(in); }, progress);
-}
 
 void runInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
                 const std::function<SendFn(const PromiseFn&)>& read, const std::function<void(WireIn&)>& receive,

@@ -32,7 +32,7 @@ std::uint64_t defaultMemoryBudget();
 // the format parses everything up front (VTK): 3 s + 1 s per 4 MB.
 ReadLimits limitsFor(std::uint64_t fileBytes, std::uint64_t memoryBudget);
 
-// Calls read() in a child process under `limits` and returns its field. The
+// Calls read() in a child process under `limits` (runInChild below). The
 // child's stdout and stderr go to /dev/null: a library's own messages never
 // reach the user, only the child's InputError does. The PromiseFn given to
 // read() is called once the reader's header is checked: it extends the
@@ -42,26 +42,23 @@ ReadLimits limitsFor(std::uint64_t fileBytes, std::uint64_t memoryBudget);
 // what it promised. Throws InputError ("who: path: problem") for a crash, a
 // limit, a timeout or the reader's own error.
 using PromiseFn = std::function<void(std::uint64_t decodedBytes, std::uint64_t memoryBytes)>;
-// `progress`, if given, hears ("loading", offset, size, "bytes") of the
-// file the child reads, about 10 times a second (io/read_progress.h).
-TensorField readInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
-                        const std::function<TensorField(const PromiseFn&)>& read,
-                        const util::ProgressSink& progress = {});
 
 class WireOut;
 class WireIn;
-// A field on the wire, every member: readInChild's format, for callers of
-// runInChild that send more after it.
+// A tensor field on the wire, every member (readTensorField sends the raw
+// data's description after it, io/raw_samples.h).
 void sendField(WireOut& w, const TensorField& f);
 TensorField receiveField(WireIn& r);
 
-// The same for a scalar volume (an underlay).
+// A scalar volume (an underlay) read in a child process.
 ScalarVolume readScalarInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
                                const std::function<ScalarVolume(const PromiseFn&)>& read);
 
-// The same for any result: in the child, `read` returns a function that puts
-// its result on the wire (holding what it sends alive), and in the parent
-// `receive` takes it off; readInChild above is this with a TensorField.
+// Any result: in the child, `read` returns a function that puts its result
+// on the wire (holding what it sends alive), and in the parent `receive`
+// takes it off. `progress`, if given, hears ("loading", offset, size,
+// "bytes") of the file the child reads, about 10 times a second
+// (io/read_progress.h).
 using SendFn = std::function<void(WireOut&)>;
 void runInChild(const std::string& who, const std::string& path, const ReadLimits& limits,
                 const std::function<SendFn(const PromiseFn&)>& read, const std::function<void(WireIn&)>& receive,
