@@ -300,9 +300,7 @@ void decode(const std::string& path, Header& h, std::uint64_t count, std::size_t
     const std::size_t got = read(buf.data(), want);
     if (got != want) truncated(done + got);
     const std::size_t m = want / tsize;
-    if (swap)
-      for (std::size_t i = 0; i < m; ++i) std::reverse(buf.data() + i * tsize, buf.data() + (i + 1) * tsize);
-    rawToDoubles(rawTypeOf(n->type), false, buf.data(), m, vals.data());
+    rawToDoubles(rawTypeOf(n->type), swap, buf.data(), m, vals.data());
     consume(vals.data(), m);
     done += want;
   }

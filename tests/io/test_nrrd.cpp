@@ -4,6 +4,7 @@
 
 #include <teem/nrrd.h>
 #include <unistd.h>
+#include <zlib.h>
 
 #include <cmath>
 #include <cstring>
@@ -110,6 +111,26 @@ TEST(Nrrd, BigEndianAndLittleEndianAgree) {
   ASSERT_EQ(a.size(), 2u);
   EXPECT_EQ(a.tensors, b.tensors);
   EXPECT_FLOAT_EQ(b.tensors[7], 2.125f);
+}
+
+// The same through the decoder of compressed data (decode in nrrd_reader.cpp,
+// not the raw path), which swaps bytes on its own: gzip of big-endian doubles.
+TEST(Nrrd, BigEndianGzipAgreesWithLittleEndianRaw) {
+  const std::vector<double> d = sample6(3);
+  std::vector<float> v(d.begin(), d.end());
+  const fs::path le = tmpDir() / "le3.nrrd", gz = tmpDir() / "be3.raw.gz", be = tmpDir() / "be3.nhdr";
+  test::writeFile(le, header("6 3 1 1", "kinds: 3D-symmetric-matrix domain domain domain") + floats(v));
+  std::string bytes(reinterpret_cast<const char*>(d.data()), 8 * d.size());
+  for (std::size_t i = 0; i < bytes.size(); i += 8) std::reverse(bytes.begin() + long(i), bytes.begin() + long(i) + 8);
+  gzFile out = gzopen(gz.c_str(), "wb");
+  ASSERT_NE(out, nullptr);
+  ASSERT_EQ(gzwrite(out, bytes.data(), unsigned(bytes.size())), int(bytes.size()));
+  ASSERT_EQ(gzclose(out), Z_OK);
+  test::writeFile(be, "NRRD0005\ntype: double\ndimension: 4\nsizes: 6 3 1 1\nencoding: gzip\nendian: big\n"
+                      "kinds: 3D-symmetric-matrix domain domain domain\ndata file: be3.raw.gz\n");
+  const auto a = io::readTensorField(le.string(), {}), b = io::readTensorField(be.string(), {});
+  ASSERT_EQ(b.size(), 3u);
+  EXPECT_EQ(a.tensors, b.tensors);
 }
 
 TEST(Nrrd, MeasurementFrameAndRotatedGridRoundTrip) {
