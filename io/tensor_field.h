@@ -69,19 +69,17 @@ struct TensorField {
   // volume readers call it once a voxel.
   void addSym(std::uint32_t id, const double p[3], const double s6[6]) {
     ++totalPoints;
-    float v[9];
-    if (!admitSample(p, s6, v)) return;
-    std::copy(v, v + 3, positions.extend(3));
-    std::copy(v + 3, v + 9, tensors.extend(6));
+    if (!admits(p, s6)) return;
+    storeSample(p, s6, positions.extend(3), tensors.extend(6));
     ids.push_back(id);
   }
-  // addSym's test without the append: true and the sample as floats
-  // (position, then tensor) in `v`, or false with the sample counted skipped.
-  // A Frobenius norm within FLT_MAX bounds every component, so it and the
-  // position's magnitudes say whether every float is finite (a finite double
-  // beyond FLT_MAX would be stored as Inf); NaN fails each comparison. Only a
-  // failure asks whether the file held a NaN/Inf or the value overflowed.
-  bool admitSample(const double p[3], const double s6[6], float v[9]) {
+  // addSym's test without the append: true, or false with the sample counted
+  // skipped. A Frobenius norm within FLT_MAX bounds every component, so it
+  // and the position's magnitudes say whether every float is finite (a
+  // finite double beyond FLT_MAX would be stored as Inf); NaN fails each
+  // comparison. Only a failure asks whether the file held a NaN/Inf or the
+  // value overflowed.
+  bool admits(const double p[3], const double s6[6]) {
     constexpr double kMax = FLT_MAX;
     const double norm2 = s6[0] * s6[0] + s6[3] * s6[3] + s6[5] * s6[5] + 2 * (s6[1] * s6[1] + s6[2] * s6[2] + s6[4] * s6[4]);
     const bool fits = norm2 <= kMax * kMax && std::abs(p[0]) <= kMax && std::abs(p[1]) <= kMax && std::abs(p[2]) <= kMax;
@@ -92,9 +90,14 @@ struct TensorField {
       ++(finite ? skippedOverflow : skippedNonFinite);
       return false;
     }
-    for (int k = 0; k < 3; ++k) v[k] = float(p[k]);
-    for (int k = 0; k < 6; ++k) v[3 + k] = float(s6[k]);
     return true;
+  }
+  // An admitted sample as floats, straight into its slots: through a stack
+  // copy, the stores and the wider reloads of it stalled on store
+  // forwarding (half of a raw load's decode time).
+  static void storeSample(const double p[3], const double s6[6], float* posWC, float* tensor) {
+    for (int k = 0; k < 3; ++k) posWC[k] = float(p[k]);
+    for (int k = 0; k < 6; ++k) tensor[k] = float(s6[k]);
   }
   void reserve(std::size_t n) {
     positions.reserve(3 * n);

@@ -52,11 +52,9 @@ void VolumeSink::pushVoxels(const double* v, std::size_t values) {
     for (int k = 0; k < 6; ++k) s[k] = v[layout_.sym[std::size_t(k)]];
     if (g_.tensorToWC) congruence(g_.tensorToWC->data(), s, s);
     ++f_.totalPoints;
-    float r[9];
     const std::uint64_t index = next_++;
-    if (!f_.admitSample(p, s, r)) continue;
-    std::copy(r, r + 3, posWC + 3 * kept);
-    std::copy(r + 3, r + 9, ten + 6 * kept);
+    if (!f_.admits(p, s)) continue;
+    TensorField::storeSample(p, s, posWC + 3 * kept, ten + 6 * kept);
     ids[kept++] = std::uint32_t(index);
   }
   f_.positions.resize(3 * (before + kept));
