@@ -15,7 +15,8 @@ VolumeSink::VolumeSink(TensorField& f, const VolumeGeometry& g, const ComponentL
                        double confidenceMin)
     : f_(f), g_(g), layout_(layout), sel_(sel), confidenceMin_(confidenceMin) {}
 
-void VolumeSink::nextPosition(double p[3]) {
+// Inlined: a call per voxel was 3% of a raw load.
+[[gnu::always_inline]] inline void VolumeSink::nextPosition(double p[3]) {
   positionWC(g_, ijk_, p);
   if (++ijk_[0] == g_.dims[0]) {
     ijk_[0] = 0;

@@ -176,11 +176,6 @@ void groupTiles(GlyphSet& set, const std::uint8_t* groups, std::size_t threads) 
 
 }  // namespace
 
-GlyphGroup glyphGroup(const GlyphRecord& g) {
-  if (g.eigenvalues[0] == g.eigenvalues[2]) return GlyphGroup::Sphere;
-  return g.eigenvalues[2] > 0.0f || g.eigenvalues[0] < 0.0f ? GlyphGroup::Definite : GlyphGroup::Mixed;
-}
-
 GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> tensors,
                      std::span<const std::uint32_t> ids, unsigned threads, const GlyphOptions& opt,
                      const util::ProgressSink& progress) {

@@ -30,7 +30,11 @@ static_assert(sizeof(GlyphRecord) == 48);
 // ellipsoids at gamma 0; mixed signs take Schultz-Kindlmann shapes, which do
 // not depend on gamma.
 enum class GlyphGroup : std::uint8_t { Sphere = 0, Definite = 1, Mixed = 2 };
-GlyphGroup glyphGroup(const GlyphRecord& g);
+// Inline: buildRange asks it once a record.
+inline GlyphGroup glyphGroup(const GlyphRecord& g) {
+  if (g.eigenvalues[0] == g.eigenvalues[2]) return GlyphGroup::Sphere;
+  return g.eigenvalues[2] > 0.0f || g.eigenvalues[0] < 0.0f ? GlyphGroup::Definite : GlyphGroup::Mixed;
+}
 
 // Glyphs [kTileGlyphs t, kTileGlyphs (t + 1)) form tile t. Tiles keep the
 // input order, so that a tile of a volume is a compact block of space (what
