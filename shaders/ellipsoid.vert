@@ -9,6 +9,7 @@
 #include "lib/color.glsl"
 #include "lib/selection.glsl"
 #include "lib/sprite.glsl"
+#include "lib/occlusion.glsl"
 
 uniform int uColorMode;
 uniform vec2 uMdRange;
@@ -44,6 +45,9 @@ void main() {
   vec2 px = 0.5 / uViewportDC;
   rect = clamp(rect + vec4(-px, px), -1.0, 1.0);
   if (rect.x >= rect.z || rect.y >= rect.w) return;
+  // Hidden behind the pre-pass's occluders, which hold this very ellipsoid
+  // (so a glyph visible anywhere never is): no fragment of it could win.
+  if (spriteOccluded(rect, dist - radius, 0.0)) return;
 
   // The quad sits at the nearest depth the glyph can have, so the fragment
   // depth only ever moves away from it (layout(depth_less) with reversed Z).

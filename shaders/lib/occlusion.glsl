@@ -18,20 +18,23 @@ bool behindOccluder(float depthVC, float occluderWin, float toleranceVC) {
   return depthVC > occluderVC + 1e-5 * occluderVC + toleranceVC;
 }
 
-// The farthest occluder over the window pixels [pxMin, pxMax]: the level at
-// which they span at most 2x2 texels, and those texels.
+// The farthest occluder over the window pixels [pxMin, pxMax]: the finest
+// level at which they span at most 4x4 texels, and those texels (a sprite a
+// few pixels wide then reads texels little wider than itself).
 float farthestOccluderWin(ivec2 pxMin, ivec2 pxMax) {
+  const int kSpan = 4;
   int levels = textureQueryLevels(uOccluderPyramid);
   int k = 1;
-  while (k < levels && any(greaterThan((pxMax >> k) - (pxMin >> k), ivec2(1)))) ++k;
-  if (any(greaterThan((pxMax >> k) - (pxMin >> k), ivec2(1)))) return 0.0;
+  while (k < levels && any(greaterThan((pxMax >> k) - (pxMin >> k), ivec2(kSpan - 1)))) ++k;
+  if (any(greaterThan((pxMax >> k) - (pxMin >> k), ivec2(kSpan - 1)))) return 0.0;
   // From level 0: llvmpipe's textureSize took one lane's lod for all when
   // the lod differed between vertices (a whole glyph vanished; tests).
   ivec2 last = max(textureSize(uOccluderPyramid, 0) >> (k - 1), ivec2(1)) - 1;
   ivec2 a = min(pxMin >> k, last), b = min(pxMax >> k, last);
-  float f = min(texelFetch(uOccluderPyramid, a, k - 1).r, texelFetch(uOccluderPyramid, b, k - 1).r);
-  f = min(f, texelFetch(uOccluderPyramid, ivec2(a.x, b.y), k - 1).r);
-  return min(f, texelFetch(uOccluderPyramid, ivec2(b.x, a.y), k - 1).r);
+  float f = 1.0;
+  for (int y = a.y; y <= b.y; ++y)
+    for (int x = a.x; x <= b.x; ++x) f = min(f, texelFetch(uOccluderPyramid, ivec2(x, y), k - 1).r);
+  return f;
 }
 
 // Whole-glyph test for a sprite covering rectNDC whose nearest point is at nearestVC.

@@ -229,6 +229,7 @@ Camera GlyphRenderer::renderShadowMap(const Camera& cam, const FrameParams& p, i
   const bool occluders = !tessellated && split < 3 && p.occlusionPrepass && hasOccluders_;
   if (occluders) {
     shadow_->beginOccluders(light.width);
+    ellipsoid_.set("uOccluders", 0);
     useGlyphProgram(ellipsoid_, light);
     culling_.draw(sprites_, 0, 2);
     shadow_->buildPyramid(pyramid_);
@@ -284,6 +285,9 @@ void GlyphRenderer::drawGlyphs(const Camera& cam, const FrameParams& p, int spli
     culling_.draw(sprites_, 0, 3);
     return;
   }
+  // The pre-pass drew these very ellipsoids (groups below split): the
+  // hidden ones stop in the vertex stage.
+  ellipsoid_.set("uOccluders", occluders ? 1 : 0);
   useGlyphProgram(ellipsoid_, cam);
   culling_.draw(sprites_, 0, split);
   if (split < 3) {
@@ -319,6 +323,7 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
     // culled, and pixels whose box entry is behind it skip the march
     // (shaders/lib/occlusion.glsl).
     target.beginOccluders();
+    ellipsoid_.set("uOccluders", 0);
     useGlyphProgram(ellipsoid_, cam);
     culling_.draw(sprites_, 0, 2);
     pyramid_.build(target);

@@ -2,6 +2,7 @@
 // shaders/lib/occlusion.glsl) changes what a frame costs, never what it shows.
 // Exact equality is the bound: a skipped fragment is one that would have lost
 // the depth test.
+#include "frame_compare.h"
 #include "render_fixture.h"
 
 #include <algorithm>
@@ -168,4 +169,57 @@ TEST_F(Occlusion, NoPrepassWithoutOccluders) {
   EXPECT_EQ(on.prepasses, 0u);
   EXPECT_EQ(differing(on.img, off.img), 0u);
   EXPECT_GT(on.stats.pixels, 1000u);
+}
+
+// Spheres (and, at gamma 0, definite glyphs) are drawn as exact ellipsoids
+// into the pre-pass and again into the G-buffer; the second time, those wholly
+// behind the pyramid stop in the vertex stage (ellipsoid.vert). A dense block
+// of spheres with one mixed-sign glyph (so that the march and its pre-pass
+// run): the frame is unchanged, and the spheres are not shaded twice over.
+TEST_F(Occlusion, HiddenSpheresSkipTheGeometryPass) {
+  io::TensorField f;
+  std::mt19937_64 rng(11);
+  std::uniform_real_distribution<double> u(0.6, 1.0);
+  const int n = 12;
+  for (std::uint32_t i = 0; i < std::uint32_t(n * n * n); ++i) {
+    const double s = u(rng);
+    double t[9] = {s, 0, 0, 0, s, 0, 0, 0, s};
+    if (i == 0) t[4] = -0.5 * s;  // the one mixed-sign glyph
+    const double p[3] = {double(i % n), double(i / n % n), double(i / (n * n))};
+    f.addFull(i, p, t);
+  }
+  const auto set = test::glyphsOf(f);
+  ASSERT_GT(set.sphereCount, std::size_t(n * n * n) - 2);
+  const double scale = 0.55 / set.maxAbsEigenvalue;
+  const auto cam = closeCamera(set, scale, 160, 120);
+  const gl::Api& gl = ctx_->api();
+  auto shaded = [&](bool prepass, render::FrameImage& img) {
+    ctx_->makeCurrent();
+    render::GlyphRenderer r(gl, *lib_);
+    render::GBuffer target(gl, cam.width, cam.height);
+    r.upload(set);
+    render::FrameParams p;
+    p.scale = scale;
+    p.glyph = render::GlyphKind::Superquadric;
+    p.gamma = 3.0;
+    p.occlusionPrepass = prepass;
+    GLuint query = 0;
+    gl.GenQueries(1, &query);  // Mesa 22 refuses statistics targets in glCreateQueries
+    gl.BeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS, query);
+    r.render(cam, p, target);
+    gl.EndQuery(GL_FRAGMENT_SHADER_INVOCATIONS);
+    GLuint64 fragments = 0;
+    gl.GetQueryObjectui64v(query, GL_QUERY_RESULT, &fragments);
+    gl.DeleteQueries(1, &query);
+    EXPECT_EQ(r.occlusionPrepasses(), prepass ? 1u : 0u);
+    img = r.readback(cam, target);
+    return double(fragments);
+  };
+  render::FrameImage plain, culled;
+  const double without = shaded(false, plain), with = shaded(true, culled);
+  EXPECT_EQ(test::differingPixels(plain, culled), 0u);
+  EXPECT_GT(test::coveredPixels(plain), plain.id.size() / 2);
+  // The pre-pass shades every sphere once; were the hidden ones shaded again
+  // in the G-buffer, the frame would shade about twice as many fragments.
+  EXPECT_LT(with, 1.5 * without);
 }
