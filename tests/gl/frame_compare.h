@@ -4,6 +4,7 @@
 // colour does.
 #include <cstddef>
 
+#include "gl/loader.h"
 #include "ref/ellipsoid_ref.h"
 #include "render/frame_image.h"
 
@@ -20,6 +21,21 @@ inline std::size_t differingPixels(const render::FrameImage& a, const render::Fr
 inline std::size_t coveredPixels(const render::FrameImage& a) {
   std::size_t n = 0;
   for (auto id : a.id) n += id != ref::kNoGlyph;
+  return n;
+}
+
+// What the pipeline statistics query `target` (GL_FRAGMENT_SHADER_INVOCATIONS,
+// ...) counts while `draw` runs: how tests tell that a cull acted.
+template <class Draw>
+GLuint64 countedBy(const gl::Api& gl, GLenum target, Draw&& draw) {
+  GLuint query = 0;
+  gl.GenQueries(1, &query);  // Mesa 22 refuses statistics targets in glCreateQueries
+  gl.BeginQuery(target, query);
+  draw();
+  gl.EndQuery(target);
+  GLuint64 n = 0;
+  gl.GetQueryObjectui64v(query, GL_QUERY_RESULT, &n);
+  gl.DeleteQueries(1, &query);
   return n;
 }
 

@@ -203,14 +203,7 @@ TEST_F(Occlusion, HiddenSpheresSkipTheGeometryPass) {
     p.glyph = render::GlyphKind::Superquadric;
     p.gamma = 3.0;
     p.occlusionPrepass = prepass;
-    GLuint query = 0;
-    gl.GenQueries(1, &query);  // Mesa 22 refuses statistics targets in glCreateQueries
-    gl.BeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS, query);
-    r.render(cam, p, target);
-    gl.EndQuery(GL_FRAGMENT_SHADER_INVOCATIONS);
-    GLuint64 fragments = 0;
-    gl.GetQueryObjectui64v(query, GL_QUERY_RESULT, &fragments);
-    gl.DeleteQueries(1, &query);
+    const GLuint64 fragments = test::countedBy(gl, GL_FRAGMENT_SHADER_INVOCATIONS, [&] { r.render(cam, p, target); });
     EXPECT_EQ(r.occlusionPrepasses(), prepass ? 1u : 0u);
     img = r.readback(cam, target);
     return double(fragments);

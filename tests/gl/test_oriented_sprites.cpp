@@ -53,14 +53,7 @@ class OrientedSprites : public GlFixture {
     render::GlyphRenderer r(gl, *lib_);
     render::GBuffer target(gl, cam.width, cam.height);
     r.upload(set);
-    GLuint query = 0;
-    gl.GenQueries(1, &query);  // Mesa 22 refuses statistics targets in glCreateQueries
-    gl.BeginQuery(GL_FRAGMENT_SHADER_INVOCATIONS, query);
-    r.render(cam, p, target);
-    gl.EndQuery(GL_FRAGMENT_SHADER_INVOCATIONS);
-    GLuint64 fragments = 0;
-    gl.GetQueryObjectui64v(query, GL_QUERY_RESULT, &fragments);
-    gl.DeleteQueries(1, &query);
+    const GLuint64 fragments = test::countedBy(gl, GL_FRAGMENT_SHADER_INVOCATIONS, [&] { r.render(cam, p, target); });
     return {r.readback(cam, target), r.culling().pointSprites(), fragments};
   }
 };
