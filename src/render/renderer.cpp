@@ -320,7 +320,7 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   const bool marching = count_ > 0 && !tessellated && split < 3;
   // Only mixed-sign glyphs (a stress field) give no occluders: no pre-pass;
   // nor do glyphs too small for it to pay (render/sprite_primitive.h).
-  const bool occluders = marching && p.occlusionPrepass && hasOccluders_ && typical >= occlusionMinPx_;
+  const bool occluders = marching && p.occlusionPrepass && hasOccluders_ && !(typical < occlusionMinPx_);
   if (occluders) {
     // Occlusion pre-pass: the exact ellipsoids of spheres and definite
     // glyphs, depth only. Their superquadrics hold them, so no visible
