@@ -30,17 +30,20 @@ void main() {
   float radius = max(axes.x, max(axes.y, axes.z));
   if (!(radius > 0.0)) return;
 
-  mat3 rotWC = quatToMat3(g.frameWC);
-  mat3 rotVC = mat3(uViewWCVC) * rotWC;
   vec3 centreVC = (uViewWCVC * vec4(g.posWC_fa.xyz, 1.0)).xyz;
   float dist = -centreVC.z;
   if (dist + radius < uNearVC || (uOrtho == 1 && dist - radius > uFarVC)) return;
+  // The sphere of the longest axis holds the ellipsoid.
+  if (spriteMissesEveryPixelCentre(centreVC, radius)) return;
+  mat3 rotWC = quatToMat3(g.frameWC);
+  mat3 rotVC = mat3(uViewWCVC) * rotWC;
 
   // T of eq. (2), in VC: parameter space -> view coordinates.
   mat4 tVC = mat4(vec4(rotVC[0] * axes.x, 0.0), vec4(rotVC[1] * axes.y, 0.0),
                   vec4(rotVC[2] * axes.z, 0.0), vec4(centreVC, 1.0));
   vec4 rect;
   if (!ellipsoidRectNDC(uProjVCCC * tVC, rect)) rect = vec4(-1.0, -1.0, 1.0, 1.0);
+  else if (rectMissesEveryPixelCentre(rect, kPixelCentreMarginDC)) return;
   // A quarter pixel of margin so that pixel centres on the exact edge are kept.
   vec2 px = 0.5 / uViewportDC;
   rect = clamp(rect + vec4(-px, px), -1.0, 1.0);

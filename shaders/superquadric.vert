@@ -71,6 +71,12 @@ void main() {
   vec4 rectR;
   if (!crossesEyePlane && ellipsoidRectNDC(reachCC, rectR))
     rect = vec4(max(rect.xy, rectR.xy), min(rect.zw, rectR.zw));
+  // No pixel centre in it (a glyph near a pixel's size, or thin): nothing to
+  // set up. The march accepts hits within its tolerance, a glyph grown by at
+  // most that fraction, so the margin grows with the rectangle.
+  vec2 sizeDC = (rect.zw - rect.xy) * 0.5 * uViewportDC;
+  float marginDC = kPixelCentreMarginDC + (2e-3 + 4.0 * uEpsilon) * max(sizeDC.x, sizeDC.y);
+  if (!crossesEyePlane && rectMissesEveryPixelCentre(rect, marginDC)) return;
   // A quarter pixel of margin so that pixel centres on the exact edge are kept.
   vec2 px = 0.5 / uViewportDC;
   rect = clamp(rect + vec4(-px, px), -1.0, 1.0);

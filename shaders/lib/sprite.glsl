@@ -10,10 +10,15 @@
 // (SpriteQuadDC below) where that is smaller. Requires lib/camera.glsl and
 // lib/ellipsoid.glsl.
 //
+// A glyph whose rectangle holds no pixel centre shades nothing, however
+// drawn: its vertex stops (lib/pixel_centres.glsl) and no primitive is set up.
+//
 // Why not the alternatives: point sprites are capped (255 px on llvmpipe,
 // GL_POINT_SIZE_RANGE), and a glyph near the camera needs up to the whole
 // viewport; a geometry shader expanding one point per glyph made llvmpipe
 // buffer every output vertex of the draw (about 0.7 kB per glyph, measured).
+
+#include "lib/pixel_centres.glsl"
 
 // Under an FA threshold the draw walks the compacted list instead
 // (compact_fa.comp): slot -> record. Off, the slot is the record.
@@ -55,24 +60,6 @@ struct SpriteQuadDC {
   vec2 axis;
   vec2 halfSize;
 };
-
-// True where no pixel centre lies in the screen rectangle of the sphere of
-// radius rVC about centreVC, which holds the glyph: no ray through a pixel
-// centre can then hit it, so it draws nothing and its costlier vertex work
-// is skipped (sub-pixel glyphs, most of a dense far field). A 64th of a pixel
-// of margin covers the rectangle's rounding. No claim where the sphere meets
-// the eye plane.
-bool spriteMissesEveryPixelCentre(vec3 centreVC, float rVC) {
-  vec4 rectNDC;
-  mat4 pmt = uProjVCCC * mat4(vec4(rVC, 0.0, 0.0, 0.0), vec4(0.0, rVC, 0.0, 0.0), vec4(0.0, 0.0, rVC, 0.0),
-                              vec4(centreVC, 1.0));
-  if (!ellipsoidRectNDC(pmt, rectNDC)) return false;
-  vec4 rectDC = (rectNDC + 1.0) * 0.5 * uViewportDC.xyxy;
-  const float margin = 1.0 / 64.0;
-  // Pixel centres sit at k + 0.5: the first one at or past the low edge.
-  vec2 firstCentre = ceil(rectDC.xy - margin - 0.5) + 0.5;
-  return any(greaterThan(firstCentre, rectDC.zw + margin));
-}
 
 // The projected outline of the ellipsoid whose parameter->clip transform is
 // pmt, as in ellipsoidRectNDC (Sigg et al. eq. 5) but along any direction:

@@ -2,8 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
+#include "render/camera_uniforms.h"
 #include "render/frustum.h"
 
 namespace tg::render {
@@ -20,6 +22,7 @@ void deleteBuffers(const gl::Api& gl, std::initializer_list<GLuint*> buffers) {
 
 GlyphCulling::GlyphCulling(const gl::Api& gl, const gl::ShaderLibrary& lib)
     : gl_(gl),
+      lib_(lib),
       compact_(gl, lib, {{GL_COMPUTE_SHADER, "compact_fa.comp"}}),
       cull_(gl, lib, {{GL_COMPUTE_SHADER, "cull_ranges.comp"}}),
       drawnCounter_(gl) {
@@ -62,7 +65,7 @@ void GlyphCulling::dispatch(const gl::Program& prog, std::size_t workgroups) con
 }
 
 void GlyphCulling::prepare(const Camera& cam, double scale, const tensor::SizeMapping& sizing, double faMin,
-                           const Slab& slab, bool frustum, bool points) {
+                           const Slab& slab, bool frustum, bool points, bool pixels) {
   const std::size_t n = table_.ranges.size();
   compacted_ = indirect_ = false;
   points_ = points;
@@ -70,13 +73,15 @@ void GlyphCulling::prepare(const Camera& cam, double scale, const tensor::SizeMa
   // Same float comparison as the shaders: a threshold at or below every
   // glyph's FA hides nothing and costs nothing.
   const auto faMinF = float(faMin);
-  if (faMinF > table_.minFa) {
+  if (pixels) {
+    // The pixel cull applies the threshold too, and overwrites the kept list.
+    cullPixels(cam, scale, sizing, faMinF, slab);
+    compacted_ = true;
+    compactedFor_ = std::numeric_limits<float>::quiet_NaN();
+  } else if (faMinF > table_.minFa) {
     compacted_ = true;
     if (!(passes_.compactions > 0 && faMinF == compactedFor_)) {
-      if (!keptIndex_) {
-        gl_.CreateBuffers(1, &keptIndex_);
-        gl_.NamedBufferStorage(keptIndex_, GLsizeiptr(glyphCount_ * sizeof(GLuint)), nullptr, 0);
-      }
+      allocateKeptIndex();
       gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, glyphs_);
       gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kRangesBinding, ranges_);
       gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeptCountBinding, keptCount_);
@@ -130,6 +135,37 @@ void GlyphCulling::prepare(const Camera& cam, double scale, const tensor::SizeMa
   gl_.MemoryBarrier(GL_COMMAND_BARRIER_BIT | GL_SHADER_STORAGE_BARRIER_BIT);
   ++passes_.commandPasses;
   gl::checkError(gl_, "GlyphCulling::prepare");
+}
+
+void GlyphCulling::allocateKeptIndex() {
+  if (keptIndex_) return;
+  gl_.CreateBuffers(1, &keptIndex_);
+  gl_.NamedBufferStorage(keptIndex_, GLsizeiptr(glyphCount_ * sizeof(GLuint)), nullptr, 0);
+}
+
+void GlyphCulling::cullPixels(const Camera& cam, double scale, const tensor::SizeMapping& sizing, float faMin,
+                              const Slab& slab) {
+  if (!pixels_) pixels_ = std::make_unique<gl::Program>(gl_, lib_, std::initializer_list<gl::StageSource>{
+                                                                    {GL_COMPUTE_SHADER, "cull_pixels.comp"}});
+  allocateKeptIndex();
+  const gl::Program& prog = *pixels_;
+  setCameraUniforms(prog, cam);
+  prog.set("uScale", float(scale));
+  prog.set("uMagnitude", int(sizing.magnitude));
+  prog.set("uLambda0", float(sizing.lambda0));
+  prog.set("uMaxRadiusWC", float(sizing.maxRadiusWC));
+  prog.set("uFaMin", faMin);
+  prog.set("uSlabAxis", slab.axis);
+  prog.set("uSlabWC", glm::vec2(float(slab.lo), float(slab.hi)));
+  const std::size_t n = table_.ranges.size();
+  prog.set("uRangeCount", int(n));
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, glyphs_);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kRangesBinding, ranges_);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeptCountBinding, keptCount_);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeptIndexBinding, keptIndex_);
+  dispatch(prog, (n + 7) / 8);
+  gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+  ++passes_.pixelCulls;
 }
 
 void GlyphCulling::draw(const QuadSprites& sprites, int g0, int g1) const {

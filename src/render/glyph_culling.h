@@ -4,11 +4,15 @@
 //  - an FA threshold compacts each range's kept glyphs once per threshold
 //    change (shaders/compact_fa.comp), order preserved;
 //  - per frame, ranges whose box is outside the view frustum get empty
-//    indirect draw commands (shaders/cull_ranges.comp).
+//    indirect draw commands (shaders/cull_ranges.comp);
+//  - on llvmpipe, while glyphs are about a pixel or smaller, a per-frame
+//    pass keeps only glyphs that some pixel centre can see
+//    (shaders/cull_pixels.comp), so that the vertex stage runs for those alone.
 // When the threshold hides nothing and the whole scene is in view, neither
 // pass runs and the frame is the plain direct draw.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <vector>
 
@@ -47,8 +51,10 @@ class GlyphCulling {
   // measure the culling). A slab (axis >= 0) culls ranges wholly outside it.
   // Glyphs are sized by `scale` and `sizing` (tensor/glyph_scale.h).
   // `points`: this frame's sprites are points (render/sprite_primitive.h).
+  // `pixels`: keep only glyphs whose bounding sphere's screen rectangle holds
+  // a pixel centre (llvmpipe with small glyphs; render/sprite_primitive.h).
   void prepare(const Camera& cam, double scale, const tensor::SizeMapping& sizing, double faMin, const Slab& slab,
-               bool frustum, bool points = false);
+               bool frustum, bool points = false, bool pixels = false);
   // Draws the glyphs of groups [g0, g1) (tensor::GlyphGroup) with the bound
   // program, whose uCompacted must be compacted().
   void draw(const QuadSprites& sprites, int g0, int g1) const;
@@ -69,17 +75,21 @@ class GlyphCulling {
   // How often each pass has run since upload, so tests can tell that a frame
   // which needs no culling runs none.
   struct Passes {
-    std::uint64_t compactions = 0, commandPasses = 0;
+    std::uint64_t compactions = 0, commandPasses = 0, pixelCulls = 0;
   };
   Passes passes() const { return passes_; }
   // Bytes of GPU memory culling holds: ranges, kept counts and commands,
-  // and the compacted indices once a threshold has needed them.
+  // and the compacted indices once a threshold or the pixel cull has needed them.
   std::size_t gpuBytes() const;
 
  private:
   void dispatch(const gl::Program& prog, std::size_t workgroups) const;
+  void allocateKeptIndex();
+  void cullPixels(const Camera& cam, double scale, const tensor::SizeMapping& sizing, float faMin, const Slab& slab);
   const gl::Api& gl_;
+  const gl::ShaderLibrary& lib_;
   gl::Program compact_, cull_;
+  std::unique_ptr<gl::Program> pixels_;  // cull_pixels.comp, built on first use
   RangeTable table_;
   std::array<std::vector<GlyphRun>, 16> runs_;  // [4 * g0 + g1]: direct runs of groups [g0, g1)
   glm::dvec3 centresLo_{0.0}, centresHi_{0.0};

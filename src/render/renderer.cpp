@@ -33,6 +33,8 @@ GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib, Ov
   maxPointPx_ = double(pointRange[1]);
   const auto* name = reinterpret_cast<const char*>(gl.GetString(GL_RENDERER));
   orientedQuadMinPx_ = orientedQuadMinPx(name ? name : "");
+  pixelCullMaxPx_ = pixelCullMaxPx(name ? name : "");
+  occlusionMinPx_ = occlusionMinPx(name ? name : "");
 }
 
 GlyphRenderer::~GlyphRenderer() {
@@ -249,9 +251,13 @@ bool GlyphRenderer::pointSprites(const Camera& cam, const FrameParams& p) const 
     return false;
   // Wide ray-cast glyphs pay for quads' three more vertex runs with the
   // fragments that their own axes save (prisms keep axis-aligned quads).
+  return !(p.orientedSprites && !isPrismKind(p.glyph) && typicalPx(cam, p) >= orientedQuadMinPx_);
+}
+
+double GlyphRenderer::typicalPx(const Camera& cam, const FrameParams& p) const {
+  const double maxRadiusWC = tensor::glyphRadiusWC(p.scale, p.sizing, maxAbsEigenvalue_);
   const double typicalWC = std::min(typicalDiameter_ * p.scale, 2.0 * maxRadiusWC);
-  return !(p.orientedSprites && !isPrismKind(p.glyph) &&
-           typicalSpritePx(cam, centresLoWC_, centresHiWC_, typicalWC) >= orientedQuadMinPx_);
+  return typicalSpritePx(cam, centresLoWC_, centresHiWC_, typicalWC);
 }
 
 void GlyphRenderer::beginGlyphs() const {
@@ -310,12 +316,15 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   std::optional<Camera> light;
   if (!p.shadow.enabled) shadow_.reset();
   else if (count_ > 0 || !context_.empty()) light = renderShadowMap(cam, p, split);
+  const double typical = typicalPx(cam, p);
   if (tessellated) culling_.bypass();
-  else culling_.prepare(cam, p.scale, p.sizing, p.faMin, p.slab, p.frustumCulling, pointSprites(cam, p));
+  else culling_.prepare(cam, p.scale, p.sizing, p.faMin, p.slab, p.frustumCulling, pointSprites(cam, p),
+                        p.pixelCull && typical < pixelCullMaxPx_);
   if (count_ > 0) beginGlyphs();
   const bool marching = count_ > 0 && !tessellated && split < 3;
-  // Only mixed-sign glyphs (a stress field) give no occluders: no pre-pass.
-  const bool occluders = marching && p.occlusionPrepass && hasOccluders_;
+  // Only mixed-sign glyphs (a stress field) give no occluders: no pre-pass;
+  // nor do glyphs too small for it to pay (render/sprite_primitive.h).
+  const bool occluders = marching && p.occlusionPrepass && hasOccluders_ && !(typical < occlusionMinPx_);
   if (occluders) {
     // Occlusion pre-pass: the exact ellipsoids of spheres and definite
     // glyphs, depth only. Their superquadrics hold them, so no visible

@@ -78,6 +78,9 @@ struct FrameParams {
   // Quads along a glyph's projected axes where smaller than its axis-aligned
   // rectangle (shaders/lib/sprite.glsl; off only to measure).
   bool orientedSprites = true;
+  // On llvmpipe with small glyphs, a per-frame pass keeps only glyphs that a
+  // pixel centre can see (render/glyph_culling.h; off only to measure).
+  bool pixelCull = true;
   // > 0: draw the tessellated baseline at this resolution instead of ray
   // casting (superquadrics at `gamma`; render/tessellated.h).
   int tessellation = 0;
@@ -183,6 +186,8 @@ class GlyphRenderer {
   void beginGlyphs() const;
   // Whether this frame draws point sprites (render/sprite_primitive.h).
   bool pointSprites(const Camera& cam, const FrameParams& p) const;
+  // The width in pixels of this frame's typical glyph (typicalSpritePx).
+  double typicalPx(const Camera& cam, const FrameParams& p) const;
   void useGlyphProgram(const gl::Program& prog, const Camera& cam) const;
   // Every glyph `cam` sees, into the bound framebuffer; groups from `split`
   // on by the marching program (superquadrics), the counting one when `stats`.
@@ -227,6 +232,7 @@ class GlyphRenderer {
   double eigenMin_ = 0, eigenMax_ = 0;
   double typicalDiameter_ = 1.0;  // in eigenvalue units
   double orientedQuadMinPx_ = 0.0;  // render/sprite_primitive.h, for this renderer
+  double pixelCullMaxPx_ = 0.0, occlusionMinPx_ = 0.0;  // the same
   std::unique_ptr<AoPass> ao_;
   std::unique_ptr<OutlinePass> outline_;
   std::unique_ptr<gl::Program> lightingVariant_;  // lighting.frag with TG_AO and/or TG_SHADOWS

@@ -1,0 +1,28 @@
+// Whether any pixel centre can see a glyph, from bounds on its screen
+// rectangle: a glyph that no ray through a pixel centre can hit draws
+// nothing, so the vertex stage (lib/sprite.glsl) and llvmpipe's per-frame
+// cull (cull_pixels.comp) drop it before its shape, primitive or fragments
+// cost anything. Requires lib/camera.glsl and lib/ellipsoid.glsl.
+
+// True where no pixel centre lies in rectNDC (xmin, ymin, xmax, ymax) grown
+// by marginDC pixels on every side.
+bool rectMissesEveryPixelCentre(vec4 rectNDC, float marginDC) {
+  vec4 rectDC = (rectNDC + 1.0) * 0.5 * uViewportDC.xyxy;
+  // Pixel centres sit at k + 0.5: the first one at or past the low edge.
+  vec2 firstCentre = ceil(rectDC.xy - marginDC - 0.5) + 0.5;
+  return any(greaterThan(firstCentre, rectDC.zw + marginDC));
+}
+
+// A 64th of a pixel of margin covers an exact rectangle's float rounding.
+const float kPixelCentreMarginDC = 1.0 / 64.0;
+
+// True where no pixel centre lies in the screen rectangle of the sphere of
+// radius rVC about centreVC, which holds the glyph: sub-pixel glyphs, most
+// of a dense far field. No claim where the sphere meets the eye plane.
+bool spriteMissesEveryPixelCentre(vec3 centreVC, float rVC) {
+  vec4 rectNDC;
+  mat4 pmt = uProjVCCC * mat4(vec4(rVC, 0.0, 0.0, 0.0), vec4(0.0, rVC, 0.0, 0.0), vec4(0.0, 0.0, rVC, 0.0),
+                              vec4(centreVC, 1.0));
+  if (!ellipsoidRectNDC(pmt, rectNDC)) return false;
+  return rectMissesEveryPixelCentre(rectNDC, kPixelCentreMarginDC);
+}
