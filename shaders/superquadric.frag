@@ -6,6 +6,7 @@
 #include "lib/camera.glsl"
 #include "lib/ellipsoid.glsl"
 #include "lib/superquadric.glsl"
+#include "lib/superquadric_march.glsl"
 #include "lib/color.glsl"
 #include "lib/occlusion.glsl"
 
@@ -46,11 +47,14 @@ void main() {
   // and most of a thin glyph's rectangle is such rays.
   vec3 q = o - dot(o, d) / (dl * dl) * d;
   float reach = superquadricReach(fin.shape) * (1.0 + 1e-3) + 4.0 * uEpsilon;
-  if (dot(q, q) > reach * reach) discard;
   // The box's entry is the nearest this glyph can be on the ray: behind the
   // occluders it cannot win the depth test, so it skips the march.
-  if (pixelOccluded(ivec2(gl_FragCoord.xy), tc + unitCubeSpan(o, d / dl).x / dl, 4.0 * uEpsilon / dl)) discard;
-  MarchResult m = superquadricMarch(fin.shape, o, d / dl, (uNearVC - tc) * dl, uMaxIterations, uEpsilon);
+  // The march runs under `if`, not after a discard: on llvmpipe a discarded
+  // fragment still runs every loop to the end (lib/superquadric_march.glsl).
+  bool inReach = !(dot(q, q) > reach * reach) &&
+      !pixelOccluded(ivec2(gl_FragCoord.xy), tc + unitCubeSpan(o, d / dl).x / dl, 4.0 * uEpsilon / dl);
+  MarchResult m = MarchResult(false, 0.0, vec3(0.0), 0);
+  if (inReach) m = superquadricMarch(fin.shape, o, d / dl, (uNearVC - tc) * dl, uMaxIterations, uEpsilon);
 #ifdef TG_ITERATION_STATS
   if (m.iterations > 0) {
     atomicAdd(iterStats[0], uint(m.iterations));

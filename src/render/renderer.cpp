@@ -51,6 +51,7 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   buffer_ = 0;
   count_ = GLsizei(set.glyphs.size());
   hasOccluders_ = set.sphereCount + set.definiteCount > 0;
+  groupCounts_ = {set.sphereCount, set.definiteCount, set.glyphs.size() - set.sphereCount - set.definiteCount};
   mdMin_ = float(set.mdMin);
   mdMax_ = float(set.mdMax);
   centresLoWC_ = set.boundsMinWC;
@@ -75,12 +76,12 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
 void GlyphRenderer::setCamera(const gl::Program& prog, const Camera& cam) const { setCameraUniforms(prog, cam); }
 
 // Null where a marching or tessellated program has not been built yet.
-std::array<const gl::Program*, 4> GlyphRenderer::glyphPrograms() const {
-  return {&ellipsoid_, superquadric_.get(), superquadricStats_.get(), tessellated_.program()};
+std::array<const gl::Program*, 6> GlyphRenderer::glyphPrograms() const {
+  return {&ellipsoid_, march_[0].get(), march_[1].get(), march_[2].get(), march_[3].get(), tessellated_.program()};
 }
 
-std::array<const gl::Program*, 3> GlyphRenderer::shapePrograms() const {
-  return {superquadric_.get(), superquadricStats_.get(), tessellated_.program()};
+std::array<const gl::Program*, 5> GlyphRenderer::shapePrograms() const {
+  return {march_[0].get(), march_[1].get(), march_[2].get(), march_[3].get(), tessellated_.program()};
 }
 
 void GlyphRenderer::setShapeUniforms(const gl::Program& prog, const FrameParams& p, const FrameParams* old) const {
@@ -95,15 +96,20 @@ void GlyphRenderer::setShapeUniforms(const gl::Program& prog, const FrameParams&
 // The Newton march, compiled the first time a frame has glyphs to march:
 // ellipsoid, cylinder and box frames never build it (a third of the
 // programs' compile time at start-up), and the counting variant only with
-// --stats.
-const gl::Program& GlyphRenderer::marchProgram(bool stats, const FrameParams& p) {
-  auto& slot = stats ? superquadricStats_ : superquadric_;
+// --stats. Each variant is built only when a frame needs it.
+const gl::Program& GlyphRenderer::marchProgram(bool stats, MarchVariant v, const FrameParams& p) {
+  auto& slot = march_[std::size_t(2 * int(v) + (stats ? 1 : 0))];
   if (!slot) {
     const auto stages = {gl::StageSource{GL_VERTEX_SHADER, "superquadric.vert"},
                          gl::StageSource{GL_FRAGMENT_SHADER, "superquadric.frag"}};
-    slot = stats ? std::make_unique<gl::Program>(gl_, lib_, stages,
-                                                 std::initializer_list<std::string_view>{"TG_ITERATION_STATS"})
-                 : std::make_unique<gl::Program>(gl_, lib_, stages);
+    const std::string_view variant = v == MarchVariant::Convex ? "TG_MARCH_CONVEX" : "";
+    // Program throws for an option no stage declares: a variant that is
+    // missing fails here, loudly.
+    auto make = [&](std::initializer_list<std::string_view> on) {
+      return std::make_unique<gl::Program>(gl_, lib_, stages, on);
+    };
+    slot = variant.empty() ? (stats ? make({"TG_ITERATION_STATS"}) : make({}))
+                           : (stats ? make({"TG_ITERATION_STATS", variant}) : make({variant}));
     setGlyphUniforms(*slot, p, nullptr);
     setShapeUniforms(*slot, p, nullptr);
     slot->set("uMdRange", glm::vec2(mdMin_, mdMax_));
@@ -296,13 +302,22 @@ void GlyphRenderer::drawGlyphs(const Camera& cam, const FrameParams& p, int spli
   ellipsoid_.set("uOccluders", occluders ? 1 : 0);
   useGlyphProgram(ellipsoid_, cam);
   culling_.draw(sprites_, 0, split);
-  if (split < 3) {
-    const gl::Program& march = marchProgram(stats, p);
+  // Marched groups: definite glyphs (marched at gamma > 0, all convex) by
+  // the convex variant, the rest by the general march; a group with no
+  // glyphs builds no program.
+  const int definite = int(tensor::GlyphGroup::Definite);
+  const bool convex = p.marchVariants && split == definite;
+  auto march = [&](MarchVariant v, int g0, int g1) {
+    const gl::Program& prog = marchProgram(stats, v, p);
     // Per pass, from what ran: the shaders never read a stale pre-pass.
-    march.set("uOccluders", occluders ? 1 : 0);
-    useGlyphProgram(march, cam);
-    culling_.draw(sprites_, split, 3);
-  }
+    prog.set("uOccluders", occluders ? 1 : 0);
+    useGlyphProgram(prog, cam);
+    culling_.draw(sprites_, g0, g1);
+    ++marchDraws_[std::size_t(v)];
+  };
+  if (convex && groupCounts_[std::size_t(definite)] > 0) march(MarchVariant::Convex, definite, definite + 1);
+  const int rest = convex ? definite + 1 : split;
+  if (rest < 3 && !(p.marchVariants && groupCounts_[2] == 0 && rest == 2)) march(MarchVariant::General, rest, 3);
 }
 
 void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffer& target) {

@@ -1,6 +1,7 @@
 #pragma once
 // The glyph renderer: one upload, then a geometry pass into the G-buffer and a
 // deferred lighting pass per frame.
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <memory>
@@ -59,6 +60,10 @@ struct IterationStats {
   std::uint64_t pixels = 0;  // superquadric fragments that ran the march
 };
 
+// The march's programs (shaders/lib/superquadric_march.glsl): the general
+// one, and one for definite glyphs' convex shapes, exact for those.
+enum class MarchVariant { General = 0, Convex = 1 };
+
 struct FrameParams {
   double scale = 1.0;  // world units per eigenvalue unit
   tensor::SizeMapping sizing;  // magnitude mapping and clamp (tensor/glyph_scale.h); default: none
@@ -72,6 +77,9 @@ struct FrameParams {
   // Superquadrics: an exact ellipsoid depth pass first, so that fragments of
   // glyphs hidden behind it skip the march (off only to measure what it saves).
   bool occlusionPrepass = true;
+  // Superquadrics: definite glyphs by the convex march variant, else by the
+  // general march (off only to compare).
+  bool marchVariants = true;
   // One point sprite per glyph where every glyph's rectangle fits a point,
   // else two triangles (render/sprite_primitive.h; off only to measure).
   bool pointSprites = true;
@@ -150,7 +158,11 @@ class GlyphRenderer {
   // shadow pass (its program and map) exists now: only while frames ask for it.
   std::uint64_t shadowMapPasses() const { return shadowMapPasses_; }
   // Whether a frame has needed the Newton march (its program is built then).
-  bool marchProgramBuilt() const { return superquadric_ || superquadricStats_; }
+  bool marchProgramBuilt() const {
+    return std::any_of(march_.begin(), march_.end(), [](const auto& m) { return m != nullptr; });
+  }
+  // Draws by march variant v since construction.
+  std::uint64_t marchDraws(MarchVariant v) const { return marchDraws_[std::size_t(v)]; }
   bool tessellatedProgramBuilt() const { return tessellated_.program() != nullptr; }
   bool shadowPassBuilt() const { return shadow_ != nullptr; }
   int shadowMapSize() const { return shadow_ ? shadow_->mapSize() : 0; }  // texels a side, of the last map
@@ -193,13 +205,13 @@ class GlyphRenderer {
   // on by the marching program (superquadrics), the counting one when `stats`.
   void drawGlyphs(const Camera& cam, const FrameParams& p, int split, bool stats, bool occluders);
   // The marching program (with Newton counting when `stats`), built on first use.
-  const gl::Program& marchProgram(bool stats, const FrameParams& p);
+  const gl::Program& marchProgram(bool stats, MarchVariant v, const FrameParams& p);
   const gl::Program& tessellatedProgram(const FrameParams& p);
   void setShapeUniforms(const gl::Program& prog, const FrameParams& p, const FrameParams* old) const;
   // Programs that draw glyphs, and those of them that take the superquadric
   // shape uniforms; null where a marching program is not built yet.
-  std::array<const gl::Program*, 4> glyphPrograms() const;
-  std::array<const gl::Program*, 3> shapePrograms() const;
+  std::array<const gl::Program*, 6> glyphPrograms() const;
+  std::array<const gl::Program*, 5> shapePrograms() const;
   // Sets the lighting uniforms of `p` on a lighting program.
   void setLighting(const gl::Program& prog, const FrameParams& p) const;
   // lighting_, or the variant the frame's effects need (`shadows`: the key
@@ -212,7 +224,10 @@ class GlyphRenderer {
   const gl::Api& gl_;
   const gl::ShaderLibrary& lib_;
   gl::Program ellipsoid_;
-  std::unique_ptr<gl::Program> superquadric_, superquadricStats_;  // built on first use (marchProgram)
+  // [2 * MarchVariant + stats], each built on first use (marchProgram).
+  std::array<std::unique_ptr<gl::Program>, 4> march_;
+  std::array<std::uint64_t, 2> marchDraws_{};
+  std::array<std::size_t, 3> groupCounts_{};  // uploaded glyphs by tensor::GlyphGroup
   gl::Program lighting_;
   QuadSprites sprites_;
   GlyphCulling culling_;

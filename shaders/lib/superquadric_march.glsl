@@ -1,0 +1,215 @@
+// The box-seeded Newton march of Hlawitschka et al. with a kept bracket
+// (Blinn 1982, §3.3) through a superquadric's gauge (lib/superquadric.glsl).
+//
+// Written for llvmpipe's cost model (Mesa 22.3 gallivm): a fragment shader
+// runs 8 fragments in lock-step and executes both sides of every if, masked;
+// discard only masks; a loop runs its body at least once and repeats while
+// any lane is still in it. So every gauge call written into the march costs
+// each fragment in full whether reached or not, and only loop iterations are
+// ever skipped. The march is therefore one loop with one gauge call, and
+// each iteration does one phase's step: the entry's, a grid sample's, a
+// bisection step's, a Newton step's or the hit's final gradient.
+//
+// TG_MARCH_CONVEX: the variant for definite tensors' Kindlmann shapes
+// (a, b, b), a, b <= 1, which superquadricConvex always holds: no grid search.
+#pragma tg option TG_MARCH_CONVEX
+
+// Convex along every line when g is a norm (2/a, 2/b >= 1, c = b); it then
+// also contains the unit sphere when a, b <= 1.
+bool superquadricConvex(vec3 shape) { return shape.x <= 2.0 && shape.y <= 2.0 && shape.z == shape.y; }
+
+struct MarchResult {
+  bool hit;
+  float s;      // arc length along the unit GC direction
+  vec3 gradGC;
+  int iterations;
+};
+
+// Entry and exit of the ray o + s dir through the cube [-1, 1]^3 that holds
+// every shape (slabs); empty where x > y.
+vec2 unitCubeSpan(vec3 o, vec3 dir) {
+  vec3 inv = 1.0 / dir;
+  vec3 ta = (-1.0 - o) * inv, tb = (1.0 - o) * inv;
+  return vec2(max(max(min(ta.x, tb.x), min(ta.y, tb.y)), min(ta.z, tb.z)),
+              min(min(max(ta.x, tb.x), max(ta.y, tb.y)), max(ta.z, tb.z)));
+}
+
+const int kPhaseEntry = 0, kPhaseGrid = 1, kPhaseBisect = 2, kPhaseNewton = 3, kPhaseGradient = 4;
+
+// The first surface crossing of the unit glyph along o + s dir (|dir| = 1,
+// GC) with s >= sNear, to tolerance eps in GC units, in at most maxIter
+// Newton steps. Seeded at the cube entry; the bracket [lo, hi] with
+// h(lo) > 0 >= h(hi) is kept, and a step that leaves it falls back to
+// regula falsi or bisection.
+MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, int maxIter, float eps) {
+  MarchResult res = MarchResult(false, 0.0, vec3(0.0), 0);
+  vec2 span = unitCubeSpan(o, dir);
+  float s0 = span.x, s1 = span.y;
+  bool fromNear = sNear > s0;
+  s0 = max(s0, sNear);
+  if (!(s0 <= s1)) return res;
+
+  const int kSamples = 24;
+  int phase = kPhaseEntry;
+  float s = s0;  // where this iteration takes the gauge
+  bool exiting = false, bracketed = false, knownHi = false, lastFalsi = false, done = false;
+  float lo = s0, hi = s1;
+  // h at the bracket's ends, where known, for regula falsi.
+  float hLo = 0.0, hHi = 0.0;
+  // The grid: sample k at gridS, the sample before it at prev; a, b: the
+  // derivative bisection's interval between them.
+  int k = 0, j = 0, i = 0, finalIterations = 0;
+  float prev = s0, prevH = 0.0, prevSlope = 0.0, gridS = 0.0, gridH = 0.0, gridSlope = 0.0, a = 0.0, b = 0.0;
+  while (!done) {
+    vec3 grad;
+    float h = superquadricGauge(shape, o + s * dir, grad) - 1.0;
+    float slope = dot(grad, dir);
+    bool nextSample = false;  // leave this grid sample for the next
+    if (phase == kPhaseEntry) {
+      hLo = h;
+      if (isnan(h) || isinf(h)) {
+        done = true;
+      } else if (h <= 0.0) {
+        if (!fromNear) {
+          res = MarchResult(true, s0, grad, 0);  // the glyph touches the cube face
+          done = true;
+        } else {
+          exiting = true;  // the near point is inside: find the exit
+          bracketed = true;
+          phase = kPhaseNewton;
+          s = hi;
+        }
+#ifndef TG_MARCH_CONVEX
+      } else if (!superquadricConvex(shape)) {
+        // Non-convex: the first sign change on a coarse grid brackets the
+        // root. A thin spike can pass between samples; where h' turns from
+        // - to + the interval holds a local minimum, found by bisecting on
+        // the sign of h' (Teem's echo searches the derivative the same way),
+        // and a minimum with h <= 0 closes the bracket.
+        prevH = h;
+        prevSlope = slope;
+        k = 1;
+        phase = kPhaseGrid;
+        s = s0 + (s1 - s0) * float(k) / float(kSamples);
+#endif
+      } else {
+        float q0, q1;
+        // a, b <= 1: the glyph holds the unit sphere, so its entry bounds the root.
+        if (shape.x <= 1.0 && shape.y <= 1.0 && unitSphereRoots(o, dir, q0, q1) && q0 >= s0) {
+          hi = q0;
+          bracketed = true;
+        }
+        phase = kPhaseNewton;
+        s = lo;
+      }
+    } else if (phase == kPhaseGrid) {
+      gridS = s;
+      gridH = h;
+      gridSlope = slope;
+      if (h <= 0.0) {
+        bracketed = true;
+      } else if (prevSlope < 0.0 && slope > 0.0 && s - prev > eps) {
+        a = prev;
+        b = s;
+        j = 0;
+        phase = kPhaseBisect;
+        s = 0.5 * (a + b);
+      } else {
+        nextSample = true;
+      }
+    } else if (phase == kPhaseBisect) {
+      if (h <= 0.0) {
+        gridS = s;
+        gridH = h;
+        bracketed = true;
+      } else {
+        if (slope < 0.0) a = s;
+        else b = s;
+        ++j;
+        if (j < kSamples && b - a > eps) s = 0.5 * (a + b);
+        else nextSample = true;
+      }
+    } else if (phase == kPhaseNewton) {
+      res.iterations = i + 1;
+      if (isnan(h) || isnan(slope)) {
+        done = true;  // never report a hit from a NaN
+      } else if (abs(h) < eps) {
+        res = MarchResult(true, s, grad, i + 1);
+        done = true;
+      } else {
+        // Keep the bracket: the side with h > 0 is lo when entering, hi when exiting.
+        if ((h > 0.0) != exiting) {
+          lo = s;
+          hLo = h;
+        } else {
+          hi = s;
+          hHi = h;
+          knownHi = true;
+        }
+        if (h <= 0.0) bracketed = true;
+        float next = s - h / slope;
+        // Miss: outside a convex glyph and moving away from it (Hlawitschka's
+        // test). Unbracketed means convex and outside, where Newton never
+        // overshoots (the tangent of a convex function lies below it): a step
+        // past the cube exit proves there is no root. Bisecting there would
+        // instead shrink an interval holding no root until the step
+        // criterion took it for a hit.
+        if (!bracketed && ((h > 0.0 && slope >= 0.0) || !(next < hi))) {
+          done = true;
+        } else {
+          // Newton left the bracket: Blinn's fallback, regula falsi on the
+          // bracket's ends, alternating with bisection so that a one-sided
+          // run of false positions still halves the bracket every second step.
+          bool falsi = false;
+          if (!(next > lo && next < hi)) {
+            falsi = bracketed && knownHi && !lastFalsi && hLo != hHi;
+            next = falsi ? lo - hLo * (hi - lo) / (hHi - hLo) : 0.5 * (lo + hi);
+            if (!(next > lo && next < hi)) {
+              next = 0.5 * (lo + hi);
+              falsi = false;
+            }
+          }
+          lastFalsi = falsi;
+          // Step criterion (Hlawitschka et al.); a collapsed bracket only
+          // counts when it is known to hold a root.
+          if (abs(next - s) < eps || (bracketed && hi - lo < eps)) {
+            finalIterations = i + 1;
+            phase = kPhaseGradient;
+          }
+          s = next;
+          ++i;
+        }
+      }
+    } else {
+      res = MarchResult(true, s, grad, finalIterations);
+      done = true;
+    }
+    if (phase == kPhaseGrid || phase == kPhaseBisect) {
+      if (bracketed) {
+        lo = prev;
+        hLo = prevH;
+        hi = gridS;
+        hHi = gridH;
+        knownHi = true;
+        phase = kPhaseNewton;
+        s = lo;
+      } else if (nextSample) {
+        prev = gridS;
+        prevH = gridH;
+        prevSlope = gridSlope;
+        ++k;
+        phase = kPhaseGrid;
+        s = s0 + (s1 - s0) * float(k) / float(kSamples);
+        done = k > kSamples;  // no sign change: no root
+      }
+    }
+    // Out of iterations: a bracketed root exists, so the pixel is covered at
+    // the current estimate; an unbracketed one is not known to be hit.
+    if (!done && phase == kPhaseNewton && i >= maxIter) {
+      finalIterations = maxIter;
+      phase = kPhaseGradient;
+      done = !bracketed;
+    }
+  }
+  return res;
+}
