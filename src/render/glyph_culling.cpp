@@ -176,7 +176,7 @@ void GlyphCulling::draw(const QuadSprites& sprites, int g0, int g1) const {
   }
   if (compacted_) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeptIndexBinding, keptIndex_);
   const GLuint b = table_.groupStart[std::size_t(g0)], e = table_.groupStart[std::size_t(g1)];
-  sprites.drawIndirect(commands_, GLsizei(b), GLsizei(e - b), points_);
+  sprites.drawIndirect(commands_, GLsizei(b), std::span<const GlyphRange>(table_.ranges).subspan(b, e - b), points_);
 }
 
 std::size_t GlyphCulling::gpuBytes() const {
