@@ -24,8 +24,9 @@ in SuperquadricFS {
 } fin;
 
 #ifdef TG_ITERATION_STATS
-// Compiled in only when statistics are asked for: [0] sum, [1] max, [2] pixels.
-layout(std430, binding = 1) buffer IterationStats { uint iterStats[3]; };
+// Compiled in only when statistics are asked for: Newton iterations' [0]
+// sum, [1] max and [2] pixels; [3] the march's gauge calls over all fragments.
+layout(std430, binding = 1) buffer IterationStats { uint iterStats[4]; };
 #endif
 
 layout(depth_less) out float gl_FragDepth;
@@ -51,9 +52,9 @@ void main() {
   // occluders it cannot win the depth test, so it skips the march.
   // The march runs under `if`, not after a discard: on llvmpipe a discarded
   // fragment still runs every loop to the end (lib/superquadric_march.glsl).
-  bool inReach = !(dot(q, q) > reach * reach) &&
+  bool inReach = !(dot(q, q) > reach * reach) && marchMayHit(fin.shape, o, d / dl, uEpsilon) &&
       !pixelOccluded(ivec2(gl_FragCoord.xy), tc + unitCubeSpan(o, d / dl).x / dl, 4.0 * uEpsilon / dl);
-  MarchResult m = MarchResult(false, 0.0, vec3(0.0), 0);
+  MarchResult m = MarchResult(false, 0.0, vec3(0.0), 0, 0);
   if (inReach) m = superquadricMarch(fin.shape, o, d / dl, (uNearVC - tc) * dl, uMaxIterations, uEpsilon);
 #ifdef TG_ITERATION_STATS
   if (m.iterations > 0) {
@@ -61,6 +62,7 @@ void main() {
     atomicMax(iterStats[1], uint(m.iterations));
     atomicAdd(iterStats[2], 1u);
   }
+  if (m.gaugeCalls > 0) atomicAdd(iterStats[3], uint(m.gaugeCalls));
 #endif
   if (!m.hit) discard;
   float depth = tc + m.s / dl;

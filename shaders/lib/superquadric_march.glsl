@@ -10,9 +10,13 @@
 // each iteration does one phase's step: the entry's, a grid sample's, a
 // bisection step's, a Newton step's or the hit's final gradient.
 //
-// TG_MARCH_CONVEX: the variant for definite tensors' Kindlmann shapes
-// (a, b, b), a, b <= 1, which superquadricConvex always holds: no grid search.
+// Variants, each for a glyph group whose shapes it is exact for:
+//  TG_MARCH_CONVEX: definite tensors' Kindlmann shapes (a, b, b), a, b <= 1,
+//    which superquadricConvex always holds: no grid search.
+//  TG_MARCH_MIXED: Schultz-Kindlmann shapes (b, c >= 2): rays that miss
+//    the double pyramid max(|x|, |y|) + |z| <= 1 holding them never march.
 #pragma tg option TG_MARCH_CONVEX
+#pragma tg option TG_MARCH_MIXED
 
 // Convex along every line when g is a norm (2/a, 2/b >= 1, c = b); it then
 // also contains the unit sphere when a, b <= 1.
@@ -23,6 +27,7 @@ struct MarchResult {
   float s;      // arc length along the unit GC direction
   vec3 gradGC;
   int iterations;
+  int gaugeCalls;  // passes of the loop, for iteration statistics
 };
 
 // Entry and exit of the ray o + s dir through the cube [-1, 1]^3 that holds
@@ -34,6 +39,44 @@ vec2 unitCubeSpan(vec3 o, vec3 dir) {
               min(min(max(ta.x, tb.x), max(ta.y, tb.y)), max(ta.z, tb.z)));
 }
 
+// Whether the line o + s dir meets max(|x|, |y|) + |z| <= r, the four slabs
+// |x +- z| <= r, |y +- z| <= r. Where s^(2/b) + |z|^(2/c) <= 1 with b, c >= 2,
+// s + |z| <= s^(2/b) + |z|^(2/c) (each term in [0, 1]), and s, the
+// (2/a)-norm of (x, y), is at least max(|x|, |y|): every shape with b, c >= 2
+// lies in the pyramid for r = 1.
+bool lineMeetsBipyramid(vec3 o, vec3 dir, float r) {
+  vec4 po = vec4(o.x + o.z, o.x - o.z, o.y + o.z, o.y - o.z);
+  vec4 pd = vec4(dir.x + dir.z, dir.x - dir.z, dir.y + dir.z, dir.y - dir.z);
+  // Parallel to a slab: the whole line is inside it or none of it is.
+  bvec4 edgeOn = equal(pd, vec4(0.0));
+  if (any(bvec4(vec4(edgeOn) * vec4(greaterThan(abs(po), vec4(r)))))) return false;
+  vec4 inv = 1.0 / mix(pd, vec4(1.0), edgeOn);
+  vec4 ta = (-r - po) * inv, tb = (r - po) * inv;
+  vec4 lo = mix(min(ta, tb), vec4(-1e38), edgeOn), hi = mix(max(ta, tb), vec4(1e38), edgeOn);
+  return max(max(lo.x, lo.y), max(lo.z, lo.w)) <= min(min(hi.x, hi.y), min(hi.z, hi.w));
+}
+
+// Whether a fragment's ray can hit `shape` at all, before the march: in the
+// mixed-sign variant, the double pyramid with room for shape exponents a few
+// ulps below 2, for the tolerance eps of a hit, and for float rounding.
+// Rounding scales with n = max|o_i|: the march takes the gauge at o + s dir
+// rounded, |s| <= |o| + sqrt(3) inside the cube, up to 2^-22 (n + 2) off
+// the line in the pyramid's measure, and this test's slab ends round by up
+// to three times that; 2^-19 (n + 2) is twice the sum. n is large where a
+// glyph is far thinner than wide (a zero eigenvalue) and seen at a slant:
+// o, the ray's closest approach to the centre in VC, lies up to 1e7 out
+// along GC z, and the march's points are that coarse (a pyramid 0.06 wide
+// there was missed by rounding). The pyramid grows to match, and such rays
+// march as before; so does a non-finite o.
+bool marchMayHit(vec3 shape, vec3 o, vec3 dir, float eps) {
+#ifdef TG_MARCH_MIXED
+  float n = max(max(abs(o.x), abs(o.y)), abs(o.z));
+  float r = 1.0 + 1e-3 + 4.0 * eps + exp2(-19.0) * (n + 2.0);
+  if (min(shape.y, shape.z) >= 1.9999 && r < 1e30) return lineMeetsBipyramid(o, dir, r);
+#endif
+  return true;
+}
+
 const int kPhaseEntry = 0, kPhaseGrid = 1, kPhaseBisect = 2, kPhaseNewton = 3, kPhaseGradient = 4;
 
 // The first surface crossing of the unit glyph along o + s dir (|dir| = 1,
@@ -42,7 +85,7 @@ const int kPhaseEntry = 0, kPhaseGrid = 1, kPhaseBisect = 2, kPhaseNewton = 3, k
 // h(lo) > 0 >= h(hi) is kept, and a step that leaves it falls back to
 // regula falsi or bisection.
 MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, int maxIter, float eps) {
-  MarchResult res = MarchResult(false, 0.0, vec3(0.0), 0);
+  MarchResult res = MarchResult(false, 0.0, vec3(0.0), 0, 0);
   vec2 span = unitCubeSpan(o, dir);
   float s0 = span.x, s1 = span.y;
   bool fromNear = sNear > s0;
@@ -60,7 +103,9 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, int max
   // derivative bisection's interval between them.
   int k = 0, j = 0, i = 0, finalIterations = 0;
   float prev = s0, prevH = 0.0, prevSlope = 0.0, gridS = 0.0, gridH = 0.0, gridSlope = 0.0, a = 0.0, b = 0.0;
+  int calls = 0;
   while (!done) {
+    ++calls;
     vec3 grad;
     float h = superquadricGauge(shape, o + s * dir, grad) - 1.0;
     float slope = dot(grad, dir);
@@ -71,7 +116,7 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, int max
         done = true;
       } else if (h <= 0.0) {
         if (!fromNear) {
-          res = MarchResult(true, s0, grad, 0);  // the glyph touches the cube face
+          res = MarchResult(true, s0, grad, 0, 0);  // the glyph touches the cube face
           done = true;
         } else {
           exiting = true;  // the near point is inside: find the exit
@@ -134,7 +179,7 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, int max
       if (isnan(h) || isnan(slope)) {
         done = true;  // never report a hit from a NaN
       } else if (abs(h) < eps) {
-        res = MarchResult(true, s, grad, i + 1);
+        res = MarchResult(true, s, grad, i + 1, 0);
         done = true;
       } else {
         // Keep the bracket: the side with h > 0 is lo when entering, hi when exiting.
@@ -181,7 +226,7 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, int max
         }
       }
     } else {
-      res = MarchResult(true, s, grad, finalIterations);
+      res = MarchResult(true, s, grad, finalIterations, 0);
       done = true;
     }
     if (phase == kPhaseGrid || phase == kPhaseBisect) {
@@ -211,5 +256,6 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, int max
       done = !bracketed;
     }
   }
+  res.gaugeCalls = calls;
   return res;
 }

@@ -27,7 +27,7 @@ GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib, Ov
   // with no attributes.
   gl.CreateVertexArrays(1, &vao_);
   gl.CreateBuffers(1, &stats_);
-  gl.NamedBufferStorage(stats_, 3 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
+  gl.NamedBufferStorage(stats_, 4 * sizeof(GLuint), nullptr, GL_DYNAMIC_STORAGE_BIT);
   GLfloat pointRange[2] = {0, 0};
   gl.GetFloatv(GL_POINT_SIZE_RANGE, pointRange);
   maxPointPx_ = double(pointRange[1]);
@@ -76,12 +76,14 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
 void GlyphRenderer::setCamera(const gl::Program& prog, const Camera& cam) const { setCameraUniforms(prog, cam); }
 
 // Null where a marching or tessellated program has not been built yet.
-std::array<const gl::Program*, 6> GlyphRenderer::glyphPrograms() const {
-  return {&ellipsoid_, march_[0].get(), march_[1].get(), march_[2].get(), march_[3].get(), tessellated_.program()};
+std::array<const gl::Program*, 8> GlyphRenderer::glyphPrograms() const {
+  return {&ellipsoid_,      march_[0].get(), march_[1].get(), march_[2].get(),
+          march_[3].get(), march_[4].get(), march_[5].get(), tessellated_.program()};
 }
 
-std::array<const gl::Program*, 5> GlyphRenderer::shapePrograms() const {
-  return {march_[0].get(), march_[1].get(), march_[2].get(), march_[3].get(), tessellated_.program()};
+std::array<const gl::Program*, 7> GlyphRenderer::shapePrograms() const {
+  return {march_[0].get(), march_[1].get(), march_[2].get(),      march_[3].get(),
+          march_[4].get(), march_[5].get(), tessellated_.program()};
 }
 
 void GlyphRenderer::setShapeUniforms(const gl::Program& prog, const FrameParams& p, const FrameParams* old) const {
@@ -102,7 +104,9 @@ const gl::Program& GlyphRenderer::marchProgram(bool stats, MarchVariant v, const
   if (!slot) {
     const auto stages = {gl::StageSource{GL_VERTEX_SHADER, "superquadric.vert"},
                          gl::StageSource{GL_FRAGMENT_SHADER, "superquadric.frag"}};
-    const std::string_view variant = v == MarchVariant::Convex ? "TG_MARCH_CONVEX" : "";
+    const std::string_view variant = v == MarchVariant::Convex ? "TG_MARCH_CONVEX"
+                                     : v == MarchVariant::Mixed ? "TG_MARCH_MIXED"
+                                                                : "";
     // Program throws for an option no stage declares: a variant that is
     // missing fails here, loudly.
     auto make = [&](std::initializer_list<std::string_view> on) {
@@ -303,9 +307,9 @@ void GlyphRenderer::drawGlyphs(const Camera& cam, const FrameParams& p, int spli
   useGlyphProgram(ellipsoid_, cam);
   culling_.draw(sprites_, 0, split);
   // Marched groups: definite glyphs (marched at gamma > 0, all convex) by
-  // the convex variant, the rest by the general march; a group with no
-  // glyphs builds no program.
-  const int definite = int(tensor::GlyphGroup::Definite);
+  // the convex variant, mixed-sign ones by the mixed variant, or all by the
+  // general march; a group with no glyphs builds no program.
+  const int definite = int(tensor::GlyphGroup::Definite), mixed = int(tensor::GlyphGroup::Mixed);
   const bool convex = p.marchVariants && split == definite;
   auto march = [&](MarchVariant v, int g0, int g1) {
     const gl::Program& prog = marchProgram(stats, v, p);
@@ -316,8 +320,12 @@ void GlyphRenderer::drawGlyphs(const Camera& cam, const FrameParams& p, int spli
     ++marchDraws_[std::size_t(v)];
   };
   if (convex && groupCounts_[std::size_t(definite)] > 0) march(MarchVariant::Convex, definite, definite + 1);
-  const int rest = convex ? definite + 1 : split;
-  if (rest < 3 && !(p.marchVariants && groupCounts_[2] == 0 && rest == 2)) march(MarchVariant::General, rest, 3);
+  const int rest = convex ? mixed : split;
+  if (p.marchVariants && rest == mixed) {
+    if (groupCounts_[std::size_t(mixed)] > 0) march(MarchVariant::Mixed, mixed, mixed + 1);
+  } else if (rest < 3) {
+    march(MarchVariant::General, rest, 3);
+  }
 }
 
 void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffer& target) {
@@ -356,7 +364,7 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   target.beginGeometry();
   if (count_ > 0) {
     if (p.iterationStats && !tessellated) {
-      const GLuint zero[3] = {0, 0, 0};
+      const GLuint zero[4] = {0, 0, 0, 0};
       gl_.NamedBufferSubData(stats_, 0, sizeof(zero), zero);
       gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 1, stats_);
     }
@@ -419,12 +427,13 @@ std::size_t GlyphRenderer::contextBytes() const {
 }
 
 IterationStats GlyphRenderer::iterationStats() const {
-  GLuint v[3] = {0, 0, 0};
+  GLuint v[4] = {0, 0, 0, 0};
   gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
   gl_.GetNamedBufferSubData(stats_, 0, sizeof(v), v);
   gl::checkError(gl_, "GlyphRenderer::iterationStats");
   IterationStats s;
   s.pixels = v[2];
+  s.gaugeCalls = v[3];
   s.max = v[1];
   s.mean = v[2] ? double(v[0]) / v[2] : 0.0;
   return s;

@@ -58,11 +58,15 @@ struct IterationStats {
   double mean = 0;
   unsigned max = 0;
   std::uint64_t pixels = 0;  // superquadric fragments that ran the march
+  // Passes of the march's loop (one gauge call each) over every fragment,
+  // Newton or not: what the grid search and early rejections change.
+  std::uint64_t gaugeCalls = 0;
 };
 
 // The march's programs (shaders/lib/superquadric_march.glsl): the general
-// one, and one for definite glyphs' convex shapes, exact for those.
-enum class MarchVariant { General = 0, Convex = 1 };
+// one, one for definite glyphs' convex shapes and one for mixed-sign
+// glyphs' Schultz-Kindlmann shapes, each exact for its group.
+enum class MarchVariant { General = 0, Convex = 1, Mixed = 2 };
 
 struct FrameParams {
   double scale = 1.0;  // world units per eigenvalue unit
@@ -77,8 +81,8 @@ struct FrameParams {
   // Superquadrics: an exact ellipsoid depth pass first, so that fragments of
   // glyphs hidden behind it skip the march (off only to measure what it saves).
   bool occlusionPrepass = true;
-  // Superquadrics: definite glyphs by the convex march variant, else by the
-  // general march (off only to compare).
+  // Superquadrics: definite and mixed-sign glyphs by their march variants,
+  // else by the general march (off only to compare).
   bool marchVariants = true;
   // One point sprite per glyph where every glyph's rectangle fits a point,
   // else two triangles (render/sprite_primitive.h; off only to measure).
@@ -210,8 +214,8 @@ class GlyphRenderer {
   void setShapeUniforms(const gl::Program& prog, const FrameParams& p, const FrameParams* old) const;
   // Programs that draw glyphs, and those of them that take the superquadric
   // shape uniforms; null where a marching program is not built yet.
-  std::array<const gl::Program*, 6> glyphPrograms() const;
-  std::array<const gl::Program*, 5> shapePrograms() const;
+  std::array<const gl::Program*, 8> glyphPrograms() const;
+  std::array<const gl::Program*, 7> shapePrograms() const;
   // Sets the lighting uniforms of `p` on a lighting program.
   void setLighting(const gl::Program& prog, const FrameParams& p) const;
   // lighting_, or the variant the frame's effects need (`shadows`: the key
@@ -225,8 +229,8 @@ class GlyphRenderer {
   const gl::ShaderLibrary& lib_;
   gl::Program ellipsoid_;
   // [2 * MarchVariant + stats], each built on first use (marchProgram).
-  std::array<std::unique_ptr<gl::Program>, 4> march_;
-  std::array<std::uint64_t, 2> marchDraws_{};
+  std::array<std::unique_ptr<gl::Program>, 6> march_;
+  std::array<std::uint64_t, 3> marchDraws_{};
   std::array<std::size_t, 3> groupCounts_{};  // uploaded glyphs by tensor::GlyphGroup
   gl::Program lighting_;
   QuadSprites sprites_;
