@@ -46,8 +46,12 @@ void main() {
   // The shape lies within the sphere of radius superquadricReach in GC: a
   // ray that passes it by (with room for the march's tolerance) cannot hit,
   // and most of a thin glyph's rectangle is such rays.
+  // q rounds with |o|, which reaches 1e7 for thin glyphs seen at a slant:
+  // the same rounding margin as marchMayHit's, so a ray the march would hit
+  // is never dropped here.
   vec3 q = o - dot(o, d) / (dl * dl) * d;
-  float reach = superquadricReach(fin.shape) * (1.0 + 1e-3) + 4.0 * uEpsilon;
+  float on = max(max(abs(o.x), abs(o.y)), abs(o.z));
+  float reach = superquadricReach(fin.shape) * (1.0 + 1e-3) + 4.0 * uEpsilon + exp2(-19.0) * (on + 2.0);
   // The box's entry is the nearest this glyph can be on the ray: behind the
   // occluders it cannot win the depth test, so it skips the march.
   // The march runs under `if`, not after a discard: on llvmpipe a discarded
