@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <memory>
+#include <random>
 #include <string>
 
 #include <glm/geometric.hpp>
@@ -27,6 +28,29 @@ inline Comparison compare(const render::FrameImage& g, const ref::RefImage& r, c
 }
 
 inline tensor::GlyphSet glyphsOf(const io::TensorField& f) { return tensor::buildGlyphs(f.positions, f.tensors, f.ids); }
+
+// An n^3 grid of every dispatch group: each 5th tensor a sphere, each 3rd
+// definite, the rest with mixed signs. With minSize < 1 each tensor is also
+// scaled by a factor from [minSize, 1], so that at a pixel's scale some
+// glyphs are seen and most are not.
+inline io::TensorField mixedGrid(std::uint32_t n, std::uint64_t seed, double minSize = 1.0) {
+  io::TensorField f;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (std::uint32_t i = 0; i < n * n * n; ++i) {
+    const double shift = i % 3 == 0 ? 2.5 : 0.0, iso = u(rng);
+    double t[9] = {shift + u(rng), u(rng), u(rng), 0, shift + u(rng), u(rng), 0, 0, shift + u(rng)};
+    if (i % 5 == 0) t[0] = t[4] = t[8] = iso, t[1] = t[2] = t[5] = 0;
+    t[3] = t[1], t[6] = t[2], t[7] = t[5];
+    if (minSize < 1.0) {
+      const double k = std::uniform_real_distribution<double>(minSize, 1.0)(rng);
+      for (double& v : t) v *= k;
+    }
+    const double p[3] = {double(i % n), double(i / n % n), double(i / (n * n))};
+    f.addFull(i, p, t);
+  }
+  return f;
+}
 
 inline render::Camera cameraFor(const tensor::GlyphSet& s, double scale, render::CameraDesc d, int w, int h) {
   const auto [lo, hi] = tensor::glyphBoxWC(s, scale);

@@ -4,7 +4,6 @@
 #include "frame_compare.h"
 #include "render_fixture.h"
 
-#include <random>
 #include <string_view>
 
 #include "render/sprite_primitive.h"
@@ -13,25 +12,6 @@ using namespace tg;
 using test::GlFixture;
 
 namespace {
-
-// A 16^3 grid of every dispatch group: each 5th tensor a sphere, each 3rd
-// definite, the rest with mixed signs; sizes over a factor of 10, so that at
-// a pixel's scale some glyphs are seen and most are not.
-io::TensorField mixedGrid() {
-  io::TensorField f;
-  std::mt19937_64 rng(41);
-  std::uniform_real_distribution<double> u(-1.0, 1.0), size(0.1, 1.0);
-  for (std::uint32_t i = 0; i < 16 * 16 * 16; ++i) {
-    const double shift = i % 3 == 0 ? 2.5 : 0.0, k = size(rng);
-    double t[9] = {shift + u(rng), u(rng), u(rng), 0, shift + u(rng), u(rng), 0, 0, shift + u(rng)};
-    if (i % 5 == 0) t[0] = t[4] = t[8] = u(rng), t[1] = t[2] = t[5] = 0;
-    t[3] = t[1], t[6] = t[2], t[7] = t[5];
-    for (double& v : t) v *= k;
-    const double p[3] = {double(i % 16), double(i / 16 % 16), double(i / 256)};
-    f.addFull(i, p, t);
-  }
-  return f;
-}
 
 struct Frame {
   render::FrameImage img;
@@ -59,7 +39,7 @@ class PixelCull : public GlFixture {
 // Every kind, both projections, with and without a threshold and a slab:
 // the culled frame equals the full one byte for byte, and drew fewer glyphs.
 TEST_F(PixelCull, FramesEqualTheUnculledFrames) {
-  const auto set = test::glyphsOf(mixedGrid());
+  const auto set = test::glyphsOf(test::mixedGrid(16, 41, 0.1));
   ASSERT_GT(set.sphereCount, 0u);
   ASSERT_GT(set.definiteCount, 0u);
   const double scale = 0.03 / set.maxAbsEigenvalue;
@@ -99,7 +79,7 @@ TEST_F(PixelCull, FramesEqualTheUnculledFrames) {
 // The cull overwrites the threshold's kept list: a later frame without it
 // compacts again and draws every glyph above the threshold.
 TEST_F(PixelCull, ALaterThresholdFrameCompactsAgain) {
-  const auto set = test::glyphsOf(mixedGrid());
+  const auto set = test::glyphsOf(test::mixedGrid(16, 41, 0.1));
   const double scale = 0.03 / set.maxAbsEigenvalue;
   const auto cam = test::cameraFor(set, scale, test::oblique(set, 40.0, render::Projection::Perspective), 320, 240);
   render::FrameParams p;
@@ -124,7 +104,7 @@ TEST_F(PixelCull, ALaterThresholdFrameCompactsAgain) {
 
 // Glyphs of many pixels run no cull pass: the feature costs them nothing.
 TEST_F(PixelCull, WideGlyphsRunNoPass) {
-  const auto set = test::glyphsOf(mixedGrid());
+  const auto set = test::glyphsOf(test::mixedGrid(16, 41, 0.1));
   const double scale = 0.45 / set.maxAbsEigenvalue;
   const auto cam = test::cameraFor(set, scale, test::oblique(set, 40.0, render::Projection::Perspective), 320, 240);
   render::FrameParams p;

@@ -5,29 +5,11 @@
 #include "frame_compare.h"
 #include "render_fixture.h"
 
-#include <random>
 
 using namespace tg;
 using test::GlFixture;
 
 namespace {
-
-// A 12^3 grid of every dispatch group: each 5th tensor a sphere, each 3rd
-// definite, the rest with mixed signs.
-io::TensorField mixedGrid() {
-  io::TensorField f;
-  std::mt19937_64 rng(23);
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  for (std::uint32_t i = 0; i < 12 * 12 * 12; ++i) {
-    const double shift = i % 3 == 0 ? 2.5 : 0.0, iso = u(rng);
-    double t[9] = {shift + u(rng), u(rng), u(rng), 0, shift + u(rng), u(rng), 0, 0, shift + u(rng)};
-    if (i % 5 == 0) t[0] = t[4] = t[8] = iso, t[1] = t[2] = t[5] = 0;
-    t[3] = t[1], t[6] = t[2], t[7] = t[5];
-    const double p[3] = {double(i % 12), double(i / 12 % 12), double(i / 144)};
-    f.addFull(i, p, t);
-  }
-  return f;
-}
 
 struct Frame {
   render::FrameImage img;
@@ -51,7 +33,7 @@ class PointSprites : public GlFixture {
 // Every kind, both projections, the direct draw and the indirect one (an FA
 // threshold compacts, a close camera culls ranges): byte-equal to quads.
 TEST_F(PointSprites, FramesEqualTheQuadFrames) {
-  const auto set = test::glyphsOf(mixedGrid());
+  const auto set = test::glyphsOf(test::mixedGrid(12, 23));
   ASSERT_GT(set.sphereCount, 0u);
   ASSERT_GT(set.definiteCount, 0u);
   const double scale = 0.45 / set.maxAbsEigenvalue;
@@ -94,7 +76,7 @@ TEST_F(PointSprites, FramesEqualTheQuadFrames) {
 // A glyph that could outgrow the point size cap is drawn as quads: the eye
 // among the glyphs.
 TEST_F(PointSprites, TheEyeAmongTheGlyphsDrawsQuads) {
-  const auto set = test::glyphsOf(mixedGrid());
+  const auto set = test::glyphsOf(test::mixedGrid(12, 23));
   const double scale = 0.45 / set.maxAbsEigenvalue;
   render::CameraDesc d = test::oblique(set, 40.0, render::Projection::Perspective);
   d.eyeWC = 0.5 * (set.boundsMinWC + set.boundsMaxWC);
