@@ -366,3 +366,33 @@ TEST(Cli, CylinderAndBoxGlyphsRenderAndNonsenseKindsFailWithUsage) {
     EXPECT_EQ(run("render -o " + out.string() + " " + args).code, 2) << args;
   }
 }
+
+// --stats reports the march's loop passes beside its Newton iterations. Each
+// pixel that ran Newton passed through the loop once to enter and once per
+// iteration, so the passes bound iterations and pixels from above; without
+// --stats nothing is counted or printed.
+TEST(Cli, StatsReportLoopPassesThatBoundTheNewtonIterations) {
+  const fs::path field = dir() / "stats_load.vti", out = dir() / "stats.png";
+  ASSERT_EQ(run("synth boussinesq --n 10 -o " + field.string() + " --quiet").code, 0);
+  const std::string args =
+      "render " + field.string() + " -o " + out.string() + " --glyph superquadric --gamma 3 --size 160 120";
+  const CmdResult r = run(args + " --stats");
+  ASSERT_EQ(r.code, 0) << r.err;
+  double mean = 0;
+  unsigned max = 0;
+  unsigned long long pixels = 0, passes = 0;
+  const auto at = r.err.find("Newton iterations:");
+  ASSERT_NE(at, std::string::npos) << r.err;
+  ASSERT_EQ(std::sscanf(r.err.c_str() + at, "Newton iterations: mean %lf, max %u over %llu pixels; %llu march loop passes",
+                        &mean, &max, &pixels, &passes),
+            4)
+      << r.err;
+  EXPECT_GT(pixels, 100u);
+  EXPECT_GE(mean, 1.0);
+  EXPECT_LE(mean, max);
+  // mean is printed to 0.01.
+  EXPECT_GE(static_cast<double>(passes), static_cast<double>(pixels) * (mean - 0.005 + 1.0));
+  const CmdResult quiet = run(args);
+  ASSERT_EQ(quiet.code, 0) << quiet.err;
+  EXPECT_EQ(quiet.err.find("march loop passes"), std::string::npos) << quiet.err;
+}
