@@ -25,6 +25,43 @@ render::CameraDesc start() {
   return d;
 }
 
+// The message of the io::InputError that f throws; a test failure, and "",
+// where it throws none.
+template <class F>
+std::string inputErrorOf(F f, const std::string& what) {
+  try {
+    f();
+  } catch (const io::InputError& e) {
+    return e.what();
+  }
+  ADD_FAILURE() << "no error for " << what;
+  return "";
+}
+
+// Each test writes its script to `path`, in a directory of its own.
+class ViewScript : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* t = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = std::filesystem::temp_directory_path() /
+           ("tg_view_" + std::string(t->name()) + "_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir_);
+    path = (dir_ / "s.txt").string();
+  }
+  void TearDown() override { std::filesystem::remove_all(dir_); }
+
+  // parseScript's error for a script of `text` alone.
+  std::string scriptError(const std::string& text) {
+    std::ofstream(path) << text;
+    return inputErrorOf([&] { app::parseScript(path); }, text);
+  }
+
+  std::string path;
+
+ private:
+  std::filesystem::path dir_;
+};
+
 }  // namespace
 
 TEST(OrbitCamera, TurnsAboutTheTargetAndStopsShortOfThePole) {
@@ -57,10 +94,7 @@ TEST(OrbitCamera, PanKeepsTheViewDirectionAndZoomTheDirection) {
   EXPECT_LT(glm::length(glm::normalize(c.desc().lookAtWC - c.desc().eyeWC) - glm::normalize(v0)), 1e-12);
 }
 
-TEST(ViewScript, ParsesAppliesAndNamesTheLineOfAMistake) {
-  const auto dir = std::filesystem::temp_directory_path() / ("tg_view_state_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const auto path = (dir / "s.txt").string();
+TEST_F(ViewScript, ParsesAppliesAndNamesTheLineOfAMistake) {
   std::ofstream(path) << "# comment\n\nscale 2   # twice\nslab y -1 3\nlight key 0.7\nglyph superquadric\n"
                          "stats on\nfa-min 0.4\nslab off\n";
   const auto steps = app::parseScript(path);
@@ -79,20 +113,10 @@ TEST(ViewScript, ParsesAppliesAndNamesTheLineOfAMistake) {
   app::applyStep(steps[6], v);
   EXPECT_EQ(v.params.slab.axis, -1);
 
-  std::ofstream(path) << "zoom 2\n\nslab z 3 1\n";
-  try {
-    app::parseScript(path);
-    FAIL() << "no error";
-  } catch (const io::InputError& e) {
-    EXPECT_EQ(std::string(e.what()), path + ":3: slab: LO must not exceed HI");
-  }
-  std::filesystem::remove_all(dir);
+  EXPECT_EQ(scriptError("zoom 2\n\nslab z 3 1\n"), path + ":3: slab: LO must not exceed HI");
 }
 
-TEST(ViewScript, MagnitudeAndClampResolveTheSizeAgainWithoutTheRecords) {
-  const auto dir = std::filesystem::temp_directory_path() / ("tg_view_size_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const auto path = (dir / "s.txt").string();
+TEST_F(ViewScript, MagnitudeAndClampResolveTheSizeAgainWithoutTheRecords) {
   std::ofstream(path) << "magnitude log\nclamp 0\nmagnitude shape 2.5\nscale 3\nclamp 1.5\nmagnitude linear\n";
   const auto steps = app::parseScript(path);
   ASSERT_EQ(steps.size(), 6u);
@@ -125,21 +149,11 @@ TEST(ViewScript, MagnitudeAndClampResolveTheSizeAgainWithoutTheRecords) {
                                    std::pair{"magnitude linear 2\n", "LAMBDA0 applies to log or shape only"},
                                    std::pair{"magnitude log 0\n", "must be positive"},
                                    std::pair{"clamp -1\n", "clamp must be within"}}) {
-    std::ofstream(path) << line;
-    try {
-      app::parseScript(path);
-      ADD_FAILURE() << line;
-    } catch (const io::InputError& e) {
-      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
-    }
+    EXPECT_PRED_FORMAT2(testing::IsSubstring, what, scriptError(line));
   }
-  std::filesystem::remove_all(dir);
 }
 
-TEST(ViewScript, LegendCommandsSetTheLegendParameters) {
-  const auto dir = std::filesystem::temp_directory_path() / ("tg_view_legend_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const auto path = (dir / "s.txt").string();
+TEST_F(ViewScript, LegendCommandsSetTheLegendParameters) {
   std::ofstream(path) << "legend on\nlegend-corner top-left\nunits MPa\nlength-units mm\nlegend off\n";
   const auto steps = app::parseScript(path);
   ASSERT_EQ(steps.size(), 5u);
@@ -155,21 +169,11 @@ TEST(ViewScript, LegendCommandsSetTheLegendParameters) {
   for (const auto& [text, message] : {std::pair<std::string, std::string>{"legend maybe\n", "legend: on or off"},
                                       {"legend-corner middle\n", "legend-corner: unknown corner \"middle\""},
                                       {"units " + std::string(41, 'u') + "\n", "units: at most 40 characters"}}) {
-    std::ofstream(path) << text;
-    try {
-      app::parseScript(path);
-      ADD_FAILURE() << "no error for " << text;
-    } catch (const io::InputError& e) {
-      EXPECT_NE(std::string(e.what()).find(path + ":1: " + message), std::string::npos) << e.what();
-    }
+    EXPECT_PRED_FORMAT2(testing::IsSubstring, path + ":1: " + message, scriptError(text));
   }
-  std::filesystem::remove_all(dir);
 }
 
-TEST(ViewScript, DepthCueCommandsSetTheirParametersWithinRange) {
-  const auto dir = std::filesystem::temp_directory_path() / ("tg_view_cues_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const auto path = (dir / "s.txt").string();
+TEST_F(ViewScript, DepthCueCommandsSetTheirParametersWithinRange) {
   std::ofstream(path) << "ao on\nao-radius 0.25\nao-strength 2\noutlines on\noutline-width 3\nao off\n";
   const auto steps = app::parseScript(path);
   ASSERT_EQ(steps.size(), 6u);
@@ -192,22 +196,11 @@ TEST(ViewScript, DepthCueCommandsSetTheirParametersWithinRange) {
                                                      {"ao-strength 9\n", ":1: ao-strength must be within 0..4"},
                                                      {"outline-width 20\n", ":1: outline-width must be within 0.25..8"},
                                                      {"outlines\n", ":1: outlines: wrong number of arguments"}};
-  for (const auto& [text, message] : bad) {
-    std::ofstream(path) << text;
-    try {
-      app::parseScript(path);
-      ADD_FAILURE() << text;
-    } catch (const io::InputError& e) {
-      EXPECT_EQ(std::string(e.what()), path + message) << text;
-    }
-  }
-  std::filesystem::remove_all(dir);
+  for (const auto& [text, message] : bad)
+    EXPECT_EQ(scriptError(text), path + message) << text;
 }
 
-TEST(ViewScript, ShadowCommandsSetTheShadowParamsWithRenderRanges) {
-  const auto dir = std::filesystem::temp_directory_path() / ("tg_view_shadow_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const auto path = (dir / "s.txt").string();
+TEST_F(ViewScript, ShadowCommandsSetTheShadowParamsWithRenderRanges) {
   std::ofstream(path) << "shadows on\nshadow penumbra 0.01\nshadow strength 0.5\nshadow bias 2\nshadow map-size 512\n"
                          "shadows off\n";
   const auto steps = app::parseScript(path);
@@ -230,22 +223,11 @@ TEST(ViewScript, ShadowCommandsSetTheShadowParamsWithRenderRanges) {
       {"shadow map-size 100000\n", ":1: shadow map-size: \"100000\" is not an integer within 64..8192"},
       {"shadow softness 1\n", ":1: shadow: unknown parameter \"softness\""},
       {"shadow penumbra\n", ":1: shadow: wrong number of arguments"}};
-  for (const auto& [text, what] : bad) {
-    std::ofstream(path) << text;
-    try {
-      app::parseScript(path);
-      ADD_FAILURE() << "no error for " << text;
-    } catch (const io::InputError& e) {
-      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
-    }
-  }
-  std::filesystem::remove_all(dir);
+  for (const auto& [text, what] : bad)
+    EXPECT_PRED_FORMAT2(testing::IsSubstring, what, scriptError(text));
 }
 
-TEST(ViewScript, PlaneStepsToggleAndMoveOnlyThePlanesTheViewHas) {
-  const auto dir = std::filesystem::temp_directory_path() / ("tg_view_plane_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const auto path = (dir / "s.txt").string();
+TEST_F(ViewScript, PlaneStepsToggleAndMoveOnlyThePlanesTheViewHas) {
   std::ofstream(path) << "plane 1 off\nplane 2 index 7\nplane 3 off\nplane 1 on\nplane 2 index 0\n";
   const auto steps = app::parseScript(path);
   ASSERT_EQ(steps.size(), 5u);
@@ -281,20 +263,12 @@ TEST(ViewScript, PlaneStepsToggleAndMoveOnlyThePlanesTheViewHas) {
   for (const auto& [text, message] : unfit) {
     std::ofstream(path) << text;
     const auto ok = app::parseScript(path);
-    try {
-      app::checkPlaneSteps(ok, v.planes, path);
-      ADD_FAILURE() << "no error for " << text;
-    } catch (const io::InputError& e) {
-      EXPECT_NE(std::string(e.what()).find(path + message), std::string::npos) << e.what();
-    }
+    EXPECT_PRED_FORMAT2(testing::IsSubstring, path + message,
+                        inputErrorOf([&] { app::checkPlaneSteps(ok, v.planes, path); }, text));
   }
   std::ofstream(path) << "plane 1 on\n";
-  try {
-    app::checkPlaneSteps(app::parseScript(path), {}, path);
-    ADD_FAILURE() << "no error without planes";
-  } catch (const io::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(":1: plane 1: the view has no slice planes"), std::string::npos) << e.what();
-  }
+  EXPECT_PRED_FORMAT2(testing::IsSubstring, ":1: plane 1: the view has no slice planes",
+                      inputErrorOf([&] { app::checkPlaneSteps(app::parseScript(path), {}, path); }, "no planes"));
 
   // Malformed steps: refused by parseScript itself.
   const std::pair<const char*, const char*> bad[] = {
@@ -303,22 +277,10 @@ TEST(ViewScript, PlaneStepsToggleAndMoveOnlyThePlanesTheViewHas) {
       {"plane 1 move 3\n", ":1: plane: give N on|off or N index I"},
       {"plane 1 index -1\n", ":1: plane index: \"-1\" is not an integer within 0..2147483648"},
       {"plane 1\n", ":1: plane: wrong number of arguments"}};
-  for (const auto& [text, message] : bad) {
-    std::ofstream(path) << text;
-    try {
-      app::parseScript(path);
-      ADD_FAILURE() << "no error for " << text;
-    } catch (const io::InputError& e) {
-      EXPECT_EQ(std::string(e.what()), path + message) << text;
-    }
-  }
-  std::filesystem::remove_all(dir);
+  for (const auto& [text, message] : bad) EXPECT_EQ(scriptError(text), path + message) << text;
 }
 
-TEST(ViewScript, MeshCommandsToggleAndSetTheModeOfOneMesh) {
-  const auto dir = std::filesystem::temp_directory_path() / ("tg_view_mesh_" + std::to_string(::getpid()));
-  std::filesystem::create_directories(dir);
-  const auto path = (dir / "s.txt").string();
+TEST_F(ViewScript, MeshCommandsToggleAndSetTheModeOfOneMesh) {
   std::ofstream(path) << "mesh 1 off\nmesh 2 see-through\nmesh-opacity 2 0.6\nmesh 1 on\nmesh 1 edges\n";
   const auto steps = app::parseScript(path);
   ASSERT_EQ(steps.size(), 5u);
@@ -335,25 +297,13 @@ TEST(ViewScript, MeshCommandsToggleAndSetTheModeOfOneMesh) {
   EXPECT_TRUE(v.meshes[0].visible);
   EXPECT_EQ(v.meshes[0].params.mode, render::MeshMode::Edges);
   app::checkScriptMeshes(steps, 2, path);
-  try {
-    app::checkScriptMeshes(steps, 1, path);
-    ADD_FAILURE() << "mesh 2 of 1 accepted";
-  } catch (const io::InputError& e) {
-    EXPECT_NE(std::string(e.what()).find(":2: mesh: mesh 2 of 1 loaded"), std::string::npos) << e.what();
-  }
+  EXPECT_PRED_FORMAT2(testing::IsSubstring, ":2: mesh: mesh 2 of 1 loaded",
+                      inputErrorOf([&] { app::checkScriptMeshes(steps, 1, path); }, "mesh 2 of 1"));
   const std::pair<const char*, const char*> bad[] = {
       {"mesh 0 on\n", ":1: mesh: \"0\" is not an integer within 1..255"},
       {"mesh 1 glass\n", ":1: mesh: give on, off or a mode (opaque, see-through or edges)"},
       {"mesh-opacity 1 1.5\n", ":1: mesh-opacity must be within 0..1"},
       {"mesh 1\n", ":1: mesh: wrong number of arguments"}};
-  for (const auto& [text, what] : bad) {
-    std::ofstream(path) << text;
-    try {
-      app::parseScript(path);
-      ADD_FAILURE() << "no error for " << text;
-    } catch (const io::InputError& e) {
-      EXPECT_NE(std::string(e.what()).find(what), std::string::npos) << e.what();
-    }
-  }
-  std::filesystem::remove_all(dir);
+  for (const auto& [text, what] : bad)
+    EXPECT_PRED_FORMAT2(testing::IsSubstring, what, scriptError(text));
 }
