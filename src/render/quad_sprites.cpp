@@ -57,18 +57,8 @@ class Throttle {
   GLsync last_ = nullptr;
 };
 
-std::string_view rendererOf(const gl::Api& gl) {
-  const auto* name = reinterpret_cast<const char*>(gl.GetString(GL_RENDERER));
-  return name ? name : "";
-}
 
 }  // namespace
-
-std::uint32_t QuadSprites::glyphsPerSubmit(std::string_view glRenderer) {
-  return glRenderer.find("llvmpipe") != std::string_view::npos ? 4096 : kWholeDraw;
-}
-
-QuadSprites::QuadSprites(const gl::Api& gl) : QuadSprites(gl, glyphsPerSubmit(rendererOf(gl))) {}
 
 QuadSprites::QuadSprites(const gl::Api& gl, std::uint32_t glyphsPerSubmit)
     : gl_(gl), glyphsPerSubmit_(std::max<std::uint32_t>(glyphsPerSubmit, 1)) {

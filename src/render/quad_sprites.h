@@ -6,10 +6,10 @@
 // needs no indices.
 #include <cstdint>
 #include <span>
-#include <string_view>
 
 #include "gl/loader.h"
 #include "render/glyph_ranges.h"
+#include "render/renderer_profile.h"
 
 namespace tg::render {
 
@@ -19,17 +19,10 @@ class QuadSprites {
   static constexpr GLsizeiptr kIndirectCommandBytes = 5 * sizeof(GLuint);  // DrawElementsIndirectCommand
 
   // No limit: one draw call per draw().
-  static constexpr std::uint32_t kWholeDraw = UINT32_MAX;
+  static constexpr std::uint32_t kWholeDraw = RendererProfile::kWholeDraw;
 
-  // Glyphs per submission for a GL_RENDERER string. llvmpipe bins a whole
-  // draw call (every glyph's interpolants: about 440 bytes a superquadric
-  // point sprite, 25 MB for the dt-helix) before it rasterises any of it, so
-  // there draws go in submissions of 4096 glyphs, at most two queued, and its
-  // binning memory stays a few MB whatever the count. kWholeDraw elsewhere.
-  static std::uint32_t glyphsPerSubmit(std::string_view glRenderer);
-
-  // Submissions as glyphsPerSubmit gives for the context's renderer.
-  explicit QuadSprites(const gl::Api& gl);
+  // Draws in submissions of at most glyphsPerSubmit glyphs (the renderer's
+  // RendererProfile), at most two queued behind a fence, or in one call.
   QuadSprites(const gl::Api& gl, std::uint32_t glyphsPerSubmit);
   ~QuadSprites();
   QuadSprites(const QuadSprites&) = delete;

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string_view>
 
 #include <glm/gtc/matrix_transform.hpp>
 
@@ -12,12 +13,22 @@
 
 namespace tg::render {
 
+namespace {
+
+std::string_view rendererName(const gl::Api& gl) {
+  const auto* name = reinterpret_cast<const char*>(gl.GetString(GL_RENDERER));
+  return name ? name : "";
+}
+
+}  // namespace
+
 GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib, OverlayFactory legend)
     : gl_(gl),
       lib_(lib),
       ellipsoid_(gl, lib, {{GL_VERTEX_SHADER, "ellipsoid.vert"}, {GL_FRAGMENT_SHADER, "ellipsoid.frag"}}),
       lighting_(gl, lib, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "lighting.frag"}}),
-      sprites_(gl),
+      profile_(RendererProfile::of(rendererName(gl))),
+      sprites_(gl, profile_.glyphsPerSubmit),
       culling_(gl, lib),
       pyramid_(gl, lib),
       tessellated_(gl, lib),
@@ -31,10 +42,6 @@ GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib, Ov
   GLfloat pointRange[2] = {0, 0};
   gl.GetFloatv(GL_POINT_SIZE_RANGE, pointRange);
   maxPointPx_ = double(pointRange[1]);
-  const auto* name = reinterpret_cast<const char*>(gl.GetString(GL_RENDERER));
-  orientedQuadMinPx_ = orientedQuadMinPx(name ? name : "");
-  pixelCullMaxPx_ = pixelCullMaxPx(name ? name : "");
-  occlusionMinPx_ = occlusionMinPx(name ? name : "");
 }
 
 GlyphRenderer::~GlyphRenderer() {
@@ -261,7 +268,7 @@ bool GlyphRenderer::pointSprites(const Camera& cam, const FrameParams& p) const 
     return false;
   // Wide ray-cast glyphs pay for quads' three more vertex runs with the
   // fragments that their own axes save (prisms keep axis-aligned quads).
-  return !(p.orientedSprites && !isPrismKind(p.glyph) && typicalPx(cam, p) >= orientedQuadMinPx_);
+  return !(p.orientedSprites && !isPrismKind(p.glyph) && typicalPx(cam, p) >= profile_.orientedQuadMinPx);
 }
 
 double GlyphRenderer::typicalPx(const Camera& cam, const FrameParams& p) const {
@@ -342,12 +349,12 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   const double typical = typicalPx(cam, p);
   if (tessellated) culling_.bypass();
   else culling_.prepare(cam, p.scale, p.sizing, p.faMin, p.slab, p.frustumCulling, pointSprites(cam, p),
-                        p.pixelCull && typical < pixelCullMaxPx_);
+                        p.pixelCull && typical < profile_.pixelCullMaxPx);
   if (count_ > 0) beginGlyphs();
   const bool marching = count_ > 0 && !tessellated && split < 3;
   // Only mixed-sign glyphs (a stress field) give no occluders: no pre-pass;
   // nor do glyphs too small for it to pay (render/sprite_primitive.h).
-  const bool occluders = marching && p.occlusionPrepass && hasOccluders_ && !(typical < occlusionMinPx_);
+  const bool occluders = marching && p.occlusionPrepass && hasOccluders_ && !(typical < profile_.occlusionMinPx);
   if (occluders) {
     // Occlusion pre-pass: the exact ellipsoids of spheres and definite
     // glyphs, depth only. Their superquadrics hold them, so no visible

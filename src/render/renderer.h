@@ -24,6 +24,7 @@
 #include "render/outline_pass.h"
 #include "render/prism_kinds.h"
 #include "render/quad_sprites.h"
+#include "render/renderer_profile.h"
 #include "render/shadow_pass.h"
 #include "render/tessellated.h"
 #include "tensor/glyph.h"
@@ -233,6 +234,7 @@ class GlyphRenderer {
   std::array<std::uint64_t, 3> marchDraws_{};
   std::array<std::size_t, 3> groupCounts_{};  // uploaded glyphs by tensor::GlyphGroup
   gl::Program lighting_;
+  RendererProfile profile_;  // this context's measured choices
   QuadSprites sprites_;
   GlyphCulling culling_;
   OccluderPyramid pyramid_;
@@ -250,8 +252,6 @@ class GlyphRenderer {
   float mdMin_ = 0, mdMax_ = 0;
   double eigenMin_ = 0, eigenMax_ = 0;
   double typicalDiameter_ = 1.0;  // in eigenvalue units
-  double orientedQuadMinPx_ = 0.0;  // render/sprite_primitive.h, for this renderer
-  double pixelCullMaxPx_ = 0.0, occlusionMinPx_ = 0.0;  // the same
   std::unique_ptr<AoPass> ao_;
   std::unique_ptr<OutlinePass> outline_;
   std::unique_ptr<gl::Program> lightingVariant_;  // lighting.frag with TG_AO and/or TG_SHADOWS

@@ -62,30 +62,4 @@ double typicalSpritePx(const Camera& cam, const glm::dvec3& centresLoWC, const g
   return diameterWC * focalPx / depthVC;
 }
 
-// llvmpipe (2 cores; the scenes of tests/bench/peers.sh): the 40^3 point load
-// at 1024x768 (typical sprite 16 px) took 7-10% less CPU per frame as
-// oriented quads, at 1536x1152 (24 px) 17% less, at 768x576 (12 px) and
-// below the same or more; the helix at 512x512 (8 px) 55% more.
-double orientedQuadMinPx(std::string_view glRenderer) {
-  return glRenderer.find("llvmpipe") != std::string_view::npos ? 14.0 : std::numeric_limits<double>::infinity();
-}
-
-// llvmpipe (2 cores), 10^5 random superquadrics at 1920x1080, CPU per
-// frame: at a typical 0.24 px the cull kept 14% of the glyphs and the frame
-// took 120-126 ms against 135-145 without it (wall 180-189 against
-// 207-230); at 0.9 px it kept 77% and cost the same (275-331 against 313);
-// at 1.9 px it kept 98%.
-double pixelCullMaxPx(std::string_view glRenderer) {
-  return glRenderer.find("llvmpipe") != std::string_view::npos ? 1.0 : 0.0;
-}
-
-// llvmpipe (2 cores), 10^5 random superquadrics at 1920x1080, CPU ms per
-// frame with the pre-pass against without: typical 0.24 px 203-206 against
-// 156-172, 0.9 px 456-537 against 363-371, 1.9 px 732-765 against 534-610,
-// 3.8 px 1166-1226 against 1108-1164, 7.6 px 1950-2219 against 2475-2653
-// (the helix, 8 px, and the point load, 16 px, keep it: README).
-double occlusionMinPx(std::string_view glRenderer) {
-  return glRenderer.find("llvmpipe") != std::string_view::npos ? 4.0 : 0.0;
-}
-
 }  // namespace tg::render

@@ -121,9 +121,4 @@ TEST_F(DrawSubmissions, EveryGlyphOnceWhateverTheSubmissionSize) {
       }
 }
 
-TEST(DrawSubmissionSize, BoundedOnLlvmpipeOnly) {
-  EXPECT_EQ(render::QuadSprites::glyphsPerSubmit("llvmpipe (LLVM 15.0.6, 256 bits)"), 4096u);
-  EXPECT_EQ(render::QuadSprites::glyphsPerSubmit("NVIDIA H200/PCIe/SSE2"), render::QuadSprites::kWholeDraw);
-}
-
 }  // namespace

@@ -6,6 +6,7 @@
 
 #include <string_view>
 
+#include "render/renderer_profile.h"
 #include "render/sprite_primitive.h"
 
 using namespace tg;
@@ -23,7 +24,7 @@ class PixelCull : public GlFixture {
   void SetUp() override {
     ctx_->makeCurrent();
     const auto* name = reinterpret_cast<const char*>(ctx_->api().GetString(GL_RENDERER));
-    if (!(render::pixelCullMaxPx(name ? name : "") > 0.0)) GTEST_SKIP() << "no pixel cull on " << name;
+    if (!(render::RendererProfile::of(name ? name : "").pixelCullMaxPx > 0.0)) GTEST_SKIP() << "no pixel cull on " << name;
   }
   Frame frame(const tensor::GlyphSet& set, const render::Camera& cam, const render::FrameParams& p) {
     render::GlyphRenderer r(ctx_->api(), *lib_);

@@ -10,6 +10,7 @@
 
 #include <glm/vec4.hpp>
 
+#include "render/renderer_profile.h"
 #include "render/sprite_primitive.h"
 
 using namespace tg;
@@ -92,4 +93,24 @@ TEST(SpriteBound, NoneWhenTheEyeIsWithinReach) {
   const auto far = render::makeCamera(d, 320, 240, lo - 0.1, hi + 0.1);
   EXPECT_TRUE(render::pointSpritesFit(far, lo, hi, 0.1, 255.0));
   EXPECT_FALSE(render::pointSpritesFit(far, lo, hi, 0.1, 1.0));
+}
+
+// Each choice keyed by the GL implementation: llvmpipe's measured values,
+// under any LLVM version or vector width in its name; any other renderer
+// the plain path (points, no pixel cull, the pre-pass always, one draw).
+TEST(RendererProfile, LlvmpipeTakesItsMeasuredChoicesAndOthersThePlainPath) {
+  for (const char* name : {"llvmpipe (LLVM 15.0.6, 256 bits)", "llvmpipe (LLVM 19.1.7, 128 bits)"}) {
+    const auto p = tg::render::RendererProfile::of(name);
+    EXPECT_EQ(p.orientedQuadMinPx, 14.0) << name;
+    EXPECT_EQ(p.pixelCullMaxPx, 1.0) << name;
+    EXPECT_EQ(p.occlusionMinPx, 4.0) << name;
+    EXPECT_EQ(p.glyphsPerSubmit, 4096u) << name;
+  }
+  for (const char* name : {"NVIDIA H200/PCIe/SSE2", "AMD Radeon Graphics (radeonsi, navi21, LLVM 15.0.6)", ""}) {
+    const auto p = tg::render::RendererProfile::of(name);
+    EXPECT_EQ(p.orientedQuadMinPx, HUGE_VAL) << name;
+    EXPECT_EQ(p.pixelCullMaxPx, 0.0) << name;
+    EXPECT_EQ(p.occlusionMinPx, 0.0) << name;
+    EXPECT_EQ(p.glyphsPerSubmit, tg::render::RendererProfile::kWholeDraw) << name;
+  }
 }
