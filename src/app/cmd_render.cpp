@@ -83,7 +83,7 @@ int cmdRender(int argc, const char** argv) {
   }
   const std::uint64_t drawn = renderer.drawnGlyphs();
   const render::FrameImage img =
-      session.readback(fr, io::writesGeometryChannels(o.output) ? render::Channels::All : render::Channels::Color);
+      session.readback(fr, io::writesGeometryChannels(o.output) ? render::Channels::All : render::Channels::Rgba8);
   std::vector<std::string> picks;
   for (const PixelIJ& px : o.pick.pixels)
     picks.push_back(pickJson(pickPixel(ctx.api(), renderer, cam, session.target(), *pickTable, px)));
