@@ -1,5 +1,7 @@
 // `render`: one frame of a field (or the built-in scene) to an image file,
 // through the same RenderSession the Python module draws with.
+#include <malloc.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <optional>
@@ -82,6 +84,7 @@ int cmdRender(int argc, const char** argv) {
                  st.max, static_cast<unsigned long long>(st.pixels));
   }
   const std::uint64_t drawn = renderer.drawnGlyphs();
+  malloc_trim(0);
   const render::FrameImage img =
       session.readback(fr, io::writesGeometryChannels(o.output) ? render::Channels::All : render::Channels::Rgba8);
   std::vector<std::string> picks;
