@@ -41,9 +41,9 @@ bool canWriteImage(const std::string& path) {
 }
 
 std::vector<unsigned char> toRgba8(const render::FrameImage& img) {
+  if (img.rgba.empty()) return img.rgba8;
   std::vector<unsigned char> px(img.rgba.size());
-  for (std::size_t i = 0; i < px.size(); ++i)
-    px[i] = static_cast<unsigned char>(std::clamp(img.rgba[i], 0.0f, 1.0f) * 255.0f + 0.5f);
+  for (std::size_t i = 0; i < px.size(); ++i) px[i] = render::toUnorm8(img.rgba[i]);
   return px;
 }
 
@@ -51,8 +51,9 @@ void writeImage(const render::FrameImage& img, const std::string& path) {
   const std::size_t n = std::size_t(img.width) * img.height;
   const std::string ext = lowerExtension(path);
   if (ext.empty()) fail(path, "no file extension");
-  if (img.rgba.size() != 4 * n) fail(path, "the frame has no colour channels");
+  if (img.rgba.size() != 4 * n && img.rgba8.size() != 4 * n) fail(path, "the frame has no colour channels");
   if (ext == "exr") {
+    if (img.rgba.size() != 4 * n) fail(path, "EXR output needs the float colour read back");
     if (img.depth.size() != n || img.normalWC.size() != 3 * n || img.id.size() != n)
       fail(path, "EXR output needs the depth, normal and id channels read back");
     // Native per-channel layout: 8 floats then one uint32 per pixel.
@@ -76,7 +77,10 @@ void writeImage(const render::FrameImage& img, const std::string& path) {
     writeThroughOiio(path, out);
     return;
   }
-  const std::vector<unsigned char> px = toRgba8(img);
+  // A frame read back as 8 bits is written as it is, not copied.
+  std::vector<unsigned char> converted;
+  if (!img.rgba.empty()) converted = toRgba8(img);
+  const std::vector<unsigned char>& px = img.rgba.empty() ? img.rgba8 : converted;
   if (ext == "png") {
     writePng(path, img.width, img.height, 4, px.data());
     return;

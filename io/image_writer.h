@@ -12,7 +12,8 @@
 namespace tg::io {
 
 // The 8-bit RGBA every 8-bit format stores (rows top first): each channel
-// clamped to 0..1 and rounded. The Python module returns the same bytes.
+// clamped to 0..1 and rounded (render::toUnorm8), or the frame's own rgba8
+// when it was read back as 8 bits. The Python module returns the same bytes.
 std::vector<unsigned char> toRgba8(const render::FrameImage& img);
 
 // Throws std::runtime_error "writeImage: path: problem" (disk full included);

@@ -2,8 +2,8 @@
 
 #include <png.h>
 
+#include <memory>
 #include <stdexcept>
-#include <vector>
 
 #include "io/atomic_file.h"
 
@@ -20,11 +20,13 @@ void writePng(const std::string& path, int width, int height, int channels, cons
   const png_int_32 stride = png_int_32(width) * channels;
   // Room for the largest file these pixels can make, so that they are
   // compressed once (asking for the size first compresses them twice).
-  std::vector<unsigned char> encoded(PNG_IMAGE_PNG_SIZE_MAX(image));
-  png_alloc_size_t bytes = encoded.size();
-  if (!png_image_write_to_memory(&image, encoded.data(), &bytes, 0, pixels, stride, nullptr)) fail(image.message);
+  // Uninitialised: only the pages the encoder writes are ever touched, not
+  // the worst case's (more than the pixels themselves).
+  png_alloc_size_t bytes = PNG_IMAGE_PNG_SIZE_MAX(image);
+  const std::unique_ptr<unsigned char[]> encoded(new unsigned char[bytes]);
+  if (!png_image_write_to_memory(&image, encoded.get(), &bytes, 0, pixels, stride, nullptr)) fail(image.message);
   AtomicFile out(path);
-  out.write(encoded.data(), bytes);
+  out.write(encoded.get(), bytes);
   out.commit(std::int64_t(bytes));
 }
 

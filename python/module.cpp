@@ -158,7 +158,7 @@ class Renderer {
       session_->context().makeCurrent();
       const app::RenderSession::Frame f = session_->frame(o);
       session_->draw(f);
-      img = session_->readback(f, channels ? render::Channels::All : render::Channels::Color);
+      img = session_->readback(f, channels ? render::Channels::All : render::Channels::Rgba8);
     }
     py::dict out;
     py::array_t<std::uint8_t> rgba({img.height, img.width, 4});

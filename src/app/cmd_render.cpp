@@ -1,5 +1,7 @@
 // `render`: one frame of a field (or the built-in scene) to an image file,
 // through the same RenderSession the Python module draws with.
+#include <malloc.h>
+
 #include <algorithm>
 #include <cstdio>
 #include <optional>
@@ -87,8 +89,9 @@ int cmdRender(int argc, const char** argv) {
                  static_cast<unsigned long long>(st.gaugeCalls));
   }
   const std::uint64_t drawn = renderer.drawnGlyphs();
+  malloc_trim(0);
   const render::FrameImage img =
-      session.readback(fr, io::writesGeometryChannels(o.output) ? render::Channels::All : render::Channels::Color);
+      session.readback(fr, io::writesGeometryChannels(o.output) ? render::Channels::All : render::Channels::Rgba8);
   std::vector<std::string> picks;
   for (const PixelIJ& px : o.pick.pixels)
     picks.push_back(pickJson(pickPixel(ctx.api(), renderer, cam, session.target(), *pickTable, px)));

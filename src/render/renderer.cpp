@@ -9,6 +9,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "render/camera_uniforms.h"
+#include "render/color_readback.h"
 #include "render/sprite_primitive.h"
 
 namespace tg::render {
@@ -456,6 +457,10 @@ FrameImage GlyphRenderer::readback(const Camera& cam, const GBuffer& t, Channels
   const std::size_t n = std::size_t(w) * h;
   auto bytes = [](const auto& v) { return GLsizei(v.size() * sizeof(v[0])); };
   gl_.PixelStorei(GL_PACK_ALIGNMENT, 1);
+  if (channels == Channels::Rgba8) {
+    img.rgba8 = readColorRgba8(gl_, t);
+    return img;
+  }
   img.rgba.resize(4 * n);
   gl_.GetTextureImage(t.color(), 0, GL_RGBA, GL_FLOAT, bytes(img.rgba), img.rgba.data());
   flipRows(img.rgba, w, h, 4);

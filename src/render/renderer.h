@@ -32,8 +32,10 @@
 
 namespace tg::render {
 
-// What readback fetches: colour only (PNG and the like) or every channel (EXR).
-enum class Channels { Color, All };
+// What readback fetches: the float colour, every channel (EXR), or only the
+// colour as 8-bit RGBA (PNG and the like; render/color_readback.h), which
+// never holds the float image on the CPU.
+enum class Channels { Color, All, Rgba8 };
 
 enum class ColorMode { DEC = 0, FA = 1, MD = 2, CL = 3, CP = 4, Sign = 5 };
 
