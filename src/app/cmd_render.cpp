@@ -89,6 +89,8 @@ int cmdRender(int argc, const char** argv) {
                  static_cast<unsigned long long>(st.gaugeCalls));
   }
   const std::uint64_t drawn = renderer.drawnGlyphs();
+  // The first frame's freed heap (llvmpipe's compile and scene memory)
+  // goes back to the system before the readback allocates: a lower peak.
   malloc_trim(0);
   const render::FrameImage img =
       session.readback(fr, io::writesGeometryChannels(o.output) ? render::Channels::All : render::Channels::Rgba8);
