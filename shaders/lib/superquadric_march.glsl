@@ -96,6 +96,20 @@ void gridRange(float s0, float s1, vec2 search, out int kFirst, out int kLast) {
   if (kLast < kGridSamples && !(gridSample(s0, s1, kLast) > search.y)) kLast = kGridSamples;
 }
 
+// The point whose gauge bounds the gauge on the segment from pa to pb
+// from below: its |x|, |y|, |z| at their least over the segment, lowered by
+// `rounding`, since every gauge grows with each of them. A margin proof
+// that the segment holds no root, for any point the march rounds onto it.
+vec3 segmentLowCorner(vec3 pa, vec3 pb, float rounding) {
+  vec3 least = mix(min(abs(pa), abs(pb)), vec3(0.0), lessThanEqual(pa * pb, vec3(0.0)));
+  return max(least - rounding, vec3(0.0));
+}
+
+// How far above 1 a lower bound on the gauge must lie to rule out a root:
+// far more than the float gauge's relative error.
+const float kRootFreeMargin = 1e-2;
+const int kBisectionsPerProof = 3;
+
 const int kPhaseEntry = 0, kPhaseGrid = 1, kPhaseBisect = 2, kPhaseNewton = 3, kPhaseGradient = 4;
 
 // The first surface crossing of the unit glyph along o + s dir (|dir| = 1,
@@ -128,11 +142,18 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, vec2 se
   // derivative bisection's interval between them.
   int k = 0, j = 0, i = 0, finalIterations = 0;
   float prev = s, prevH = 0.0, prevSlope = 0.0, gridS = 0.0, gridH = 0.0, gridSlope = 0.0, a = 0.0, b = 0.0;
+  // The derivative bisection first tries to prove its interval root-free:
+  // the gauge at `corner` (segmentLowCorner), taken instead of the next
+  // sample, ends a search that could only fail; 2^-20 (max|o_i| + 2) bounds
+  // where the march rounds the segment's points to (marchSearchSpan).
+  bool proving = false;
+  vec3 corner = vec3(0.0);
+  float rounding = exp2(-20.0) * (max(max(abs(o.x), abs(o.y)), abs(o.z)) + 2.0);
   int calls = 0;
   while (!done) {
     ++calls;
     vec3 grad;
-    float h = superquadricGauge(shape, o + s * dir, grad) - 1.0;
+    float h = superquadricGauge(shape, proving ? corner : o + s * dir, grad) - 1.0;
     float slope = dot(grad, dir);
     bool nextSample = false;  // leave this grid sample for the next
     if (phase == kPhaseEntry) {
@@ -185,11 +206,17 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, vec2 se
         j = 0;
         phase = kPhaseBisect;
         s = 0.5 * (a + b);
+        proving = true;
+        corner = segmentLowCorner(o + a * dir, o + b * dir, rounding);
       } else {
         nextSample = true;
       }
     } else if (phase == kPhaseBisect) {
-      if (h <= 0.0) {
+      if (proving) {
+        // No root in [a, b]: the bisection would end without one.
+        proving = false;
+        nextSample = h > kRootFreeMargin;
+      } else if (h <= 0.0) {
         gridS = s;
         gridH = h;
         bracketed = true;
@@ -199,6 +226,10 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, vec2 se
         ++j;
         if (j < kGridSamples && b - a > eps) s = 0.5 * (a + b);
         else nextSample = true;
+        if (!nextSample && j % kBisectionsPerProof == 0) {
+          proving = true;
+          corner = segmentLowCorner(o + a * dir, o + b * dir, rounding);
+        }
       }
     } else if (phase == kPhaseNewton) {
       res.iterations = i + 1;
