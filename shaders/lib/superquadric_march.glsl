@@ -108,6 +108,9 @@ vec3 segmentLowCorner(vec3 pa, vec3 pb, float rounding) {
 // How far above 1 a lower bound on the gauge must lie to rule out a root:
 // far more than the float gauge's relative error.
 const float kRootFreeMargin = 1e-2;
+// Bisection steps between proofs: on the point load, loop passes per 8-lane
+// group were 1.181 M with a proof after every step, 1.161 M every second,
+// 1.160 M every third and 1.182 M with one at the start only.
 const int kBisectionsPerProof = 3;
 
 const int kPhaseEntry = 0, kPhaseGrid = 1, kPhaseBisect = 2, kPhaseNewton = 3, kPhaseGradient = 4;
