@@ -47,19 +47,20 @@ void main() {
   // ray that passes it by (with room for the march's tolerance) cannot hit,
   // and most of a thin glyph's rectangle is such rays.
   // q rounds with |o|, which reaches 1e7 for thin glyphs seen at a slant:
-  // the same rounding margin as marchMayHit's, so a ray the march would hit
+  // the same rounding margin as marchSearchSpan's, so a ray the march would hit
   // is never dropped here.
   vec3 q = o - dot(o, d) / (dl * dl) * d;
   float on = max(max(abs(o.x), abs(o.y)), abs(o.z));
   float reach = superquadricReach(fin.shape) * (1.0 + 1e-3) + 4.0 * uEpsilon + exp2(-19.0) * (on + 2.0);
+  vec2 search = marchSearchSpan(fin.shape, o, d / dl, uEpsilon, on);
   // The box's entry is the nearest this glyph can be on the ray: behind the
   // occluders it cannot win the depth test, so it skips the march.
   // The march runs under `if`, not after a discard: on llvmpipe a discarded
   // fragment still runs every loop to the end (lib/superquadric_march.glsl).
-  bool inReach = !(dot(q, q) > reach * reach) && marchMayHit(fin.shape, o, d / dl, uEpsilon) &&
+  bool inReach = !(dot(q, q) > reach * reach) && search.x <= search.y &&
       !pixelOccluded(ivec2(gl_FragCoord.xy), tc + unitCubeSpan(o, d / dl).x / dl, 4.0 * uEpsilon / dl);
   MarchResult m = MarchResult(false, 0.0, vec3(0.0), 0, 0);
-  if (inReach) m = superquadricMarch(fin.shape, o, d / dl, (uNearVC - tc) * dl, uMaxIterations, uEpsilon);
+  if (inReach) m = superquadricMarch(fin.shape, o, d / dl, (uNearVC - tc) * dl, search, uMaxIterations, uEpsilon);
 #ifdef TG_ITERATION_STATS
   if (m.iterations > 0) {
     atomicAdd(iterStats[0], uint(m.iterations));

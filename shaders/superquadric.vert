@@ -58,6 +58,24 @@ void main() {
     boxNDC[k] = cc.xy / cc.w;
     rect = vec4(min(rect.xy, boxNDC[k]), max(rect.zw, boxNDC[k]));
   }
+  // Mixed-sign shapes (b, c >= 2) also lie in the double pyramid
+  // max(|x|, |y|) + |z| <= 1 in GC (lib/superquadric_march.glsl), grown as
+  // the fragment stage grows it for shape exponents just below 2 and the
+  // march's tolerance (float rounding in window pixels is left to the
+  // sprites' margins): its six corners bound a thin glyph's outline tighter
+  // than the box's eight.
+  bool pyramid = min(shape.y, shape.z) >= 1.9999;
+  float rP = 1.0 + 1e-3 + 4.0 * uEpsilon;
+  vec2 pyramidNDC[6];
+  vec4 rectP = vec4(1e38, 1e38, -1e38, -1e38);
+  for (int k = 0; k < 6; ++k) {
+    vec3 c = centreVC + rP * (k < 4 ? ((k & 1) == 0 ? -e0 : e0) + ((k & 2) == 0 ? -e1 : e1) : (k == 4 ? -e2 : e2));
+    vec4 cc = uProjVCCC * vec4(c, 1.0);
+    if (cc.w <= 0.0) pyramid = false;
+    pyramidNDC[k] = cc.xy / cc.w;
+    rectP = vec4(min(rectP.xy, pyramidNDC[k]), max(rectP.zw, pyramidNDC[k]));
+  }
+  if (pyramid) rect = vec4(max(rect.xy, rectP.xy), min(rect.zw, rectP.zw));
   float farthest = -centreVC.z + length(axes);
   if (farthest < uNearVC || (uOrtho == 1 && nearest > uFarVC)) return;
   if (crossesEyePlane) rect = vec4(-1.0, -1.0, 1.0, 1.0);
@@ -100,12 +118,28 @@ void main() {
       vec2 st = vec2(dot(d, quad.axis), dot(d, f));
       span = vec4(min(span.xy, st), max(span.zw, st));
     }
+    if (pyramid) {
+      vec4 spanP = vec4(1e38, 1e38, -1e38, -1e38);
+      for (int k = 0; k < 6; ++k) {
+        vec2 d = (pyramidNDC[k] + 1.0) * 0.5 * uViewportDC - quad.centre;
+        vec2 st = vec2(dot(d, quad.axis), dot(d, f));
+        spanP = vec4(min(spanP.xy, st), max(spanP.zw, st));
+      }
+      span = vec4(max(span.xy, spanP.xy), min(span.zw, spanP.zw));
+    }
     span = vec4(max(span.xy, -quad.halfSize), min(span.zw, quad.halfSize));
     vec2 mid = 0.5 * (span.xy + span.zw);
     quad.centre += mid.x * quad.axis + mid.y * f;
     quad.halfSize = 0.5 * (span.zw - span.xy) + 0.25;  // the rectangle's margin
     if (all(greaterThan(quad.halfSize, vec2(0.0))) && spriteQuadSmaller(quad, rect))
       gl_Position = spriteQuadCornerCC(quad, depthWin);
+    // Mixed-sign glyphs: the pyramid's outline where a quad holds it, half
+    // the rectangle of a long diamond. A sixteenth of a pixel of margin
+    // exceeds the rasteriser's snapping (1/256 px) and the corners' rounding.
+    SpriteCornersDC outline;
+    if (pyramid && pyramidOutlineDC(pyramidNDC, 0.0625, outline) &&
+        spriteCornersArea(outline) < min(4.0 * quad.halfSize.x * quad.halfSize.y, sizeDC.x * sizeDC.y))
+      gl_Position = spriteCornersCC(outline, depthWin);
   }
   vs.centreVC = centreVC;
   vs.gcFromVC = transpose(mat3(e0 / dot(e0, e0), e1 / dot(e1, e1), e2 / dot(e2, e2)));

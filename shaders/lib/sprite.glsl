@@ -106,3 +106,100 @@ bool spriteQuadSmaller(SpriteQuadDC quad, vec4 rectNDC) {
   vec2 sizeDC = (rectNDC.zw - rectNDC.xy) * 0.5 * uViewportDC;
   return 4.0 * quad.halfSize.x * quad.halfSize.y < sizeDC.x * sizeDC.y;
 }
+
+// A convex quadrilateral in window pixels, its corners in the order of the
+// quad's vertices: the triangles (0 1 2, 2 1 3) share the diagonal 1-2, so
+// 0, 1, 3, 2 run around it. Where a glyph's outline is a polygon, such a
+// quad can hold it far tighter than any rectangle (a thin diamond fills
+// half of its bounding rectangle).
+struct SpriteCornersDC {
+  vec2 p[4];
+};
+
+float spriteCornersArea(SpriteCornersDC q) {
+  vec2 a = q.p[3] - q.p[0], b = q.p[1] - q.p[2];
+  return 0.5 * abs(a.x * b.y - a.y * b.x);
+}
+
+// Moves every side of q out by margin pixels (each corner along the mitre
+// of its two sides); false where q is not convex or a corner is too sharp
+// for the mitre to stay near it.
+bool growSpriteCorners(inout SpriteCornersDC q, float margin) {
+  const ivec4 around = ivec4(0, 1, 3, 2);
+  vec2 c[4] = vec2[4](q.p[0], q.p[1], q.p[3], q.p[2]);
+  vec2 n[4];  // n[i]: the unit normal of side c[i] -> c[i + 1], pointing out
+  float turn = 0.0;
+  bool convex = true;
+  for (int i = 0; i < 4; ++i) {
+    vec2 e = c[(i + 1) & 3] - c[i], e2 = c[(i + 2) & 3] - c[(i + 1) & 3];
+    float z = e.x * e2.y - e.y * e2.x;
+    convex = convex && z != 0.0 && (i == 0 || (z > 0.0) == (turn > 0.0));
+    if (i == 0) turn = z;
+    n[i] = length(e) > 0.0 ? vec2(e.y, -e.x) / length(e) : vec2(0.0);
+  }
+  if (!convex) return false;
+  for (int i = 0; i < 4; ++i) {
+    // Counter-clockwise corners have their outside on the right of each side.
+    vec2 n1 = turn > 0.0 ? n[(i + 3) & 3] : -n[(i + 3) & 3], n2 = turn > 0.0 ? n[i] : -n[i];
+    float cosine = dot(n1, n2);
+    if (!(cosine > -0.999)) return false;
+    q.p[around[i]] = c[i] + margin * (n1 + n2) / (1.0 + cosine);
+  }
+  return true;
+}
+
+// The quad corner for this vertex, at window depth depthWin; no use for
+// point sprites.
+vec4 spriteCornersCC(SpriteCornersDC q, float depthWin) {
+  return vec4(q.p[gl_VertexID & 3] / uViewportDC * 2.0 - 1.0, depthWin, 1.0);
+}
+
+// Two quads that hold a double pyramid's outline (its square's corners
+// 0-3 as (+-e0) + (+-e1) in bit order, its apexes 4 and 5 in cornersNDC):
+// the rhombus between the apexes that holds the square, where the square
+// stays between them along their axis, and the square itself where it holds
+// both apexes; each grown by margin pixels. Returns the smaller that
+// exists, false where neither does.
+bool pyramidOutlineDC(vec2 cornersNDC[6], float margin, out SpriteCornersDC best) {
+  vec2 c[6];
+  for (int k = 0; k < 6; ++k) c[k] = (cornersNDC[k] + 1.0) * 0.5 * uViewportDC;
+  float bestArea = 1e38;
+  // The rhombus: a point at (t, u) along the axis and across it lies in the
+  // rhombus of half-diagonals (l, w) where |t| / l + |u| / w <= 1.
+  vec2 m = 0.5 * (c[4] + c[5]);
+  float l = 0.5 * length(c[5] - c[4]);
+  if (l > 0.0) {
+    vec2 axis = (c[5] - c[4]) * (0.5 / l), f = vec2(-axis.y, axis.x);
+    float w = 0.0;
+    bool fits = true;
+    for (int k = 0; k < 4; ++k) {
+      vec2 d = c[k] - m;
+      float t = abs(dot(d, axis)) / l;
+      fits = fits && t < 1.0;
+      w = max(w, abs(dot(d, f)) / max(1.0 - t, 1e-30));
+    }
+    SpriteCornersDC r = SpriteCornersDC(vec2[4](c[4], m + w * f, m - w * f, c[5]));
+    if (fits && w > 0.0 && growSpriteCorners(r, margin)) {
+      best = r;
+      bestArea = spriteCornersArea(r);
+    }
+  }
+  // The square: both apexes on the inner side of its four sides.
+  SpriteCornersDC sq = SpriteCornersDC(vec2[4](c[0], c[1], c[2], c[3]));
+  const ivec4 around = ivec4(0, 1, 3, 2);
+  float side = 0.0;
+  bool holds = true;
+  for (int i = 0; i < 4; ++i) {
+    vec2 a = c[around[i]], e = c[around[(i + 1) & 3]] - a;
+    for (int k = 4; k < 6; ++k) {
+      float z = e.x * (c[k].y - a.y) - e.y * (c[k].x - a.x);
+      if (side == 0.0) side = z;
+      holds = holds && z * side >= 0.0;
+    }
+  }
+  if (holds && growSpriteCorners(sq, margin) && spriteCornersArea(sq) < bestArea) {
+    best = sq;
+    bestArea = spriteCornersArea(sq);
+  }
+  return bestArea < 1e38;
+}

@@ -144,6 +144,79 @@ TEST_F(OrientedSprites, WideGlyphsDrawQuadsOnLlvmpipe) {
   }
 }
 
+// Mixed-sign glyphs long along one axis, in random orientations: their
+// quads follow the outline of the double pyramid that holds them (a rhombus
+// between its apexes, or its square), with a sixteenth of a pixel of margin.
+// Every pixel that can hit lies in it: byte-equal to the rectangles' frames,
+// perspective and orthographic, near and far; and the quads shade far fewer
+// fragments than the rectangles. So does the point load at world scale 1e-6
+// and 1e6, where rounding in GC is coarsest.
+TEST_F(OrientedSprites, MixedSignOutlinesHoldEveryPixelWithFewerFragments) {
+  io::TensorField f;
+  std::mt19937_64 rng(43);
+  std::normal_distribution<double> n(0.0, 1.0);
+  const glm::dvec3 kinds[] = {{1.0, -0.06, -0.04}, {1.0, -0.9, 0.05}, {0.05, 0.04, -1.0}, {0.5, -0.02, -1.0}};
+  for (std::uint32_t i = 0; i < 8 * 8 * 8; ++i) {
+    const glm::dvec3 l = kinds[i % 4];
+    const glm::dmat3 r = glm::mat3_cast(glm::normalize(glm::dquat(n(rng), n(rng), n(rng), n(rng))));
+    const glm::dmat3 t = r * glm::dmat3(l.x, 0, 0, 0, l.y, 0, 0, 0, l.z) * glm::transpose(r);
+    const double t9[9] = {t[0][0], t[1][0], t[2][0], t[0][1], t[1][1], t[2][1], t[0][2], t[1][2], t[2][2]};
+    const double p[3] = {double(i % 8), double(i / 8 % 8), double(i / 64)};
+    f.addFull(i, p, t9);
+  }
+  const auto set = test::glyphsOf(f);
+  ASSERT_EQ(set.sphereCount + set.definiteCount, 0u);
+  const double scale = 0.45 / set.maxAbsEigenvalue;
+  struct Case {
+    double gamma, dist;
+    render::Projection proj;
+  };
+  for (const Case c : {Case{3.0, 20.0, render::Projection::Perspective}, Case{0.0, 7.0, render::Projection::Perspective},
+                       Case{8.0, 20.0, render::Projection::Orthographic}}) {
+    SCOPED_TRACE(int(c.gamma) * 100 + int(c.dist));
+    const auto cam = test::cameraFor(set, scale, test::oblique(set, c.dist, c.proj), 480, 360);
+    render::FrameParams p;
+    p.scale = scale;
+    p.glyph = render::GlyphKind::Superquadric;
+    p.gamma = c.gamma;
+    p.pointSprites = false;
+    const Frame outlines = frame(set, cam, p);
+    p.orientedSprites = false;
+    const Frame rects = frame(set, cam, p);
+    EXPECT_GT(test::coveredPixels(rects.img), 2000u);
+    EXPECT_EQ(test::differingPixels(outlines.img, rects.img), 0u);
+    const double lighting = double(cam.width) * cam.height;
+    EXPECT_LT(double(outlines.fragments) - lighting, 0.7 * (double(rects.fragments) - lighting));
+  }
+  for (const double k : {1e-6, 1e6}) {
+    SCOPED_TRACE(k);
+    // The point load's field (data-synthetic/generators.cpp), k times as large.
+    io::TensorField load;
+    for (std::uint32_t i = 0; i < 6 * 6 * 6; ++i) {
+      const double h = 2.0 / 6, q[3] = {-1.0 + (0.5 + i % 6) * h, -1.0 + (0.5 + i / 6 % 6) * h, -2.0 + (0.5 + i / 36) * h};
+      double t9[9];
+      synth::boussinesqStress(q[0], q[1], -q[2], 0.3, t9);
+      const double p[3] = {k * q[0], k * q[1], k * q[2]};
+      load.addFull(i, p, t9);
+    }
+    const auto scaled = test::glyphsOf(load);
+    tensor::ScaleParams sized;
+    sized.percentile = 0.9;
+    const double sc = tensor::resolveScale(sized, tensor::sampleMagnitudes(scaled, k * 2.0 / 6)).scale;
+    const auto cam = test::cameraFor(scaled, sc, test::oblique(scaled, 3.0 * k, render::Projection::Perspective), 320, 240);
+    render::FrameParams p;
+    p.scale = sc;
+    p.glyph = render::GlyphKind::Superquadric;
+    p.pointSprites = false;
+    const Frame outlines = frame(scaled, cam, p);
+    p.orientedSprites = false;
+    const Frame rects = frame(scaled, cam, p);
+    EXPECT_GT(test::coveredPixels(rects.img), 1000u);
+    EXPECT_EQ(test::differingPixels(outlines.img, rects.img), 0u);
+    EXPECT_LT(outlines.fragments, rects.fragments);
+  }
+}
+
 TEST(SpritePrimitive, TypicalWidthScalesWithTheViewport) {
   render::CameraDesc d;
   d.eyeWC = {0, 0, 10};
