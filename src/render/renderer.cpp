@@ -255,8 +255,7 @@ Camera GlyphRenderer::renderShadowMap(const Camera& cam, const FrameParams& p, i
   const bool occluders = !tessellated && split < 3 && p.occlusionPrepass && hasOccluders_;
   if (occluders) {
     shadow_->beginOccluders(light.width);
-    ellipsoid_.set("uOccluders", 0);
-    useGlyphProgram(ellipsoid_, light);
+    useGlyphProgram(occluderProgram(p), light);
     culling_.draw(sprites_, 0, 2);
     shadow_->buildPyramid(pyramid_);
   }
