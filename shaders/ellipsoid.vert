@@ -27,8 +27,7 @@ out OccluderFS {
 out SpriteFS {
   flat vec3 centreVC;
   flat mat3 gcFromVC;
-  flat vec3 color;
-  flat vec3 signWeightsGC;
+  flat vec3 color;  // with uColorMode kColorSign, the sign weights (lib/color.glsl)
   flat uint id;
 } vs;
 #endif
@@ -98,8 +97,9 @@ void main() {
 #else
   vs.centreVC = centreVC;
   vs.gcFromVC = transpose(mat3(rotVC[0] / axes.x, rotVC[1] / axes.y, rotVC[2] / axes.z));
-  vs.color = glyphColor(uColorMode, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, uMdRange);
-  vs.signWeightsGC = uColorMode == kColorSign ? signWeights(g.eigenvalues_id.xyz, axes) : vec3(0.0);
+  // One input fewer per fragment: llvmpipe's ellipsoid fragments cost by the inputs they read.
+  vs.color = uColorMode == kColorSign ? signWeights(g.eigenvalues_id.xyz, axes)
+                                      : glyphColor(uColorMode, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, uMdRange);
   vs.id = floatBitsToUint(g.eigenvalues_id.w);
 #endif
 }
