@@ -367,8 +367,9 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
     // contour, behind every front hit. Their superquadrics hold them, so no
     // visible surface lies behind this depth: spheres and superquadrics
     // wholly behind it are culled, and pixels whose box entry is behind it
-    // skip the march (shaders/lib/occlusion.glsl). Its shader writes no
-    // depth, so llvmpipe rejects hidden occluder fragments before shading.
+    // skip the march (shaders/lib/occlusion.glsl). An occluder fragment
+    // reads five inputs and casts no ray, so the pass costs about what its
+    // sprites' setup does.
     target.beginOccluders();
     useGlyphProgram(occluderProgram(p), cam);
     culling_.draw(sprites_, 0, 2);
