@@ -9,8 +9,7 @@ uniform int uColorMode;
 in SpriteFS {
   flat vec3 centreVC;
   flat mat3 gcFromVC;
-  flat vec3 color;
-  flat vec3 signWeightsGC;
+  flat vec3 color;  // with uColorMode kColorSign, the sign weights (lib/color.glsl)
   flat uint id;
 } fin;
 
@@ -38,7 +37,7 @@ void main() {
   vec3 nVC = transpose(fin.gcFromVC) * nGC;  // inverse transpose of GC -> VC
   vec3 nWC = normalize(transpose(mat3(uViewWCVC)) * nVC);
   gl_FragDepth = windowDepthFromViewDepth(depth);
-  oAlbedo = vec4(uColorMode == kColorSign ? signColor(fin.signWeightsGC, nGC) : fin.color, 1.0);
+  oAlbedo = vec4(uColorMode == kColorSign ? signColor(fin.color, nGC) : fin.color, 1.0);
   oNormalWC = vec4(nWC, 0.0);
   oId = fin.id;
 }

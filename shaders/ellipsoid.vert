@@ -2,6 +2,10 @@
 // Four vertices per glyph (lib/sprite.glsl): fetch the record, cull it, and
 // place this vertex at a corner of the glyph's exact screen rectangle (Sigg
 // et al. 2006, eq. 5), passing what the fragment stage needs to intersect it.
+// TG_OCCLUDER_DISC: the same sprite as an occluder of the superquadric pass's
+// pre-pass, for occluder_disc.frag: its outline, at a depth no front hit lies
+// behind.
+#pragma tg option TG_OCCLUDER_DISC
 #include "lib/camera.glsl"
 #include "lib/glyph_record.glsl"
 #include "lib/ellipsoid.glsl"
@@ -14,13 +18,19 @@
 uniform int uColorMode;
 uniform vec2 uMdRange;
 
+#ifdef TG_OCCLUDER_DISC
+out OccluderFS {
+  flat vec2 centreDC;
+  flat vec3 conicDC;
+} vs;
+#else
 out SpriteFS {
   flat vec3 centreVC;
   flat mat3 gcFromVC;
-  flat vec3 color;
-  flat vec3 signWeightsGC;
+  flat vec3 color;  // with uColorMode kColorSign, the sign weights (lib/color.glsl)
   flat uint id;
 } vs;
+#endif
 
 void main() {
   gl_Position = kSpriteCulledCC;
@@ -52,20 +62,44 @@ void main() {
   // (so a glyph visible anywhere never is): no fragment of it could win.
   if (spriteOccluded(rect, dist - radius, 0.0)) return;
 
+#ifdef TG_OCCLUDER_DISC
+  // A glyph the near plane may cut, or the eye may be in, occludes nothing
+  // (from inside, its far wall would bound no surface in front of it).
+  vec2 outlineDC;
+  mat2 supportDC;
+  float farVC;
+  if (dist - radius < uNearVC || !ellipseSupportDC(uProjVCCC * tVC, outlineDC, supportDC)) return;
+  mat3 gcFromVC = transpose(mat3(rotVC[0] / axes.x, rotVC[1] / axes.y, rotVC[2] / axes.z));
+  vec3 depthGC = -vec3(rotVC[0].z * axes.x, rotVC[1].z * axes.y, rotVC[2].z * axes.z);
+  if (!silhouetteFarVC(gcFromVC, depthGC, centreVC, farVC)) return;
+  float det = determinant(supportDC);
+  if (!(det > 0.0)) return;
+  // Constant over the sprite, as a point sprite's depth is.
+  float depthWin = windowDepthFromViewDepth(farVC);
+  bool oriented = uPointSprites == 0 && uOrientedSprites != 0;
+#else
   // The quad sits at the nearest depth the glyph can have, so the fragment
   // depth only ever moves away from it (layout(depth_less) with reversed Z).
   float depthWin = windowDepthFromViewDepth(max(dist - radius, uNearVC));
-  gl_Position = spriteCornerCC(rect, depthWin);
   vec2 outlineDC;
   mat2 supportDC;
-  if (uPointSprites == 0 && uOrientedSprites != 0 && ellipseSupportDC(uProjVCCC * tVC, outlineDC, supportDC)) {
+  bool oriented = uPointSprites == 0 && uOrientedSprites != 0 && ellipseSupportDC(uProjVCCC * tVC, outlineDC, supportDC);
+#endif
+  gl_Position = spriteCornerCC(rect, depthWin);
+  if (oriented) {
     SpriteQuadDC quad = ellipseQuadDC(outlineDC, supportDC);
     quad.halfSize += 0.25;  // the rectangle's margin
     if (spriteQuadSmaller(quad, rect)) gl_Position = spriteQuadCornerCC(quad, depthWin);
   }
+#ifdef TG_OCCLUDER_DISC
+  vs.centreDC = outlineDC;
+  vs.conicDC = vec3(supportDC[1][1], -supportDC[0][1], supportDC[0][0]) / det;
+#else
   vs.centreVC = centreVC;
   vs.gcFromVC = transpose(mat3(rotVC[0] / axes.x, rotVC[1] / axes.y, rotVC[2] / axes.z));
-  vs.color = glyphColor(uColorMode, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, uMdRange);
-  vs.signWeightsGC = uColorMode == kColorSign ? signWeights(g.eigenvalues_id.xyz, axes) : vec3(0.0);
+  // One input fewer per fragment: llvmpipe's ellipsoid fragments cost by the inputs they read.
+  vs.color = uColorMode == kColorSign ? signWeights(g.eigenvalues_id.xyz, axes)
+                                      : glyphColor(uColorMode, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, uMdRange);
   vs.id = floatBitsToUint(g.eigenvalues_id.w);
+#endif
 }

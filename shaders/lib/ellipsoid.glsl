@@ -71,3 +71,30 @@ bool unitSphereRoots(vec3 o, vec3 d, out float t0, out float t1) {
   t1 = tc + s;
   return true;
 }
+
+// The farthest view depth on the silhouette contour of the ellipsoid
+// centreVC + M x, |x| <= 1, where gcFromVC = M^-1 and depthGC = -(row z of
+// M), so that a point's view depth is -centreVC.z + dot(depthGC, x). Every
+// ray that hits the ellipsoid crosses the plane of that contour (the eye's
+// polar plane; for parallel rays the plane through the centre) between its
+// two hits and inside the contour, where view depth is largest on the
+// contour itself: no front hit lies behind this depth. False when the eye is
+// inside the ellipsoid.
+bool silhouetteFarVC(mat3 gcFromVC, vec3 depthGC, vec3 centreVC, out float farVC) {
+  farVC = -centreVC.z;
+  float ww = dot(depthGC, depthGC);
+  if (uOrtho == 1) {
+    vec3 e = normalize(gcFromVC * vec3(0.0, 0.0, -1.0));
+    float we = dot(depthGC, e);
+    farVC += sqrt(max(ww - we * we, 0.0));
+    return true;
+  }
+  // The eye in parameter space; the contour is the circle x.e = 1, |x| = 1:
+  // centre e / |e|^2, radius sqrt(1 - 1 / |e|^2).
+  vec3 e = -(gcFromVC * centreVC);
+  float ee = dot(e, e);
+  if (!(ee > 1.0)) return false;
+  float we = dot(depthGC, e);
+  farVC += we / ee + sqrt(1.0 - 1.0 / ee) * sqrt(max(ww - we * we / ee, 0.0));
+  return true;
+}

@@ -5,7 +5,9 @@
 namespace tg::render {
 
 OccluderPyramid::OccluderPyramid(const gl::Api& gl, const gl::ShaderLibrary& lib)
-    : gl_(gl), build_(gl, lib, {{GL_COMPUTE_SHADER, "occluder_pyramid.comp"}}) {}
+    : gl_(gl),
+      fromDepth_(gl, lib, {{GL_COMPUTE_SHADER, "occluder_pyramid.comp"}}, {"TG_FROM_DEPTH"}),
+      fromFiner_(gl, lib, {{GL_COMPUTE_SHADER, "occluder_pyramid.comp"}}) {}
 
 void OccluderPyramid::build(const GBuffer& target) const {
   build(target.occluderDepth(), target.occluderPyramid(), target.width(), target.height(), target.pyramidLevels());
@@ -19,10 +21,9 @@ int OccluderPyramid::levelsFor(int width, int height) {
 
 void OccluderPyramid::build(GLuint depth, GLuint pyramid, int width, int height, int levels) const {
   gl_.BindTextureUnit(kDepthUnit, depth);
-  gl_.UseProgram(build_.id());
   const int pyramidWidth = (width + 1) / 2, pyramidHeight = (height + 1) / 2;
   for (int level = 0; level < levels; ++level) {
-    build_.set("uFromDepth", level == 0 ? 1 : 0);
+    gl_.UseProgram(level == 0 ? fromDepth_.id() : fromFiner_.id());
     if (level > 0) gl_.BindImageTexture(0, pyramid, level - 1, GL_FALSE, 0, GL_READ_ONLY, GL_R32F);
     gl_.BindImageTexture(1, pyramid, level, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
     const int w = std::max(1, pyramidWidth >> level), h = std::max(1, pyramidHeight >> level);

@@ -25,7 +25,7 @@ class OccluderPyramid {
 
  private:
   const gl::Api& gl_;
-  gl::Program build_;
+  gl::Program fromDepth_, fromFiner_;  // level 0; the levels above it
 };
 
 }  // namespace tg::render

@@ -84,9 +84,9 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
 void GlyphRenderer::setCamera(const gl::Program& prog, const Camera& cam) const { setCameraUniforms(prog, cam); }
 
 // Null where a marching or tessellated program has not been built yet.
-std::array<const gl::Program*, 8> GlyphRenderer::glyphPrograms() const {
-  return {&ellipsoid_,      march_[0].get(), march_[1].get(), march_[2].get(),
-          march_[3].get(), march_[4].get(), march_[5].get(), tessellated_.program()};
+std::array<const gl::Program*, 9> GlyphRenderer::glyphPrograms() const {
+  return {&ellipsoid_,      march_[0].get(), march_[1].get(), march_[2].get(),        march_[3].get(),
+          march_[4].get(), march_[5].get(), tessellated_.program(), occluders_.get()};
 }
 
 std::array<const gl::Program*, 7> GlyphRenderer::shapePrograms() const {
@@ -127,6 +127,20 @@ const gl::Program& GlyphRenderer::marchProgram(bool stats, MarchVariant v, const
     slot->set("uMdRange", glm::vec2(mdMin_, mdMax_));
   }
   return *slot;
+}
+
+// The occlusion pre-pass's program, compiled on its first frame.
+const gl::Program& GlyphRenderer::occluderProgram(const FrameParams& p) {
+  if (!occluders_) {
+    occluders_ = std::make_unique<gl::Program>(
+        gl_, lib_,
+        std::initializer_list<gl::StageSource>{{GL_VERTEX_SHADER, "ellipsoid.vert"},
+                                               {GL_FRAGMENT_SHADER, "occluder_disc.frag"}},
+        std::initializer_list<std::string_view>{"TG_OCCLUDER_DISC"});
+    setGlyphUniforms(*occluders_, p, nullptr);
+    occluders_->set("uOccluders", 0);  // it builds the pyramid
+  }
+  return *occluders_;
 }
 
 // The tessellated baseline's program, compiled on its first frame, as the march's.
@@ -249,8 +263,7 @@ Camera GlyphRenderer::renderShadowMap(const Camera& cam, const FrameParams& p, i
   const bool occluders = !tessellated && split < 3 && p.occlusionPrepass && hasOccluders_;
   if (occluders) {
     shadow_->beginOccluders(light.width);
-    ellipsoid_.set("uOccluders", 0);
-    useGlyphProgram(ellipsoid_, light);
+    useGlyphProgram(occluderProgram(p), light);
     culling_.draw(sprites_, 0, 2);
     shadow_->buildPyramid(pyramid_);
   }
@@ -357,14 +370,16 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   // nor do glyphs too small for it to pay (render/sprite_primitive.h).
   const bool occluders = marching && p.occlusionPrepass && hasOccluders_ && !(typical < profile_.occlusionMinPx);
   if (occluders) {
-    // Occlusion pre-pass: the exact ellipsoids of spheres and definite
-    // glyphs, depth only. Their superquadrics hold them, so no visible
-    // surface lies behind this depth: superquadrics wholly behind it are
-    // culled, and pixels whose box entry is behind it skip the march
-    // (shaders/lib/occlusion.glsl).
+    // Occlusion pre-pass: the ellipsoids of spheres and definite glyphs,
+    // depth only, each its outline at the farthest depth of its silhouette
+    // contour, behind every front hit. Their superquadrics hold them, so no
+    // visible surface lies behind this depth: spheres and superquadrics
+    // wholly behind it are culled, and pixels whose box entry is behind it
+    // skip the march (shaders/lib/occlusion.glsl). An occluder fragment
+    // reads five inputs and casts no ray, so the pass costs about what its
+    // sprites' setup does.
     target.beginOccluders();
-    ellipsoid_.set("uOccluders", 0);
-    useGlyphProgram(ellipsoid_, cam);
+    useGlyphProgram(occluderProgram(p), cam);
     culling_.draw(sprites_, 0, 2);
     pyramid_.build(target);
     ++occlusionPrepasses_;

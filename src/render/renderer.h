@@ -217,8 +217,9 @@ class GlyphRenderer {
   void setShapeUniforms(const gl::Program& prog, const FrameParams& p, const FrameParams* old) const;
   // Programs that draw glyphs, and those of them that take the superquadric
   // shape uniforms; null where a marching program is not built yet.
-  std::array<const gl::Program*, 8> glyphPrograms() const;
+  std::array<const gl::Program*, 9> glyphPrograms() const;
   std::array<const gl::Program*, 7> shapePrograms() const;
+  const gl::Program& occluderProgram(const FrameParams& p);
   // Sets the lighting uniforms of `p` on a lighting program.
   void setLighting(const gl::Program& prog, const FrameParams& p) const;
   // lighting_, or the variant the frame's effects need (`shadows`: the key
@@ -233,6 +234,8 @@ class GlyphRenderer {
   gl::Program ellipsoid_;
   // [2 * MarchVariant + stats], each built on first use (marchProgram).
   std::array<std::unique_ptr<gl::Program>, 6> march_;
+  // The pre-pass's occluders (ellipsoid.vert TG_OCCLUDER_DISC, occluder_disc.frag), built on first use.
+  std::unique_ptr<gl::Program> occluders_;
   std::array<std::uint64_t, 3> marchDraws_{};
   std::array<std::size_t, 3> groupCounts_{};  // uploaded glyphs by tensor::GlyphGroup
   gl::Program lighting_;

@@ -109,6 +109,56 @@ TEST_F(Occlusion, PyramidTexelsHoldTheFarthestDepthUnderThem) {
   }
 }
 
+// The pre-pass's occluders are discs at the farthest depth of each
+// ellipsoid's silhouette contour (ellipsoid.vert TG_OCCLUDER_DISC): wherever
+// one was drawn, the frame shows a surface, and none behind it (beyond the
+// march's tolerance). Perspective and orthographic, from outside the block
+// and from among the glyphs, where the near plane cuts some of them.
+TEST_F(Occlusion, OccludersNeverLieInFrontOfTheVisibleSurface) {
+  const auto set = test::glyphsOf(denseBlock(7, false));
+  const double scale = 0.5 / set.maxAbsEigenvalue;
+  const double toleranceWC = 4.0 * render::MarchParams{}.epsilon * scale * set.maxAbsEigenvalue;
+  const glm::dvec3 mid = 0.5 * (set.boundsMinWC + set.boundsMaxWC);
+  for (const bool inside : {false, true})
+    for (const auto proj : {render::Projection::Perspective, render::Projection::Orthographic}) {
+      SCOPED_TRACE(::testing::Message() << "inside " << inside << " ortho " << (proj == render::Projection::Orthographic));
+      render::CameraDesc d = test::oblique(set, inside ? 0.4 : 9.0, proj);
+      d.lookAtWC = inside ? mid + glm::dvec3(3.0, 3.0, -3.0) : mid;
+      if (inside) d.eyeWC = mid + glm::dvec3(0.05, -0.1, 0.02);
+      const int w = 150, h = 110;
+      const auto cam = test::cameraFor(set, scale, d, w, h);
+      ctx_->makeCurrent();
+      const gl::Api& gl = ctx_->api();
+      render::GlyphRenderer r(gl, *lib_);
+      render::GBuffer target(gl, w, h);
+      r.upload(set);
+      render::FrameParams p;
+      p.scale = scale;
+      p.glyph = render::GlyphKind::Superquadric;
+      p.gamma = 3.0;
+      r.render(cam, p, target);
+      ASSERT_EQ(r.occlusionPrepasses(), 1u);
+      const render::FrameImage img = r.readback(cam, target);
+      std::vector<float> occluder(std::size_t(w) * h);
+      gl.GetTextureImage(target.occluderDepth(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(occluder.size() * 4),
+                         occluder.data());
+      std::size_t occluded = 0, covered = 0;
+      for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) {
+          const std::size_t i = std::size_t(h - 1 - y) * w + x;  // the image's rows run top-down
+          covered += img.id[i] != ref::kNoGlyph;
+          const float z = occluder[std::size_t(y) * w + x];
+          if (!(z > 0.0f)) continue;
+          ++occluded;
+          ASSERT_NE(img.id[i], ref::kNoGlyph) << x << "," << y;
+          const double occluderVC = cam.viewDepthFromWindowDepth(z);
+          ASSERT_LE(img.depth[i], occluderVC * (1.0 + 1e-5) + toleranceWC) << x << "," << y;
+        }
+      EXPECT_GT(occluded, covered / 2);
+      gl::checkError(gl, "OccludersNeverLieInFrontOfTheVisibleSurface");
+    }
+}
+
 // The frame is the same with and without the pre-pass, for definite glyphs
 // (which occlude) and mixed signs (which are only occluded), at several gammas,
 // and the march runs on far fewer pixels with it.
@@ -171,10 +221,10 @@ TEST_F(Occlusion, NoPrepassWithoutOccluders) {
   EXPECT_GT(on.stats.pixels, 1000u);
 }
 
-// Spheres (and, at gamma 0, definite glyphs) are drawn as exact ellipsoids
-// into the pre-pass and again into the G-buffer; the second time, those wholly
-// behind the pyramid stop in the vertex stage (ellipsoid.vert). A dense block
-// of spheres with one mixed-sign glyph (so that the march and its pre-pass
+// Spheres (and, at gamma 0, definite glyphs) are occluder discs in the
+// pre-pass and exact ellipsoids in the G-buffer, where those wholly behind
+// the pyramid stop in the vertex stage (ellipsoid.vert). A dense block of
+// spheres with one mixed-sign glyph (so that the march and its pre-pass
 // run): the frame is unchanged, and the spheres are not shaded twice over.
 TEST_F(Occlusion, HiddenSpheresSkipTheGeometryPass) {
   io::TensorField f;
@@ -212,7 +262,8 @@ TEST_F(Occlusion, HiddenSpheresSkipTheGeometryPass) {
   const double without = shaded(false, plain), with = shaded(true, culled);
   EXPECT_EQ(test::differingPixels(plain, culled), 0u);
   EXPECT_GT(test::coveredPixels(plain), plain.id.size() / 2);
-  // The pre-pass shades every sphere once; were the hidden ones shaded again
-  // in the G-buffer, the frame would shade about twice as many fragments.
+  // The pre-pass's discs shade at most every sphere's outline once; were the
+  // hidden ones shaded again in the G-buffer, the frame would shade about
+  // twice as many fragments.
   EXPECT_LT(with, 1.5 * without);
 }
