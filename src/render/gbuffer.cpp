@@ -77,11 +77,11 @@ GBuffer::~GBuffer() {
 void GBuffer::beginGeometry() const {
   gl_.BindFramebuffer(GL_FRAMEBUFFER, fbo_[0]);
   gl_.Viewport(0, 0, width_, height_);
-  const float zero[4] = {0, 0, 0, 0};
+  // Albedo and normal are not cleared: every G-buffer writer writes all
+  // three colours, and every reader (lighting, AO, outlines, readback)
+  // reads them only where the id is a glyph's or a context item's.
   const GLuint noGlyph[4] = {0xFFFFFFFFu, 0, 0, 0};
   const float farDepth = 0.0f;  // reversed Z
-  gl_.ClearNamedFramebufferfv(fbo_[0], GL_COLOR, 0, zero);
-  gl_.ClearNamedFramebufferfv(fbo_[0], GL_COLOR, 1, zero);
   gl_.ClearNamedFramebufferuiv(fbo_[0], GL_COLOR, 2, noGlyph);
   gl_.ClearNamedFramebufferfv(fbo_[0], GL_DEPTH, 0, &farDepth);
 }

@@ -20,7 +20,8 @@ class GBuffer {
 
   int width() const { return width_; }
   int height() const { return height_; }
-  // Clears every channel to "empty" and binds the geometry framebuffer.
+  // Clears id and depth to "empty" and binds the geometry framebuffer;
+  // albedo and normal hold what they held where the id says empty.
   void beginGeometry() const;
   // Clears and binds the occluder depth framebuffer (depth only): the
   // superquadric pass's occlusion pre-pass (GlyphRenderer::render).
