@@ -50,7 +50,7 @@ GBuffer::GBuffer(const gl::Api& gl, int width, int height) : gl_(gl), width_(wid
   }
   gl.CreateTextures(GL_TEXTURE_2D, 1, &tex_[6]);
   gl.TextureStorage2D(tex_[6], pyramidLevels(), kPyramid.format, pyramidWidth(), pyramidHeight());
-  gl.CreateFramebuffers(3, fbo_);
+  gl.CreateFramebuffers(4, fbo_);
   for (int k = 0; k < 3; ++k) gl.NamedFramebufferTexture(fbo_[0], GL_COLOR_ATTACHMENT0 + k, tex_[k], 0);
   gl.NamedFramebufferTexture(fbo_[0], GL_DEPTH_ATTACHMENT, tex_[3], 0);
   const GLenum draw[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
@@ -60,6 +60,9 @@ GBuffer::GBuffer(const gl::Api& gl, int width, int height) : gl_(gl), width_(wid
   const GLenum none = GL_NONE;
   gl.NamedFramebufferTexture(fbo_[2], GL_DEPTH_ATTACHMENT, tex_[5], 0);
   gl.NamedFramebufferDrawBuffers(fbo_[2], 1, &none);
+  gl.NamedFramebufferTexture(fbo_[3], GL_COLOR_ATTACHMENT0, tex_[4], 0);
+  gl.NamedFramebufferTexture(fbo_[3], GL_DEPTH_ATTACHMENT, tex_[3], 0);
+  gl.NamedFramebufferDrawBuffers(fbo_[3], 1, draw);
   for (GLuint f : fbo_)
     if (gl.CheckNamedFramebufferStatus(f, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
       throw std::runtime_error("GBuffer: framebuffer incomplete");
@@ -67,18 +70,18 @@ GBuffer::GBuffer(const gl::Api& gl, int width, int height) : gl_(gl), width_(wid
 }
 
 GBuffer::~GBuffer() {
-  gl_.DeleteFramebuffers(3, fbo_);
+  gl_.DeleteFramebuffers(4, fbo_);
   gl_.DeleteTextures(7, tex_);
 }
 
 void GBuffer::beginGeometry() const {
   gl_.BindFramebuffer(GL_FRAMEBUFFER, fbo_[0]);
   gl_.Viewport(0, 0, width_, height_);
-  const float zero[4] = {0, 0, 0, 0};
+  // Albedo and normal are not cleared: every G-buffer writer writes all
+  // three colours, and every reader (lighting, AO, outlines, readback)
+  // reads them only where the id is a glyph's or a context item's.
   const GLuint noGlyph[4] = {0xFFFFFFFFu, 0, 0, 0};
   const float farDepth = 0.0f;  // reversed Z
-  gl_.ClearNamedFramebufferfv(fbo_[0], GL_COLOR, 0, zero);
-  gl_.ClearNamedFramebufferfv(fbo_[0], GL_COLOR, 1, zero);
   gl_.ClearNamedFramebufferuiv(fbo_[0], GL_COLOR, 2, noGlyph);
   gl_.ClearNamedFramebufferfv(fbo_[0], GL_DEPTH, 0, &farDepth);
 }
@@ -96,6 +99,26 @@ void GBuffer::beginLighting() const {
   gl_.BindFramebuffer(GL_FRAMEBUFFER, fbo_[1]);
   gl_.Viewport(0, 0, width_, height_);
   for (int k = 0; k < 3; ++k) gl_.BindTextureUnit(GLuint(k), tex_[k]);
+}
+
+void GBuffer::beginLightingCovered(const float background[4]) const {
+  gl_.BindFramebuffer(GL_FRAMEBUFFER, fbo_[3]);
+  gl_.Viewport(0, 0, width_, height_);
+  for (int k = 0; k < 3; ++k) gl_.BindTextureUnit(GLuint(k), tex_[k]);
+  gl_.ClearNamedFramebufferfv(fbo_[3], GL_COLOR, 0, background);
+  // fullscreen.vert draws at window depth 0, the far value (reversed Z):
+  // it passes GL_LESS wherever a glyph or context item wrote depth, as
+  // those passes' GL_GREATER test against the cleared 0 only lets nearer
+  // depths in, and nowhere else.
+  gl_.Enable(GL_DEPTH_TEST);
+  gl_.DepthFunc(GL_LESS);
+  gl_.DepthMask(GL_FALSE);
+}
+
+void GBuffer::endLighting() const {
+  gl_.Disable(GL_DEPTH_TEST);
+  // The depth clears of the next frame (ClearNamedFramebufferfv) obey the mask.
+  gl_.DepthMask(GL_TRUE);
 }
 
 }  // namespace tg::render

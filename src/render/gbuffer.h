@@ -20,13 +20,23 @@ class GBuffer {
 
   int width() const { return width_; }
   int height() const { return height_; }
-  // Clears every channel to "empty" and binds the geometry framebuffer.
+  // Clears id and depth to "empty" and binds the geometry framebuffer;
+  // albedo and normal hold what they held where the id says empty.
   void beginGeometry() const;
   // Clears and binds the occluder depth framebuffer (depth only): the
   // superquadric pass's occlusion pre-pass (GlyphRenderer::render).
   void beginOccluders() const;
   // Binds the G-buffer textures to units 0..2 and the colour framebuffer.
   void beginLighting() const;
+  // As beginLighting, but fills the lit colour with `background` and binds a
+  // framebuffer that also holds the G-buffer depth, read only, under a test
+  // that only covered pixels pass (any depth nearer than far). llvmpipe then
+  // rejects background pixels before shading them: they keep the fill, as
+  // the lighting shader would have written it. Not while the lighting shader
+  // samples depth() (shadows): that would read a bound attachment.
+  void beginLightingCovered(const float background[4]) const;
+  // Restores what beginLightingCovered changed: no depth test, depth writes on.
+  void endLighting() const;
 
   GLuint albedo() const { return tex_[0]; }    // RGBA8
   GLuint normalWC() const { return tex_[1]; }  // RGBA16F: 11-bit mantissa, < 0.03 deg
@@ -45,7 +55,7 @@ class GBuffer {
   const gl::Api& gl_;
   int width_, height_;
   GLuint tex_[7] = {};
-  GLuint fbo_[3] = {};
+  GLuint fbo_[4] = {};  // geometry, colour, occluders, colour + depth
 };
 
 }  // namespace tg::render

@@ -400,12 +400,15 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
     ao_->run(cam, target, p.ao, aoRadiusWC(p));
   }
   const gl::Program& lighting = lightingFor(p, light.has_value());
-  target.beginLighting();
+  // Shadows sample the G-buffer depth: it cannot be the attachment too.
+  if (light) target.beginLighting();
+  else target.beginLightingCovered(&p.background[0]);
   setCamera(lighting, cam);
   if (light) shadow_->bindForLighting(lighting, cam, *light, p.shadow, target);
   gl_.UseProgram(lighting.id());
   gl_.BindVertexArray(vao_);
   gl_.DrawArrays(GL_TRIANGLES, 0, 3);
+  target.endLighting();
   for (const auto& item : context_)
     if (item->visible() && item->translucent()) item->drawTranslucent(cam, p, target);
   if (p.outline.enabled) {
