@@ -18,8 +18,7 @@ in SuperquadricFS {
   flat vec3 centreVC;
   flat mat3 gcFromVC;
   flat vec3 shape;
-  flat vec3 color;
-  flat vec3 signWeightsGC;
+  flat vec3 color;  // with uColorMode kColorSign, the sign weights in GC (lib/color.glsl)
   flat uint id;
 } fin;
 
@@ -76,7 +75,7 @@ void main() {
   vec3 nVC = transpose(fin.gcFromVC) * m.gradGC;  // inverse transpose of GC -> VC
   vec3 nWC = normalize(transpose(mat3(uViewWCVC)) * nVC);
   gl_FragDepth = windowDepthFromViewDepth(depth);
-  oAlbedo = vec4(uColorMode == kColorSign ? signColor(fin.signWeightsGC, o + m.s * d / dl) : fin.color, 1.0);
+  oAlbedo = vec4(uColorMode == kColorSign ? signColor(fin.color, o + m.s * d / dl) : fin.color, 1.0);
   oNormalWC = vec4(nWC, 0.0);
   oId = fin.id;
 }

@@ -22,8 +22,7 @@ out SuperquadricFS {
   flat vec3 centreVC;
   flat mat3 gcFromVC;  // rows: GC axes in VC over their lengths; GC z is the symmetry axis
   flat vec3 shape;
-  flat vec3 color;
-  flat vec3 signWeightsGC;
+  flat vec3 color;  // with uColorMode kColorSign, the sign weights in GC (lib/color.glsl)
   flat uint id;
 } vs;
 
@@ -144,9 +143,10 @@ void main() {
   vs.centreVC = centreVC;
   vs.gcFromVC = transpose(mat3(e0 / dot(e0, e0), e1 / dot(e1, e1), e2 / dot(e2, e2)));
   vs.shape = shape.xyz;
-  vs.color = glyphColor(uColorMode, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, uMdRange);
-  vs.signWeightsGC = uColorMode != kColorSign ? vec3(0.0)
-      : signWeights(vec3(g.eigenvalues_id[src.x], g.eigenvalues_id[src.y], g.eigenvalues_id[src.z]),
-                    vec3(axes[src.x], axes[src.y], axes[src.z]));
+  // One input fewer per fragment, as for ellipsoids: only one of the two is read.
+  vs.color = uColorMode == kColorSign
+                 ? signWeights(vec3(g.eigenvalues_id[src.x], g.eigenvalues_id[src.y], g.eigenvalues_id[src.z]),
+                               vec3(axes[src.x], axes[src.y], axes[src.z]))
+                 : glyphColor(uColorMode, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, uMdRange);
   vs.id = floatBitsToUint(g.eigenvalues_id.w);
 }
