@@ -84,7 +84,8 @@ double median(std::vector<double> v) {
 
 void saveScreenshot(render::GlyphRenderer& r, const render::Camera& cam, const render::GBuffer& t,
                     const std::string& path) {
-  io::writeImage(r.readback(cam, t, render::Channels::Color), path);
+  // Screenshots are PNG: the 8-bit colour alone, read back in bands as render's.
+  io::writeImage(r.readback(cam, t, render::Channels::Rgba8), path);
   std::fprintf(stderr, "tensorglyph view: saved %s\n", path.c_str());
 }
 
