@@ -54,8 +54,10 @@ void main() {
   vec2 search = marchSearchSpan(fin.shape, o, d / dl, uEpsilon, on);
   // The box's entry is the nearest this glyph can be on the ray: behind the
   // occluders it cannot win the depth test, so it skips the march.
-  // The march runs under `if`, not after a discard: on llvmpipe a discarded
-  // fragment still runs every loop to the end (lib/superquadric_march.glsl).
+  // Lanes out of reach leave the march's loop at once, whether masked by
+  // this `if` or discarded: gallivm's loop end tests the kill mask too
+  // (measured the same); the code before and after the loop runs for every
+  // fragment either way (lib/superquadric_march.glsl).
   bool inReach = !(dot(q, q) > reach * reach) && search.x <= search.y &&
       !pixelOccluded(ivec2(gl_FragCoord.xy), tc + unitCubeSpan(o, d / dl).x / dl, 4.0 * uEpsilon / dl);
   MarchResult m = MarchResult(false, 0.0, vec3(0.0), 0, 0);
