@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <random>
+#include <utility>
 #include <vector>
 
 using namespace tg;
@@ -57,6 +58,28 @@ class Occlusion : public GlFixture {
     r.render(cam, p, target);
     return {r.readback(cam, target), r.iterationStats(), r.occlusionPrepasses()};
   }
+  // A superquadric frame (gamma 3) whose pre-pass's occluder depth is read
+  // back, rows bottom-up as GL's, with the image and the pre-passes run.
+  struct OccluderFrame {
+    render::FrameImage img;
+    std::vector<float> occluderDepth;
+    std::uint64_t prepasses;
+  };
+  OccluderFrame occluderFrame(const tensor::GlyphSet& set, const render::Camera& cam, double scale,
+                              render::GBuffer& target) {
+    ctx_->makeCurrent();
+    const gl::Api& gl = ctx_->api();
+    render::GlyphRenderer r(gl, *lib_);
+    r.upload(set);
+    render::FrameParams p;
+    p.scale = scale;
+    p.glyph = render::GlyphKind::Superquadric;
+    p.gamma = 3.0;
+    r.render(cam, p, target);
+    std::vector<float> depth(std::size_t(cam.width) * cam.height);
+    gl.GetTextureImage(target.occluderDepth(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * 4), depth.data());
+    return {r.readback(cam, target), std::move(depth), r.occlusionPrepasses()};
+  }
 };
 
 std::size_t differing(const render::FrameImage& a, const render::FrameImage& b) {
@@ -76,17 +99,9 @@ TEST_F(Occlusion, PyramidTexelsHoldTheFarthestDepthUnderThem) {
   for (const auto& [w, h] : {std::pair{97, 61}, std::pair{128, 64}}) {
     SCOPED_TRACE(w);
     const auto cam = closeCamera(set, scale, w, h);
-    ctx_->makeCurrent();
     const gl::Api& gl = ctx_->api();
-    render::GlyphRenderer r(gl, *lib_);
     render::GBuffer target(gl, w, h);
-    r.upload(set);
-    render::FrameParams p;
-    p.scale = scale;
-    p.glyph = render::GlyphKind::Superquadric;
-    r.render(cam, p, target);
-    std::vector<float> depth(std::size_t(w) * h);
-    gl.GetTextureImage(target.occluderDepth(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * 4), depth.data());
+    const std::vector<float> depth = occluderFrame(set, cam, scale, target).occluderDepth;
     std::size_t covered = 0;
     for (float z : depth) covered += z > 0.0f;
     ASSERT_GT(covered, depth.size() / 2);
@@ -127,21 +142,12 @@ TEST_F(Occlusion, OccludersNeverLieInFrontOfTheVisibleSurface) {
       if (inside) d.eyeWC = mid + glm::dvec3(0.05, -0.1, 0.02);
       const int w = 150, h = 110;
       const auto cam = test::cameraFor(set, scale, d, w, h);
-      ctx_->makeCurrent();
       const gl::Api& gl = ctx_->api();
-      render::GlyphRenderer r(gl, *lib_);
       render::GBuffer target(gl, w, h);
-      r.upload(set);
-      render::FrameParams p;
-      p.scale = scale;
-      p.glyph = render::GlyphKind::Superquadric;
-      p.gamma = 3.0;
-      r.render(cam, p, target);
-      ASSERT_EQ(r.occlusionPrepasses(), 1u);
-      const render::FrameImage img = r.readback(cam, target);
-      std::vector<float> occluder(std::size_t(w) * h);
-      gl.GetTextureImage(target.occluderDepth(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(occluder.size() * 4),
-                         occluder.data());
+      const OccluderFrame f = occluderFrame(set, cam, scale, target);
+      ASSERT_EQ(f.prepasses, 1u);
+      const render::FrameImage& img = f.img;
+      const std::vector<float>& occluder = f.occluderDepth;
       std::size_t occluded = 0, covered = 0;
       for (int y = 0; y < h; ++y)
         for (int x = 0; x < w; ++x) {
