@@ -7,6 +7,7 @@
 
 #include <random>
 #include <string>
+#include <utility>
 
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
@@ -57,6 +58,16 @@ class OrientedSprites : public GlFixture {
     const GLuint64 fragments = test::countedBy(gl, GL_FRAGMENT_SHADER_INVOCATIONS, [&] { r.render(cam, p, target); });
     return {r.readback(cam, target), r.culling().pointSprites(), fragments};
   }
+  // The same frame drawn as quads along the glyphs' projected outlines and
+  // as axis-aligned quads (point sprites off in both).
+  std::pair<Frame, Frame> orientedAndRects(const tensor::GlyphSet& set, const render::Camera& cam,
+                                           render::FrameParams p) {
+    p.pointSprites = false;
+    p.orientedSprites = true;
+    Frame oriented = frame(set, cam, p);
+    p.orientedSprites = false;
+    return {std::move(oriented), frame(set, cam, p)};
+  }
 };
 
 }  // namespace
@@ -85,10 +96,7 @@ TEST_F(OrientedSprites, FramesEqualTheRectangleFramesWithFewerFragments) {
     p.glyph = c.kind;
     p.gamma = c.gamma;
     p.faMin = c.faMin;
-    p.pointSprites = false;
-    const Frame oriented = frame(set, cam, p);
-    p.orientedSprites = false;
-    const Frame rects = frame(set, cam, p);
+    const auto [oriented, rects] = orientedAndRects(set, cam, p);
     EXPECT_FALSE(oriented.points);
     EXPECT_GT(test::coveredPixels(rects.img), 1000u);
     EXPECT_EQ(test::differingPixels(oriented.img, rects.img), 0u);
@@ -106,10 +114,7 @@ TEST_F(OrientedSprites, NeedlesShadeFarFewerFragments) {
   render::FrameParams p;
   p.scale = scale;
   p.glyph = render::GlyphKind::Superquadric;
-  p.pointSprites = false;
-  const Frame oriented = frame(set, cam, p);
-  p.orientedSprites = false;
-  const Frame rects = frame(set, cam, p);
+  const auto [oriented, rects] = orientedAndRects(set, cam, p);
   EXPECT_EQ(test::differingPixels(oriented.img, rects.img), 0u);
   const double lighting = double(cam.width) * cam.height;
   EXPECT_LT(double(oriented.fragments) - lighting, 0.7 * (double(rects.fragments) - lighting));
@@ -179,10 +184,7 @@ TEST_F(OrientedSprites, MixedSignOutlinesHoldEveryPixelWithFewerFragments) {
     p.scale = scale;
     p.glyph = render::GlyphKind::Superquadric;
     p.gamma = c.gamma;
-    p.pointSprites = false;
-    const Frame outlines = frame(set, cam, p);
-    p.orientedSprites = false;
-    const Frame rects = frame(set, cam, p);
+    const auto [outlines, rects] = orientedAndRects(set, cam, p);
     EXPECT_GT(test::coveredPixels(rects.img), 2000u);
     EXPECT_EQ(test::differingPixels(outlines.img, rects.img), 0u);
     const double lighting = double(cam.width) * cam.height;
@@ -207,10 +209,7 @@ TEST_F(OrientedSprites, MixedSignOutlinesHoldEveryPixelWithFewerFragments) {
     render::FrameParams p;
     p.scale = sc;
     p.glyph = render::GlyphKind::Superquadric;
-    p.pointSprites = false;
-    const Frame outlines = frame(scaled, cam, p);
-    p.orientedSprites = false;
-    const Frame rects = frame(scaled, cam, p);
+    const auto [outlines, rects] = orientedAndRects(scaled, cam, p);
     EXPECT_GT(test::coveredPixels(rects.img), 1000u);
     EXPECT_EQ(test::differingPixels(outlines.img, rects.img), 0u);
     EXPECT_LT(outlines.fragments, rects.fragments);
