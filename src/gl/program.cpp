@@ -23,9 +23,9 @@ std::string shaderLog(const Api& gl, GLuint s) {
 }  // namespace
 
 Program::Program(const Api& gl, const ShaderLibrary& lib, std::initializer_list<StageSource> stages,
-                 std::initializer_list<std::string_view> enable)
+                 std::vector<std::string_view> enable)
     : gl_(&gl) {
-  const std::vector<std::string_view> wanted(enable);
+  const std::vector<std::string_view>& wanted = enable;
   std::vector<ComposedSource> sources;
   for (const StageSource& st : stages) sources.push_back(lib.compose(st.path, wanted));
   for (std::string_view e : wanted) {

@@ -23,9 +23,10 @@ struct StageSource {
 class Program {
  public:
   // Throws std::runtime_error with file:line messages on compile or link
-  // errors, and for an option in `enable` that no stage declares.
+  // errors, and for an option in `enable` that no stage declares. `enable`
+  // is a list callers can build at run time (a variant's options).
   Program(const Api& gl, const ShaderLibrary& lib, std::initializer_list<StageSource> stages,
-          std::initializer_list<std::string_view> enable = {});
+          std::vector<std::string_view> enable = {});
   ~Program();
   Program(Program&& o) noexcept
       : gl_(o.gl_), id_(std::exchange(o.id_, 0)), locations_(std::move(o.locations_)) {}

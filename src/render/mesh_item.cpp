@@ -188,7 +188,7 @@ void MeshItem::drawTranslucent(const Camera& cam, const FrameParams& p, const GB
   if (!forward_) {
     forward_ = std::make_unique<gl::Program>(
         gl_, lib_, std::initializer_list<gl::StageSource>{{GL_VERTEX_SHADER, "mesh.vert"}, {GL_FRAGMENT_SHADER, "mesh.frag"}},
-        std::initializer_list<std::string_view>{"TG_MESH_FORWARD"});
+        std::vector<std::string_view>{"TG_MESH_FORWARD"});
   }
   const gl::Program& prog = *forward_;
   setCameraUniforms(prog, cam);

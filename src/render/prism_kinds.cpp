@@ -32,7 +32,7 @@ const gl::Program& PrismKinds::program(GlyphKind k, const FrameParams& p) {
   if (!slot) {
     const auto stages = {gl::StageSource{GL_VERTEX_SHADER, "prism.vert"},
                          gl::StageSource{GL_FRAGMENT_SHADER, "prism.frag"}};
-    slot = k == GlyphKind::Cylinder ? std::make_unique<gl::Program>(gl_, lib_, stages, std::initializer_list<std::string_view>{"TG_CYLINDER"})
+    slot = k == GlyphKind::Cylinder ? std::make_unique<gl::Program>(gl_, lib_, stages, std::vector<std::string_view>{"TG_CYLINDER"})
                                     : std::make_unique<gl::Program>(gl_, lib_, stages);
     setGlyphUniforms(*slot, p, nullptr);
     slot->set("uMdRange", mdRange_);

@@ -58,7 +58,6 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   if (buffer_) gl_.DeleteBuffers(1, &buffer_);
   buffer_ = 0;
   count_ = GLsizei(set.glyphs.size());
-  hasOccluders_ = set.sphereCount + set.definiteCount > 0;
   groupCounts_ = {set.sphereCount, set.definiteCount, set.glyphs.size() - set.sphereCount - set.definiteCount};
   mdMin_ = float(set.mdMin);
   mdMax_ = float(set.mdMax);
@@ -112,16 +111,13 @@ const gl::Program& GlyphRenderer::marchProgram(bool stats, MarchVariant v, const
   if (!slot) {
     const auto stages = {gl::StageSource{GL_VERTEX_SHADER, "superquadric.vert"},
                          gl::StageSource{GL_FRAGMENT_SHADER, "superquadric.frag"}};
-    const std::string_view variant = v == MarchVariant::Convex ? "TG_MARCH_CONVEX"
-                                     : v == MarchVariant::Mixed ? "TG_MARCH_MIXED"
-                                                                : "";
     // Program throws for an option no stage declares: a variant that is
     // missing fails here, loudly.
-    auto make = [&](std::initializer_list<std::string_view> on) {
-      return std::make_unique<gl::Program>(gl_, lib_, stages, on);
-    };
-    slot = variant.empty() ? (stats ? make({"TG_ITERATION_STATS"}) : make({}))
-                           : (stats ? make({"TG_ITERATION_STATS", variant}) : make({variant}));
+    std::vector<std::string_view> on;
+    if (stats) on.push_back("TG_ITERATION_STATS");
+    if (v == MarchVariant::Convex) on.push_back("TG_MARCH_CONVEX");
+    if (v == MarchVariant::Mixed) on.push_back("TG_MARCH_MIXED");
+    slot = std::make_unique<gl::Program>(gl_, lib_, stages, std::move(on));
     setGlyphUniforms(*slot, p, nullptr);
     setShapeUniforms(*slot, p, nullptr);
     slot->set("uMdRange", glm::vec2(mdMin_, mdMax_));
@@ -136,7 +132,7 @@ const gl::Program& GlyphRenderer::occluderProgram(const FrameParams& p) {
         gl_, lib_,
         std::initializer_list<gl::StageSource>{{GL_VERTEX_SHADER, "ellipsoid.vert"},
                                                {GL_FRAGMENT_SHADER, "occluder_disc.frag"}},
-        std::initializer_list<std::string_view>{"TG_OCCLUDER_DISC"});
+        std::vector<std::string_view>{"TG_OCCLUDER_DISC"});
     setGlyphUniforms(*occluders_, p, nullptr);
     occluders_->set("uOccluders", 0);  // it builds the pyramid
   }
@@ -189,14 +185,14 @@ const gl::Program& GlyphRenderer::lightingFor(const FrameParams& p, bool shadows
     return lighting_;
   }
   if (!lightingVariant_ || lightingVariantKey_ != key) {
-    // Each list lives as long as the call that reads it.
-    auto make = [&](std::initializer_list<std::string_view> defines) {
-      return std::make_unique<gl::Program>(
-          gl_, lib_, std::initializer_list<gl::StageSource>{{GL_VERTEX_SHADER, "fullscreen.vert"},
-                                                            {GL_FRAGMENT_SHADER, "lighting.frag"}},
-          defines);
-    };
-    lightingVariant_ = key == 1 ? make({"TG_AO"}) : key == 2 ? make({"TG_SHADOWS"}) : make({"TG_AO", "TG_SHADOWS"});
+    std::vector<std::string_view> on;
+    if (key & 1) on.push_back("TG_AO");
+    if (key & 2) on.push_back("TG_SHADOWS");
+    lightingVariant_ = std::make_unique<gl::Program>(
+        gl_, lib_,
+        std::initializer_list<gl::StageSource>{{GL_VERTEX_SHADER, "fullscreen.vert"},
+                                               {GL_FRAGMENT_SHADER, "lighting.frag"}},
+        std::move(on));
     lightingVariantKey_ = key;
     lightingVariant_->set("uBackground", p.background);
     setLighting(*lightingVariant_, p);
@@ -260,7 +256,7 @@ Camera GlyphRenderer::renderShadowMap(const Camera& cam, const FrameParams& p, i
   else culling_.prepare(light, p.scale, p.sizing, p.faMin, p.slab, p.frustumCulling, pointSprites(light, p));
   beginGlyphs();
   // The view's occlusion pre-pass, from the light: the march is most of the map's cost.
-  const bool occluders = !tessellated && split < 3 && p.occlusionPrepass && hasOccluders_;
+  const bool occluders = !tessellated && split < 3 && p.occlusionPrepass && hasOccluders();
   if (occluders) {
     shadow_->beginOccluders(light.width);
     useGlyphProgram(occluderProgram(p), light);
@@ -368,7 +364,7 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   const bool marching = count_ > 0 && !tessellated && split < 3;
   // Only mixed-sign glyphs (a stress field) give no occluders: no pre-pass;
   // nor do glyphs too small for it to pay (render/sprite_primitive.h).
-  const bool occluders = marching && p.occlusionPrepass && hasOccluders_ && !(typical < profile_.occlusionMinPx);
+  const bool occluders = marching && p.occlusionPrepass && hasOccluders() && !(typical < profile_.occlusionMinPx);
   if (occluders) {
     // Occlusion pre-pass: the ellipsoids of spheres and definite glyphs,
     // depth only, each its outline at the farthest depth of its silhouette

@@ -238,6 +238,8 @@ class GlyphRenderer {
   std::unique_ptr<gl::Program> occluders_;
   std::array<std::uint64_t, 3> marchDraws_{};
   std::array<std::size_t, 3> groupCounts_{};  // uploaded glyphs by tensor::GlyphGroup
+  // Spheres or definite glyphs uploaded: what the occlusion pre-pass draws.
+  bool hasOccluders() const { return groupCounts_[0] + groupCounts_[1] > 0; }
   gl::Program lighting_;
   RendererProfile profile_;  // this context's measured choices
   QuadSprites sprites_;
@@ -249,7 +251,6 @@ class GlyphRenderer {
   GLuint vao_ = 0, buffer_ = 0, stats_ = 0;
   GLsizei count_ = 0;
   std::uint64_t uploads_ = 0;
-  bool hasOccluders_ = false;  // spheres or definite glyphs uploaded
   double maxPointPx_ = 0;      // GL_POINT_SIZE_RANGE's upper end
   std::uint64_t occlusionPrepasses_ = 0, shadowMapPasses_ = 0;
   glm::dvec3 centresLoWC_{0.0}, centresHiWC_{0.0};  // of the uploaded glyphs
