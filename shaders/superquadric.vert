@@ -3,6 +3,9 @@
 // ellipsoids at the current gamma: the shape from the record and gamma, and
 // this vertex's corner of the exact screen rectangle of the glyph's box (the
 // gamma -> infinity limit that holds every shape; Hlawitschka et al. §3.2).
+// TG_MARCH_MIXED (the mixed-sign group's program): sprites also follow the
+// double pyramid's outline; the other groups never pay for its corners.
+#pragma tg option TG_MARCH_MIXED
 #include "lib/camera.glsl"
 #include "lib/glyph_record.glsl"
 #include "lib/ellipsoid.glsl"
@@ -63,7 +66,11 @@ void main() {
   // march's tolerance (float rounding in window pixels is left to the
   // sprites' margins): its six corners bound a thin glyph's outline tighter
   // than the box's eight.
+#ifdef TG_MARCH_MIXED
   bool pyramid = min(shape.y, shape.z) >= 1.9999;
+#else
+  bool pyramid = false;  // a constant: the compiler drops every use
+#endif
   float rP = 1.0 + 1e-3 + 4.0 * uEpsilon;
   vec2 pyramidNDC[6];
   vec4 rectP = vec4(1e38, 1e38, -1e38, -1e38);
