@@ -79,8 +79,7 @@ void writeImage(const render::FrameImage& img, const std::string& path) {
   }
   // A frame read back as 8 bits is written as it is, not copied.
   std::vector<unsigned char> converted;
-  if (!img.rgba.empty()) converted = toRgba8(img);
-  const std::vector<unsigned char>& px = img.rgba.empty() ? img.rgba8 : converted;
+  const std::vector<unsigned char>& px = img.rgba.empty() ? img.rgba8 : (converted = toRgba8(img));
   if (ext == "png") {
     writePng(path, img.width, img.height, 4, px.data());
     return;

@@ -57,7 +57,6 @@ class Throttle {
   GLsync last_ = nullptr;
 };
 
-
 }  // namespace
 
 QuadSprites::QuadSprites(const gl::Api& gl, std::uint32_t glyphsPerSubmit)
