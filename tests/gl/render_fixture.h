@@ -52,6 +52,16 @@ inline io::TensorField mixedGrid(std::uint32_t n, std::uint64_t seed, double min
   return f;
 }
 
+// Frame parameters that draw every glyph as a superquadric, at `scale`
+// world units per eigenvalue unit and sharpness `gamma`.
+inline render::FrameParams superquadricParams(double scale, double gamma = render::FrameParams{}.gamma) {
+  render::FrameParams p;
+  p.scale = scale;
+  p.glyph = render::GlyphKind::Superquadric;
+  p.gamma = gamma;
+  return p;
+}
+
 inline render::Camera cameraFor(const tensor::GlyphSet& s, double scale, render::CameraDesc d, int w, int h) {
   const auto [lo, hi] = tensor::glyphBoxWC(s, scale);
   return render::makeCamera(d, w, h, lo, hi);

@@ -181,9 +181,7 @@ TEST_F(Culling, SlabShowsExactlyTheGlyphsWhoseCentresItHolds) {
     const auto kept = keptOnly(field, [&](const tensor::GlyphRecord& g) {
       return g.posWC[axis] >= 4.5f && g.posWC[axis] <= 6.5f;
     });
-    render::FrameParams p;
-    p.scale = scale;
-    p.glyph = render::GlyphKind::Superquadric;
+    render::FrameParams p = test::superquadricParams(scale);
     const Frame whole = frames(kept, cam, {p});
     p.slab = {axis, 4.5, 6.5};
     const Frame slab = frames(set, cam, {p});

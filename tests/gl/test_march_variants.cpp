@@ -93,10 +93,7 @@ TEST_F(MarchVariants, GroupVariantsDrawTheGeneralMarchsFrame) {
   const auto cam = test::cameraFor(set, scale, d, 220, 160);
   for (const double gamma : {1.0, 3.0, 8.0}) {
     SCOPED_TRACE(::testing::Message() << "gamma " << gamma);
-    render::FrameParams p;
-    p.scale = scale;
-    p.glyph = render::GlyphKind::Superquadric;
-    p.gamma = gamma;
+    render::FrameParams p = test::superquadricParams(scale, gamma);
     p.marchVariants = false;
     const Frame general = frame(set, cam, p);
     p.marchVariants = true;
@@ -148,10 +145,7 @@ TEST_F(MarchVariants, MixedVariantSkipsRaysOutsideThePyramidAndDrawsTheSameFrame
     ASSERT_LT(sc.set.sphereCount + sc.set.definiteCount, sc.set.glyphs.size()) << sc.name;
     for (const double gamma : {0.0, 3.0}) {
       SCOPED_TRACE(::testing::Message() << sc.name << ", gamma " << gamma);
-      render::FrameParams p;
-      p.scale = sc.scale;
-      p.glyph = render::GlyphKind::Superquadric;
-      p.gamma = gamma;
+      render::FrameParams p = test::superquadricParams(sc.scale, gamma);
       p.march = {30, 1e-6};
       p.marchVariants = false;
       const Frame general = frame(sc.set, sc.cam, p);

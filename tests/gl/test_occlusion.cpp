@@ -71,10 +71,7 @@ class Occlusion : public GlFixture {
     const gl::Api& gl = ctx_->api();
     render::GlyphRenderer r(gl, *lib_);
     r.upload(set);
-    render::FrameParams p;
-    p.scale = scale;
-    p.glyph = render::GlyphKind::Superquadric;
-    p.gamma = 3.0;
+    render::FrameParams p = test::superquadricParams(scale, 3.0);
     r.render(cam, p, target);
     std::vector<float> depth(std::size_t(cam.width) * cam.height);
     gl.GetTextureImage(target.occluderDepth(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * 4), depth.data());
@@ -175,10 +172,7 @@ TEST_F(Occlusion, PrepassChangesTheWorkNotTheImage) {
     const auto cam = closeCamera(set, scale, 200, 150);
     for (const double gamma : {0.0, 1.0, 3.0, 8.0}) {
       SCOPED_TRACE(::testing::Message() << "mixed " << mixed << " gamma " << gamma);
-      render::FrameParams p;
-      p.scale = scale;
-      p.glyph = render::GlyphKind::Superquadric;
-      p.gamma = gamma;
+      render::FrameParams p = test::superquadricParams(scale, gamma);
       p.occlusionPrepass = false;
       const Frame plain = frame(set, cam, p);
       p.occlusionPrepass = true;
@@ -216,9 +210,7 @@ TEST_F(Occlusion, NoPrepassWithoutOccluders) {
   ASSERT_EQ(set.sphereCount + set.definiteCount, 0u);
   const double scale = 0.5 / set.maxAbsEigenvalue;
   const auto cam = closeCamera(set, scale, 160, 120);
-  render::FrameParams p;
-  p.scale = scale;
-  p.glyph = render::GlyphKind::Superquadric;
+  render::FrameParams p = test::superquadricParams(scale);
   const Frame on = frame(set, cam, p);
   p.occlusionPrepass = false;
   const Frame off = frame(set, cam, p);
@@ -254,10 +246,7 @@ TEST_F(Occlusion, HiddenSpheresSkipTheGeometryPass) {
     render::GlyphRenderer r(gl, *lib_);
     render::GBuffer target(gl, cam.width, cam.height);
     r.upload(set);
-    render::FrameParams p;
-    p.scale = scale;
-    p.glyph = render::GlyphKind::Superquadric;
-    p.gamma = 3.0;
+    render::FrameParams p = test::superquadricParams(scale, 3.0);
     p.occlusionPrepass = prepass;
     const GLuint64 fragments = test::countedBy(gl, GL_FRAGMENT_SHADER_INVOCATIONS, [&] { r.render(cam, p, target); });
     EXPECT_EQ(r.occlusionPrepasses(), prepass ? 1u : 0u);

@@ -111,9 +111,7 @@ TEST_F(OrientedSprites, NeedlesShadeFarFewerFragments) {
   const auto set = test::glyphsOf(thinGrid(true));
   const double scale = 0.45 / set.maxAbsEigenvalue;
   const auto cam = test::cameraFor(set, scale, test::oblique(set, 25.0, render::Projection::Perspective), 480, 360);
-  render::FrameParams p;
-  p.scale = scale;
-  p.glyph = render::GlyphKind::Superquadric;
+  render::FrameParams p = test::superquadricParams(scale);
   const auto [oriented, rects] = orientedAndRects(set, cam, p);
   EXPECT_EQ(test::differingPixels(oriented.img, rects.img), 0u);
   const double lighting = double(cam.width) * cam.height;
@@ -132,9 +130,7 @@ TEST_F(OrientedSprites, WideGlyphsDrawQuadsOnLlvmpipe) {
     SCOPED_TRACE(width);
     const auto cam = test::cameraFor(set, scale, test::oblique(set, 25.0, render::Projection::Perspective), width,
                                      width * 3 / 4);
-    render::FrameParams p;
-    p.scale = scale;
-    p.glyph = render::GlyphKind::Superquadric;
+    render::FrameParams p = test::superquadricParams(scale);
     const Frame chosen = frame(set, cam, p);
     p.orientedSprites = false;
     const Frame points = frame(set, cam, p);
@@ -180,10 +176,7 @@ TEST_F(OrientedSprites, MixedSignOutlinesHoldEveryPixelWithFewerFragments) {
                        Case{8.0, 20.0, render::Projection::Orthographic}}) {
     SCOPED_TRACE(int(c.gamma) * 100 + int(c.dist));
     const auto cam = test::cameraFor(set, scale, test::oblique(set, c.dist, c.proj), 480, 360);
-    render::FrameParams p;
-    p.scale = scale;
-    p.glyph = render::GlyphKind::Superquadric;
-    p.gamma = c.gamma;
+    render::FrameParams p = test::superquadricParams(scale, c.gamma);
     const auto [outlines, rects] = orientedAndRects(set, cam, p);
     EXPECT_GT(test::coveredPixels(rects.img), 2000u);
     EXPECT_EQ(test::differingPixels(outlines.img, rects.img), 0u);
@@ -206,9 +199,7 @@ TEST_F(OrientedSprites, MixedSignOutlinesHoldEveryPixelWithFewerFragments) {
     sized.percentile = 0.9;
     const double sc = tensor::resolveScale(sized, tensor::sampleMagnitudes(scaled, k * 2.0 / 6)).scale;
     const auto cam = test::cameraFor(scaled, sc, test::oblique(scaled, 3.0 * k, render::Projection::Perspective), 320, 240);
-    render::FrameParams p;
-    p.scale = sc;
-    p.glyph = render::GlyphKind::Superquadric;
+    render::FrameParams p = test::superquadricParams(sc);
     const auto [outlines, rects] = orientedAndRects(scaled, cam, p);
     EXPECT_GT(test::coveredPixels(rects.img), 1000u);
     EXPECT_EQ(test::differingPixels(outlines.img, rects.img), 0u);

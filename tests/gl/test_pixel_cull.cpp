@@ -83,9 +83,7 @@ TEST_F(PixelCull, ALaterThresholdFrameCompactsAgain) {
   const auto set = test::glyphsOf(test::mixedGrid(16, 41, 0.1));
   const double scale = 0.03 / set.maxAbsEigenvalue;
   const auto cam = test::cameraFor(set, scale, test::oblique(set, 40.0, render::Projection::Perspective), 320, 240);
-  render::FrameParams p;
-  p.scale = scale;
-  p.glyph = render::GlyphKind::Superquadric;
+  render::FrameParams p = test::superquadricParams(scale);
   p.faMin = 0.3;
   p.pixelCull = false;
   const Frame reference = frame(set, cam, p);
@@ -108,9 +106,7 @@ TEST_F(PixelCull, WideGlyphsRunNoPass) {
   const auto set = test::glyphsOf(test::mixedGrid(16, 41, 0.1));
   const double scale = 0.45 / set.maxAbsEigenvalue;
   const auto cam = test::cameraFor(set, scale, test::oblique(set, 40.0, render::Projection::Perspective), 320, 240);
-  render::FrameParams p;
-  p.scale = scale;
-  p.glyph = render::GlyphKind::Superquadric;
+  render::FrameParams p = test::superquadricParams(scale);
   const Frame f = frame(set, cam, p);
   EXPECT_EQ(f.pixelCulls, 0u);
   EXPECT_EQ(f.drawn, set.glyphs.size());

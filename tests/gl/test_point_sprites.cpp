@@ -82,9 +82,7 @@ TEST_F(PointSprites, TheEyeAmongTheGlyphsDrawsQuads) {
   d.eyeWC = 0.5 * (set.boundsMinWC + set.boundsMaxWC);
   d.lookAtWC = d.eyeWC + glm::dvec3(1.0, 0.2, 0.1);
   const auto cam = test::cameraFor(set, scale, d, 200, 150);
-  render::FrameParams p;
-  p.scale = scale;
-  p.glyph = render::GlyphKind::Superquadric;
+  render::FrameParams p = test::superquadricParams(scale);
   const Frame f = frame(set, cam, p);
   EXPECT_FALSE(f.points);
   EXPECT_GT(test::coveredPixels(f.img), 1000u);

@@ -17,10 +17,7 @@ namespace {
 // A tight march, so that these tests check the method; the speed/accuracy
 // trade of looser settings is what `bench accuracy` measures.
 render::FrameParams tight(double scale, double gamma) {
-  render::FrameParams p;
-  p.scale = scale;
-  p.glyph = render::GlyphKind::Superquadric;
-  p.gamma = gamma;
+  render::FrameParams p = test::superquadricParams(scale, gamma);
   p.march = {30, 1e-6};
   return p;
 }

@@ -15,10 +15,7 @@ TEST_F(GlFixture, TessellatedBaselineConvergesToTheReference) {
   double previous = 1.0;
   for (int r : {8, 16, 64}) {
     SCOPED_TRACE(r);
-    render::FrameParams p;
-    p.scale = scale;
-    p.glyph = render::GlyphKind::Superquadric;
-    p.gamma = gamma;
+    render::FrameParams p = test::superquadricParams(scale, gamma);
     p.tessellation = r;
     const auto c = test::compare(draw(set, cam, p), reference, cam);
     ASSERT_GT(c.refCovered, 5000u);
@@ -36,10 +33,7 @@ TEST_F(GlFixture, TessellatedBaselineConvergesToTheReference) {
 TEST_F(GlFixture, TessellatedProgramIsBuiltByTheFirstTessellatedFrame) {
   const auto set = test::glyphsOf(synth::randomField(64, 3));
   const auto cam = test::cameraFor(set, 0.6, test::oblique(set, 12.0, render::Projection::Perspective), 120, 90);
-  render::FrameParams p;
-  p.scale = 0.6;
-  p.glyph = render::GlyphKind::Superquadric;
-  p.gamma = 1.5;
+  render::FrameParams p = test::superquadricParams(0.6, 1.5);
   ctx_->makeCurrent();
   render::GlyphRenderer r(ctx_->api(), *lib_);
   render::GBuffer target(ctx_->api(), cam.width, cam.height);
