@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <sstream>
 #include <limits>
@@ -85,8 +86,8 @@ std::string scaleUsage(const std::string& command) {
   return command +
          " -o CSV [options]\n"
          "Frame time against glyph count (random tensors on a cubic grid, all in view): ray-cast ellipsoids\n"
-         "and superquadrics, sub-pixel sprites (the per-glyph cost without fragment work), and a tessellated\n"
-         "superquadric mesh per glyph as VTK's vtkTensorGlyph draws it.\n"
+         "and superquadrics, sub-pixel sprites (the per-glyph cost without fragment work), both again without\n"
+         "the occlusion pre-pass, and a tessellated superquadric mesh per glyph as VTK's vtkTensorGlyph draws it.\n"
          "  -o CSV              results, one row per method and count\n"
          "  --n LIST            glyph counts, comma-separated (default 1e4,1e5,1e6; at most 2e8)\n"
          "  --resolutions LIST  tessellation resolutions, 4..64 (default 8,16,32,64)\n"
@@ -106,6 +107,7 @@ struct Method {
   render::GlyphKind glyph;
   int tessellation = 0;
   double scaleFactor = 1.0;  // of the sweep's glyph scale
+  bool prepass = true;       // the occlusion pre-pass where the renderer's profile runs it
   double coveragePct = std::numeric_limits<double>::quiet_NaN();
   bool skipped = false;  // a smaller count exceeded the budget
 };
@@ -171,6 +173,7 @@ render::FrameParams paramsFor(const Method& m, double scale, double gamma) {
   p.glyph = m.glyph;
   p.gamma = gamma;
   p.tessellation = m.tessellation;
+  p.occlusionPrepass = m.prepass;
   return p;
 }
 
@@ -214,7 +217,11 @@ void runScaleSweep(gl::Context& ctx, const ScaleOptions& o, const util::Progress
   std::vector<Method> methods{{"raycast-ellipsoid", render::GlyphKind::Ellipsoid},
                               {"raycast-superquadric", render::GlyphKind::Superquadric},
                               // 1/64 of the size: under a pixel, so almost no fragment runs.
-                              {"sprites-subpixel", render::GlyphKind::Superquadric, 0, 1.0 / 64.0}};
+                              {"sprites-subpixel", render::GlyphKind::Superquadric, 0, 1.0 / 64.0},
+                              // The same two without the occlusion pre-pass: whether it pays is
+                              // measured per renderer (render::RendererProfile), GPUs included.
+                              {"raycast-superquadric-no-prepass", render::GlyphKind::Superquadric, 0, 1.0, false},
+                              {"sprites-subpixel-no-prepass", render::GlyphKind::Superquadric, 0, 1.0 / 64.0, false}};
   for (int r : o.resolutions)
     methods.push_back({"tessellated-" + std::to_string(r), render::GlyphKind::Superquadric, r});
   for (Method& m : methods)
@@ -223,7 +230,7 @@ void runScaleSweep(gl::Context& ctx, const ScaleOptions& o, const util::Progress
   io::AtomicFile out(o.csv);  // created now: an unwritable directory fails before the sweep
   std::ostringstream f;
   f << "method,resolution,n,width,height,frame_ms,gpu_ms,empty_frame_ms,covered_pct,newton_mean,"
-       "gpu_bytes_per_glyph,vtk_mesh_bytes_per_glyph,coverage_error_pct,device\n";
+       "gpu_bytes_per_glyph,vtk_mesh_bytes_per_glyph,coverage_error_pct,prepass,device\n";
   std::fprintf(stderr, "scale sweep: %s (%s), %dx%d\n", ctx.backendName(), ctx.describe().c_str(), o.width, o.height);
   const double rows = double(o.counts.size() * methods.size());
   double rowsDone = 0;
@@ -257,7 +264,9 @@ void runScaleSweep(gl::Context& ctx, const ScaleOptions& o, const util::Progress
       const render::FrameParams p = paramsFor(m, scale, o.gamma);
       // A tessellated frame of a million glyphs or more is long; one timed frame says enough.
       const int frames = m.tessellation > 0 && n >= 1000000 ? 1 : o.frames;
+      const std::uint64_t prepassesBefore = r.occlusionPrepasses();
       const FrameTime ft = timeFrames(gl, r, cam, p, target, frames);
+      const bool prepassRan = r.occlusionPrepasses() > prepassesBefore;
       m.skipped = ft.warmMs > 1000.0 * o.budgetS;
       const double covered = coveredPct(r.readback(cam, target));
       double newton = nan;
@@ -272,10 +281,11 @@ void runScaleSweep(gl::Context& ctx, const ScaleOptions& o, const util::Progress
       f << m.name << ',' << m.tessellation << ',' << n << ',' << o.width << ',' << o.height << ','
         << field(ft.wallMs, "%.3f") << ',' << field(ft.gpuMs, "%.3f") << ',' << field(emptyT.wallMs, "%.3f") << ','
         << field(covered, "%.2f") << ',' << field(newton, "%.3f") << ',' << field(bytes, "%.2f") << ','
-        << field(vtk, "%.0f") << ',' << field(m.coveragePct, "%.4f") << ",\"" << ctx.describe() << "\"\n";
+        << field(vtk, "%.0f") << ',' << field(m.coveragePct, "%.4f") << ',' << (prepassRan ? 1 : 0) << ",\""
+        << ctx.describe() << "\"\n";
       if (progress) progress({}, 0, 0, {});
-      std::fprintf(stderr, "  %-22s n %-10zu %10.2f ms (GPU %.2f, empty %.2f), %.1f%% covered, %.1f B/glyph%s\n",
-                   m.name.c_str(), n, ft.wallMs, ft.gpuMs, emptyT.wallMs, covered, bytes,
+      std::fprintf(stderr, "  %-31s n %-10zu %10.2f ms (GPU %.2f, empty %.2f), %.1f%% covered, %.1f B/glyph%s%s\n",
+                   m.name.c_str(), n, ft.wallMs, ft.gpuMs, emptyT.wallMs, covered, bytes, prepassRan ? ", pre-pass" : "",
                    m.skipped ? "; larger counts skipped" : "");
     }
   }

@@ -54,23 +54,36 @@ const std::string kSweep = "--n 300,1000 --size 96 64 --resolutions 4,16 --frame
 // with times, memory and coverage that hold on any renderer.
 std::map<std::string, double> checkSweep(const std::vector<Row>& rows) {
   std::map<std::string, double> coverage;
-  EXPECT_EQ(rows.size(), 10u);  // 5 methods x 2 counts
+  std::map<std::string, std::string> coveredPct;  // method and count
+  EXPECT_EQ(rows.size(), 14u);  // 7 methods x 2 counts
   for (const Row& r : rows) {
     const std::string m = r.at("method");
+    const bool noPrepass = m.size() > 11 && m.substr(m.size() - 11) == "-no-prepass";
+    coveredPct[m + " " + r.at("n")] = r.at("covered_pct");
     EXPECT_GT(num(r, "frame_ms"), 0.0) << m;
     EXPECT_GT(num(r, "gpu_ms"), 0.0) << m;
     EXPECT_LE(num(r, "gpu_bytes_per_glyph"), 64.0) << m;
-    if (m == "sprites-subpixel") {
+    // Whether the timed frames ran the pre-pass: never where it is off.
+    EXPECT_TRUE(r.at("prepass") == "0" || (r.at("prepass") == "1" && !noPrepass)) << m << " " << r.at("prepass");
+    if (m.rfind("sprites-subpixel", 0) == 0) {
       // Under a pixel per glyph: nearly nothing covered, and no shape to score.
       EXPECT_LT(num(r, "covered_pct"), 1.0);
       EXPECT_EQ(r.at("coverage_error_pct"), "");
       continue;
     }
     EXPECT_GT(num(r, "covered_pct"), 5.0) << m;
-    EXPECT_EQ(r.at("newton_mean").empty(), m != "raycast-superquadric") << m;
+    EXPECT_EQ(r.at("newton_mean").empty(), m.rfind("raycast-superquadric", 0) != 0) << m;
     EXPECT_EQ(r.at("vtk_mesh_bytes_per_glyph").empty(), m.rfind("tessellated-", 0) != 0) << m;
     coverage[m] = num(r, "coverage_error_pct");
   }
+  // The pre-pass only skips hidden work: the same pixels, the same error.
+  for (const char* n : {"300", "1000"}) {
+    EXPECT_EQ(coveredPct[std::string("raycast-superquadric ") + n],
+              coveredPct[std::string("raycast-superquadric-no-prepass ") + n]);
+    EXPECT_EQ(coveredPct[std::string("sprites-subpixel ") + n],
+              coveredPct[std::string("sprites-subpixel-no-prepass ") + n]);
+  }
+  EXPECT_EQ(coverage["raycast-superquadric"], coverage["raycast-superquadric-no-prepass"]);
   // The exact ray casts beat the coarse mesh, which the finer mesh improves on.
   EXPECT_LT(coverage["raycast-superquadric"], coverage["tessellated-4"]);
   EXPECT_LT(coverage["tessellated-16"], coverage["tessellated-4"]);
@@ -88,6 +101,23 @@ TEST(BenchScale, WritesOneRowPerMethodAndCount) {
   tg::test::expectFailsCleanly("bench scale --size 96 -o " + csv.string(), "--size", csv, dir, 1);
   tg::test::expectFailsCleanly("bench scale --bogus -o " + csv.string(), "--bogus", csv, dir, 1);
   tg::test::expectFailsCleanly("bench scale --require-gpu -o " + csv.string(), "--require-gpu", csv, dir, 1);
+  std::filesystem::remove_all(dir);
+}
+
+// Glyphs a few pixels wide: llvmpipe's profile runs the occlusion pre-pass
+// for the superquadric row, and its -no-prepass twin draws the same pixels
+// without it.
+TEST(BenchScale, NoPrepassRowsSkipThePrepass) {
+  const auto dir = tg::test::cliDir("bench_scale_prepass");
+  const auto csv = dir / "scale.csv";
+  const auto r = tg::test::runBinary("bench scale --n 2000 --size 320 240 --resolutions 4 --frames 1 -o " + csv.string(), dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  std::map<std::string, Row> byMethod;
+  for (const Row& row : readCsv(csv)) byMethod[row.at("method")] = row;
+  ASSERT_EQ(byMethod.count("raycast-superquadric-no-prepass"), 1u);
+  EXPECT_EQ(byMethod["raycast-superquadric"].at("prepass"), "1");
+  EXPECT_EQ(byMethod["raycast-superquadric-no-prepass"].at("prepass"), "0");
+  EXPECT_EQ(byMethod["raycast-superquadric"].at("covered_pct"), byMethod["raycast-superquadric-no-prepass"].at("covered_pct"));
   std::filesystem::remove_all(dir);
 }
 
