@@ -323,3 +323,37 @@ TEST_F(Occlusion, ThinOccludersClaimNoPixelTheirGlyphMisses) {
     }
   }
 }
+
+// Orthographic rays see glyphs behind the eye's plane too (negative view
+// depth, down to the near plane below the scene). A mixed-sign glyph just in
+// front of a unit sphere (1.3 before its centre, where the sphere's occluder
+// disc lies), the scene 1e4 and 1e6 behind the eye: the depth margin must
+// not turn into a cut as the depth turns negative.
+TEST_F(Occlusion, OrthographicScenesBehindTheEyeKeepTheirGlyphs) {
+  io::TensorField f;
+  const double sphere[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, atSphere[3] = {0, 0, 0};
+  const double mixed[9] = {0.3, 0, 0, 0, -0.25, 0, 0, 0, 0.05}, inFront[3] = {0, 0, 1.3};
+  f.addFull(0, atSphere, sphere);
+  f.addFull(1, inFront, mixed);
+  const auto set = test::glyphsOf(f);
+  for (const double behind : {1e4, 1e6}) {
+    render::CameraDesc d;
+    d.projection = render::Projection::Orthographic;
+    d.eyeWC = {0.01, 0.02, -behind};
+    d.lookAtWC = d.eyeWC - glm::dvec3(0, 0, 1);
+    d.orthoHeight = 3.0;
+    const auto cam = test::cameraFor(set, 1.0, d, 200, 200);
+    SCOPED_TRACE(::testing::Message() << "behind " << behind << " near " << cam.nearVC);
+    ASSERT_LT(cam.nearVC, -behind);
+    render::GBuffer target(ctx_->api(), cam.width, cam.height);
+    const OccluderFrame with = occluderFrame(set, cam, 1.0, target);
+    EXPECT_EQ(with.prepasses, 1u);
+    render::FrameParams p = test::superquadricParams(1.0);
+    p.occlusionPrepass = false;
+    const render::FrameImage without = draw(set, cam, p);
+    std::size_t mixedPixels = 0;
+    for (auto id : without.id) mixedPixels += id == 1;
+    EXPECT_GT(mixedPixels, 200u);
+    EXPECT_EQ(differing(with.img, without), 0u);
+  }
+}
