@@ -69,11 +69,18 @@ void main() {
   mat2 supportDC;
   float farVC;
   if (dist - radius < uNearVC || !ellipseSupportDC(uProjVCCC * tVC, outlineDC, supportDC)) return;
+  // Nor does a glyph whose pixels the frame's own ray cast may miss: one
+  // thinner than 1e-5 of its length (its rays' GC coordinates reach length
+  // over thickness, and their rounding moves the hit test by more than the
+  // outline's 1%), or an outline thinner than a hundredth of its length,
+  // whose conic rounds by more than that 1%.
+  if (!(min(axes.x, min(axes.y, axes.z)) >= 1e-5 * radius)) return;
   mat3 gcFromVC = transpose(mat3(rotVC[0] / axes.x, rotVC[1] / axes.y, rotVC[2] / axes.z));
   vec3 depthGC = -vec3(rotVC[0].z * axes.x, rotVC[1].z * axes.y, rotVC[2].z * axes.z);
   if (!silhouetteFarVC(gcFromVC, depthGC, centreVC, farVC)) return;
-  float det = determinant(supportDC);
-  if (!(det > 0.0)) return;
+  // det / trace^2 is about the squared ratio of the outline's axes.
+  float det = determinant(supportDC), trace = supportDC[0][0] + supportDC[1][1];
+  if (!(det > 1e-4 * trace * trace)) return;
   // Constant over the sprite, as a point sprite's depth is.
   float depthWin = windowDepthFromViewDepth(farVC);
   bool oriented = uPointSprites == 0 && uOrientedSprites != 0;

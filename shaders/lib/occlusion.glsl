@@ -11,11 +11,12 @@ layout(binding = 4) uniform sampler2D uOccluderPyramid;  // mip k: the farthest 
 
 // True when depthVC lies behind the occluder at window depth occluderWin. The
 // margin covers float rounding and the march's tolerance (toleranceVC) on the
-// glyph that made the visible surface.
+// glyph that made the visible surface. Rounding grows with |depth|: an
+// orthographic view also sees glyphs behind the eye, at negative depth.
 bool behindOccluder(float depthVC, float occluderWin, float toleranceVC) {
   if (!(occluderWin > 0.0)) return false;  // no occluder there
   float occluderVC = viewDepthFromWindowDepth(occluderWin);
-  return depthVC > occluderVC + 1e-5 * occluderVC + toleranceVC;
+  return depthVC > occluderVC + 1e-5 * abs(occluderVC) + toleranceVC;
 }
 
 // The farthest occluder over the window pixels [pxMin, pxMax]: the finest

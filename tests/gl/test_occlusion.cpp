@@ -58,21 +58,21 @@ class Occlusion : public GlFixture {
     r.render(cam, p, target);
     return {r.readback(cam, target), r.iterationStats(), r.occlusionPrepasses()};
   }
-  // A superquadric frame (gamma 3) whose pre-pass's occluder depth is read
-  // back, rows bottom-up as GL's, with the image and the pre-passes run.
+  // A superquadric frame (gamma 3 unless given) whose pre-pass's occluder
+  // depth is read back, rows bottom-up as GL's, with the image and the
+  // pre-passes run.
   struct OccluderFrame {
     render::FrameImage img;
     std::vector<float> occluderDepth;
     std::uint64_t prepasses;
   };
   OccluderFrame occluderFrame(const tensor::GlyphSet& set, const render::Camera& cam, double scale,
-                              render::GBuffer& target) {
+                              render::GBuffer& target, double gamma = 3.0) {
     ctx_->makeCurrent();
     const gl::Api& gl = ctx_->api();
     render::GlyphRenderer r(gl, *lib_);
     r.upload(set);
-    render::FrameParams p = test::superquadricParams(scale, 3.0);
-    r.render(cam, p, target);
+    r.render(cam, test::superquadricParams(scale, gamma), target);
     std::vector<float> depth(std::size_t(cam.width) * cam.height);
     gl.GetTextureImage(target.occluderDepth(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * 4), depth.data());
     return {r.readback(cam, target), std::move(depth), r.occlusionPrepasses()};
@@ -261,4 +261,99 @@ TEST_F(Occlusion, HiddenSpheresSkipTheGeometryPass) {
   // hidden ones shaded again in the G-buffer, the frame would shade about
   // twice as many fragments.
   EXPECT_LT(with, 1.5 * without);
+}
+
+// Thin definite glyphs (discs and needles, down to kMinAxisRatio) in random
+// orientations before a wide mixed-sign glyph: an occluder claims no pixel
+// where the frame drawn without the pre-pass shows nothing in front of its
+// depth, so the frame is the same with it. A 1e-7 disc's own ray cast
+// misses some pixels inside its outline, and a needle's outline conic rounds
+// wider than the needle: such glyphs must occlude nothing.
+TEST_F(Occlusion, ThinOccludersClaimNoPixelTheirGlyphMisses) {
+  for (const double thin : {1e-7, 1e-5, 1e-3}) {
+    io::TensorField f;
+    std::mt19937_64 rng(7);
+    std::normal_distribution<double> nd(0.0, 1.0);
+    std::uint32_t id = 0;
+    for (; id < 48; ++id) {
+      const glm::dvec3 n = glm::normalize(glm::dvec3(nd(rng), nd(rng), nd(rng)));
+      const bool needle = id % 2 == 1;
+      // Disc: I - (1 - thin) n n^T; needle: thin I + (1 - thin) n n^T.
+      double t[9];
+      for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) {
+          const double nn = (1.0 - thin) * n[i] * n[j], unit = i == j ? 1.0 : 0.0;
+          t[3 * i + j] = needle ? thin * unit + nn : unit - nn;
+        }
+      const double p[3] = {0.6 * (id % 8) - 2.1, 0.6 * (id / 8) - 1.5, 0.0};
+      f.addFull(id, p, t);
+    }
+    const double back[9] = {9, 0, 0, 0, 7, 0, 0, 0, -0.5}, behind[3] = {0, 0, -3};
+    f.addFull(id, behind, back);
+    const auto set = test::glyphsOf(f);
+    ASSERT_EQ(set.definiteCount, 48u);
+    const double scale = 0.3;
+    render::CameraDesc d;
+    d.eyeWC = {0.2, -0.3, 4.0};
+    d.fovYDeg = 40;
+    const auto cam = test::cameraFor(set, scale, d, 200, 150);
+    for (const double gamma : {0.0, 3.0}) {
+      SCOPED_TRACE(::testing::Message() << "thin " << thin << " gamma " << gamma);
+      render::GBuffer target(ctx_->api(), cam.width, cam.height);
+      const OccluderFrame with = occluderFrame(set, cam, scale, target, gamma);
+      ASSERT_EQ(with.prepasses, 1u);
+      render::FrameParams p = test::superquadricParams(scale, gamma);
+      p.occlusionPrepass = false;
+      const render::FrameImage without = draw(set, cam, p);
+      std::size_t claimed = 0, nothingInFront = 0;
+      for (int y = 0; y < cam.height; ++y)
+        for (int x = 0; x < cam.width; ++x) {
+          const float z = with.occluderDepth[std::size_t(y) * cam.width + x];
+          if (!(z > 0.0f)) continue;
+          ++claimed;
+          const double occluderVC = cam.viewDepthFromWindowDepth(z);
+          nothingInFront += !(without.depth[std::size_t(cam.height - 1 - y) * cam.width + x] <=
+                              occluderVC * (1.0 + 1e-5) + 4.0 * render::MarchParams{}.epsilon * scale);
+        }
+      if (thin >= 1e-3) {
+        EXPECT_GT(claimed, 1000u);
+      }
+      EXPECT_EQ(nothingInFront, 0u);
+      EXPECT_EQ(differing(with.img, without), 0u);
+    }
+  }
+}
+
+// Orthographic rays see glyphs behind the eye's plane too (negative view
+// depth, down to the near plane below the scene). A mixed-sign glyph just in
+// front of a unit sphere (1.3 before its centre, where the sphere's occluder
+// disc lies), the scene 1e4 and 1e6 behind the eye: the depth margin must
+// not turn into a cut as the depth turns negative.
+TEST_F(Occlusion, OrthographicScenesBehindTheEyeKeepTheirGlyphs) {
+  io::TensorField f;
+  const double sphere[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1}, atSphere[3] = {0, 0, 0};
+  const double mixed[9] = {0.3, 0, 0, 0, -0.25, 0, 0, 0, 0.05}, inFront[3] = {0, 0, 1.3};
+  f.addFull(0, atSphere, sphere);
+  f.addFull(1, inFront, mixed);
+  const auto set = test::glyphsOf(f);
+  for (const double behind : {1e4, 1e6}) {
+    render::CameraDesc d;
+    d.projection = render::Projection::Orthographic;
+    d.eyeWC = {0.01, 0.02, -behind};
+    d.lookAtWC = d.eyeWC - glm::dvec3(0, 0, 1);
+    d.orthoHeight = 3.0;
+    const auto cam = test::cameraFor(set, 1.0, d, 200, 200);
+    SCOPED_TRACE(::testing::Message() << "behind " << behind << " near " << cam.nearVC);
+    ASSERT_LT(cam.nearVC, -behind);
+    render::GBuffer target(ctx_->api(), cam.width, cam.height);
+    const OccluderFrame with = occluderFrame(set, cam, 1.0, target);
+    EXPECT_EQ(with.prepasses, 1u);
+    render::FrameParams p = test::superquadricParams(1.0);
+    p.occlusionPrepass = false;
+    const render::FrameImage without = draw(set, cam, p);
+    std::size_t mixedPixels = 0;
+    for (auto id : without.id) mixedPixels += id == 1;
+    EXPECT_GT(mixedPixels, 200u);
+    EXPECT_EQ(differing(with.img, without), 0u);
+  }
 }

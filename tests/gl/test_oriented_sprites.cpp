@@ -221,3 +221,23 @@ TEST(SpritePrimitive, TypicalWidthScalesWithTheViewport) {
   const auto behind = render::makeCamera(d, 200, 100, glm::dvec3(-1), glm::dvec3(1));
   EXPECT_EQ(render::typicalSpritePx(behind, glm::dvec3(-1), glm::dvec3(1), 1.0), HUGE_VAL);
 }
+
+// The extremes gallery (discs and needles down to 1e-6, zero eigenvalues,
+// mixed signs) large enough on screen for oriented quads and the pyramid
+// outlines of mixed-sign glyphs, at world scales 1e-6, 1 and 1e6 and gammas
+// 0, 3 and 50: the same frames as rectangles.
+TEST_F(OrientedSprites, ExtremeGlyphOutlinesHoldEveryPixel) {
+  for (const double k : {1e-6, 1.0, 1e6}) {
+    const double eigenScale = k > 1 ? 1e20 : k < 1 ? 1e-20 : 1.0;
+    const auto set = test::glyphsOf(synth::extremesGallery(eigenScale, k));
+    const double scale = k / eigenScale;
+    const auto cam = test::cameraFor(set, scale, test::oblique(set, 25.0 * k, render::Projection::Perspective), 640, 320);
+    for (const double gamma : {0.0, 3.0, 50.0}) {
+      SCOPED_TRACE(::testing::Message() << "k " << k << " gamma " << gamma);
+      const auto [outlines, rects] = orientedAndRects(set, cam, test::superquadricParams(scale, gamma));
+      EXPECT_GT(test::coveredPixels(rects.img), 2000u);
+      EXPECT_EQ(test::differingPixels(outlines.img, rects.img), 0u);
+      EXPECT_LT(outlines.fragments, rects.fragments);
+    }
+  }
+}
