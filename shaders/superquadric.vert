@@ -108,7 +108,9 @@ void main() {
   // Wholly behind the occluders: no fragment of it could win the depth test.
   if (spriteOccluded(rect, nearest, 4.0 * uEpsilon * max(axes.x, max(axes.y, axes.z)))) return;
 
-  float depthWin = windowDepthFromViewDepth(max(nearest, uNearVC));
+  // The march accepts hits up to its tolerance in front of the shape, so the
+  // sprite lies that much nearer: superquadric.frag promises depth_less.
+  float depthWin = windowDepthFromViewDepth(max(nearest - 4.0 * uEpsilon * max(axes.x, max(axes.y, axes.z)), uNearVC));
   gl_Position = spriteCornerCC(rect, depthWin);
   vec2 outlineDC;
   mat2 supportDC;

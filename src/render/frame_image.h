@@ -10,7 +10,11 @@ namespace tg::render {
 
 // One linear colour channel as the 8 bits every 8-bit output stores: clamped
 // to 0..1 and rounded. The one home of this rounding (io::toRgba8, readback).
-inline std::uint8_t toUnorm8(float v) { return static_cast<std::uint8_t>(std::clamp(v, 0.0f, 1.0f) * 255.0f + 0.5f); }
+// NaN (a pixel whose normal was zero) rounds to 0: std::clamp would pass it
+// on, and converting NaN to an integer is undefined.
+constexpr std::uint8_t toUnorm8(float v) {
+  return static_cast<std::uint8_t>((v > 0.0f ? std::min(v, 1.0f) : 0.0f) * 255.0f + 0.5f);
+}
 
 struct FrameImage {
   int width = 0, height = 0;  // row 0 is the top row in every channel
