@@ -2,8 +2,9 @@
 // holds its header and data; a .mih is a header naming a data file. The
 // header is text ("mrtrix image", then "key: value" lines, then "END", which a
 // .mih may leave out); every value that sizes or places the data is checked,
-// and the data file's size against it, before anything is allocated from it. Data is then streamed in
-// fixed-size chunks, in file order, into the VolumeSink.
+// and the data file's size against it, before anything is allocated from it.
+// Data is then streamed in fixed-size chunks, in file order, into the
+// VolumeSink.
 // Choices where MRtrix is looser: dim, vox, layout, datatype and scaling may
 // not repeat; data split over several files, Bit and complex types are
 // refused; a transform whose 3x3 is not orthonormal is replaced by its polar
