@@ -4,6 +4,7 @@
 
 #include <nifti2_io.h>
 #include <unistd.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <cmath>
@@ -209,6 +210,76 @@ TEST(Nifti, MaskAndSliceSelectVoxelsBeforeTheDataIsRead) {
     EXPECT_GE(f.ids[i], 12u);
     EXPECT_FLOAT_EQ(f.tensors[6 * i], float(f.ids[i] + 1));  // the data of that voxel, not its neighbour's
   }
+}
+
+namespace {
+
+// `bytes` as a one-member gzip file at compression `level` (0: stored blocks,
+// so that a flipped byte of the data survives inflation unchanged).
+std::string gzipped(const std::string& bytes, int level) {
+  z_stream z{};
+  EXPECT_EQ(deflateInit2(&z, level, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY), Z_OK);
+  std::string out(deflateBound(&z, uLong(bytes.size())), '\0');
+  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
+  z.avail_in = uInt(bytes.size());
+  z.next_out = reinterpret_cast<Bytef*>(out.data());
+  z.avail_out = uInt(out.size());
+  EXPECT_EQ(deflate(&z, Z_FINISH), Z_STREAM_END);
+  out.resize(z.total_out);
+  deflateEnd(&z);
+  return out;
+}
+
+}  // namespace
+
+// A .nii.gz whose CRC disagrees with its data, or that ends without the
+// CRC, is refused saying so. Before, a wrong CRC read as "data is truncated:
+// ... the image ends after 4611686018427387903" (znzread's -1 as a count) and
+// a stream cut at its trailer was drawn unchecked.
+TEST(Nifti, CorruptGzipIsRefusedNamingTheFault) {
+  Fixture fx;
+  fx.nx = 16;
+  fx.ny = 16;
+  fx.nz = 16;
+  fx.voxels.assign(4096, {{1, 0, 0, 1, 0, 1}});
+  const fs::path plain = tmpDir() / "gz-src.nii";
+  write(plain, fx);
+  std::ifstream in(plain, std::ios::binary);
+  const std::string bytes{std::istreambuf_iterator<char>(in), {}};
+  const fs::path d = tmpDir();
+  for (int level : {0, 6}) {
+    const std::string gz = gzipped(bytes, level);
+    const std::string tag = "gz" + std::to_string(level) + "-";
+    std::ofstream(d / (tag + "good.nii.gz"), std::ios::binary) << gz;
+    const io::TensorField good = io::readTensorField((d / (tag + "good.nii.gz")).string(), {});
+    EXPECT_EQ(good.size(), 4096u);
+    // Trailing bytes after the stream are not part of it.
+    std::ofstream(d / (tag + "trailing.nii.gz"), std::ios::binary) << gz << std::string(100, '\0');
+    EXPECT_EQ(io::readTensorField((d / (tag + "trailing.nii.gz")).string(), {}).tensors, good.tensors);
+    std::string crc = gz;
+    crc[crc.size() - 8] = char(crc[crc.size() - 8] ^ 0x5a);  // the trailer: CRC-32, then the length
+    std::ofstream(d / (tag + "crc.nii.gz"), std::ios::binary) << crc;
+    std::ofstream(d / (tag + "cut.nii.gz"), std::ios::binary) << gz.substr(0, gz.size() - 8);
+    struct Case {
+      std::string file;
+      const char* expect;
+    } cases[] = {{tag + "crc.nii.gz", "gzip data is corrupt: incorrect data check"},
+                 {tag + "cut.nii.gz", "gzip data is corrupt: the stream ends without its trailer"}};
+    for (const Case& c : cases) {
+      const std::string e = errorOf(d / c.file);
+      EXPECT_NE(e.find(c.expect), std::string::npos) << c.file << ": " << e;
+      EXPECT_NE(e.find((d / c.file).string() + ": gzip"), std::string::npos) << c.file << ": " << e;
+      EXPECT_EQ(e.find('\n'), std::string::npos) << c.file << ": " << e;
+    }
+  }
+  // A value flipped inside a stored block inflates cleanly; only the CRC tells.
+  std::string flipped = gzipped(bytes, 0);
+  const std::size_t at = flipped.find(bytes.substr(352, 64));
+  ASSERT_NE(at, std::string::npos);
+  flipped[at + 3] = char(flipped[at + 3] ^ 0x40);  // the first value's exponent: 1 becomes infinite
+  std::ofstream(d / "flipped.nii.gz", std::ios::binary) << flipped;
+  const std::string e = errorOf(d / "flipped.nii.gz");
+  EXPECT_NE(e.find("gzip data is corrupt: incorrect data check"), std::string::npos) << e;
 }
 
 TEST(Nifti, BadInputGetsOneLineNamingFileAndProblem) {
