@@ -330,6 +330,33 @@ TEST(Hostile, AttackFindingsFailInsteadOfDrawingGarbage) {
   expectRefused("crc.nrrd", "incorrect data check");
 }
 
+// Teem's error messages quote the header line they refuse into a 1 KiB stack
+// buffer: a 3 KB field line overflowed it and glibc aborted the process, the
+// parent too (render lists an input's or mask's data files to keep -o off
+// them, with Teem's parser). Long free text (comments, key:=value pairs,
+// content) is never quoted and still reads.
+TEST(Hostile, LongNrrdFieldLinesAreRefusedBeforeTeemQuotesThem) {
+  const std::string body = "dimension: 4\nsizes: 6 1 1 1\n" + kNrrdTensor;
+  const std::string data = "\n" + bin({1, 0, 0, 2, 0, 3});
+  const std::string longWord(3000, 'x');
+  write(dir() / "longtype.nrrd", "NRRD0004\ntype: " + longWord + "\n" + body + data);
+  expectRefused("longtype.nrrd", "header line 2 is 3006 bytes long");
+  write(dir() / "noline.nrrd", "NRRD0004\ntype: float\n" + longWord + "\n" + body + data);
+  expectRefused("noline.nrrd", "header line 3 is 3000 bytes long");
+  // A mask's header is parsed in the parent as well.
+  write(dir() / "longmask.nhdr", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 1 1 1\nencoding: raw\ndata file: " +
+                                     longWord + "\n");
+  write(dir() / "plain.nrrd", "NRRD0004\ntype: float\n" + body + data);
+  expectRefused("plain.nrrd", "header line 6 is 3011 bytes long", 20, " --mask " + (dir() / "longmask.nhdr").string(),
+                {"info", "render"}, "longmask.nhdr");
+  const std::string longText(100000, 'y');
+  write(dir() / "longtext.nrrd", "NRRD0004\n# " + longText + "\ncontent: " + longText + "\ntype: float\nkey:=" +
+                                     longText + "\n" + longText + ":=value: " + longText + "\n" + body + data);
+  const Limited ok = runLimited("info " + (dir() / "longtext.nrrd").string());
+  EXPECT_EQ(ok.r.code, 0) << ok.r.err;
+  EXPECT_NE(ok.r.out.find("1 drawn"), std::string::npos) << ok.r.out;
+}
+
 TEST(Hostile, AnExtentBeyondIntIsRefused) {
   write(dir() / "extent.vti",
         "<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\" version=\"0.1\">\n<ImageData WholeExtent=\""
