@@ -119,6 +119,50 @@ bool finiteFloat(const double p[3], const NonFiniteText* nonFinite, double out[3
   return fits;
 }
 
+// VTK's readers keep a cell's point ids as the file gives them (legacy,
+// XML, OBJ and PLY alike). An id outside the points made the filters and
+// toMesh read, and toMesh's remap write, outside their arrays: a negative id
+// drew a triangle to a "vertex" read from before the points, a large one
+// crashed. Checked before anything walks the cells.
+void checkCellPoints(vtkDataSet* ds, const std::string& path) {
+  const vtkIdType n = ds->GetNumberOfPoints();
+  auto outside = [&](double id) {
+    fail(path, "a cell refers to point " + std::to_string(std::int64_t(id)) + ", but the file has " + std::to_string(n) +
+                   " points (0.." + std::to_string(n - 1) + ")");
+  };
+  auto checkCells = [&](vtkCellArray* cells) {
+    if (!cells) return;
+    if (!cells->IsValid()) fail(path, "its cell offsets do not index its cell connectivity");
+    if (cells->GetNumberOfConnectivityIds() == 0) return;
+    double range[2];
+    cells->GetConnectivityArray()->GetRange(range, 0);
+    if (range[0] < 0) outside(range[0]);
+    if (range[1] >= double(n)) outside(range[1]);
+  };
+  if (auto* pd = vtkPolyData::SafeDownCast(ds)) {
+    for (vtkCellArray* cells : {pd->GetVerts(), pd->GetLines(), pd->GetPolys(), pd->GetStrips()}) checkCells(cells);
+  } else if (auto* ug = vtkUnstructuredGrid::SafeDownCast(ds)) {
+    checkCells(ug->GetCells());
+    // Polyhedra: per cell, a face count, then each face's size and ids.
+    vtkIdTypeArray* faces = ug->GetFaces();
+    vtkIdTypeArray* at = ug->GetFaceLocations();
+    if (!faces || !at) return;
+    const vtkIdType size = faces->GetNumberOfValues();
+    for (vtkIdType c = 0; c < at->GetNumberOfValues(); ++c) {
+      vtkIdType k = at->GetValue(c);
+      if (k < 0) continue;  // not a polyhedron
+      if (k >= size) fail(path, "a polyhedron's faces lie beyond its face list");
+      for (vtkIdType f = faces->GetValue(k++); f > 0; --f) {
+        if (k >= size) fail(path, "a polyhedron's faces lie beyond its face list");
+        const vtkIdType m = faces->GetValue(k++);
+        if (m < 0 || m > size - k) fail(path, "a polyhedron's faces lie beyond its face list");
+        for (const vtkIdType end = k + m; k < end; ++k)
+          if (const vtkIdType id = faces->GetValue(k); id < 0 || id >= n) outside(double(id));
+      }
+    }
+  }
+}
+
 constexpr const char* kSourceCell = "tg_source_cell";
 
 // Cells of `ds` with a NaN/Inf or out-of-range vertex, counted in `skipped`;
@@ -241,6 +285,7 @@ MeshData impl::readMesh(const std::string& path, MeshSource source, std::uint64_
     runVtk(reader, path);
     auto* ds = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
     if (!ds) fail(path, "VTK read no dataset");
+    checkCellPoints(ds, path);
     std::size_t skipped = 0;
     const std::vector<char> bad = markBadCells(ds, nullptr, skipped);
     m = toMesh(triangulate(ds, path), path, nullptr, bad, skipped);
@@ -273,6 +318,7 @@ MeshData impl::readMesh(const std::string& path, MeshSource source, std::uint64_
         fail(path, "--mesh-from-input: the input has points but no cells, so no FEM mesh to draw the boundary of");
     }
     if (ds->GetNumberOfCells() == 0) fail(path, "no cells: nothing to draw");
+    checkCellPoints(ds, path);
     const NonFiniteText* nonFinite = read.nonFinite.empty() ? nullptr : &read.nonFinite;
     std::size_t skipped = 0;
     const std::vector<char> bad = markBadCells(ds, nonFinite, skipped);
