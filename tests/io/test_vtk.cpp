@@ -153,6 +153,28 @@ TEST(Vtk, BadInputGetsOneLineNamingFileAndProblem) {
   }
 }
 
+// 3D-TSV's trailer rows are Sxx Syy Szz Syz Szx Sxy; a row with a seventh
+// number (or anything else after the sixth) is another layout, refused
+// rather than read by its first six.
+TEST(Vtk, TsvTrailerRowsHoldSixNumbers) {
+  const std::string head = "# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 2 float\n"
+                           "0 0 0 1 0 0\nCELLS 1 3\n2 0 1\nCELL_TYPES 1\n3\nPOINT_DATA 2\nSCALARS fixed int\n"
+                           "LOOKUP_TABLE default\n0\n1\nCartesian Stress: 2\n";
+  const fs::path d = tmpDir();
+  test::writeFile(d / "tsv.vtk", head + "1 2 3 0.4 0.5 0.6 \t\r\n-1 -2 -3 0 0 0\n");
+  const io::TensorField f = io::readTensorField((d / "tsv.vtk").string(), {});
+  ASSERT_EQ(f.size(), 2u);
+  // xx xy xz yy yz zz from Sxx=1 Syy=2 Szz=3 Syz=0.4 Szx=0.5 Sxy=0.6.
+  const float expect[6] = {1, 0.6f, 0.5f, 2, 0.4f, 3};
+  for (int k = 0; k < 6; ++k) EXPECT_FLOAT_EQ(f.tensors[std::size_t(k)], expect[k]) << k;
+  for (const char* row : {"1 2 3 0.4 0.5 0.6 0.7", "1 2 3 0.4 0.5 0.6x"}) {
+    test::writeFile(d / "tsv7.vtk", head + row + "\n-1 -2 -3 0 0 0\n");
+    const std::string msg = errorOf(d / "tsv7.vtk");
+    EXPECT_NE(msg.find("row 0 holds more than six numbers"), std::string::npos) << row << ": " << msg;
+    EXPECT_NE(msg.find((d / "tsv7.vtk").string()), std::string::npos) << msg;
+  }
+}
+
 TEST(Vtk, ACorruptBodyThatCrashesVtkIsReportedNotFatal) {
   // Found by fuzz_vtk: VTK 9.1's legacy reader dereferences null on this
   // binary body after every header check passes. The child-process guard
