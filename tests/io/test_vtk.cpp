@@ -5,6 +5,7 @@
 #include <cstring>
 #include <limits>
 #include <filesystem>
+#include <fstream>
 
 #include "data-synthetic/generators.h"
 #include "io/readers.h"
@@ -172,6 +173,52 @@ TEST(Vtk, TsvTrailerRowsHoldSixNumbers) {
     const std::string msg = errorOf(d / "tsv7.vtk");
     EXPECT_NE(msg.find("row 0 holds more than six numbers"), std::string::npos) << row << ": " << msg;
     EXPECT_NE(msg.find((d / "tsv7.vtk").string()), std::string::npos) << msg;
+  }
+}
+
+// VTK reads a piece's points times an array's components and ignores what
+// else the array holds: nine-component tensors declared as six were read as
+// six-value tensors from the wrong offsets, and drawn. Each point array must
+// hold exactly what its piece needs, in every encoding.
+TEST(Vtk, PointArraysHoldingOtherThanTheirPointsNeedAreRefused) {
+  const auto h = synth::helixPhantom(3, 2, 2);
+  const std::size_t n = h.field.size();
+  const std::string need = "not the " + std::to_string(6 * n) + " of " + std::to_string(n) + " points with 6";
+  for (const char* ext : {".vti", ".vtu", ".vtp"}) {  // appended, zlib, base64: our writer's choice
+    const fs::path p = tmpDir() / (std::string("ncomp") + ext);
+    io::writeVtk(h.field, p.string());
+    ASSERT_EQ(io::readTensorField(p.string(), {}).size(), n) << ext;
+    std::ifstream in(p, std::ios::binary);
+    std::string xml{std::istreambuf_iterator<char>(in), {}};
+    const std::size_t at = xml.find("NumberOfComponents=\"9\"");
+    ASSERT_NE(at, std::string::npos) << ext;
+    xml.replace(at, 22, "NumberOfComponents=\"6\"");
+    test::writeFile(p, xml);
+    const std::string msg = errorOf(p);
+    EXPECT_NE(msg.find("holds " + std::to_string(9 * n) + " values, " + need), std::string::npos) << ext << ": " << msg;
+  }
+  // ASCII and raw appended data, two points.
+  const std::string head = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">"
+                           "<PolyData><Piece NumberOfPoints=\"2\"><Points><DataArray type=\"Float32\" "
+                           "NumberOfComponents=\"3\" format=\"ascii\">0 0 0 1 0 0</DataArray></Points><PointData "
+                           "Tensors=\"t\"><DataArray type=\"Float32\" Name=\"t\" NumberOfComponents=\"6\" ";
+  const std::string tail = "</PointData></Piece></PolyData>";
+  std::string nine;
+  for (int k = 0; k < 2; ++k) nine += "3 0.5 0.2 0.5 2 0.1 0.2 0.1 1 ";
+  test::writeFile(tmpDir() / "ascii9.vtp", head + "format=\"ascii\">" + nine + "</DataArray>" + tail + "</VTKFile>");
+  std::string raw(4, '\0');
+  const std::uint32_t bytes = 18 * 4;
+  std::memcpy(raw.data(), &bytes, 4);
+  for (int k = 0; k < 18; ++k) {
+    const float v = float(k + 1);
+    raw.append(reinterpret_cast<const char*>(&v), 4);
+  }
+  test::writeFile(tmpDir() / "raw9.vtp", head + "format=\"appended\" offset=\"0\"/>" + tail +
+                                             "<AppendedData encoding=\"raw\">_" + raw + "</AppendedData></VTKFile>");
+  for (const char* name : {"ascii9.vtp", "raw9.vtp"}) {
+    const std::string msg = errorOf(tmpDir() / name);
+    EXPECT_NE(msg.find("array \"t\" holds 18 values, not the 12 of 2 points with 6 components each"), std::string::npos)
+        << name << ": " << msg;
   }
 }
 
