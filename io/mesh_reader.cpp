@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <cstring>
@@ -15,6 +16,8 @@
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkCellType.h>
+#include <vtkGenericCell.h>
 #include <vtkIdList.h>
 #include <vtkIdTypeArray.h>
 #include <vtkDataSetSurfaceFilter.h>
@@ -25,6 +28,7 @@
 #include <vtkSTLReader.h>
 #include <vtkSmartPointer.h>
 #include <vtkTriangleFilter.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 
 #include "io/format_impl.h"
@@ -119,6 +123,33 @@ bool finiteFloat(const double p[3], const NonFiniteText* nonFinite, double out[3
   return fits;
 }
 
+// A cell of a fixed-size type must list that many points: VTK's filters
+// read a tetra's fourth id whatever the file gave (past the connectivity for
+// a tetra of three ids, drawn; a crash for a hexahedron of four). VTK's own
+// cells say their size; polygons and the like (0) vary, and Lagrange and
+// Bézier cells (68 on) have at least theirs.
+void checkCellSizes(vtkUnstructuredGrid* ug, const std::string& path) {
+  vtkUnsignedCharArray* types = ug->GetCellTypesArray();
+  vtkCellArray* cells = ug->GetCells();
+  if (!types || !cells || types->GetNumberOfValues() != cells->GetNumberOfCells())
+    fail(path, "its cell types do not match its cells");
+  std::array<int, 256> size;
+  size.fill(-1);
+  for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c) {
+    const unsigned char type = types->GetValue(c);
+    if (size[type] < 0) {
+      vtkCell* cell = vtkGenericCell::InstantiateCell(type);
+      size[type] = cell ? int(cell->GetNumberOfPoints()) : 0;
+      if (cell) cell->Delete();
+    }
+    const vtkIdType n = cells->GetCellSize(c);
+    if (size[type] > 0 && (type >= VTK_LAGRANGE_CURVE ? n < size[type] : n != size[type]))
+      fail(path, "cell " + std::to_string(c) + " of type " + std::to_string(int(type)) + " lists " +
+                     std::to_string(n) + " points; that type has " + std::to_string(size[type]) +
+                     (type >= VTK_LAGRANGE_CURVE ? " or more" : ""));
+  }
+}
+
 // VTK's readers keep a cell's point ids as the file gives them (legacy,
 // XML, OBJ and PLY alike). An id outside the points made the filters and
 // toMesh read, and toMesh's remap write, outside their arrays: a negative id
@@ -143,6 +174,7 @@ void checkCellPoints(vtkDataSet* ds, const std::string& path) {
     for (vtkCellArray* cells : {pd->GetVerts(), pd->GetLines(), pd->GetPolys(), pd->GetStrips()}) checkCells(cells);
   } else if (auto* ug = vtkUnstructuredGrid::SafeDownCast(ds)) {
     checkCells(ug->GetCells());
+    checkCellSizes(ug, path);
     // Polyhedra: per cell, a face count, then each face's size and ids.
     vtkIdTypeArray* faces = ug->GetFaces();
     vtkIdTypeArray* at = ug->GetFaceLocations();

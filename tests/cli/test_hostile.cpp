@@ -359,7 +359,8 @@ TEST(Hostile, LongNrrdFieldLinesAreRefusedBeforeTeemQuotesThem) {
 
 // Cells whose point ids lie outside the points (VTK's readers keep them as
 // the file gives them): a negative id drew a triangle to a vertex read from
-// before the points, and remapping it wrote outside our own array. And a
+// before the points, and remapping it wrote outside our own array; cells
+// listing fewer or more points than their type has. And a
 // rectilinear grid whose coordinates are fewer than its DIMENSIONS, whose
 // last points VTK read past the coordinate array's end, drawn.
 TEST(Hostile, CellsAndGridPointsOutsideTheFileAreRefused) {
@@ -383,6 +384,13 @@ TEST(Hostile, CellsAndGridPointsOutsideTheFileAreRefused) {
                                  {"negid.obj", "point -6,"}, {"negid.ply", "point -7,"}})
     expectRefused("tensor.nrrd", std::string("a cell refers to ") + id + " but the file has 3 points", 20,
                   " --mesh " + (dir() / mesh).string(), {"render"}, mesh);
+  // A tetra of three ids (VTK read a fourth past the connectivity, drawn) and
+  // a hexahedron of four (a crash).
+  write(dir() / "tetra3.vtk", legacy + "UNSTRUCTURED_GRID\n" + points + "CELLS 1 4\n3 0 1 2\nCELL_TYPES 1\n10\n");
+  write(dir() / "hexa4.vtk", legacy + "UNSTRUCTURED_GRID\n" + points + "CELLS 1 5\n4 0 1 2 0\nCELL_TYPES 1\n12\n");
+  for (const auto& [mesh, what] : {std::pair{"tetra3.vtk", "cell 0 of type 10 lists 3 points; that type has 4"},
+                                   {"hexa4.vtk", "cell 0 of type 12 lists 4 points; that type has 8"}})
+    expectRefused("tensor.nrrd", what, 20, " --mesh " + (dir() / mesh).string(), {"render"}, mesh);
   const std::string nine = "1 0 0 0 2 0 0 0 3\n";
   write(dir() / "coords.vtk", legacy + "RECTILINEAR_GRID\nDIMENSIONS 3 1 1\nX_COORDINATES 2 float\n0 1\n"
                               "Y_COORDINATES 1 float\n0\nZ_COORDINATES 1 float\n0\nPOINT_DATA 3\nTENSORS t float\n" +
