@@ -273,6 +273,19 @@ void placement(const nifti_image& nim, VolumeGeometry& g, TensorField& f) {
       g.originWC[r] = m->m[r][3];
     }
     f.space = nim.sform_code > 0 ? "RAS (sform)" : "RAS (qform)";
+    // Two placements in one file: whichever is right, a reader that takes
+    // the other draws elsewhere, so the disagreement is said (as MRtrix does).
+    if (nim.sform_code > 0 && nim.qform_code > 0) {
+      double diff = 0, step = 0;
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c) {
+          diff = std::max(diff, std::abs(nim.sto_xyz.m[r][c] - nim.qto_xyz.m[r][c]));
+          if (c < 3) step = std::max(step, std::abs(nim.sto_xyz.m[r][c]));
+        }
+      if (!(diff <= 1e-3 * step))
+        f.warnings.push_back("the sform and qform disagree (by up to " + std::to_string(diff) +
+                             "); the sform is used, as FSL, nibabel and MRtrix use it");
+    }
   } else {
     for (int k = 0; k < 3; ++k) g.axesWC[4 * k] = nim.pixdim[k + 1] > 0 ? nim.pixdim[k + 1] : 1.0;
     f.space = "voxel grid (no sform or qform)";

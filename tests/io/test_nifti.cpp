@@ -282,6 +282,41 @@ TEST(Nifti, CorruptGzipIsRefusedNamingTheFault) {
   EXPECT_NE(e.find("gzip data is corrupt: incorrect data check"), std::string::npos) << e;
 }
 
+// A file holding two placements that disagree draws where the sform says
+// (as FSL, nibabel and MRtrix read it) and says so; one whose qform matches
+// its sform says nothing.
+TEST(Nifti, DisagreeingSformAndQformAreSaid) {
+  Fixture fx;
+  fx.voxels = {{{1, 0, 0, 1, 0, 1}}, {{2, 0, 0, 2, 0, 2}}};
+  const fs::path p = tmpDir() / "sq.nii";
+  write(p, fx);  // sform diag(2) + (10, 20, 30)
+  std::string bytes;
+  {
+    std::ifstream in(p, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  auto withQform = [&](float pixdim, const float offset[3]) {
+    std::string b = bytes;
+    const std::int16_t one = 1;
+    std::memcpy(&b[252], &one, 2);  // qform_code
+    const float zero = 0, unit = 1;
+    for (int k = 0; k < 3; ++k) std::memcpy(&b[256 + 4 * k], &zero, 4);  // quatern_b..d: no rotation
+    for (int k = 0; k < 3; ++k) std::memcpy(&b[268 + 4 * k], &offset[k], 4);  // qoffset_x..z
+    std::memcpy(&b[76], &unit, 4);  // pixdim[0]: qfac
+    for (int k = 1; k <= 3; ++k) std::memcpy(&b[76 + 4 * k], &pixdim, 4);
+    return b;
+  };
+  const float same[3] = {10, 20, 30}, moved[3] = {10, 20, 35};
+  test::writeFile(p, withQform(2, same));
+  const io::TensorField agree = io::readTensorField(p.string(), {});
+  EXPECT_TRUE(agree.warnings.empty()) << agree.warnings.front();
+  test::writeFile(p, withQform(2, moved));
+  const io::TensorField f = io::readTensorField(p.string(), {});
+  ASSERT_EQ(f.warnings.size(), 1u);
+  EXPECT_NE(f.warnings[0].find("the sform and qform disagree (by up to 5.0"), std::string::npos) << f.warnings[0];
+  EXPECT_FLOAT_EQ(f.positions[2], 30);  // the sform's
+}
+
 TEST(Nifti, BadInputGetsOneLineNamingFileAndProblem) {
   Fixture fx;
   fx.nx = 8;
