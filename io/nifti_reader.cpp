@@ -417,6 +417,12 @@ TensorField impl::readNifti(const std::string& path, const ReadOptions& opt) {
     sink.pushAccepted(kept.empty() ? r : kept[r], v6);
   }
   sink.finish();
+  // A file that says its six values are something else (a vector, a general
+  // 2x3 matrix, labels, a time series) is read as asked, but said to be.
+  if (nim->intent_code != NIFTI_INTENT_NONE && nim->intent_code != NIFTI_INTENT_SYMMATRIX &&
+      nim->intent_code != NIFTI_INTENT_ESTIMATE)
+    f.warnings.push_back(std::string("the header's intent is ") + nifti_intent_string(nim->intent_code) + " (" +
+                         std::to_string(nim->intent_code) + "), not a symmetric matrix: its six values may be no tensor");
   const std::string implausible = implausibleLayoutWarning(comps.floats(), std::size_t(keptCount), *conv.layout);
   if (!implausible.empty()) f.warnings.push_back(implausible);
   return f;

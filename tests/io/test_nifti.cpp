@@ -317,6 +317,29 @@ TEST(Nifti, DisagreeingSformAndQformAreSaid) {
   EXPECT_FLOAT_EQ(f.positions[2], 30);  // the sform's
 }
 
+// Six volumes whose header says they are a vector (or any intent but none,
+// a parameter estimate or SYMMATRIX) are read as asked, with a warning.
+TEST(Nifti, AnIntentOtherThanATensorIsSaid) {
+  Fixture fx;
+  fx.voxels = {{{1, 0, 0, 1, 0, 1}}, {{2, 0, 0, 2, 0, 2}}};
+  const fs::path p = tmpDir() / "intent.nii";
+  write(p, fx);
+  std::string bytes;
+  {
+    std::ifstream in(p, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  for (const int intent : {NIFTI_INTENT_NONE, NIFTI_INTENT_ESTIMATE, NIFTI_INTENT_VECTOR, NIFTI_INTENT_GENMATRIX}) {
+    const auto code = std::int16_t(intent);
+    std::memcpy(&bytes[68], &code, 2);  // intent_code
+    test::writeFile(p, bytes);
+    const io::TensorField f = io::readTensorField(p.string(), {});
+    ASSERT_EQ(f.size(), 2u);
+    const bool warned = f.warnings.size() == 1 && f.warnings[0].find("not a symmetric matrix") != std::string::npos;
+    EXPECT_EQ(warned, intent == NIFTI_INTENT_VECTOR || intent == NIFTI_INTENT_GENMATRIX) << intent;
+  }
+}
+
 TEST(Nifti, BadInputGetsOneLineNamingFileAndProblem) {
   Fixture fx;
   fx.nx = 8;
