@@ -214,6 +214,94 @@ TEST(Nifti, MaskAndSliceSelectVoxelsBeforeTheDataIsRead) {
 
 namespace {
 
+// A uint8 mask of `dims` placed by the sform `affine`, values in index order (i fastest).
+void writeMask(const fs::path& path, const int d[3], const double affine[3][4], const std::vector<std::uint8_t>& v) {
+  const int64_t dims[8] = {3, d[0], d[1], d[2], 1, 1, 1, 1};
+  nifti_image* mask = nifti_make_new_nim(dims, NIFTI_TYPE_UINT8, 1);
+  ASSERT_TRUE(mask);
+  std::copy(v.begin(), v.end(), static_cast<std::uint8_t*>(mask->data));
+  mask->sform_code = NIFTI_XFORM_SCANNER_ANAT;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) mask->sto_xyz.m[r][c] = r < 3 ? affine[r][c] : (c == 3 ? 1 : 0);
+  const std::string name = path.string();
+  nifti_set_filenames(mask, name.c_str(), 0, 1);
+  nifti_image_write(mask);
+  nifti_image_free(mask);
+}
+
+}  // namespace
+
+// Masks are applied by voxel index, so a mask of the same grid stored in
+// another axis order (mrconvert stores a LAS image's mask with i reversed,
+// near RAS) is first put in the tensors' order by where its voxels lie; it
+// was refused as lying elsewhere. A mask one voxel off is still refused.
+TEST(Nifti, AMaskOfTheSameGridInAnotherAxisOrderSelectsTheSameVoxels) {
+  Fixture fx;
+  fx.nx = 4;
+  fx.ny = 3;
+  fx.nz = 2;
+  fx.affine[0][0] = -2;  // LAS, as FSL stores
+  for (int v = 0; v < 24; ++v) fx.voxels.push_back({{float(v + 1), 0, 0, 1, 0, 1}});
+  const fs::path grid = tmpDir() / "las-grid.nii";
+  write(grid, fx);
+  const int d[3] = {4, 3, 2};
+  auto keep = [](int i, int j, int k) { return std::uint8_t((i * 7 + j * 3 + k * 5) % 4 == 0); };
+  auto keptIds = [&](const fs::path& mask) {
+    io::ReadOptions o;
+    o.selection.maskPath = mask.string();
+    const io::TensorField f = io::readTensorField(grid.string(), o);
+    for (std::size_t n = 0; n < f.size(); ++n) EXPECT_FLOAT_EQ(f.tensors[6 * n], float(f.ids[n] + 1));
+    return f.ids;
+  };
+  std::vector<std::uint8_t> same;
+  std::vector<std::uint32_t> expect;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 4; ++i) {
+        same.push_back(keep(i, j, k));
+        if (keep(i, j, k)) expect.push_back(std::uint32_t(i + 4 * (j + 3 * k)));
+      }
+  ASSERT_GT(expect.size(), 2u);
+  writeMask(tmpDir() / "m-same.nii", d, fx.affine, same);
+  EXPECT_EQ(keptIds(tmpDir() / "m-same.nii"), expect);
+  // i reversed: axis 0 is +2 in x, from the other end.
+  const double flipped[3][4] = {{2, 0, 0, 10 - 2 * 3}, {0, 2, 0, 20}, {0, 0, 2, 30}};
+  std::vector<std::uint8_t> v;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 4; ++i) v.push_back(keep(3 - i, j, k));
+  writeMask(tmpDir() / "m-flipped.nii", d, flipped, v);
+  EXPECT_EQ(keptIds(tmpDir() / "m-flipped.nii"), expect);
+  // Axes reordered (the mask's axes are the tensors' k, i, j) and its second one reversed.
+  const int pd[3] = {2, 4, 3};
+  const double reordered[3][4] = {{0, 2, 0, 10 - 2 * 3}, {0, 0, 2, 20}, {2, 0, 0, 30}};
+  v.clear();
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 4; ++i)
+      for (int k = 0; k < 2; ++k) v.push_back(keep(3 - i, j, k));
+  writeMask(tmpDir() / "m-reordered.nii", pd, reordered, v);
+  EXPECT_EQ(keptIds(tmpDir() / "m-reordered.nii"), expect);
+  // One voxel off in z: the same dimensions elsewhere.
+  const double shifted[3][4] = {{-2, 0, 0, 10}, {0, 2, 0, 20}, {0, 0, 2, 32}};
+  writeMask(tmpDir() / "m-shifted.nii", d, shifted, same);
+  EXPECT_NE(errorOf(grid, [&] {
+              io::ReadOptions o;
+              o.selection.maskPath = (tmpDir() / "m-shifted.nii").string();
+              return o;
+            }()).find("mask lies elsewhere"),
+            std::string::npos);
+#ifdef TG_MRCONVERT
+  // MRtrix's own copy of the mask: i reversed on disk and in its transform.
+  const fs::path mif = tmpDir() / "m-mrconvert.mif";
+  const std::string cmd = std::string(TG_MRCONVERT) + " -quiet -force " + (tmpDir() / "m-same.nii").string() + " " +
+                          mif.string() + " 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  EXPECT_EQ(keptIds(mif), expect);
+#endif
+}
+
+namespace {
+
 // `bytes` as a one-member gzip file at compression `level` (0: stored blocks,
 // so that a flipped byte of the data survives inflation unchanged).
 std::string gzipped(const std::string& bytes, int level) {
