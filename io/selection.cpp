@@ -135,7 +135,8 @@ std::optional<std::vector<float>> alignedMask(const GridPlacement& t, const int 
     const long long last = first[axis[k]] + sign[k] * (dims[k] - 1);
     if (std::min(first[axis[k]], last) < 0 || std::max(first[axis[k]], last) >= m.dims[axis[k]]) return std::nullopt;
   }
-  std::vector<float> out(static_cast<std::size_t>(dims[0]) * static_cast<std::size_t>(dims[1]) * static_cast<std::size_t>(dims[2]));
+  const std::size_t voxels = std::size_t(dims[0]) * std::size_t(dims[1]) * std::size_t(dims[2]);
+  std::vector<float> out(voxels);
   std::size_t v = 0;
   long long at[3];
   for (int i2 = 0; i2 < dims[2]; ++i2)

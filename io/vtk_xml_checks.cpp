@@ -230,7 +230,8 @@ void checkPointArraySizes(vtkXMLDataElement* data, std::ifstream& in, const Fram
         vtkXMLDataElement* array = group->GetNestedElement(a);
         const std::uint64_t size = typeBytes(array->GetAttribute("type"));
         if (std::strcmp(array->GetName(), "DataArray") != 0 || size == 0) continue;
-        const std::string name = std::strcmp(group->GetName(), "Points") == 0 ? "the points' array" : "array " + arrayName(array);
+        const bool isPoints = std::strcmp(group->GetName(), "Points") == 0;
+        const std::string name = isPoints ? "the points' array" : "array " + arrayName(array);
         int components = 1;
         array->GetScalarAttribute("NumberOfComponents", components);
         if (components < 1) fail(path, name + " has " + std::to_string(components) + " components");
@@ -347,7 +348,8 @@ void checkXmlStructure(vtkAlgorithm* reader, const std::string& path) {
   }
   checkArrays(root, in, fr, path);
   const char* dataType = root->GetAttribute("type");
-  if (vtkXMLDataElement* data = dataType ? findNested(root, dataType) : nullptr) checkPointArraySizes(data, in, fr, path);
+  if (vtkXMLDataElement* data = dataType ? findNested(root, dataType) : nullptr)
+    checkPointArraySizes(data, in, fr, path);
 }
 
 }  // namespace tg::io
