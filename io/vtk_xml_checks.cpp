@@ -3,10 +3,12 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <vector>
 
 #include <vtkAlgorithm.h>
 #include <vtkInformation.h>
@@ -253,6 +255,37 @@ vtkXMLDataElement* findNested(vtkXMLDataElement* e, const char* name) {
   return nullptr;
 }
 
+// VTK sizes a structured dataset's arrays by its WholeExtent and fills in
+// each piece: points no piece covers kept whatever the memory held (two of
+// four tensors read as zeros, drawn). The pieces' boxes, cut at every piece
+// boundary, must cover the whole; more cells than that check can afford
+// are refused rather than trusted.
+void checkPiecesCover(const long long whole[6], const std::vector<std::array<long long, 6>>& pieces,
+                      const std::string& path) {
+  std::vector<long long> cuts[3];
+  std::uint64_t cells = 1;
+  for (int k = 0; k < 3; ++k) {
+    cuts[k] = {whole[2 * k], whole[2 * k + 1] + 1};
+    for (const auto& e : pieces) cuts[k].insert(cuts[k].end(), {e[2 * k], e[2 * k + 1] + 1});
+    std::sort(cuts[k].begin(), cuts[k].end());
+    cuts[k].erase(std::unique(cuts[k].begin(), cuts[k].end()), cuts[k].end());
+    cells *= cuts[k].size() - 1;
+  }
+  if (cells > (1u << 22))
+    fail(path, std::to_string(pieces.size()) + " pieces are too many to check that they cover the WholeExtent");
+  std::vector<char> covered(std::size_t(cells), 0);
+  auto index = [&](int k, long long v) {
+    return std::size_t(std::lower_bound(cuts[k].begin(), cuts[k].end(), v) - cuts[k].begin());
+  };
+  const std::size_t nx = cuts[0].size() - 1, ny = cuts[1].size() - 1;
+  for (const auto& e : pieces)
+    for (std::size_t z = index(2, e[4]); z < index(2, e[5] + 1); ++z)
+      for (std::size_t y = index(1, e[2]); y < index(1, e[3] + 1); ++y)
+        for (std::size_t x = index(0, e[0]); x < index(0, e[1] + 1); ++x) covered[x + nx * (y + ny * z)] = 1;
+  if (std::find(covered.begin(), covered.end(), 0) != covered.end())
+    fail(path, "its pieces leave part of the WholeExtent uncovered: those points would be left unset");
+}
+
 // A structured dataset's numbers VTK would otherwise replace by defaults
 // when they do not parse (Spacing="nan 1 1" became spacing 1), and pieces
 // outside the whole extent, whose points VTK leaves uninitialised.
@@ -273,6 +306,7 @@ void checkStructured(vtkXMLDataElement* root, const std::string& path) {
   long long whole[6];
   if (!data->GetAttribute("WholeExtent")) return;
   if (data->GetVectorAttribute("WholeExtent", 6, whole) != 6) fail(path, "WholeExtent is not six integers");
+  std::vector<std::array<long long, 6>> pieces;
   for (int p = 0; p < data->GetNumberOfNestedElements(); ++p) {
     vtkXMLDataElement* piece = data->GetNestedElement(p);
     long long e[6];
@@ -281,7 +315,9 @@ void checkStructured(vtkXMLDataElement* root, const std::string& path) {
     for (int k = 0; k < 3; ++k)
       if (e[2 * k] < whole[2 * k] || e[2 * k + 1] > whole[2 * k + 1] || e[2 * k] > e[2 * k + 1])
         fail(path, "a piece's Extent lies outside the WholeExtent: its points would be left unset");
+    pieces.push_back({e[0], e[1], e[2], e[3], e[4], e[5]});
   }
+  checkPiecesCover(whole, pieces, path);
 }
 
 }  // namespace

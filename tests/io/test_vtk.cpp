@@ -222,6 +222,34 @@ TEST(Vtk, PointArraysHoldingOtherThanTheirPointsNeedAreRefused) {
   }
 }
 
+// VTK sizes a structured dataset by its WholeExtent and fills it piece by
+// piece: points no piece covers kept whatever the memory held, and were
+// drawn (as zeros, in a fresh process). Pieces that overlap, as VTK's own
+// writer makes them, and together cover the whole, read.
+TEST(Vtk, StructuredPiecesMustCoverTheWholeExtent) {
+  auto image = [](const std::vector<std::pair<int, int>>& pieces) {
+    std::string xml = "<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\" version=\"0.1\">\n<ImageData "
+                      "WholeExtent=\"0 3 0 0 0 0\" Origin=\"0 0 0\" Spacing=\"1 1 1\">\n";
+    for (const auto& [lo, hi] : pieces) {
+      xml += "<Piece Extent=\"" + std::to_string(lo) + " " + std::to_string(hi) + " 0 0 0 0\"><PointData "
+             "Tensors=\"t\"><DataArray type=\"Float32\" Name=\"t\" NumberOfComponents=\"9\" format=\"ascii\">";
+      for (int i = lo; i <= hi; ++i) xml += "1 0 0 0 2 0 0 0 3 ";
+      xml += "</DataArray></PointData></Piece>\n";
+    }
+    return xml + "</ImageData>\n</VTKFile>\n";
+  };
+  const fs::path d = tmpDir();
+  test::writeFile(d / "tiled.vti", image({{0, 1}, {1, 3}}));
+  const io::TensorField f = io::readTensorField((d / "tiled.vti").string(), {});
+  ASSERT_EQ(f.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(f.tensors[6 * i + 5], 3.0f) << i;
+  for (const auto& pieces : {std::vector<std::pair<int, int>>{{0, 1}}, {{0, 1}, {3, 3}}}) {
+    test::writeFile(d / "holes.vti", image(pieces));
+    const std::string msg = errorOf(d / "holes.vti");
+    EXPECT_NE(msg.find("its pieces leave part of the WholeExtent uncovered"), std::string::npos) << msg;
+  }
+}
+
 TEST(Vtk, ACorruptBodyThatCrashesVtkIsReportedNotFatal) {
   // Found by fuzz_vtk: VTK 9.1's legacy reader dereferences null on this
   // binary body after every header check passes. The child-process guard
