@@ -278,6 +278,13 @@ void checkPiecesCover(const long long whole[6], const std::vector<std::array<lon
     return std::size_t(std::lower_bound(cuts[k].begin(), cuts[k].end(), v) - cuts[k].begin());
   };
   const std::size_t nx = cuts[0].size() - 1, ny = cuts[1].size() - 1;
+  std::uint64_t work = 0;
+  for (const auto& e : pieces) {
+    work += std::uint64_t(index(0, e[1] + 1) - index(0, e[0])) * (index(1, e[3] + 1) - index(1, e[2])) *
+            (index(2, e[5] + 1) - index(2, e[4]));
+    if (work > (1u << 26))
+      fail(path, std::to_string(pieces.size()) + " pieces are too many to check that they cover the WholeExtent");
+  }
   for (const auto& e : pieces)
     for (std::size_t z = index(2, e[4]); z < index(2, e[5] + 1); ++z)
       for (std::size_t y = index(1, e[2]); y < index(1, e[3] + 1); ++y)
