@@ -25,8 +25,9 @@ TensorField readNrrd(const std::string& path, const ReadOptions& opt);
 ScalarVolume readNrrdScalar(const std::string& path, const int* dims);
 std::vector<std::string> nrrdDataFiles(const std::string& header);
 // The header text before Teem parses it: at most 4096 key:=value pairs and
-// comment lines, and no field line longer than 512 bytes (Teem's error
-// messages overflow a stack buffer on longer ones). `in` is left at its start.
+// comment lines, no field line longer than 512 bytes (Teem's error messages
+// overflow a stack buffer on longer ones), no line beyond 1 MiB and no
+// header beyond 16 MiB. `in` is left at its start.
 void checkNrrdHeaderText(const char* who, const std::string& path, FILE* in);
 // What nrrdDataFiles refuses in a header Teem can parse (a data file range or
 // format too long to step through): readNrrd says so before Teem opens any.

@@ -103,12 +103,16 @@ constexpr std::size_t kMaxKeyValues = 4096;
 // Real field lines stay under 300 bytes (space directions at 17 digits);
 // comments, key:=value pairs and content are never quoted, and may be long.
 constexpr std::size_t kMaxFieldLine = 512;
+// Teem reads each line whole into memory, in the parent too: bounds on any
+// line and on the header, far beyond real headers, keep a file of one
+// endless line or line after line from costing memory or time.
+constexpr std::size_t kMaxLine = 1 << 20, kMaxHeader = 16 << 20;
 
 }  // namespace
 
 void impl::checkNrrdHeaderText(const char* who, const std::string& path, FILE* in) {
   auto refuse = [&](const std::string& what) { throw InputError(std::string(who) + ": " + path + ": " + what); };
-  std::size_t pairs = 0, comments = 0, line = 1, length = 0;
+  std::size_t pairs = 0, comments = 0, line = 1, length = 0, total = 0;
   bool free = false, field = false;  // this line: free text (comment, key:=value, content); a "key: " seen
   std::string start;
   int prev = '\n';
@@ -130,6 +134,8 @@ void impl::checkNrrdHeaderText(const char* who, const std::string& path, FILE* i
       continue;
     }
     ++length;
+    if (++total > kMaxHeader) refuse("header has no empty line ending it within its first 16 MiB");
+    if (length > kMaxLine) refuse("header line " + std::to_string(line) + " is longer than 1 MiB");
     if (length == 1 && c == '#') {
       free = true;
       if (++comments > kMaxKeyValues)

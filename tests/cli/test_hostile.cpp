@@ -355,6 +355,9 @@ TEST(Hostile, LongNrrdFieldLinesAreRefusedBeforeTeemQuotesThem) {
   const Limited ok = runLimited("info " + (dir() / "longtext.nrrd").string());
   EXPECT_EQ(ok.r.code, 0) << ok.r.err;
   EXPECT_NE(ok.r.out.find("1 drawn"), std::string::npos) << ok.r.out;
+  // But no line is read whole beyond 1 MiB, which Teem would hold in memory.
+  write(dir() / "hugecomment.nrrd", "NRRD0004\n# " + std::string(2 << 20, 'z') + "\ntype: float\n" + body + data);
+  expectRefused("hugecomment.nrrd", "header line 2 is longer than 1 MiB");
 }
 
 // Cells whose point ids lie outside the points (VTK's readers keep them as
