@@ -4,6 +4,7 @@
 // readers.h, writers.h and mesh_reader.h instead, which find the module.
 #include <cstddef>
 #include <cstdint>
+#include <cstdio>
 #include <string>
 #include <vector>
 
@@ -23,6 +24,11 @@ std::string encodeVtk(const TensorField& f, const std::string& path);
 TensorField readNrrd(const std::string& path, const ReadOptions& opt);
 ScalarVolume readNrrdScalar(const std::string& path, const int* dims);
 std::vector<std::string> nrrdDataFiles(const std::string& header);
+// The header text before Teem parses it: at most 4096 key:=value pairs and
+// comment lines, no field line longer than 512 bytes (Teem's error messages
+// overflow a stack buffer on longer ones), no line beyond 1 MiB and no
+// header beyond 16 MiB. `in` is left at its start.
+void checkNrrdHeaderText(const char* who, const std::string& path, FILE* in);
 // What nrrdDataFiles refuses in a header Teem can parse (a data file range or
 // format too long to step through): readNrrd says so before Teem opens any.
 struct NrrdDataFilesRefused : InputError {

@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <array>
 #include <cfloat>
 #include <cmath>
 #include <cstring>
@@ -15,6 +16,8 @@
 #include <vtkAlgorithm.h>
 #include <vtkCellArray.h>
 #include <vtkCellData.h>
+#include <vtkCellType.h>
+#include <vtkGenericCell.h>
 #include <vtkIdList.h>
 #include <vtkIdTypeArray.h>
 #include <vtkDataSetSurfaceFilter.h>
@@ -25,6 +28,7 @@
 #include <vtkSTLReader.h>
 #include <vtkSmartPointer.h>
 #include <vtkTriangleFilter.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 
 #include "io/format_impl.h"
@@ -117,6 +121,78 @@ bool finiteFloat(const double p[3], const NonFiniteText* nonFinite, double out[3
     fits &= std::abs(out[c]) <= double(FLT_MAX);  // false for NaN
   }
   return fits;
+}
+
+// A cell of a fixed-size type must list that many points: VTK's filters
+// read a tetra's fourth id whatever the file gave (past the connectivity for
+// a tetra of three ids, drawn; a crash for a hexahedron of four). VTK's own
+// cells say their size; polygons and the like (0) vary, and Lagrange and
+// Bézier cells (68 on) have at least theirs.
+void checkCellSizes(vtkUnstructuredGrid* ug, const std::string& path) {
+  vtkUnsignedCharArray* types = ug->GetCellTypesArray();
+  vtkCellArray* cells = ug->GetCells();
+  if (!types || !cells || types->GetNumberOfValues() != cells->GetNumberOfCells())
+    fail(path, "its cell types do not match its cells");
+  std::array<int, 256> size;
+  size.fill(-1);
+  for (vtkIdType c = 0; c < cells->GetNumberOfCells(); ++c) {
+    const unsigned char type = types->GetValue(c);
+    if (size[type] < 0) {
+      vtkCell* cell = vtkGenericCell::InstantiateCell(type);
+      size[type] = cell ? int(cell->GetNumberOfPoints()) : 0;
+      if (cell) cell->Delete();
+    }
+    const vtkIdType n = cells->GetCellSize(c);
+    if (size[type] > 0 && (type >= VTK_LAGRANGE_CURVE ? n < size[type] : n != size[type]))
+      fail(path, "cell " + std::to_string(c) + " of type " + std::to_string(int(type)) + " lists " +
+                     std::to_string(n) + " points; that type has " + std::to_string(size[type]) +
+                     (type >= VTK_LAGRANGE_CURVE ? " or more" : ""));
+  }
+}
+
+// VTK's readers keep a cell's point ids as the file gives them (legacy,
+// XML, OBJ and PLY alike). An id outside the points made the filters and
+// toMesh read, and toMesh's remap write, outside their arrays: a negative id
+// drew a triangle to a "vertex" read from before the points, a large one
+// crashed. Checked before anything walks the cells.
+void checkCellPoints(vtkDataSet* ds, const std::string& path) {
+  const vtkIdType n = ds->GetNumberOfPoints();
+  auto outside = [&](double id) {
+    fail(path, "a cell refers to point " + std::to_string(std::int64_t(id)) + ", but the file has " + std::to_string(n) +
+                   " points (0.." + std::to_string(n - 1) + ")");
+  };
+  auto checkCells = [&](vtkCellArray* cells) {
+    if (!cells) return;
+    if (!cells->IsValid()) fail(path, "its cell offsets do not index its cell connectivity");
+    if (cells->GetNumberOfConnectivityIds() == 0) return;
+    double range[2];
+    cells->GetConnectivityArray()->GetRange(range, 0);
+    if (range[0] < 0) outside(range[0]);
+    if (range[1] >= double(n)) outside(range[1]);
+  };
+  if (auto* pd = vtkPolyData::SafeDownCast(ds)) {
+    for (vtkCellArray* cells : {pd->GetVerts(), pd->GetLines(), pd->GetPolys(), pd->GetStrips()}) checkCells(cells);
+  } else if (auto* ug = vtkUnstructuredGrid::SafeDownCast(ds)) {
+    checkCells(ug->GetCells());
+    checkCellSizes(ug, path);
+    // Polyhedra: per cell, a face count, then each face's size and ids.
+    vtkIdTypeArray* faces = ug->GetFaces();
+    vtkIdTypeArray* at = ug->GetFaceLocations();
+    if (!faces || !at) return;
+    const vtkIdType size = faces->GetNumberOfValues();
+    for (vtkIdType c = 0; c < at->GetNumberOfValues(); ++c) {
+      vtkIdType k = at->GetValue(c);
+      if (k < 0) continue;  // not a polyhedron
+      if (k >= size) fail(path, "a polyhedron's faces lie beyond its face list");
+      for (vtkIdType f = faces->GetValue(k++); f > 0; --f) {
+        if (k >= size) fail(path, "a polyhedron's faces lie beyond its face list");
+        const vtkIdType m = faces->GetValue(k++);
+        if (m < 0 || m > size - k) fail(path, "a polyhedron's faces lie beyond its face list");
+        for (const vtkIdType end = k + m; k < end; ++k)
+          if (const vtkIdType id = faces->GetValue(k); id < 0 || id >= n) outside(double(id));
+      }
+    }
+  }
 }
 
 constexpr const char* kSourceCell = "tg_source_cell";
@@ -241,6 +317,7 @@ MeshData impl::readMesh(const std::string& path, MeshSource source, std::uint64_
     runVtk(reader, path);
     auto* ds = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
     if (!ds) fail(path, "VTK read no dataset");
+    checkCellPoints(ds, path);
     std::size_t skipped = 0;
     const std::vector<char> bad = markBadCells(ds, nullptr, skipped);
     m = toMesh(triangulate(ds, path), path, nullptr, bad, skipped);
@@ -273,6 +350,7 @@ MeshData impl::readMesh(const std::string& path, MeshSource source, std::uint64_
         fail(path, "--mesh-from-input: the input has points but no cells, so no FEM mesh to draw the boundary of");
     }
     if (ds->GetNumberOfCells() == 0) fail(path, "no cells: nothing to draw");
+    checkCellPoints(ds, path);
     const NonFiniteText* nonFinite = read.nonFinite.empty() ? nullptr : &read.nonFinite;
     std::size_t skipped = 0;
     const std::vector<char> bad = markBadCells(ds, nonFinite, skipped);

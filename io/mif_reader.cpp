@@ -1,9 +1,10 @@
 // MRtrix images, read by hand: no library in our stack reads them. A .mif
 // holds its header and data; a .mih is a header naming a data file. The
-// header is text ("mrtrix image", then "key: value" lines, then "END"); every
-// value that sizes or places the data is checked, and the data file's size
-// against it, before anything is allocated from it. Data is then streamed in
-// fixed-size chunks, in file order, into the VolumeSink.
+// header is text ("mrtrix image", then "key: value" lines, then "END", which a
+// .mih may leave out); every value that sizes or places the data is checked,
+// and the data file's size against it, before anything is allocated from it.
+// Data is then streamed in fixed-size chunks, in file order, into the
+// VolumeSink.
 // Choices where MRtrix is looser: dim, vox, layout, datatype and scaling may
 // not repeat; data split over several files, Bit and complex types are
 // refused; a transform whose 3x3 is not orthonormal is replaced by its polar
@@ -135,6 +136,14 @@ struct Header {
   std::uint64_t values = 0;     // product of dim
 };
 
+// A .mih is all header: MRtrix 3.0's mrconvert writes it without an END
+// line, and MRtrix's parser stops at END or the end of the file. A .mif
+// must say where its header ends, since its data follows.
+bool headerMayEndAtEof(const std::string& path) {
+  const std::string name = std::filesystem::path(path).filename().string();
+  return name.size() > 4 && lower(std::string_view(name).substr(name.size() - 4)) == ".mih";
+}
+
 // Hands each "key: value" entry up to END, in order, to entry(key, value);
 // none is kept, so 16 MiB of comments cost no more than their buffer. Keys
 // are lower case and '#' starts a comment, as in MRtrix's own parser.
@@ -149,7 +158,11 @@ void readEntries(const std::string& path, int fd, std::uint64_t size, std::uint6
       if (buf.size() - lineStart > kMaxLineBytes)
         fail(path, "header line " + std::to_string(lineNo + 1) + " is longer than 1 MiB");
       if (buf.size() >= kMaxHeaderBytes) fail(path, "no END line within the first 16 MiB");
-      if (buf.size() >= size) fail(path, "header has no END line");
+      if (buf.size() >= size) {
+        if (!headerMayEndAtEof(path)) fail(path, "header has no END line");
+        headerEnd = size;
+        return;
+      }
       const std::size_t old = buf.size();
       const std::size_t n = std::size_t(std::min<std::uint64_t>(kReadBytes, size - old));
       buf.resize(old + n);

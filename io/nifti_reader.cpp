@@ -1,9 +1,10 @@
 // NIfTI-1/-2 through libnifti2. The header is read alone and checked against
-// the file; the data is then streamed volume by volume through znz (which
-// also reads .nii.gz), into one float per kept component.
+// the file; the data is then streamed volume by volume (through znz, or zlib
+// for .nii.gz), into one float per kept component.
 #include <fcntl.h>
 #include <nifti/nifti2_io.h>
 #include <unistd.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <bit>
@@ -179,16 +180,69 @@ void checkDataSize(const std::string& path, const nifti_image& nim, std::uint64_
                    std::to_string(avail) + (gz ? " compressed" : ""));
 }
 
+// The image file's bytes from the data offset on. A .gz image is read with
+// zlib itself rather than through znz: znzread turns a zlib error into a
+// count near 2^64 and cannot say what it was, and a stream cut at its
+// trailer would go unnoticed; gzerror tells both (as the NRRD reader does).
+class ImageBytes {
+ public:
+  ImageBytes(const std::string& path, const nifti_image& nim) : path_(path) {
+    const std::string cannot = std::string("cannot open image file ") + nim.iname;
+    if (nifti_is_gzfile(nim.iname)) {
+      gz_.reset(gzopen(nim.iname, "rb"));
+      if (!gz_) fail(path, cannot);
+      gzbuffer(gz_.get(), 1 << 18);
+      if (gzseek(gz_.get(), z_off_t(nim.iname_offset), SEEK_SET) < 0) fail(path, "cannot seek to the image data");
+    } else {
+      plain_.reset(znzopen(nim.iname, "rb", 0));
+      if (!plain_) fail(path, cannot);
+      if (znzseek(plain_.get(), nim.iname_offset, SEEK_SET) < 0) fail(path, "cannot seek to the image data");
+    }
+  }
+  // Up to n bytes; fewer only where the data ends.
+  std::size_t read(char* dst, std::size_t n) {
+    if (!gz_) return znzread(dst, 1, n, plain_.get());
+    const int got = gzread(gz_.get(), dst, unsigned(n));
+    if (got < 0) corrupt();
+    return std::size_t(got);
+  }
+  // One read past the data reaches the end of a gzip stream, where zlib
+  // checks its CRC: corrupt data that still inflated is refused.
+  void finish() {
+    if (!gz_ || gzdirect(gz_.get())) return;
+    char extra;
+    if (gzread(gz_.get(), &extra, 1) < 0) corrupt();
+    int code = Z_OK;
+    gzerror(gz_.get(), &code);
+    if (code != Z_OK && code != Z_STREAM_END)
+      fail(path_, "gzip data is corrupt: the stream ends without its trailer (no CRC to check the data by)");
+  }
+
+ private:
+  [[noreturn]] void corrupt() {
+    int code = Z_OK;
+    std::string why = gzerror(gz_.get(), &code);
+    // zlib begins its message with the file's name.
+    if (const auto colon = why.find(": "); colon != std::string::npos) why.erase(0, colon + 2);
+    fail(path_, "gzip data is corrupt: " + why);
+  }
+  struct GzClose {
+    void operator()(gzFile g) const { gzclose(g); }
+  };
+  struct ZnzClose {
+    void operator()(znzFile z) const { Xznzclose(&z); }
+  };
+  std::string path_;
+  std::unique_ptr<gzFile_s, GzClose> gz_;
+  std::unique_ptr<std::remove_pointer_t<znzFile>, ZnzClose> plain_;
+};
+
 template <class Consume>
 void streamValues(const std::string& path, const nifti_image& nim, std::uint64_t count, Consume&& consume) {
   checkDataSize(path, nim, count);
   const auto load = loader(path, nim.datatype);
   const std::uint64_t tsize = std::uint64_t(nim.nbyper);
-  const bool gz = nifti_is_gzfile(nim.iname);
-  znzFile f = znzopen(nim.iname, "rb", gz);
-  if (znz_isnull(f)) fail(path, std::string("cannot open image file ") + nim.iname);
-  std::unique_ptr<std::remove_pointer_t<znzFile>, void (*)(znzFile)> guard(f, [](znzFile z) { Xznzclose(&z); });
-  if (znzseek(f, nim.iname_offset, SEEK_SET) < 0) fail(path, "cannot seek to the image data");
+  ImageBytes in(path, nim);
   const bool swap = nim.byteorder != nifti_short_order() && tsize > 1;
   const double slope = nim.scl_slope, inter = nim.scl_inter;
   const bool scaled = slope != 0.0 && std::isfinite(slope) && !(slope == 1.0 && inter == 0.0);
@@ -196,8 +250,8 @@ void streamValues(const std::string& path, const nifti_image& nim, std::uint64_t
   std::vector<char> buf(std::size_t(std::min<std::uint64_t>(kChunkBytes, count * tsize)));
   for (std::uint64_t done = 0; done < count;) {
     const std::size_t want = std::size_t(std::min<std::uint64_t>(kChunkBytes / tsize, count - done));
-    // Whole bytes: znzread counts a partly read last value as read.
-    if (const std::size_t got = znzread(buf.data(), 1, want * tsize, f); got != want * tsize)
+    // Whole bytes: a partly read last value is not a value.
+    if (const std::size_t got = in.read(buf.data(), want * tsize); got != want * tsize)
       fail(path, "data is truncated: the header describes " + std::to_string(count) + " values, the image ends after " +
                      std::to_string(done + got / tsize));
     if (swap) nifti_swap_Nbytes(std::int64_t(want), int(tsize), buf.data());
@@ -207,6 +261,7 @@ void streamValues(const std::string& path, const nifti_image& nim, std::uint64_t
     }
     done += want;
   }
+  in.finish();
 }
 
 // The affine in use: sform if coded, else qform, else pixdim (NIfTI's "method 1").
@@ -218,6 +273,19 @@ void placement(const nifti_image& nim, VolumeGeometry& g, TensorField& f) {
       g.originWC[r] = m->m[r][3];
     }
     f.space = nim.sform_code > 0 ? "RAS (sform)" : "RAS (qform)";
+    // Two placements in one file: whichever is right, a reader that takes
+    // the other draws elsewhere, so the disagreement is said (as MRtrix does).
+    if (nim.sform_code > 0 && nim.qform_code > 0) {
+      double diff = 0, step = 0;
+      for (int r = 0; r < 3; ++r)
+        for (int c = 0; c < 4; ++c) {
+          diff = std::max(diff, std::abs(nim.sto_xyz.m[r][c] - nim.qto_xyz.m[r][c]));
+          if (c < 3) step = std::max(step, std::abs(nim.sto_xyz.m[r][c]));
+        }
+      if (!(diff <= 1e-3 * step))
+        f.warnings.push_back("the sform and qform disagree (by up to " + std::to_string(diff) +
+                             "); the sform is used, as FSL, nibabel and MRtrix use it");
+    }
   } else {
     for (int k = 0; k < 3; ++k) g.axesWC[4 * k] = nim.pixdim[k + 1] > 0 ? nim.pixdim[k + 1] : 1.0;
     f.space = "voxel grid (no sform or qform)";
@@ -349,6 +417,12 @@ TensorField impl::readNifti(const std::string& path, const ReadOptions& opt) {
     sink.pushAccepted(kept.empty() ? r : kept[r], v6);
   }
   sink.finish();
+  // A file that says its six values are something else (a vector, a general
+  // 2x3 matrix, labels, a time series) is read as asked, but said to be.
+  if (nim->intent_code != NIFTI_INTENT_NONE && nim->intent_code != NIFTI_INTENT_SYMMATRIX &&
+      nim->intent_code != NIFTI_INTENT_ESTIMATE)
+    f.warnings.push_back(std::string("the header's intent is ") + nifti_intent_string(nim->intent_code) + " (" +
+                         std::to_string(nim->intent_code) + "), not a symmetric matrix: its six values may be no tensor");
   const std::string implausible = implausibleLayoutWarning(comps.floats(), std::size_t(keptCount), *conv.layout);
   if (!implausible.empty()) f.warnings.push_back(implausible);
   return f;

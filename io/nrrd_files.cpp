@@ -92,12 +92,75 @@ void checkDataFileRange(const std::string& header, const char* value) {
   if (in >> format >> lo >> hi >> step && format.find('%') != std::string::npos) rangeCount(header, lo, hi, step);
 }
 
+// Teem adds each key:=value pair with a linear search of those before it, so
+// a header of 200k pairs took 84 s (and 300k comment lines 4 s); real
+// headers have a few dozen.
+constexpr std::size_t kMaxKeyValues = 4096;
+// Teem's biff formats each error into a 1 KiB stack buffer with vsprintf,
+// and the field parsers quote the line they refuse: a field line of about
+// 1.1 KB overflowed it, and glibc's fortify check aborted the process (the
+// parent too, which lists an input's data files to protect them from -o).
+// Real field lines stay under 300 bytes (space directions at 17 digits);
+// comments, key:=value pairs and content are never quoted, and may be long.
+constexpr std::size_t kMaxFieldLine = 512;
+// Teem reads each line whole into memory, in the parent too: bounds on any
+// line and on the header, far beyond real headers, keep a file of one
+// endless line or line after line from costing memory or time.
+constexpr std::size_t kMaxLine = 1 << 20, kMaxHeader = 16 << 20;
+
 }  // namespace
+
+void impl::checkNrrdHeaderText(const char* who, const std::string& path, FILE* in) {
+  auto refuse = [&](const std::string& what) { throw InputError(std::string(who) + ": " + path + ": " + what); };
+  std::size_t pairs = 0, comments = 0, line = 1, length = 0, total = 0;
+  bool free = false, field = false;  // this line: free text (comment, key:=value, content); a "key: " seen
+  std::string start;
+  int prev = '\n';
+  // Line 1 is the magic, which Teem quotes only in part.
+  auto check = [&] {
+    if (!free && line > 1 && length > kMaxFieldLine)
+      refuse("header line " + std::to_string(line) + " is " + std::to_string(length) + " bytes long; only comments, " +
+             "key:=value pairs and content may be longer than " + std::to_string(kMaxFieldLine));
+  };
+  // The header ends at its first empty line (CRLF headers included).
+  for (int c; (c = std::fgetc(in)) != EOF; prev = c) {
+    if (c == '\n') {
+      if (length == 0 || (length == 1 && prev == '\r')) break;
+      check();
+      ++line;
+      length = 0;
+      free = field = false;
+      start.clear();
+      continue;
+    }
+    ++length;
+    if (++total > kMaxHeader) refuse("header has no empty line ending it within its first 16 MiB");
+    if (length > kMaxLine) refuse("header line " + std::to_string(line) + " is longer than 1 MiB");
+    if (length == 1 && c == '#') {
+      free = true;
+      if (++comments > kMaxKeyValues)
+        refuse("header has more than " + std::to_string(kMaxKeyValues) + " comment lines");
+    }
+    if (c == '=' && prev == ':') {
+      free |= !field;
+      if (++pairs > kMaxKeyValues) refuse("header has more than " + std::to_string(kMaxKeyValues) + " key:=value pairs");
+    }
+    field |= c == ' ' && prev == ':';
+    if (start.size() < 8) {
+      start.push_back(char(c));
+      free |= start == "content:";
+    }
+  }
+  check();
+  std::clearerr(in);
+  std::rewind(in);
+}
 
 std::vector<std::string> impl::nrrdDataFiles(const std::string& header) {
   HeaderState h;
   h.file = openRegular(header);
   if (!h.file) return {};  // missing or not a regular file: the reader says so
+  checkNrrdHeaderText("nrrdDataFiles", header, h.file);
   const std::filesystem::path hp(header);
   const std::string dir = hp.has_parent_path() ? hp.parent_path().string() : ".";
   unsigned len = 0;

@@ -48,31 +48,13 @@ struct Header {
   }
 };
 
-// Teem adds each key:=value pair with a linear search of those before it, so
-// a header of 200k pairs took 84 s (and 300k comment lines 4 s). Counted in the header's text (up to its
-// first empty line) before Teem sees it; real headers have a few dozen.
-constexpr std::size_t kMaxKeyValues = 4096;
-
-void checkKeyValueCount(const std::string& path) {
-  std::unique_ptr<FILE, int (*)(FILE*)> in(std::fopen(path.c_str(), "rb"), &std::fclose);
-  if (!in) fail(path, "cannot open file");
-  std::size_t pairs = 0, comments = 0;
-  int prev = '\n', c;
-  // A pair is a line holding ":="; Teem keeps comments in a list that grows
-  // the same way. The header ends at an empty line.
-  while ((c = std::fgetc(in.get())) != EOF) {
-    if (c == '\n' && prev == '\n') break;
-    if (c == '=' && prev == ':' && ++pairs > kMaxKeyValues)
-      fail(path, "header has more than " + std::to_string(kMaxKeyValues) + " key:=value pairs");
-    if (c == '#' && prev == '\n' && ++comments > kMaxKeyValues)
-      fail(path, "header has more than " + std::to_string(kMaxKeyValues) + " comment lines");
-    prev = c;
-  }
-}
-
 // The header only, with the data file left open at the first data byte.
 std::unique_ptr<Header> readHeader(const std::string& path) {
-  checkKeyValueCount(path);
+  {
+    std::unique_ptr<FILE, int (*)(FILE*)> in(std::fopen(path.c_str(), "rb"), &std::fclose);
+    if (!in) fail(path, "cannot open file");
+    impl::checkNrrdHeaderText("readNrrd", path, in.get());
+  }
   // Teem opens its data files in nrrdLoad even with skipData, and the open of
   // a FIFO blocks; stat tells without opening.
   std::vector<std::string> dataFiles;
@@ -366,11 +348,13 @@ VolumeGeometry geometry(const std::string& path, const Nrrd* n, unsigned first, 
 }
 
 // World space: RAS, with LPS and LAS turned into it (positions here; the
-// tensors by the same signs, which `flip` returns); others as given.
+// tensors by the same signs, which `flip` returns); others as given, but for
+// 3D-left-handed, whose x is negated as LAS's is: drawn in our right-handed
+// world as it stands, every shape would be its mirror image.
 void toRas(const Nrrd* n, VolumeGeometry& g, double flip[3]) {
   flip[0] = flip[1] = flip[2] = 1;
   if (n->space == nrrdSpaceLeftPosteriorSuperior || n->space == nrrdSpaceScannerXYZ) flip[0] = flip[1] = -1;
-  if (n->space == nrrdSpaceLeftAnteriorSuperior) flip[0] = -1;
+  if (n->space == nrrdSpaceLeftAnteriorSuperior || n->space == nrrdSpace3DLeftHanded) flip[0] = -1;
   for (int r = 0; r < 3; ++r) {
     g.originWC[r] *= flip[r];
     for (int c = 0; c < 3; ++c) g.axesWC[3 * r + c] *= flip[r];
@@ -421,10 +405,11 @@ TensorField impl::readNrrd(const std::string& path, const ReadOptions& opt) {
   double flip[3];
   toRas(n, g, flip);
   const int space = n->space;
+  const std::string target = space == nrrdSpace3DLeftHanded ? "3D-right-handed" : "RAS";
   if (space != nrrdSpaceUnknown) {
     f.space = std::string("RAS");
     if (space != nrrdSpaceRightAnteriorSuperior)
-      f.space = flip[0] < 0 ? std::string("RAS (converted from ") + airEnumStr(nrrdSpace, space) + ")"
+      f.space = flip[0] < 0 ? target + " (converted from " + airEnumStr(nrrdSpace, space) + ")"
                             : std::string(airEnumStr(nrrdSpace, space));
   }
   // NRRD: "measurement frame" vectors are the columns of M (Teem stores
@@ -457,7 +442,7 @@ TensorField impl::readNrrd(const std::string& path, const ReadOptions& opt) {
                                : "the grid's axes (no space or measurement frame), not rotated";
   if (flip[0] < 0)
     f.frame += std::string("; then ") + (flip[1] < 0 ? "x and y" : "x") + " negated, " +
-               airEnumStr(nrrdSpace, space) + " to RAS";
+               airEnumStr(nrrdSpace, space) + " to " + target;
 
   f.description = std::string("NRRD volume, ") + std::to_string(g.dims[0]) + "x" + std::to_string(g.dims[1]) + "x" +
                   std::to_string(g.dims[2]) + ", " + airEnumStr(nrrdType, n->type) + ", " + h->nio->encoding->name +

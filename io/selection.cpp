@@ -4,6 +4,7 @@
 #include <charconv>
 #include <cstring>
 #include <cmath>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -55,7 +56,8 @@ std::string maskGridMismatch(const int got[3], const int* want) {
              " MiB, more than the " + std::to_string(budget >> 20) + " MiB this load may use";
     return "";
   }
-  if (std::equal(got, got + 3, want)) return "";
+  // Reordered axes are the same grid, if the placements say so (Selector).
+  if (std::is_permutation(got, got + 3, want)) return "";
   return "mask grid " + gridText(got) + " differs from the tensor grid " + gridText(want);
 }
 
@@ -81,11 +83,75 @@ namespace {
 // A mask is applied voxel by voxel, so it must lie where the tensors do:
 // the same dims on another placement (another origin, spacing or axis order)
 // would mask the wrong voxels. Tolerance: 1e-3 of the grid's longest step.
-void checkSamePlacement(const GridPlacement& tensors, const GridPlacement& mask, const std::string& maskPath,
-                        const std::string& path) {
+double placementTolerance(const GridPlacement& tensors) {
   double step = 0;
   for (double a : tensors.axesWC) step = std::max(step, std::abs(a));
-  const double tol = 1e-3 * std::max(step, 1e-30);
+  return 1e-3 * std::max(step, 1e-30);
+}
+
+// The mask's values in the tensors' voxel order when its grid holds the same
+// points with its axes reversed or reordered (mrconvert stores the mask of a
+// LAS NIfTI with i reversed, near RAS); nullopt when it does not.
+std::optional<std::vector<float>> alignedMask(const GridPlacement& t, const int dims[3], const ScalarVolume& m) {
+  const GridPlacement& p = *m.placement;
+  const double tol = placementTolerance(t);
+  int axis[3], sign[3];
+  bool used[3] = {false, false, false};
+  for (int k = 0; k < 3; ++k) {
+    bool found = false;
+    for (int j = 0; j < 3 && !found; ++j)
+      for (int s = 1; s >= -1 && !found; s -= 2) {
+        if (used[j]) continue;
+        bool same = true;
+        for (int r = 0; r < 3; ++r) same = same && std::abs(t.axesWC[3 * r + k] - s * p.axesWC[3 * r + j]) <= tol;
+        if (same) {
+          axis[k] = j, sign[k] = s, used[j] = found = true;
+        }
+      }
+    if (!found || m.dims[axis[k]] != dims[k]) return std::nullopt;
+  }
+  // The tensors' first voxel in the mask's index space: along each tensor
+  // axis k, (t.origin - p.origin) . a_k / |a_k|^2 steps of the mask's axis.
+  long long first[3];
+  double rest[3];
+  for (int r = 0; r < 3; ++r) rest[r] = t.originWC[r] - p.originWC[r];
+  for (int k = 0; k < 3; ++k) {
+    double dot = 0, norm = 0;
+    for (int r = 0; r < 3; ++r) {
+      dot += rest[r] * t.axesWC[3 * r + k];
+      norm += t.axesWC[3 * r + k] * t.axesWC[3 * r + k];
+    }
+    const double steps = sign[k] * dot / norm;
+    first[axis[k]] = std::llround(steps);
+    if (!(std::abs(steps - double(first[axis[k]])) * std::sqrt(norm) <= tol)) return std::nullopt;
+  }
+  // What the axes leave of the offset must be nothing; and every voxel inside.
+  for (int r = 0; r < 3; ++r) {
+    double off = rest[r];
+    for (int k = 0; k < 3; ++k) off -= double(sign[k] * first[axis[k]]) * t.axesWC[3 * r + k];
+    if (!(std::abs(off) <= tol)) return std::nullopt;
+  }
+  for (int k = 0; k < 3; ++k) {
+    const long long last = first[axis[k]] + sign[k] * (dims[k] - 1);
+    if (std::min(first[axis[k]], last) < 0 || std::max(first[axis[k]], last) >= m.dims[axis[k]]) return std::nullopt;
+  }
+  const std::size_t voxels = std::size_t(dims[0]) * std::size_t(dims[1]) * std::size_t(dims[2]);
+  std::vector<float> out(voxels);
+  std::size_t v = 0;
+  long long at[3];
+  for (int i2 = 0; i2 < dims[2]; ++i2)
+    for (int i1 = 0; i1 < dims[1]; ++i1)
+      for (int i0 = 0; i0 < dims[0]; ++i0, ++v) {
+        const int i[3] = {i0, i1, i2};
+        for (int k = 0; k < 3; ++k) at[axis[k]] = first[axis[k]] + sign[k] * i[k];
+        out[v] = m.values[std::size_t(at[0] + m.dims[0] * (at[1] + (long long)m.dims[1] * at[2]))];
+      }
+  return out;
+}
+
+void checkSamePlacement(const GridPlacement& tensors, const GridPlacement& mask, const std::string& maskPath,
+                        const std::string& path) {
+  const double tol = placementTolerance(tensors);
   double worst = 0;
   for (int k = 0; k < 3; ++k) worst = std::max(worst, std::abs(tensors.originWC[k] - mask.originWC[k]));
   for (int k = 0; k < 9; ++k) worst = std::max(worst, std::abs(tensors.axesWC[k] - mask.axesWC[k]));
@@ -123,10 +189,22 @@ Selector::Selector(const Selection& sel, const std::string& path, const int* dim
   if (!sel.maskPath.empty()) {
     mask_ = readScalarVolume(sel.maskPath, dims_);
     const std::size_t voxels = std::size_t(dims_[0]) * std::size_t(dims_[1]) * std::size_t(dims_[2]);
-    if (!std::equal(dims_, dims_ + 3, mask_.dims) || mask_.values.size() != voxels)
+    if (mask_.values.size() != voxels || !std::is_permutation(dims_, dims_ + 3, mask_.dims))
       throw InputError("Selector: " + sel.maskPath + ": mask grid " + gridText(mask_.dims) +
                        " differs from the tensor grid " + gridText(dims_) + " of " + path);
-    if (placement && mask_.placement) checkSamePlacement(*placement, *mask_.placement, sel.maskPath, path);
+    // Masks are applied by voxel index: the same grid stored in another
+    // axis order is first put in the tensors' order, by where its voxels lie.
+    std::optional<std::vector<float>> aligned;
+    if (placement && mask_.placement) aligned = alignedMask(*placement, dims_, mask_);
+    if (aligned) {
+      mask_.values = std::move(*aligned);
+      std::copy(dims_, dims_ + 3, mask_.dims);
+    } else if (!std::equal(dims_, dims_ + 3, mask_.dims)) {
+      throw InputError("Selector: " + sel.maskPath + ": mask grid " + gridText(mask_.dims) +
+                       " differs from the tensor grid " + gridText(dims_) + " of " + path);
+    } else if (placement && mask_.placement) {
+      checkSamePlacement(*placement, *mask_.placement, sel.maskPath, path);
+    }
   }
 }
 

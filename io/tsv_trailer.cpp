@@ -42,6 +42,12 @@ bool readTsvStressTrailer(const std::string& path, std::uint64_t points, std::ve
                          " does not hold six numbers");
       p = r.ptr;
     }
+    // A seventh number means another layout than 3D-TSV's six, not one to
+    // read the first six of.
+    while (p < e && (*p == ' ' || *p == '\t' || *p == '\r')) ++p;
+    if (p != e)
+      throw InputError("readVtk: " + path + ": \"Cartesian Stress\" row " + std::to_string(i) +
+                       " holds more than six numbers (Sxx Syy Szz Syz Szx Sxy)");
     // Sxx Syy Szz Syz Szx Sxy -> row-major 3x3.
     const double m[9] = {s[0], s[5], s[4], s[5], s[1], s[3], s[4], s[3], s[2]};
     std::copy(m, m + 9, &full9[9 * i]);

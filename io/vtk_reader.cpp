@@ -18,8 +18,10 @@
 #include <vtkMatrix3x3.h>
 #include <vtkNew.h>
 #include <vtkPointData.h>
+#include <vtkRectilinearGrid.h>
 #include <vtkSmartPointer.h>
 #include <vtkStreamingDemandDrivenPipeline.h>
+#include <vtkStructuredGrid.h>
 #include <vtkXMLImageDataReader.h>
 #include <vtkXMLPolyDataReader.h>
 #include <vtkXMLStructuredGridReader.h>
@@ -178,6 +180,30 @@ std::uint64_t checkLegacyCounts(const std::string& path, std::uint64_t fileSize)
   return points;
 }
 
+// VTK makes a rectilinear grid's points from its coordinate arrays by index,
+// unchecked: X_COORDINATES shorter than DIMENSIONS gave points read past the
+// array's end, and they were drawn. A structured grid's cells index its
+// points by DIMENSIONS in the same way.
+void checkGridPoints(vtkDataSet* ds, const std::string& path) {
+  int d[3] = {0, 0, 0};
+  if (auto* rg = vtkRectilinearGrid::SafeDownCast(ds)) {
+    rg->GetDimensions(d);
+    vtkDataArray* coords[3] = {rg->GetXCoordinates(), rg->GetYCoordinates(), rg->GetZCoordinates()};
+    for (int k = 0; k < 3; ++k) {
+      const vtkIdType n = coords[k] ? coords[k]->GetNumberOfValues() : 0;
+      if (n != d[k])
+        fail(path, std::string(1, "XYZ"[k]) + "_COORDINATES hold " + std::to_string(n) + " values, DIMENSIONS say " +
+                       std::to_string(d[k]));
+    }
+  } else if (auto* sg = vtkStructuredGrid::SafeDownCast(ds)) {
+    sg->GetDimensions(d);
+    const long long want = (long long)d[0] * d[1] * d[2];
+    if (sg->GetNumberOfPoints() != want)
+      fail(path, "DIMENSIONS give " + std::to_string(want) + " points, the file has " +
+                     std::to_string(sg->GetNumberOfPoints()));
+  }
+}
+
 // Runs a reader whose counts are checked. Errors fail the read; the first
 // warning comes back in vtkSaid, for the caller to refuse unless it can
 // account for it. `legacyPoints`: what checkLegacyCounts found (0 for XML,
@@ -219,6 +245,7 @@ ReadResult runReader(vtkAlgorithm* reader, const std::string& path, std::uint64_
   check("VTK reader failed");
   auto* out = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
   if (!out) fail(path, said.first().empty() ? "no dataset in file" : said.first());
+  checkGridPoints(out, path);
   return {out, said.first(), {}};
 }
 

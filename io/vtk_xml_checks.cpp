@@ -3,9 +3,12 @@
 #include <sys/stat.h>
 
 #include <algorithm>
+#include <array>
+#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <vector>
 
 #include <vtkAlgorithm.h>
 #include <vtkInformation.h>
@@ -148,10 +151,146 @@ void checkArrays(vtkXMLDataElement* e, std::ifstream& in, const Framing& fr, con
   }
 }
 
+std::uint64_t typeBytes(const char* type) {
+  if (!type) return 0;
+  const std::string t = type;
+  if (t == "Int8" || t == "UInt8") return 1;
+  if (t == "Int16" || t == "UInt16") return 2;
+  if (t == "Int32" || t == "UInt32" || t == "Float32") return 4;
+  if (t == "Int64" || t == "UInt64" || t == "Float64") return 8;
+  return 0;
+}
+
+// The decoded bytes a binary array holds: its size prefix, or compressed,
+// its block table's total (blocks, block size, last block's size).
+std::uint64_t blockBytes(const unsigned char* head, const Framing& fr) {
+  if (!fr.compressed) return decodePrefix(head, fr);
+  const std::uint64_t blocks = decodePrefix(head, fr), size = decodePrefix(head + fr.prefix, fr),
+                      last = decodePrefix(head + 2 * fr.prefix, fr);
+  return blocks == 0 ? 0 : (blocks - 1) * size + (last ? last : size);
+}
+
+// How many values array `e` holds in the file, or -1 where that is not told
+// here (a format or encoding this does not know).
+std::int64_t storedValues(vtkXMLDataElement* e, std::ifstream& in, const Framing& fr, std::uint64_t bytesPerValue) {
+  const char* format = e->GetAttribute("format");
+  if (!format) return -1;
+  unsigned char head[24] = {};
+  const std::size_t want = fr.compressed ? 3 * fr.prefix : fr.prefix;
+  std::uint64_t bytes = 0;
+  if (std::strcmp(format, "ascii") == 0) {
+    in.clear();
+    in.seekg(e->GetXMLByteIndex());
+    for (char c; in.get(c) && c != '>';) {}
+    std::int64_t words = 0;
+    bool inWord = false;
+    for (char c; in.get(c) && c != '<';) {
+      const bool space = std::isspace(static_cast<unsigned char>(c)) != 0;
+      words += !space && !inWord;
+      inWord = !space;
+    }
+    return words;
+  } else if (std::strcmp(format, "binary") == 0) {
+    if (base64Bytes(in, e->GetXMLByteIndex(), true, head, want) < want) return -1;
+    bytes = blockBytes(head, fr);
+  } else if (std::strcmp(format, "appended") == 0) {
+    long long offset = 0;
+    if (!e->GetScalarAttribute("offset", offset) || offset < 0 || fr.appendedStart < 0) return -1;
+    const std::int64_t pos = fr.appendedStart + offset;
+    if (fr.appendedBase64) {
+      if (base64Bytes(in, pos, false, head, want) < want) return -1;
+    } else {
+      in.clear();
+      in.seekg(pos);
+      if (!in.read(reinterpret_cast<char*>(head), std::streamsize(want))) return -1;
+    }
+    bytes = blockBytes(head, fr);
+  } else {
+    return -1;
+  }
+  return bytes % bytesPerValue ? -2 : std::int64_t(bytes / bytesPerValue);
+}
+
+// VTK reads as many values as a piece's points times the array's components
+// and ignores the rest: 9-component tensors declared NumberOfComponents="6"
+// were read as six-value tensors from the wrong offsets, and drawn. Every
+// point array and the points must hold exactly what their piece needs.
+void checkPointArraySizes(vtkXMLDataElement* data, std::ifstream& in, const Framing& fr, const std::string& path) {
+  for (int p = 0; p < data->GetNumberOfNestedElements(); ++p) {
+    vtkXMLDataElement* piece = data->GetNestedElement(p);
+    if (std::strcmp(piece->GetName(), "Piece") != 0) continue;
+    long long points = 0, e[6];
+    if (!piece->GetScalarAttribute("NumberOfPoints", points)) {
+      if (piece->GetVectorAttribute("Extent", 6, e) != 6) continue;
+      points = 1;
+      for (int k = 0; k < 3; ++k) points *= e[2 * k + 1] - e[2 * k] + 1;
+    }
+    for (int g = 0; g < piece->GetNumberOfNestedElements(); ++g) {
+      vtkXMLDataElement* group = piece->GetNestedElement(g);
+      if (std::strcmp(group->GetName(), "PointData") != 0 && std::strcmp(group->GetName(), "Points") != 0) continue;
+      for (int a = 0; a < group->GetNumberOfNestedElements(); ++a) {
+        vtkXMLDataElement* array = group->GetNestedElement(a);
+        const std::uint64_t size = typeBytes(array->GetAttribute("type"));
+        if (std::strcmp(array->GetName(), "DataArray") != 0 || size == 0) continue;
+        const bool isPoints = std::strcmp(group->GetName(), "Points") == 0;
+        const std::string name = isPoints ? "the points' array" : "array " + arrayName(array);
+        int components = 1;
+        array->GetScalarAttribute("NumberOfComponents", components);
+        if (components < 1) fail(path, name + " has " + std::to_string(components) + " components");
+        const std::int64_t stored = storedValues(array, in, fr, size);
+        const long double need = (long double)points * components;
+        if (stored == -1 || (long double)stored == need) continue;
+        fail(path, name + " holds " +
+                       (stored < 0 ? std::string("a part of a value") : std::to_string(stored) + " values") +
+                       ", not the " + std::to_string(std::uint64_t(need)) + " of " + std::to_string(points) +
+                       " points with " + std::to_string(components) + " components each");
+      }
+    }
+  }
+}
+
 vtkXMLDataElement* findNested(vtkXMLDataElement* e, const char* name) {
   for (int k = 0; e && k < e->GetNumberOfNestedElements(); ++k)
     if (std::strcmp(e->GetNestedElement(k)->GetName(), name) == 0) return e->GetNestedElement(k);
   return nullptr;
+}
+
+// VTK sizes a structured dataset's arrays by its WholeExtent and fills in
+// each piece: points no piece covers kept whatever the memory held (two of
+// four tensors read as zeros, drawn). The pieces' boxes, cut at every piece
+// boundary, must cover the whole; more cells than that check can afford
+// are refused rather than trusted.
+void checkPiecesCover(const long long whole[6], const std::vector<std::array<long long, 6>>& pieces,
+                      const std::string& path) {
+  std::vector<long long> cuts[3];
+  std::uint64_t cells = 1;
+  for (int k = 0; k < 3; ++k) {
+    cuts[k] = {whole[2 * k], whole[2 * k + 1] + 1};
+    for (const auto& e : pieces) cuts[k].insert(cuts[k].end(), {e[2 * k], e[2 * k + 1] + 1});
+    std::sort(cuts[k].begin(), cuts[k].end());
+    cuts[k].erase(std::unique(cuts[k].begin(), cuts[k].end()), cuts[k].end());
+    cells *= cuts[k].size() - 1;
+  }
+  if (cells > (1u << 22))
+    fail(path, std::to_string(pieces.size()) + " pieces are too many to check that they cover the WholeExtent");
+  std::vector<char> covered(std::size_t(cells), 0);
+  auto index = [&](int k, long long v) {
+    return std::size_t(std::lower_bound(cuts[k].begin(), cuts[k].end(), v) - cuts[k].begin());
+  };
+  const std::size_t nx = cuts[0].size() - 1, ny = cuts[1].size() - 1;
+  std::uint64_t work = 0;
+  for (const auto& e : pieces) {
+    work += std::uint64_t(index(0, e[1] + 1) - index(0, e[0])) * (index(1, e[3] + 1) - index(1, e[2])) *
+            (index(2, e[5] + 1) - index(2, e[4]));
+    if (work > (1u << 26))
+      fail(path, std::to_string(pieces.size()) + " pieces are too many to check that they cover the WholeExtent");
+  }
+  for (const auto& e : pieces)
+    for (std::size_t z = index(2, e[4]); z < index(2, e[5] + 1); ++z)
+      for (std::size_t y = index(1, e[2]); y < index(1, e[3] + 1); ++y)
+        for (std::size_t x = index(0, e[0]); x < index(0, e[1] + 1); ++x) covered[x + nx * (y + ny * z)] = 1;
+  if (std::find(covered.begin(), covered.end(), 0) != covered.end())
+    fail(path, "its pieces leave part of the WholeExtent uncovered: those points would be left unset");
 }
 
 // A structured dataset's numbers VTK would otherwise replace by defaults
@@ -174,6 +313,7 @@ void checkStructured(vtkXMLDataElement* root, const std::string& path) {
   long long whole[6];
   if (!data->GetAttribute("WholeExtent")) return;
   if (data->GetVectorAttribute("WholeExtent", 6, whole) != 6) fail(path, "WholeExtent is not six integers");
+  std::vector<std::array<long long, 6>> pieces;
   for (int p = 0; p < data->GetNumberOfNestedElements(); ++p) {
     vtkXMLDataElement* piece = data->GetNestedElement(p);
     long long e[6];
@@ -182,7 +322,9 @@ void checkStructured(vtkXMLDataElement* root, const std::string& path) {
     for (int k = 0; k < 3; ++k)
       if (e[2 * k] < whole[2 * k] || e[2 * k + 1] > whole[2 * k + 1] || e[2 * k] > e[2 * k + 1])
         fail(path, "a piece's Extent lies outside the WholeExtent: its points would be left unset");
+    pieces.push_back({e[0], e[1], e[2], e[3], e[4], e[5]});
   }
+  checkPiecesCover(whole, pieces, path);
 }
 
 }  // namespace
@@ -248,6 +390,9 @@ void checkXmlStructure(vtkAlgorithm* reader, const std::string& path) {
       }
   }
   checkArrays(root, in, fr, path);
+  const char* dataType = root->GetAttribute("type");
+  if (vtkXMLDataElement* data = dataType ? findNested(root, dataType) : nullptr)
+    checkPointArraySizes(data, in, fr, path);
 }
 
 }  // namespace tg::io

@@ -83,6 +83,19 @@ def _nifti_layout(img):
     return "mrtrix" if descrip.startswith("MRtrix version") else "fsl"
 
 
+def _nifti_placement(img, frame):
+    """The affine and frame the CLI's NIfTI reader uses. For a header with
+    neither sform nor qform nibabel's img.affine is ANALYZE's (x reversed,
+    centred); NIfTI's method 1, and the CLI, place by pixdim alone and leave
+    the tensors unrotated, which the voxel frame of a diagonal affine does."""
+    hdr = img.header
+    keys = hdr.keys() if hasattr(hdr, "keys") else ()
+    if "sform_code" not in keys or int(hdr["sform_code"]) > 0 or int(hdr["qform_code"]) > 0:
+        return img.affine, frame
+    zooms = [float(z) if z > 0 else 1.0 for z in hdr.get_zooms()[:3]]
+    return np.diag(zooms + [1.0]), "voxel" if frame in (None, "", "fsl") else frame
+
+
 def _source(tensors, positions, affine, layout, frame):
     """(tensors array or None, positions, affine 16 floats, layout, frame, path)."""
     path = ""
@@ -102,7 +115,8 @@ def _source(tensors, positions, affine, layout, frame):
         tensors = np.asanyarray(img.dataobj)
         if tensors.ndim == 5 and tensors.shape[3] == 1:
             tensors = tensors[:, :, :, 0, :]
-        affine = img.affine if affine is None else affine
+        if affine is None:
+            affine, frame = _nifti_placement(img, frame)
         layout = layout or _nifti_layout(img)
     if tensors is not None:
         if not isinstance(tensors, np.ndarray):

@@ -330,6 +330,80 @@ TEST(Hostile, AttackFindingsFailInsteadOfDrawingGarbage) {
   expectRefused("crc.nrrd", "incorrect data check");
 }
 
+// Teem's error messages quote the header line they refuse into a 1 KiB stack
+// buffer: a 3 KB field line overflowed it and glibc aborted the process, the
+// parent too (render lists an input's or mask's data files to keep -o off
+// them, with Teem's parser). Long free text (comments, key:=value pairs,
+// content) is never quoted and still reads.
+TEST(Hostile, LongNrrdFieldLinesAreRefusedBeforeTeemQuotesThem) {
+  const std::string body = "dimension: 4\nsizes: 6 1 1 1\n" + kNrrdTensor;
+  const std::string data = "\n" + bin({1, 0, 0, 2, 0, 3});
+  const std::string longWord(3000, 'x');
+  write(dir() / "longtype.nrrd", "NRRD0004\ntype: " + longWord + "\n" + body + data);
+  expectRefused("longtype.nrrd", "header line 2 is 3006 bytes long");
+  write(dir() / "noline.nrrd", "NRRD0004\ntype: float\n" + longWord + "\n" + body + data);
+  expectRefused("noline.nrrd", "header line 3 is 3000 bytes long");
+  // A mask's header is parsed in the parent as well.
+  write(dir() / "longmask.nhdr", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 1 1 1\nencoding: raw\ndata file: " +
+                                     longWord + "\n");
+  write(dir() / "plain.nrrd", "NRRD0004\ntype: float\n" + body + data);
+  expectRefused("plain.nrrd", "header line 6 is 3011 bytes long", 20, " --mask " + (dir() / "longmask.nhdr").string(),
+                {"info", "render"}, "longmask.nhdr");
+  const std::string longText(100000, 'y');
+  write(dir() / "longtext.nrrd", "NRRD0004\n# " + longText + "\ncontent: " + longText + "\ntype: float\nkey:=" +
+                                     longText + "\n" + longText + ":=value: " + longText + "\n" + body + data);
+  const Limited ok = runLimited("info " + (dir() / "longtext.nrrd").string());
+  EXPECT_EQ(ok.r.code, 0) << ok.r.err;
+  EXPECT_NE(ok.r.out.find("1 drawn"), std::string::npos) << ok.r.out;
+  // But no line is read whole beyond 1 MiB, which Teem would hold in memory.
+  write(dir() / "hugecomment.nrrd", "NRRD0004\n# " + std::string(2 << 20, 'z') + "\ntype: float\n" + body + data);
+  expectRefused("hugecomment.nrrd", "header line 2 is longer than 1 MiB");
+}
+
+// Cells whose point ids lie outside the points (VTK's readers keep them as
+// the file gives them): a negative id drew a triangle to a vertex read from
+// before the points, and remapping it wrote outside our own array; cells
+// listing fewer or more points than their type has. And a
+// rectilinear grid whose coordinates are fewer than its DIMENSIONS, whose
+// last points VTK read past the coordinate array's end, drawn.
+TEST(Hostile, CellsAndGridPointsOutsideTheFileAreRefused) {
+  write(dir() / "tensor.nrrd", "NRRD0004\ntype: float\ndimension: 4\nsizes: 6 1 1 1\n" + kNrrdTensor + "\n" +
+                                   bin({1, 0, 0, 2, 0, 3}));
+  const std::string points = "POINTS 3 float\n0 0 0 1 0 0 0 1 0\n";
+  const std::string legacy = "# vtk DataFile Version 3.0\nx\nASCII\nDATASET ";
+  write(dir() / "negid.vtk", legacy + "POLYDATA\n" + points + "POLYGONS 1 4\n3 0 1 -5\n");
+  write(dir() / "farid.vtu", "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"1.0\">\n"
+                             "<UnstructuredGrid><Piece NumberOfPoints=\"3\" NumberOfCells=\"1\"><Points><DataArray "
+                             "type=\"Float32\" NumberOfComponents=\"3\" format=\"ascii\">0 0 0 1 0 0 0 1 0</DataArray>"
+                             "</Points><Cells><DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">0 1 "
+                             "7</DataArray><DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">3</DataArray>"
+                             "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">5</DataArray></Cells></Piece>"
+                             "</UnstructuredGrid>\n</VTKFile>\n");
+  write(dir() / "negid.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 -9\n");
+  write(dir() / "negid.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                             "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                             "0 0 0\n1 0 0\n0 1 0\n3 0 1 -7\n");
+  for (const auto& [mesh, id] : {std::pair{"negid.vtk", "point -5,"}, {"farid.vtu", "point 7,"},
+                                 {"negid.obj", "point -6,"}, {"negid.ply", "point -7,"}})
+    expectRefused("tensor.nrrd", std::string("a cell refers to ") + id + " but the file has 3 points", 20,
+                  " --mesh " + (dir() / mesh).string(), {"render"}, mesh);
+  // A tetra of three ids (VTK read a fourth past the connectivity, drawn) and
+  // a hexahedron of four (a crash).
+  write(dir() / "tetra3.vtk", legacy + "UNSTRUCTURED_GRID\n" + points + "CELLS 1 4\n3 0 1 2\nCELL_TYPES 1\n10\n");
+  write(dir() / "hexa4.vtk", legacy + "UNSTRUCTURED_GRID\n" + points + "CELLS 1 5\n4 0 1 2 0\nCELL_TYPES 1\n12\n");
+  for (const auto& [mesh, what] : {std::pair{"tetra3.vtk", "cell 0 of type 10 lists 3 points; that type has 4"},
+                                   {"hexa4.vtk", "cell 0 of type 12 lists 4 points; that type has 8"}})
+    expectRefused("tensor.nrrd", what, 20, " --mesh " + (dir() / mesh).string(), {"render"}, mesh);
+  const std::string nine = "1 0 0 0 2 0 0 0 3\n";
+  write(dir() / "coords.vtk", legacy + "RECTILINEAR_GRID\nDIMENSIONS 3 1 1\nX_COORDINATES 2 float\n0 1\n"
+                              "Y_COORDINATES 1 float\n0\nZ_COORDINATES 1 float\n0\nPOINT_DATA 3\nTENSORS t float\n" +
+                              nine + nine + nine);
+  expectRefused("coords.vtk", "X_COORDINATES hold 2 values, DIMENSIONS say 3");
+  write(dir() / "sgrid.vtk", legacy + "STRUCTURED_GRID\nDIMENSIONS 3 1 1\nPOINTS 2 float\n0 0 0 1 0 0\n"
+                             "POINT_DATA 2\nTENSORS t float\n" + nine + nine);
+  expectRefused("sgrid.vtk", "DIMENSIONS give 3 points, the file has 2");
+}
+
 TEST(Hostile, AnExtentBeyondIntIsRefused) {
   write(dir() / "extent.vti",
         "<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\" version=\"0.1\">\n<ImageData WholeExtent=\""

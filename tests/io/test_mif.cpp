@@ -118,6 +118,31 @@ TEST(Mif, HeaderWithASeparateDataFileAtAnOffset) {
   EXPECT_NE(f.frame.find("scanner"), std::string::npos) << f.frame;
 }
 
+TEST(Mif, MihHeaderMayEndAtTheEndOfItsFile) {
+  test::MifFixture fx;
+  fx.fillDistinct(true);
+  const fs::path mih = tmpDir() / "no-end.mih";
+  test::writeMih(mih, fx, "no-end.dat", 0);
+  std::string header = test::slurpBytes(mih);
+  ASSERT_TRUE(header.ends_with("\nEND\n"));
+  header.resize(header.size() - 4);  // as MRtrix 3.0.3's mrconvert writes a .mih
+  test::writeFile(mih, header);
+  expectMatches(read(mih), fx);
+  // Its last line may also lack its newline.
+  header.pop_back();
+  test::writeFile(mih, header);
+  expectMatches(read(mih), fx);
+  // A .mif's data follows its header, so the header must end with END.
+  const fs::path mif = tmpDir() / "no-end.mif";
+  test::writeFile(mif, header);
+  try {
+    read(mif);
+    ADD_FAILURE() << "a .mif without END was read";
+  } catch (const io::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no END line"), std::string::npos) << e.what();
+  }
+}
+
 TEST(Mif, ScalingIsApplied) {
   test::MifFixture fx;
   fx.datatype = "Int16LE";
@@ -371,8 +396,12 @@ TEST(Mif, MrconvertOutputMatchesTheNiftiReader) {
     writeNifti(nii, dims, *affine, voxels);
     const io::TensorField ref = read(nii, mrtrix);
     ASSERT_EQ(ref.size(), voxels.size());
-    for (const char* opts : {"-strides -1,3,2,4", "-strides 4,3,-2,1 -datatype float64be", "-datatype float32be"}) {
-      const fs::path mif = tmpDir() / "peer.mif";
+    // mrconvert writes a .mih without an END line; its data file beside it.
+    for (const auto& [opts, name] : {std::pair{"-strides -1,3,2,4", "peer.mif"},
+                                     {"-strides 4,3,-2,1 -datatype float64be", "peer.mif"},
+                                     {"-datatype float32be", "peer.mif"},
+                                     {"-strides 3,-1,2,4", "peer.mih"}}) {
+      const fs::path mif = tmpDir() / name;
       const std::string cmd = std::string(TG_MRCONVERT) + " -quiet -force " + nii.string() + " " + mif.string() +
                               " " + opts + " 2>&1";
       ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;

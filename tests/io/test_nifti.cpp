@@ -4,6 +4,7 @@
 
 #include <nifti2_io.h>
 #include <unistd.h>
+#include <zlib.h>
 
 #include <algorithm>
 #include <cmath>
@@ -208,6 +209,222 @@ TEST(Nifti, MaskAndSliceSelectVoxelsBeforeTheDataIsRead) {
     EXPECT_EQ(f.ids[i] % 2, 0u);
     EXPECT_GE(f.ids[i], 12u);
     EXPECT_FLOAT_EQ(f.tensors[6 * i], float(f.ids[i] + 1));  // the data of that voxel, not its neighbour's
+  }
+}
+
+namespace {
+
+// A uint8 mask of `dims` placed by the sform `affine`, values in index order (i fastest).
+void writeMask(const fs::path& path, const int d[3], const double affine[3][4], const std::vector<std::uint8_t>& v) {
+  const int64_t dims[8] = {3, d[0], d[1], d[2], 1, 1, 1, 1};
+  nifti_image* mask = nifti_make_new_nim(dims, NIFTI_TYPE_UINT8, 1);
+  ASSERT_TRUE(mask);
+  std::copy(v.begin(), v.end(), static_cast<std::uint8_t*>(mask->data));
+  mask->sform_code = NIFTI_XFORM_SCANNER_ANAT;
+  for (int r = 0; r < 4; ++r)
+    for (int c = 0; c < 4; ++c) mask->sto_xyz.m[r][c] = r < 3 ? affine[r][c] : (c == 3 ? 1 : 0);
+  const std::string name = path.string();
+  nifti_set_filenames(mask, name.c_str(), 0, 1);
+  nifti_image_write(mask);
+  nifti_image_free(mask);
+}
+
+}  // namespace
+
+// Masks are applied by voxel index, so a mask of the same grid stored in
+// another axis order (mrconvert stores a LAS image's mask with i reversed,
+// near RAS) is first put in the tensors' order by where its voxels lie; it
+// was refused as lying elsewhere. A mask one voxel off is still refused.
+TEST(Nifti, AMaskOfTheSameGridInAnotherAxisOrderSelectsTheSameVoxels) {
+  Fixture fx;
+  fx.nx = 4;
+  fx.ny = 3;
+  fx.nz = 2;
+  fx.affine[0][0] = -2;  // LAS, as FSL stores
+  for (int v = 0; v < 24; ++v) fx.voxels.push_back({{float(v + 1), 0, 0, 1, 0, 1}});
+  const fs::path grid = tmpDir() / "las-grid.nii";
+  write(grid, fx);
+  const int d[3] = {4, 3, 2};
+  auto keep = [](int i, int j, int k) { return std::uint8_t((i * 7 + j * 3 + k * 5) % 4 == 0); };
+  auto keptIds = [&](const fs::path& mask) {
+    io::ReadOptions o;
+    o.selection.maskPath = mask.string();
+    const io::TensorField f = io::readTensorField(grid.string(), o);
+    for (std::size_t n = 0; n < f.size(); ++n) EXPECT_FLOAT_EQ(f.tensors[6 * n], float(f.ids[n] + 1));
+    return f.ids;
+  };
+  std::vector<std::uint8_t> same;
+  std::vector<std::uint32_t> expect;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 4; ++i) {
+        same.push_back(keep(i, j, k));
+        if (keep(i, j, k)) expect.push_back(std::uint32_t(i + 4 * (j + 3 * k)));
+      }
+  ASSERT_GT(expect.size(), 2u);
+  writeMask(tmpDir() / "m-same.nii", d, fx.affine, same);
+  EXPECT_EQ(keptIds(tmpDir() / "m-same.nii"), expect);
+  // i reversed: axis 0 is +2 in x, from the other end.
+  const double flipped[3][4] = {{2, 0, 0, 10 - 2 * 3}, {0, 2, 0, 20}, {0, 0, 2, 30}};
+  std::vector<std::uint8_t> v;
+  for (int k = 0; k < 2; ++k)
+    for (int j = 0; j < 3; ++j)
+      for (int i = 0; i < 4; ++i) v.push_back(keep(3 - i, j, k));
+  writeMask(tmpDir() / "m-flipped.nii", d, flipped, v);
+  EXPECT_EQ(keptIds(tmpDir() / "m-flipped.nii"), expect);
+  // Axes reordered (the mask's axes are the tensors' k, i, j) and its second one reversed.
+  const int pd[3] = {2, 4, 3};
+  const double reordered[3][4] = {{0, 2, 0, 10 - 2 * 3}, {0, 0, 2, 20}, {2, 0, 0, 30}};
+  v.clear();
+  for (int j = 0; j < 3; ++j)
+    for (int i = 0; i < 4; ++i)
+      for (int k = 0; k < 2; ++k) v.push_back(keep(3 - i, j, k));
+  writeMask(tmpDir() / "m-reordered.nii", pd, reordered, v);
+  EXPECT_EQ(keptIds(tmpDir() / "m-reordered.nii"), expect);
+  // One voxel off in z: the same dimensions elsewhere.
+  const double shifted[3][4] = {{-2, 0, 0, 10}, {0, 2, 0, 20}, {0, 0, 2, 32}};
+  writeMask(tmpDir() / "m-shifted.nii", d, shifted, same);
+  EXPECT_NE(errorOf(grid, [&] {
+              io::ReadOptions o;
+              o.selection.maskPath = (tmpDir() / "m-shifted.nii").string();
+              return o;
+            }()).find("mask lies elsewhere"),
+            std::string::npos);
+#ifdef TG_MRCONVERT
+  // MRtrix's own copy of the mask: i reversed on disk and in its transform.
+  const fs::path mif = tmpDir() / "m-mrconvert.mif";
+  const std::string cmd = std::string(TG_MRCONVERT) + " -quiet -force " + (tmpDir() / "m-same.nii").string() + " " +
+                          mif.string() + " 2>&1";
+  ASSERT_EQ(std::system(cmd.c_str()), 0) << cmd;
+  EXPECT_EQ(keptIds(mif), expect);
+#endif
+}
+
+namespace {
+
+// `bytes` as a one-member gzip file at compression `level` (0: stored blocks,
+// so that a flipped byte of the data survives inflation unchanged).
+std::string gzipped(const std::string& bytes, int level) {
+  z_stream z{};
+  EXPECT_EQ(deflateInit2(&z, level, Z_DEFLATED, 15 + 16, 8, Z_DEFAULT_STRATEGY), Z_OK);
+  std::string out(deflateBound(&z, uLong(bytes.size())), '\0');
+  z.next_in = reinterpret_cast<Bytef*>(const_cast<char*>(bytes.data()));
+  z.avail_in = uInt(bytes.size());
+  z.next_out = reinterpret_cast<Bytef*>(out.data());
+  z.avail_out = uInt(out.size());
+  EXPECT_EQ(deflate(&z, Z_FINISH), Z_STREAM_END);
+  out.resize(z.total_out);
+  deflateEnd(&z);
+  return out;
+}
+
+}  // namespace
+
+// A .nii.gz whose CRC disagrees with its data, or that ends without the
+// CRC, is refused saying so. Before, a wrong CRC read as "data is truncated:
+// ... the image ends after 4611686018427387903" (znzread's -1 as a count) and
+// a stream cut at its trailer was drawn unchecked.
+TEST(Nifti, CorruptGzipIsRefusedNamingTheFault) {
+  Fixture fx;
+  fx.nx = 16;
+  fx.ny = 16;
+  fx.nz = 16;
+  fx.voxels.assign(4096, {{1, 0, 0, 1, 0, 1}});
+  const fs::path plain = tmpDir() / "gz-src.nii";
+  write(plain, fx);
+  std::ifstream in(plain, std::ios::binary);
+  const std::string bytes{std::istreambuf_iterator<char>(in), {}};
+  const fs::path d = tmpDir();
+  for (int level : {0, 6}) {
+    const std::string gz = gzipped(bytes, level);
+    const std::string tag = "gz" + std::to_string(level) + "-";
+    std::ofstream(d / (tag + "good.nii.gz"), std::ios::binary) << gz;
+    const io::TensorField good = io::readTensorField((d / (tag + "good.nii.gz")).string(), {});
+    EXPECT_EQ(good.size(), 4096u);
+    // Trailing bytes after the stream are not part of it.
+    std::ofstream(d / (tag + "trailing.nii.gz"), std::ios::binary) << gz << std::string(100, '\0');
+    EXPECT_EQ(io::readTensorField((d / (tag + "trailing.nii.gz")).string(), {}).tensors, good.tensors);
+    std::string crc = gz;
+    crc[crc.size() - 8] = char(crc[crc.size() - 8] ^ 0x5a);  // the trailer: CRC-32, then the length
+    std::ofstream(d / (tag + "crc.nii.gz"), std::ios::binary) << crc;
+    std::ofstream(d / (tag + "cut.nii.gz"), std::ios::binary) << gz.substr(0, gz.size() - 8);
+    struct Case {
+      std::string file;
+      const char* expect;
+    } cases[] = {{tag + "crc.nii.gz", "gzip data is corrupt: incorrect data check"},
+                 {tag + "cut.nii.gz", "gzip data is corrupt: the stream ends without its trailer"}};
+    for (const Case& c : cases) {
+      const std::string e = errorOf(d / c.file);
+      EXPECT_NE(e.find(c.expect), std::string::npos) << c.file << ": " << e;
+      EXPECT_NE(e.find((d / c.file).string() + ": gzip"), std::string::npos) << c.file << ": " << e;
+      EXPECT_EQ(e.find('\n'), std::string::npos) << c.file << ": " << e;
+    }
+  }
+  // A value flipped inside a stored block inflates cleanly; only the CRC tells.
+  std::string flipped = gzipped(bytes, 0);
+  const std::size_t at = flipped.find(bytes.substr(352, 64));
+  ASSERT_NE(at, std::string::npos);
+  flipped[at + 3] = char(flipped[at + 3] ^ 0x40);  // the first value's exponent: 1 becomes infinite
+  std::ofstream(d / "flipped.nii.gz", std::ios::binary) << flipped;
+  const std::string e = errorOf(d / "flipped.nii.gz");
+  EXPECT_NE(e.find("gzip data is corrupt: incorrect data check"), std::string::npos) << e;
+}
+
+// A file holding two placements that disagree draws where the sform says
+// (as FSL, nibabel and MRtrix read it) and says so; one whose qform matches
+// its sform says nothing.
+TEST(Nifti, DisagreeingSformAndQformAreSaid) {
+  Fixture fx;
+  fx.voxels = {{{1, 0, 0, 1, 0, 1}}, {{2, 0, 0, 2, 0, 2}}};
+  const fs::path p = tmpDir() / "sq.nii";
+  write(p, fx);  // sform diag(2) + (10, 20, 30)
+  std::string bytes;
+  {
+    std::ifstream in(p, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  auto withQform = [&](float pixdim, const float offset[3]) {
+    std::string b = bytes;
+    const std::int16_t one = 1;
+    std::memcpy(&b[252], &one, 2);  // qform_code
+    const float zero = 0, unit = 1;
+    for (int k = 0; k < 3; ++k) std::memcpy(&b[256 + 4 * k], &zero, 4);  // quatern_b..d: no rotation
+    for (int k = 0; k < 3; ++k) std::memcpy(&b[268 + 4 * k], &offset[k], 4);  // qoffset_x..z
+    std::memcpy(&b[76], &unit, 4);  // pixdim[0]: qfac
+    for (int k = 1; k <= 3; ++k) std::memcpy(&b[76 + 4 * k], &pixdim, 4);
+    return b;
+  };
+  const float same[3] = {10, 20, 30}, moved[3] = {10, 20, 35};
+  test::writeFile(p, withQform(2, same));
+  const io::TensorField agree = io::readTensorField(p.string(), {});
+  EXPECT_TRUE(agree.warnings.empty()) << agree.warnings.front();
+  test::writeFile(p, withQform(2, moved));
+  const io::TensorField f = io::readTensorField(p.string(), {});
+  ASSERT_EQ(f.warnings.size(), 1u);
+  EXPECT_NE(f.warnings[0].find("the sform and qform disagree (by up to 5.0"), std::string::npos) << f.warnings[0];
+  EXPECT_FLOAT_EQ(f.positions[2], 30);  // the sform's
+}
+
+// Six volumes whose header says they are a vector (or any intent but none,
+// a parameter estimate or SYMMATRIX) are read as asked, with a warning.
+TEST(Nifti, AnIntentOtherThanATensorIsSaid) {
+  Fixture fx;
+  fx.voxels = {{{1, 0, 0, 1, 0, 1}}, {{2, 0, 0, 2, 0, 2}}};
+  const fs::path p = tmpDir() / "intent.nii";
+  write(p, fx);
+  std::string bytes;
+  {
+    std::ifstream in(p, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  for (const int intent : {NIFTI_INTENT_NONE, NIFTI_INTENT_ESTIMATE, NIFTI_INTENT_VECTOR, NIFTI_INTENT_GENMATRIX}) {
+    const auto code = std::int16_t(intent);
+    std::memcpy(&bytes[68], &code, 2);  // intent_code
+    test::writeFile(p, bytes);
+    const io::TensorField f = io::readTensorField(p.string(), {});
+    ASSERT_EQ(f.size(), 2u);
+    const bool warned = f.warnings.size() == 1 && f.warnings[0].find("not a symmetric matrix") != std::string::npos;
+    EXPECT_EQ(warned, intent == NIFTI_INTENT_VECTOR || intent == NIFTI_INTENT_GENMATRIX) << intent;
   }
 }
 

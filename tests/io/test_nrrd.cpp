@@ -168,6 +168,26 @@ TEST(Nrrd, LpsIsTurnedIntoRas) {
   for (int k = 0; k < 6; ++k) EXPECT_FLOAT_EQ(f.tensors[k], expect[k]) << k;
 }
 
+// A left-handed space drawn as it stands in our right-handed world would be
+// the mirror image of its data: x is negated, as for LAS, positions and
+// tensors alike. Before, it was drawn unchanged.
+TEST(Nrrd, LeftHandedSpaceIsMadeRightHanded) {
+  const std::vector<float> t = {1, 0.5f, 0.25f, 2, 0.125f, 3};
+  const fs::path p = tmpDir() / "left.nrrd";
+  test::writeFile(p, header("6 1 1 1", "kinds: 3D-symmetric-matrix space space space\nspace: 3D-left-handed\n"
+                                  "space directions: none (1,0,0) (0,1,0) (0,0,1)\nspace origin: (1,2,3)") +
+                    floats(t));
+  const auto f = io::readTensorField(p.string(), {});
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_EQ(f.space, "3D-right-handed (converted from 3D-left-handed)");
+  EXPECT_NE(f.frame.find("x negated, 3D-left-handed to 3D-right-handed"), std::string::npos) << f.frame;
+  EXPECT_FLOAT_EQ(f.positions[0], -1);
+  EXPECT_FLOAT_EQ(f.positions[1], 2);
+  EXPECT_FLOAT_EQ(f.positions[2], 3);
+  const float expect[6] = {1, -0.5f, -0.25f, 2, 0.125f, 3};
+  for (int k = 0; k < 6; ++k) EXPECT_FLOAT_EQ(f.tensors[k], expect[k]) << k;
+}
+
 TEST(Nrrd, OldHeadersPlaceByAxisMinsAndMaxs) {
   // Cell centring (Teem's default): sample i of n sits at min + (i + 0.5)(max - min)/n.
   std::vector<float> v(7 * 4, 0.1f);

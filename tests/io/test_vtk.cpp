@@ -5,6 +5,7 @@
 #include <cstring>
 #include <limits>
 #include <filesystem>
+#include <fstream>
 
 #include "data-synthetic/generators.h"
 #include "io/readers.h"
@@ -150,6 +151,102 @@ TEST(Vtk, BadInputGetsOneLineNamingFileAndProblem) {
     EXPECT_NE(msg.find(what), std::string::npos) << name << ": \"" << msg << "\"";
     EXPECT_EQ(msg.find('\n'), std::string::npos) << name << ": " << msg;
     EXPECT_NE(msg.find((d / name).string()), std::string::npos) << "message names the file: " << msg;
+  }
+}
+
+// 3D-TSV's trailer rows are Sxx Syy Szz Syz Szx Sxy; a row with a seventh
+// number (or anything else after the sixth) is another layout, refused
+// rather than read by its first six.
+TEST(Vtk, TsvTrailerRowsHoldSixNumbers) {
+  const std::string head = "# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 2 float\n"
+                           "0 0 0 1 0 0\nCELLS 1 3\n2 0 1\nCELL_TYPES 1\n3\nPOINT_DATA 2\nSCALARS fixed int\n"
+                           "LOOKUP_TABLE default\n0\n1\nCartesian Stress: 2\n";
+  const fs::path d = tmpDir();
+  test::writeFile(d / "tsv.vtk", head + "1 2 3 0.4 0.5 0.6 \t\r\n-1 -2 -3 0 0 0\n");
+  const io::TensorField f = io::readTensorField((d / "tsv.vtk").string(), {});
+  ASSERT_EQ(f.size(), 2u);
+  // xx xy xz yy yz zz from Sxx=1 Syy=2 Szz=3 Syz=0.4 Szx=0.5 Sxy=0.6.
+  const float expect[6] = {1, 0.6f, 0.5f, 2, 0.4f, 3};
+  for (int k = 0; k < 6; ++k) EXPECT_FLOAT_EQ(f.tensors[std::size_t(k)], expect[k]) << k;
+  for (const char* row : {"1 2 3 0.4 0.5 0.6 0.7", "1 2 3 0.4 0.5 0.6x"}) {
+    test::writeFile(d / "tsv7.vtk", head + row + "\n-1 -2 -3 0 0 0\n");
+    const std::string msg = errorOf(d / "tsv7.vtk");
+    EXPECT_NE(msg.find("row 0 holds more than six numbers"), std::string::npos) << row << ": " << msg;
+    EXPECT_NE(msg.find((d / "tsv7.vtk").string()), std::string::npos) << msg;
+  }
+}
+
+// VTK reads a piece's points times an array's components and ignores what
+// else the array holds: nine-component tensors declared as six were read as
+// six-value tensors from the wrong offsets, and drawn. Each point array must
+// hold exactly what its piece needs, in every encoding.
+TEST(Vtk, PointArraysHoldingOtherThanTheirPointsNeedAreRefused) {
+  const auto h = synth::helixPhantom(3, 2, 2);
+  const std::size_t n = h.field.size();
+  const std::string need = "not the " + std::to_string(6 * n) + " of " + std::to_string(n) + " points with 6";
+  for (const char* ext : {".vti", ".vtu", ".vtp"}) {  // appended, zlib, base64: our writer's choice
+    const fs::path p = tmpDir() / (std::string("ncomp") + ext);
+    io::writeVtk(h.field, p.string());
+    ASSERT_EQ(io::readTensorField(p.string(), {}).size(), n) << ext;
+    std::ifstream in(p, std::ios::binary);
+    std::string xml{std::istreambuf_iterator<char>(in), {}};
+    const std::size_t at = xml.find("NumberOfComponents=\"9\"");
+    ASSERT_NE(at, std::string::npos) << ext;
+    xml.replace(at, 22, "NumberOfComponents=\"6\"");
+    test::writeFile(p, xml);
+    const std::string msg = errorOf(p);
+    EXPECT_NE(msg.find("holds " + std::to_string(9 * n) + " values, " + need), std::string::npos) << ext << ": " << msg;
+  }
+  // ASCII and raw appended data, two points.
+  const std::string head = "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\" byte_order=\"LittleEndian\">"
+                           "<PolyData><Piece NumberOfPoints=\"2\"><Points><DataArray type=\"Float32\" "
+                           "NumberOfComponents=\"3\" format=\"ascii\">0 0 0 1 0 0</DataArray></Points><PointData "
+                           "Tensors=\"t\"><DataArray type=\"Float32\" Name=\"t\" NumberOfComponents=\"6\" ";
+  const std::string tail = "</PointData></Piece></PolyData>";
+  std::string nine;
+  for (int k = 0; k < 2; ++k) nine += "3 0.5 0.2 0.5 2 0.1 0.2 0.1 1 ";
+  test::writeFile(tmpDir() / "ascii9.vtp", head + "format=\"ascii\">" + nine + "</DataArray>" + tail + "</VTKFile>");
+  std::string raw(4, '\0');
+  const std::uint32_t bytes = 18 * 4;
+  std::memcpy(raw.data(), &bytes, 4);
+  for (int k = 0; k < 18; ++k) {
+    const float v = float(k + 1);
+    raw.append(reinterpret_cast<const char*>(&v), 4);
+  }
+  test::writeFile(tmpDir() / "raw9.vtp", head + "format=\"appended\" offset=\"0\"/>" + tail +
+                                             "<AppendedData encoding=\"raw\">_" + raw + "</AppendedData></VTKFile>");
+  for (const char* name : {"ascii9.vtp", "raw9.vtp"}) {
+    const std::string msg = errorOf(tmpDir() / name);
+    EXPECT_NE(msg.find("array \"t\" holds 18 values, not the 12 of 2 points with 6 components each"), std::string::npos)
+        << name << ": " << msg;
+  }
+}
+
+// VTK sizes a structured dataset by its WholeExtent and fills it piece by
+// piece: points no piece covers kept whatever the memory held, and were
+// drawn (as zeros, in a fresh process). Pieces that overlap, as VTK's own
+// writer makes them, and together cover the whole, read.
+TEST(Vtk, StructuredPiecesMustCoverTheWholeExtent) {
+  auto image = [](const std::vector<std::pair<int, int>>& pieces) {
+    std::string xml = "<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\" version=\"0.1\">\n<ImageData "
+                      "WholeExtent=\"0 3 0 0 0 0\" Origin=\"0 0 0\" Spacing=\"1 1 1\">\n";
+    for (const auto& [lo, hi] : pieces) {
+      xml += "<Piece Extent=\"" + std::to_string(lo) + " " + std::to_string(hi) + " 0 0 0 0\"><PointData "
+             "Tensors=\"t\"><DataArray type=\"Float32\" Name=\"t\" NumberOfComponents=\"9\" format=\"ascii\">";
+      for (int i = lo; i <= hi; ++i) xml += "1 0 0 0 2 0 0 0 3 ";
+      xml += "</DataArray></PointData></Piece>\n";
+    }
+    return xml + "</ImageData>\n</VTKFile>\n";
+  };
+  const fs::path d = tmpDir();
+  test::writeFile(d / "tiled.vti", image({{0, 1}, {1, 3}}));
+  const io::TensorField f = io::readTensorField((d / "tiled.vti").string(), {});
+  ASSERT_EQ(f.size(), 4u);
+  for (std::size_t i = 0; i < 4; ++i) EXPECT_EQ(f.tensors[6 * i + 5], 3.0f) << i;
+  for (const auto& pieces : {std::vector<std::pair<int, int>>{{0, 1}}, {{0, 1}, {3, 3}}}) {
+    test::writeFile(d / "holes.vti", image(pieces));
+    const std::string msg = errorOf(d / "holes.vti");
+    EXPECT_NE(msg.find("its pieces leave part of the WholeExtent uncovered"), std::string::npos) << msg;
   }
 }
 

@@ -121,6 +121,36 @@ class ModuleAgainstCli(unittest.TestCase):
             self.assertGreater(np.count_nonzero(from_cli[..., 3]), 500, "nothing drawn")
 
 
+    def test_nifti_without_sform_or_qform_same_pixels(self):
+        # nibabel's affine for such a header is ANALYZE's (x reversed, centred);
+        # NIfTI's method 1 and the CLI place by pixdim alone, tensors unrotated.
+        import nibabel as nib
+        rng = np.random.default_rng(3)
+        L = rng.normal(size=(5, 4, 3, 3, 3)) * 0.3 + np.eye(3) * [1.0, 0.5, 0.25]
+        D = L @ np.swapaxes(L, -1, -2)
+        fsl = np.stack([D[..., 0, 0], D[..., 0, 1], D[..., 0, 2], D[..., 1, 1], D[..., 1, 2], D[..., 2, 2]], -1)
+        hdr = nib.Nifti1Header()
+        hdr.set_data_shape(fsl.shape)
+        hdr.set_data_dtype(np.float32)
+        hdr.set_zooms((2.0, 1.5, 2.5, 1.0))
+        img = nib.Nifti1Image(fsl.astype(np.float32), None, hdr)
+        img.header.set_sform(None, code=0)
+        img.header.set_qform(None, code=0)
+        opts = dict(size=(160, 120), glyph="superquadric", gamma=2.5, fa_min=0.05, color="fa")
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "noaffine.nii")
+            nib.save(img, path)
+            png = os.path.join(d, "cli.png")
+            subprocess.run([CLI, "render", path, "-o", png, "--size", "160", "120", "--glyph", "superquadric",
+                            "--gamma", "2.5", "--fa-min", "0.05", "--color", "fa"], check=True, capture_output=True)
+            from_cli = np.asarray(_read_png(png))
+            loaded = nib.load(path)
+            self.assertEqual(int(loaded.header["sform_code"]), 0)
+            self.assertEqual(loaded.affine[0, 0], -2.0)  # nibabel's ANALYZE affine, which must not be used
+            self.assertTrue(np.array_equal(from_cli, tg.render(loaded, **opts).image))
+            self.assertGreater(np.count_nonzero(from_cli[..., 3]), 300, "nothing drawn")
+
+
 def _read_png(path):
     # matplotlib's PNG reader (Debian's python3-matplotlib comes with DIPY) as 8-bit.
     import matplotlib.image
