@@ -1,0 +1,39 @@
+// What a first-time user meets: typos, help texts that must agree with what
+// the binary does, and outputs a command cannot write.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "cli/cli_run.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using tg::test::CmdResult;
+
+fs::path dir() { return tg::test::cliDir("newcomer"); }
+
+CmdResult run(const std::string& args) { return tg::test::runBinary(args, dir()); }
+
+}  // namespace
+
+TEST(Newcomer, MistypedOptionIsNamedWithTheOneMeant) {
+  const fs::path out = dir() / "typo.png";
+  const std::string render = "render -o " + out.string();
+  const struct {
+    std::string args;
+    const char* said;
+  } cases[] = {
+      {render + " --glpyh box", "unknown option --glpyh; did you mean --glyph?"},
+      {render + " --colour=fa", "unknown option --colour; did you mean --color?"},
+      {render + " --fa_min 0.3", "unknown option --fa_min; did you mean --fa-min?"},
+      {render + " --xyzzy", "unknown option --xyzzy; see --help"},
+      {"info " + out.string() + " --strid 2", "unknown option --strid; did you mean --stride?"},
+  };
+  for (const auto& c : cases) {
+    tg::test::expectFailsCleanly(c.args, c.said, out, dir(), 1);
+    EXPECT_EQ(run(c.args).code, 2) << c.args;
+  }
+}
