@@ -37,3 +37,29 @@ TEST(Newcomer, MistypedOptionIsNamedWithTheOneMeant) {
     EXPECT_EQ(run(c.args).code, 2) << c.args;
   }
 }
+
+// Before, these generated the field and then failed in the writer (exit 1,
+// "writeNrrd: e.nrrd: field has no grid"): a command-line mistake, known
+// before any work.
+TEST(Newcomer, SynthRefusesAnOutputItsKindCannotBeWrittenToBeforeGenerating) {
+  const struct {
+    const char* kind;
+    const char* file;
+    const char* said;
+  } cases[] = {
+      {"extremes", "e.nrrd", "extremes is a point set: write .vtk .vtu or .vtp"},
+      {"random --n 10", "r.vti", "random is a point set: write .vtk .vtu .vtp or .nhdr (streamed)"},
+      {"helix", "h.png", "helix is written as .vtk .vti .vtu .vtp or .nrrd"},
+      {"helix", "h.nhdr", "helix is written as .vtk .vti .vtu .vtp or .nrrd"},
+  };
+  for (const auto& c : cases) {
+    const fs::path out = dir() / c.file;
+    const std::string args = std::string("synth ") + c.kind + " -o " + out.string();
+    tg::test::expectFailsCleanly(args, c.said, out, dir(), 1);
+    EXPECT_EQ(run(args).code, 2) << args;
+  }
+  const fs::path ok = dir() / "h.vti";
+  fs::remove(ok);
+  EXPECT_EQ(run("synth helix --n 4 -o " + ok.string()).code, 0);
+  EXPECT_TRUE(fs::exists(ok));
+}
