@@ -1,5 +1,6 @@
 #include "app/field_flags.h"
 
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
@@ -60,8 +61,9 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
   ap.arg("--scale S").help("with --scale-mode absolute (the default when given alone): world units per eigenvalue "
                            "unit; else a factor on the mode's size")
       .action([&](Args a) { scale = parseDouble("--scale", a[1]); });
-  ap.arg("--scale-mode M").help("absolute, max (largest eigenvalue -> S sample spacings across) or spacing (default: "
-                                "99th percentile -> S sample spacings)")
+  ap.arg("--scale-mode M").help("absolute, max (largest eigenvalue -> S sample spacings across) or spacing (default: " +
+                                std::to_string(std::lround(100 * tensor::ScaleParams{}.percentile)) + "th" +
+                                " percentile of the non-zero tensors -> S sample spacings)")
       .action([&](Args a) {
         const std::string m = a[1];
         if (m == "absolute") scaleMode = tensor::ScaleMode::Absolute;

@@ -50,7 +50,7 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
   ap.arg("--epsilon E").help("superquadric hit tolerance, relative to glyph size (default 1e-4)")
       .action([&](Args a) { o.epsilon = parseDouble("--epsilon", a[1]); });
   ap.arg("--stats").help("report Newton iteration statistics on stderr").action([&](Args) { o.stats = true; });
-  ap.arg("--gamma G").help("superquadric sharpness (Kindlmann 2004), >= 0").action([&](Args a) {
+  ap.arg("--gamma G").help("superquadric sharpness (Kindlmann 2004), 0..10000 (default " + formatNumber(o.gamma) + ")").action([&](Args a) {
     o.gamma = parseDouble("--gamma", a[1]);
   });
   ap.arg("--fa-min F").help("hide glyphs with FA below F").action([&](Args a) { o.faMin = parseDoubleIn("--fa-min", a[1], 0.0, 1.0); });

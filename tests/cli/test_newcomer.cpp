@@ -63,3 +63,21 @@ TEST(Newcomer, SynthRefusesAnOutputItsKindCannotBeWrittenToBeforeGenerating) {
   EXPECT_EQ(run("synth helix --n 4 -o " + ok.string()).code, 0);
   EXPECT_TRUE(fs::exists(ok));
 }
+
+// --help said the spacing mode sizes the 99th percentile glyph (and the
+// occlusion radius followed it), while the code and `info` use the 90th.
+TEST(Newcomer, HelpNamesThePercentileInfoReports) {
+  const fs::path field = dir() / "pct.vtk";
+  ASSERT_EQ(run("synth helix --n 8 -o " + field.string()).code, 0);
+  const CmdResult info = run("info " + field.string());
+  ASSERT_EQ(info.code, 0) << info.err;
+  const std::string key = "the glyph at the ";
+  const std::size_t at = info.out.find(key);
+  ASSERT_NE(at, std::string::npos) << info.out;
+  const std::string pct = info.out.substr(at + key.size(), info.out.find('%', at) - at - key.size());
+  const CmdResult help = run("render --help");
+  ASSERT_EQ(help.code, 0);
+  EXPECT_NE(help.out.find("spacing (default: " + pct + "th percentile"), std::string::npos) << pct << "\n" << help.out;
+  EXPECT_NE(help.out.find("the " + pct + "th-percentile glyph's"), std::string::npos) << pct << "\n" << help.out;
+  EXPECT_EQ(help.out.find("99th"), std::string::npos);
+}
