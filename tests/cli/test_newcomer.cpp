@@ -81,3 +81,28 @@ TEST(Newcomer, HelpNamesThePercentileInfoReports) {
   EXPECT_NE(help.out.find("the " + pct + "th-percentile glyph's"), std::string::npos) << pct << "\n" << help.out;
   EXPECT_EQ(help.out.find("99th"), std::string::npos);
 }
+
+// Teem's `tend glyph -g s -gsc 3` habit: --gamma with a file draws the
+// default ellipsoids, on which the march's parameters have no effect. They
+// were ignored in silence; now refused as --lambda0 is without --magnitude.
+TEST(Newcomer, MarchOptionsOnGlyphsThatDoNotMarchAreRefused) {
+  const fs::path field = dir() / "march.vtk", out = dir() / "march.png";
+  ASSERT_EQ(run("synth helix --n 6 -o " + field.string()).code, 0);
+  const std::string render = "render " + field.string() + " -o " + out.string() + " --size 64 48";
+  const struct {
+    std::string flags;
+    const char* said;
+  } refused[] = {
+      {" --gamma 3", "--gamma applies to --glyph superquadric only; this render draws ellipsoid glyphs"},
+      {" --glyph box --iterations 4", "--iterations applies to --glyph superquadric only; this render draws box glyphs"},
+      {" --epsilon 1e-3 --glyph cylinder", "--epsilon applies to --glyph superquadric only"},
+      {" --glyph ellipsoid --gamma 1", "--gamma applies to --glyph superquadric only"},
+  };
+  for (const auto& c : refused) {
+    tg::test::expectFailsCleanly(render + c.flags, c.said, out, dir(), 1);
+    EXPECT_EQ(run(render + c.flags).code, 2) << c.flags;
+  }
+  // Where they apply: superquadrics, and the built-in scene's default glyph.
+  EXPECT_EQ(run(render + " --glyph superquadric --gamma 2 --iterations 6").code, 0);
+  EXPECT_EQ(run("render -o " + out.string() + " --size 64 48 --gamma 1.5 --no-shadows --no-ao").code, 0);
+}
