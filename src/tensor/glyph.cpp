@@ -241,6 +241,10 @@ GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> te
   set.maxAbsEigenvalue = all.maxAbs;
   set.mdMin = all.mdMin;
   set.mdMax = all.mdMax;
+  // A field of one MD stored in floats (Kindlmann's dt-helix) varies by
+  // rounding alone; mapped onto a colour map, that spread drew noise. A
+  // spread single precision cannot resolve against the eigenvalues is one MD.
+  if (set.mdMax - set.mdMin <= 1e-6 * all.maxAbs) set.mdMin = set.mdMax = 0.5 * (all.mdMin + all.mdMax);
   set.eigenvalueMin = all.eigenMin;
   set.eigenvalueMax = all.eigenMax;
   groupTiles(set, groups.data(), chunks);
