@@ -20,7 +20,7 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
   ap.arg("--frame F").help("NIfTI tensor axes: voxel, fsl (voxel, i reversed when det > 0) or world; default: the "
                            "layout's (fsl: fsl, mrtrix: world, else voxel)")
       .action([&](Args a) { read.frame = a[1]; });
-  ap.arg("--mask FILE").help("scalar volume on the same grid (.nrrd .nhdr .nii .nii.gz .vti)").action([&](Args a) {
+  ap.arg("--mask FILE").help("scalar volume on the same grid (.nrrd .nhdr .nii .nii.gz .mif .mih .vti)").action([&](Args a) {
     sel.maskPath = a[1];
   });
   ap.arg("--mask-min V").help("keep voxels whose mask value is >= V (default 0.5)").action([&](Args a) {

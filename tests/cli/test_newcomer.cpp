@@ -3,6 +3,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <set>
+#include <sstream>
 #include <string>
 
 #include "cli/cli_run.h"
@@ -105,4 +107,28 @@ TEST(Newcomer, MarchOptionsOnGlyphsThatDoNotMarchAreRefused) {
   // Where they apply: superquadrics, and the built-in scene's default glyph.
   EXPECT_EQ(run(render + " --glyph superquadric --gamma 2 --iterations 6").code, 0);
   EXPECT_EQ(run("render -o " + out.string() + " --size 64 48 --gamma 1.5 --no-shadows --no-ao").code, 0);
+}
+
+// --mask and --underlay read scalar volumes through the same readers
+// (readScalarVolume); --mask's help left out MRtrix's .mif and .mih, which
+// it reads (Mif.MaskSelects).
+TEST(Newcomer, MaskHelpListsTheVolumeFormatsTheUnderlayHelpDoes) {
+  const CmdResult help = run("render --help");
+  ASSERT_EQ(help.code, 0);
+  auto extensions = [&](const std::string& flag) {
+    const std::size_t at = help.out.find("\n  " + flag);
+    EXPECT_NE(at, std::string::npos) << flag;
+    const std::string line = help.out.substr(at + 1, help.out.find('\n', at + 1) - at - 1);
+    std::set<std::string> exts;
+    std::istringstream words(line);
+    for (std::string w; words >> w;) {
+      while (!w.empty() && (w.front() == '(' || w.back() == ')' || w.back() == ',' || w.back() == ';'))
+        w = w.front() == '(' ? w.substr(1) : w.substr(0, w.size() - 1);
+      if (w.size() > 1 && w[0] == '.') exts.insert(w);
+    }
+    return exts;
+  };
+  const std::set<std::string> mask = extensions("--mask FILE"), underlay = extensions("--underlay SOURCE");
+  EXPECT_GE(underlay.size(), 7u);
+  EXPECT_EQ(mask, underlay);
 }
