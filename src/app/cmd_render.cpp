@@ -62,11 +62,13 @@ int cmdRender(int argc, const char** argv) {
   if (const auto* legend = static_cast<const render::LegendPass*>(renderer.legendPass())) {
     const render::LegendRect& r = legend->layout().panel;
     if (sink && (r.x1 > float(o.width) || r.y1 > float(o.height))) sink({}, 0, 0, {});
+    // Smaller text is a remedy only where the text is larger than 1.
     if (r.x1 > float(o.width) || r.y1 > float(o.height))
       std::fprintf(stderr,
                    "tensorglyph render: --legend: the legend needs %.0f x %.0f pixels and is cut off by the %d x %d "
-                   "image; use a larger --size, or --legend-text-scale 1\n",
-                   double(r.x1 - r.x0), double(r.y1 - r.y0), o.width, o.height);
+                   "image; use a larger --size%s\n",
+                   double(r.x1 - r.x0), double(r.y1 - r.y0), o.width, o.height,
+                   legend->layout().textScale > 1 ? ", or --legend-text-scale 1" : "");
   }
   std::vector<double> times, cpuTimes;
   for (int k = 0; k < o.repeat; ++k) {

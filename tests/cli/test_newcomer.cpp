@@ -132,3 +132,18 @@ TEST(Newcomer, MaskHelpListsTheVolumeFormatsTheUnderlayHelpDoes) {
   EXPECT_GE(underlay.size(), 7u);
   EXPECT_EQ(mask, underlay);
 }
+
+// The cut-off legend's warning told every user to try --legend-text-scale 1,
+// which is what an image under 700 rows already uses: advice that changes
+// nothing. It is given only where the text is larger.
+TEST(Newcomer, CutOffLegendAdvisesSmallerTextOnlyWhereItIsLarger) {
+  const fs::path out = dir() / "legend.png";
+  const std::string render = "render -o " + out.string() + " --no-shadows --no-ao --legend";
+  const CmdResult small = run(render + " --size 200 150");
+  ASSERT_EQ(small.code, 0) << small.err;
+  EXPECT_NE(small.err.find("is cut off by the 200 x 150 image; use a larger --size\n"), std::string::npos) << small.err;
+  EXPECT_EQ(small.err.find("--legend-text-scale"), std::string::npos) << small.err;
+  const CmdResult large = run(render + " --size 400 300 --legend-text-scale 3");
+  ASSERT_EQ(large.code, 0) << large.err;
+  EXPECT_NE(large.err.find("use a larger --size, or --legend-text-scale 1"), std::string::npos) << large.err;
+}
