@@ -117,3 +117,18 @@ TEST(GlyphRecords, AnMdSpreadBelowSinglePrecisionIsOneMd) {
   const GlyphSet varied = buildGlyphs(pos, ten, {}, 1);
   EXPECT_GT(varied.mdMax - varied.mdMin, 4e-5);
 }
+
+// Slicer's estimated helix is 95% zero tensors (background), which draw
+// nothing; --color md spread the drawn glyphs over [0, max], half the bar.
+TEST(GlyphRecords, MdRangeLeavesOutZeroTensors) {
+  std::vector<float> ten, pos;
+  for (int i = 0; i < 13; ++i) {
+    const float s = i % 3 == 0 ? 1.0f : i % 3 == 1 ? 2.0f : 0.0f;
+    ten.insert(ten.end(), {3 * s, 0, 0, 2 * s, 0, s});
+    pos.insert(pos.end(), {float(i), 0, 0});
+  }
+  const GlyphSet set = buildGlyphs(pos, ten, {}, 1);
+  EXPECT_DOUBLE_EQ(set.mdMin, 2.0);
+  EXPECT_DOUBLE_EQ(set.mdMax, 4.0);
+  EXPECT_EQ(set.glyphs.size(), 13u);  // the zero tensors are still records (they are counted as drawn)
+}
