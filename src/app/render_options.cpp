@@ -98,6 +98,9 @@ void validateRenderOptions(const RenderOptions& o, bool toFile) {
   if (!(o.epsilon >= 1e-9 && o.epsilon <= 0.5)) throw UsageError("--epsilon must be within 1e-9..0.5");
   o.validateSceneFlags(o.input);
   if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
+  // Checked here, not only by validateCamera: a framed camera's distance
+  // divides by tan(fov / 2), so --fov 0 failed as "camera vectors must be finite".
+  if (o.fov && !(*o.fov > 0.0 && *o.fov < 180.0)) throw UsageError("--fov must be in (0, 180) degrees");
   if ((o.lookAt || o.up) && !o.eye) throw UsageError("--look-at and --up need --eye");
   if (!colorModeNamed(o.color))
     throw UsageError("--color: unknown mode \"" + o.color + "\"; choose " + kColorModeNames);

@@ -147,3 +147,15 @@ TEST(Newcomer, CutOffLegendAdvisesSmallerTextOnlyWhereItIsLarger) {
   ASSERT_EQ(large.code, 0) << large.err;
   EXPECT_NE(large.err.find("use a larger --size, or --legend-text-scale 1"), std::string::npos) << large.err;
 }
+
+// --fov 0 said "camera vectors must be finite": the framed eye's distance
+// divides by tan(fov / 2) before the camera's own check names --fov.
+TEST(Newcomer, FieldOfViewOutOfRangeIsNamed) {
+  const fs::path field = dir() / "fov.vtk", out = dir() / "fov.png";
+  ASSERT_EQ(run("synth helix --n 6 -o " + field.string()).code, 0);
+  for (const char* fov : {"0", "-10", "180"}) {
+    const std::string args = "render " + field.string() + " -o " + out.string() + " --size 64 48 --fov " + fov;
+    tg::test::expectFailsCleanly(args, "--fov must be in (0, 180) degrees", out, dir(), 1);
+    EXPECT_EQ(run(args).code, 2) << args;
+  }
+}
