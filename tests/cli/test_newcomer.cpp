@@ -159,3 +159,15 @@ TEST(Newcomer, FieldOfViewOutOfRangeIsNamed) {
     EXPECT_EQ(run(args).code, 2) << args;
   }
 }
+
+// `bench accuracy --scale 2` (world units per eigenvalue unit: the helix's
+// glyphs a few thousandths wide) compared frames without a glyph pixel and
+// reported 0% error on every row.
+TEST(Newcomer, AccuracyBenchWithNothingToCompareFails) {
+  const fs::path csv = dir() / "acc.csv";
+  const std::string args =
+      "bench accuracy -o " + csv.string() + " --scale 2 --size 64 48 --frames 1 --iterations 1 --epsilon 1e-2";
+  tg::test::expectFailsCleanly(args, "no glyph covers a pixel at this scale and size", csv, dir(), 1);
+  EXPECT_EQ(run(args).code, 1);
+  EXPECT_FALSE(fs::exists(dir() / "acc.png"));
+}
