@@ -53,6 +53,15 @@ int cmdRender(int argc, const char** argv) {
   render::GlyphRenderer& renderer = session.renderer();
   gl::Context& ctx = session.context();
   const std::size_t glyphCount = session.glyphCount();
+  // A blank image needs its reason: --scale alone is absolute (world units
+  // per eigenvalue unit), and a DTI field's eigenvalues are about 1e-3.
+  if (const double typicalPx = 2.0 * fr.sized.typicalRadiusWC * render::pixelsPerWorldUnit(cam); typicalPx < 0.25) {
+    if (sink) sink({}, 0, 0, {});
+    std::fprintf(stderr,
+                 "tensorglyph render: the typical glyph is %.2g pixels across, so the image shows almost nothing; a "
+                 "larger --scale draws them (given alone, --scale is world units per eigenvalue unit)\n",
+                 typicalPx);
+  }
   const double frames = 1.0 + o.repeat;
   if (sink) sink("rendering", 0, frames, "frames");
   const auto t3 = Clock::now();

@@ -2,6 +2,7 @@
 // the binary does, and outputs a command cannot write.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <set>
 #include <sstream>
@@ -170,4 +171,22 @@ TEST(Newcomer, AccuracyBenchWithNothingToCompareFails) {
   tg::test::expectFailsCleanly(args, "no glyph covers a pixel at this scale and size", csv, dir(), 1);
   EXPECT_EQ(run(args).code, 1);
   EXPECT_FALSE(fs::exists(dir() / "acc.png"));
+}
+
+// `--scale 1` given alone is absolute: a DTI field's glyphs (eigenvalues
+// about 0.005) come out a hundredth of a pixel wide, and render wrote an
+// empty image without a word.
+TEST(Newcomer, ScaleThatLeavesTheImageEmptySaysSo) {
+  const fs::path field = dir() / "tiny.vtk", out = dir() / "tiny.png";
+  ASSERT_EQ(run("synth helix --n 8 -o " + field.string()).code, 0);  // eigenvalues about 1e-3
+  const std::string render = "render " + field.string() + " -o " + out.string() + " --size 96 64";
+  const CmdResult tiny = run(render + " --scale 1");
+  ASSERT_EQ(tiny.code, 0) << tiny.err;
+  EXPECT_TRUE(fs::exists(out));
+  EXPECT_NE(tiny.err.find("pixels across, so the image shows almost nothing; a larger --scale draws them"),
+            std::string::npos) << tiny.err;
+  EXPECT_EQ(std::count(tiny.err.begin(), tiny.err.end(), '\n'), 1) << tiny.err;
+  const CmdResult framed = run(render);
+  ASSERT_EQ(framed.code, 0) << framed.err;
+  EXPECT_EQ(framed.err, "");
 }
