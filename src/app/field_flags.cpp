@@ -136,6 +136,12 @@ void checkLoaded(const io::TensorField& f, const io::ReadOptions& opt) {
 }
 
 void checkDrawable(const tensor::GlyphSet& g, const std::string& path) {
+  // --cl-min and --cp-min apply after the eigensystems, so checkLoaded cannot
+  // see that they leave nothing; an empty set then failed as "the glyphs
+  // extend beyond the floating-point range".
+  if (g.glyphs.empty() && g.droppedByShape > 0)
+    throw io::InputError("checkDrawable: " + path + ": no tensor to draw: all " + std::to_string(g.droppedByShape) +
+                         " are below --cl-min or --cp-min");
   // Zero eigenvalues everywhere (or values below single precision's range)
   // give glyphs of size zero: an empty image, and a scale with no meaning.
   if (!g.glyphs.empty() && !(g.maxAbsEigenvalue > 0.0))

@@ -190,3 +190,17 @@ TEST(Newcomer, ScaleThatLeavesTheImageEmptySaysSo) {
   ASSERT_EQ(framed.code, 0) << framed.err;
   EXPECT_EQ(framed.err, "");
 }
+
+// --cl-min drops glyphs after the eigensystems, past checkLoaded's count: a
+// threshold above every tensor's cl failed as "the glyphs extend beyond the
+// floating-point range".
+TEST(Newcomer, ShapeThresholdThatLeavesNothingSaysSo) {
+  const fs::path field = dir() / "shape.vtk", out = dir() / "shape.png";
+  ASSERT_EQ(run("synth helix --n 6 -o " + field.string()).code, 0);
+  const std::string args = "render " + field.string() + " -o " + out.string() + " --size 64 48 --cl-min 1";
+  tg::test::expectFailsCleanly(args, ": no tensor to draw: all ", out, dir(), 1);
+  const CmdResult r = run(args);
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find(" are below --cl-min or --cp-min"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("floating-point range"), std::string::npos) << r.err;
+}
