@@ -55,7 +55,8 @@ int cmdRender(int argc, const char** argv) {
   const std::size_t glyphCount = session.glyphCount();
   // A blank image needs its reason: --scale alone is absolute (world units
   // per eigenvalue unit), and a DTI field's eigenvalues are about 1e-3.
-  if (const double typicalPx = 2.0 * fr.sized.typicalRadiusWC * render::pixelsPerWorldUnit(cam); typicalPx < 0.25) {
+  const double typicalPx = 2.0 * fr.sized.typicalRadiusWC * render::pixelsPerWorldUnit(cam);
+  if (typicalPx < 0.25) {
     if (sink) sink({}, 0, 0, {});
     std::fprintf(stderr,
                  "tensorglyph render: the typical glyph is %.2g pixels across, so the image shows almost nothing; a "
@@ -100,6 +101,13 @@ int cmdRender(int argc, const char** argv) {
                  static_cast<unsigned long long>(st.gaugeCalls));
   }
   const std::uint64_t drawn = renderer.drawnGlyphs();
+  // --fa-min is a uniform, so a threshold above every glyph's FA cannot fail
+  // the load; an empty image still needs its reason.
+  if (drawn == 0 && glyphCount > 0 && !(typicalPx < 0.25)) {
+    if (sink) sink({}, 0, 0, {});
+    const std::string why = params.faMin > 0 ? "below --fa-min " + formatNumber(params.faMin) + " or outside" : "outside";
+    std::fprintf(stderr, "tensorglyph render: no glyph is drawn: all %zu are %s the view\n", glyphCount, why.c_str());
+  }
   // The first frame's freed heap (llvmpipe's compile and scene memory)
   // goes back to the system before the readback allocates: a lower peak.
   malloc_trim(0);

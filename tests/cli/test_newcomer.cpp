@@ -204,3 +204,21 @@ TEST(Newcomer, ShapeThresholdThatLeavesNothingSaysSo) {
   EXPECT_NE(r.err.find(" are below --cl-min or --cp-min"), std::string::npos) << r.err;
   EXPECT_EQ(r.err.find("floating-point range"), std::string::npos) << r.err;
 }
+
+// --fa-min above every glyph's FA (Kindlmann's helix peaks at 0.62), or a
+// camera looking away, wrote a blank image without a word.
+TEST(Newcomer, FrameWithoutAGlyphSaysWhy) {
+  const fs::path field = dir() / "blank.vtk", out = dir() / "blank.png";
+  ASSERT_EQ(run("synth helix --n 6 -o " + field.string()).code, 0);
+  const std::string render = "render " + field.string() + " -o " + out.string() + " --size 64 48";
+  const CmdResult hidden = run(render + " --fa-min 0.99");
+  ASSERT_EQ(hidden.code, 0) << hidden.err;
+  EXPECT_NE(hidden.err.find("no glyph is drawn: all "), std::string::npos) << hidden.err;
+  EXPECT_NE(hidden.err.find(" are below --fa-min 0.99 or outside the view\n"), std::string::npos) << hidden.err;
+  const CmdResult away = run(render + " --eye 0 0 100 --look-at 0 0 200");
+  ASSERT_EQ(away.code, 0) << away.err;
+  EXPECT_NE(away.err.find(" are outside the view\n"), std::string::npos) << away.err;
+  const CmdResult seen = run(render);
+  ASSERT_EQ(seen.code, 0) << seen.err;
+  EXPECT_EQ(seen.err, "");
+}
