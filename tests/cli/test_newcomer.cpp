@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <set>
 #include <sstream>
 #include <string>
@@ -221,4 +222,28 @@ TEST(Newcomer, FrameWithoutAGlyphSaysWhy) {
   const CmdResult seen = run(render);
   ASSERT_EQ(seen.code, 0) << seen.err;
   EXPECT_EQ(seen.err, "");
+}
+
+// A mesh name whose extension no reader takes, or --mesh-from-input on a
+// volume format, is known from the command line: exit 2 before the tensors
+// load, where it was exit 1 after (readMesh).
+TEST(Newcomer, MeshNamesNoReaderTakesAreUsageErrors) {
+  const fs::path field = dir() / "meshless.vtk", nrrd = dir() / "meshless.nrrd", out = dir() / "meshless.png";
+  ASSERT_EQ(run("synth helix --n 6 -o " + field.string()).code, 0);
+  ASSERT_EQ(run("synth helix --n 6 -o " + nrrd.string()).code, 0);
+  std::ofstream(dir() / "box.off") << "OFF\n";
+  const struct {
+    std::string args;
+    const char* said;
+  } cases[] = {
+      {"render " + field.string() + " --mesh " + (dir() / "box.off").string(),
+       ": unknown mesh extension \".off\"; supported: .vtp .vtk .stl .obj .ply"},
+      {"render " + nrrd.string() + " --mesh-from-input",
+       "--mesh-from-input needs an FEM mesh input (.vtu or a legacy .vtk unstructured grid), not \".nrrd\""},
+  };
+  for (const auto& c : cases) {
+    const std::string args = c.args + " -o " + out.string() + " --size 64 48";
+    tg::test::expectFailsCleanly(args, c.said, out, dir(), 1);
+    EXPECT_EQ(run(args).code, 2) << args;
+  }
 }
