@@ -35,16 +35,19 @@ std::uint64_t checkMeshFile(const std::string& path, MeshSource source) {
   if (S_ISDIR(st.st_mode)) fail(path, "is a directory");
   if (!S_ISREG(st.st_mode)) fail(path, "not a regular file");
   if (st.st_size == 0) fail(path, "file is empty");
+  if (const std::string problem = meshExtensionProblem(path, source); !problem.empty()) fail(path, problem);
+  return std::uint64_t(st.st_size);
+}
+
+std::string meshExtensionProblem(const std::string& path, MeshSource source) {
   const std::string ext = meshExtension(path);
-  if (source == MeshSource::FemBoundary) {
-    if (ext != "vtu" && ext != "vtk")
-      fail(path, "--mesh-from-input needs an FEM mesh input (.vtu or a legacy .vtk unstructured grid), not \"." + ext +
-                     "\"");
-    return std::uint64_t(st.st_size);
-  }
+  if (source == MeshSource::FemBoundary)
+    return ext == "vtu" || ext == "vtk" ? ""
+                                        : "--mesh-from-input needs an FEM mesh input (.vtu or a legacy .vtk "
+                                          "unstructured grid), not \"." + ext + "\"";
   for (const char* e : {"vtp", "vtk", "stl", "obj", "ply", "vtu", "vts"})
-    if (ext == e) return std::uint64_t(st.st_size);
-  fail(path, "unknown mesh extension \"." + ext + "\"; supported: .vtp .vtk .stl .obj .ply, and .vtu .vts (outer surface)");
+    if (ext == e) return "";
+  return "unknown mesh extension \"." + ext + "\"; supported: .vtp .vtk .stl .obj .ply, and .vtu .vts (outer surface)";
 }
 
 MeshData readMesh(const std::string& path, MeshSource source) {

@@ -45,5 +45,8 @@ MeshData readMeshInProcess(const std::string& path, MeshSource source, std::uint
 std::uint64_t checkMeshFile(const std::string& path, MeshSource source);
 // The extension of `path`, lower case, without the dot ("" when none).
 std::string meshExtension(const std::string& path);
+// Why a file of this name cannot be read as `source` (its extension), or ""
+// when it can: the command line checks names before anything is loaded.
+std::string meshExtensionProblem(const std::string& path, MeshSource source);
 
 }  // namespace tg::io

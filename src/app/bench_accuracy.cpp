@@ -194,10 +194,16 @@ int benchAccuracy(int argc, const char** argv) {
   render::GBuffer target(ctx->api(), o.width, o.height);
   renderer.upload(glyphs);
   if (sink) sink({}, 0, 0, {});
+  const auto refPixels =
+      std::size_t(std::count_if(reference.id.begin(), reference.id.end(), [](auto id) { return id != ref::kNoGlyph; }));
+  // Every error is a share of these pixels: with none, each row would claim 0%.
+  if (refPixels == 0)
+    throw io::InputError("bench accuracy: " + scene.field.path +
+                         ": no glyph covers a pixel at this scale and size, so there is nothing to compare (--scale "
+                         "given alone is in world units per eigenvalue unit; try --scale-mode spacing)");
   std::fprintf(stderr, "bench accuracy: %s, %zu glyphs, gamma %g, %dx%d, %s (%s); reference %.0f ms, %zu glyph pixels\n",
                scene.field.path.c_str(), glyphs.glyphs.size(), o.gamma, o.width, o.height, ctx->backendName(),
-               ctx->describe().c_str(), refMs, std::size_t(std::count_if(reference.id.begin(), reference.id.end(),
-                                                                         [](auto id) { return id != ref::kNoGlyph; })));
+               ctx->describe().c_str(), refMs, refPixels);
 
   std::vector<Row> rows;
   if (sink) sink({}, 0, 0, {});  // the table goes to stdout, often the same terminal

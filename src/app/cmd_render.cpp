@@ -53,6 +53,16 @@ int cmdRender(int argc, const char** argv) {
   render::GlyphRenderer& renderer = session.renderer();
   gl::Context& ctx = session.context();
   const std::size_t glyphCount = session.glyphCount();
+  // A blank image needs its reason: --scale alone is absolute (world units
+  // per eigenvalue unit), and a DTI field's eigenvalues are about 1e-3.
+  const double typicalPx = 2.0 * fr.sized.typicalRadiusWC * render::pixelsPerWorldUnit(cam);
+  if (typicalPx < 0.25) {
+    if (sink) sink({}, 0, 0, {});
+    std::fprintf(stderr,
+                 "tensorglyph render: the typical glyph is %.2g pixels across, so the image shows almost nothing; a "
+                 "larger --scale draws them (given alone, --scale is world units per eigenvalue unit)\n",
+                 typicalPx);
+  }
   const double frames = 1.0 + o.repeat;
   if (sink) sink("rendering", 0, frames, "frames");
   const auto t3 = Clock::now();
@@ -62,11 +72,13 @@ int cmdRender(int argc, const char** argv) {
   if (const auto* legend = static_cast<const render::LegendPass*>(renderer.legendPass())) {
     const render::LegendRect& r = legend->layout().panel;
     if (sink && (r.x1 > float(o.width) || r.y1 > float(o.height))) sink({}, 0, 0, {});
+    // Smaller text is a remedy only where the text is larger than 1.
     if (r.x1 > float(o.width) || r.y1 > float(o.height))
       std::fprintf(stderr,
                    "tensorglyph render: --legend: the legend needs %.0f x %.0f pixels and is cut off by the %d x %d "
-                   "image; use a larger --size, or --legend-text-scale 1\n",
-                   double(r.x1 - r.x0), double(r.y1 - r.y0), o.width, o.height);
+                   "image; use a larger --size%s\n",
+                   double(r.x1 - r.x0), double(r.y1 - r.y0), o.width, o.height,
+                   legend->layout().textScale > 1 ? ", or --legend-text-scale 1" : "");
   }
   std::vector<double> times, cpuTimes;
   for (int k = 0; k < o.repeat; ++k) {
@@ -89,6 +101,13 @@ int cmdRender(int argc, const char** argv) {
                  static_cast<unsigned long long>(st.gaugeCalls));
   }
   const std::uint64_t drawn = renderer.drawnGlyphs();
+  // --fa-min is a uniform, so a threshold above every glyph's FA cannot fail
+  // the load; an empty image still needs its reason.
+  if (drawn == 0 && glyphCount > 0 && !(typicalPx < 0.25)) {
+    if (sink) sink({}, 0, 0, {});
+    const std::string why = params.faMin > 0 ? "below --fa-min " + formatNumber(params.faMin) + " or outside" : "outside";
+    std::fprintf(stderr, "tensorglyph render: no glyph is drawn: all %zu are %s the view\n", glyphCount, why.c_str());
+  }
   // The first frame's freed heap (llvmpipe's compile and scene memory)
   // goes back to the system before the readback allocates: a lower peak.
   malloc_trim(0);

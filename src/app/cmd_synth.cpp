@@ -15,9 +15,30 @@ namespace {
 
 constexpr const char* kKinds = "helix, boussinesq, extremes, extremes-tiny, extremes-huge, random";
 
+bool isKind(const std::string& k) {
+  for (const char* name : {"helix", "boussinesq", "extremes", "extremes-tiny", "extremes-huge", "random"})
+    if (k == name) return true;
+  return false;
+}
+
 bool endsWith(const std::string& s, const char* suffix) {
   const std::string x(suffix);
   return s.size() >= x.size() && s.compare(s.size() - x.size(), x.size(), x) == 0;
+}
+
+// Which files each KIND can be written to, checked before anything is
+// generated: a point set has no grid for .nrrd or .vti, and only random
+// streams .nhdr.
+void checkSynthOutput(const std::string& kind, const std::string& out) {
+  const bool gridded = kind == "helix" || kind == "boussinesq";
+  for (const char* ext : {".vtk", ".vtu", ".vtp"})
+    if (endsWith(out, ext)) return;
+  if (gridded && (endsWith(out, ".vti") || endsWith(out, ".nrrd"))) return;
+  if (kind == "random" && endsWith(out, ".nhdr")) return;
+  const char* exts = gridded ? "is written as .vtk .vti .vtu .vtp or .nrrd"
+                     : kind == "random" ? "is a point set: write .vtk .vtu .vtp or .nhdr (streamed)"
+                                        : "is a point set: write .vtk .vtu or .vtp";
+  throw UsageError("-o: \"" + out + "\": " + kind + " " + exts);
 }
 
 void writeField(const io::TensorField& f, const std::string& out, const double* frame,
@@ -52,6 +73,8 @@ int cmdSynth(int argc, const char** argv) {
   ap.arg("--quiet").help("no progress line on a terminal's stderr").action([&](Args) { quiet = true; });
   parseCommandLine(ap, argc, argv);
   if (kind.empty() || out.empty()) throw UsageError(std::string("KIND and -o OUT are required; KIND is one of ") + kKinds);
+  if (!isKind(kind)) throw UsageError("unknown KIND \"" + kind + "\"; choose " + kKinds);
+  checkSynthOutput(kind, out);
   checkOutputPath("-o", out);
   TerminalProgress progress(quiet);
   const util::ProgressSink sink = progress.sink();

@@ -1,9 +1,11 @@
 #include "app/effect_flags.h"
 
+#include <cmath>
 #include <sstream>
 #include <string>
 
 #include "app/cli_values.h"
+#include "tensor/glyph_scale.h"
 
 namespace tg::app {
 namespace {
@@ -53,7 +55,8 @@ void EffectFlags::addTo(OptionTable& ap) {
   });
   std::ostringstream autoRadius;
   autoRadius << "occlusion radius in world units (default: " << render::AoParams::kAutoRadius
-             << " typical glyph diameters, the 99th-percentile glyph's)";
+             << " typical glyph diameter, the " << std::lround(100 * tensor::ScaleParams{}.percentile) << "th"
+             << "-percentile glyph's)";
   ap.arg("--ao-radius R").help(autoRadius.str())
       .action([&](Args v) {
         ao.radius = parseAoRadius("--ao-radius", v[1]);

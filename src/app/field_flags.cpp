@@ -1,5 +1,6 @@
 #include "app/field_flags.h"
 
+#include <cmath>
 #include <cstdio>
 #include <stdexcept>
 
@@ -19,7 +20,7 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
   ap.arg("--frame F").help("NIfTI tensor axes: voxel, fsl (voxel, i reversed when det > 0) or world; default: the "
                            "layout's (fsl: fsl, mrtrix: world, else voxel)")
       .action([&](Args a) { read.frame = a[1]; });
-  ap.arg("--mask FILE").help("scalar volume on the same grid (.nrrd .nhdr .nii .nii.gz .vti)").action([&](Args a) {
+  ap.arg("--mask FILE").help("scalar volume on the same grid (.nrrd .nhdr .nii .nii.gz .mif .mih .vti)").action([&](Args a) {
     sel.maskPath = a[1];
   });
   ap.arg("--mask-min V").help("keep voxels whose mask value is >= V (default 0.5)").action([&](Args a) {
@@ -60,8 +61,9 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
   ap.arg("--scale S").help("with --scale-mode absolute (the default when given alone): world units per eigenvalue "
                            "unit; else a factor on the mode's size")
       .action([&](Args a) { scale = parseDouble("--scale", a[1]); });
-  ap.arg("--scale-mode M").help("absolute, max (largest eigenvalue -> S sample spacings across) or spacing (default: "
-                                "99th percentile -> S sample spacings)")
+  ap.arg("--scale-mode M").help("absolute, max (largest eigenvalue -> S sample spacings across) or spacing (default: " +
+                                std::to_string(std::lround(100 * tensor::ScaleParams{}.percentile)) + "th" +
+                                " percentile of the non-zero tensors -> S sample spacings)")
       .action([&](Args a) {
         const std::string m = a[1];
         if (m == "absolute") scaleMode = tensor::ScaleMode::Absolute;
@@ -134,6 +136,12 @@ void checkLoaded(const io::TensorField& f, const io::ReadOptions& opt) {
 }
 
 void checkDrawable(const tensor::GlyphSet& g, const std::string& path) {
+  // --cl-min and --cp-min apply after the eigensystems, so checkLoaded cannot
+  // see that they leave nothing; an empty set then failed as "the glyphs
+  // extend beyond the floating-point range".
+  if (g.glyphs.empty() && g.droppedByShape > 0)
+    throw io::InputError("checkDrawable: " + path + ": no tensor to draw: all " + std::to_string(g.droppedByShape) +
+                         " are below --cl-min or --cp-min");
   // Zero eigenvalues everywhere (or values below single precision's range)
   // give glyphs of size zero: an empty image, and a scale with no meaning.
   if (!g.glyphs.empty() && !(g.maxAbsEigenvalue > 0.0))

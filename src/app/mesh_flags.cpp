@@ -59,6 +59,14 @@ void MeshFlags::validate(const std::string& input) const {
   if (!firstParameterFlag.empty() && !any()) throw UsageError(firstParameterFlag + " needs --mesh or --mesh-from-input");
   if (fromInput && input.empty())
     throw UsageError("--mesh-from-input needs an input file: the built-in scene has no FEM mesh");
+  // A name that cannot be a mesh is a command-line mistake, found before the
+  // tensors load (readMesh would find it after, with exit 1).
+  if (fromInput)
+    if (const std::string p = io::meshExtensionProblem(input, io::MeshSource::FemBoundary); !p.empty())
+      throw UsageError(input + ": " + p);
+  for (const std::string& f : files)
+    if (const std::string p = io::meshExtensionProblem(f, io::MeshSource::Surface); !p.empty())
+      throw UsageError("--mesh: " + f + ": " + p);
 }
 
 std::vector<NamedPath> MeshFlags::inputs() const {

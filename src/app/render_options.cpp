@@ -46,12 +46,17 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
   });
   ap.arg("--iterations N").help("superquadric Newton iterations at most (default 10)").action([&](Args a) {
     o.maxIterations = parseIntIn("--iterations", a[1], 1, 1000);
+    if (o.marchFlag.empty()) o.marchFlag = "--iterations";
   });
   ap.arg("--epsilon E").help("superquadric hit tolerance, relative to glyph size (default 1e-4)")
-      .action([&](Args a) { o.epsilon = parseDouble("--epsilon", a[1]); });
+      .action([&](Args a) {
+        o.epsilon = parseDouble("--epsilon", a[1]);
+        if (o.marchFlag.empty()) o.marchFlag = "--epsilon";
+      });
   ap.arg("--stats").help("report Newton iteration statistics on stderr").action([&](Args) { o.stats = true; });
-  ap.arg("--gamma G").help("superquadric sharpness (Kindlmann 2004), >= 0").action([&](Args a) {
+  ap.arg("--gamma G").help("superquadric sharpness (Kindlmann 2004), 0..10000 (default " + formatNumber(o.gamma) + ")").action([&](Args a) {
     o.gamma = parseDouble("--gamma", a[1]);
+    if (o.marchFlag.empty()) o.marchFlag = "--gamma";
   });
   ap.arg("--fa-min F").help("hide glyphs with FA below F").action([&](Args a) { o.faMin = parseDoubleIn("--fa-min", a[1], 0.0, 1.0); });
   ap.arg("--eye X Y Z").help("camera position (WC)").action([&](Args a) { o.eye = parseVec3("--eye", rest(a)); });
@@ -85,10 +90,17 @@ void validateRenderOptions(const RenderOptions& o, bool toFile) {
     throw UsageError("--tessellate must be within 4..64");
   if (o.tessellate != 0 && o.glyph != "superquadric") throw UsageError("--tessellate needs --glyph superquadric");
   if (o.tessellate != 0 && o.stats) throw UsageError("--stats counts the ray march; --tessellate has none");
+  const bool marches = o.look.glyphGiven || !o.input.empty() ? o.glyph == "superquadric"
+                                                             : SceneLook{}.glyph == render::GlyphKind::Superquadric;
+  if (toFile && !o.marchFlag.empty() && !marches)
+    throw UsageError(o.marchFlag + " applies to --glyph superquadric only; this render draws " + o.glyph + " glyphs");
   if (o.maxIterations < 1 || o.maxIterations > 1000) throw UsageError("--iterations must be within 1..1000");
   if (!(o.epsilon >= 1e-9 && o.epsilon <= 0.5)) throw UsageError("--epsilon must be within 1e-9..0.5");
   o.validateSceneFlags(o.input);
   if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
+  // Checked here, not only by validateCamera: a framed camera's distance
+  // divides by tan(fov / 2), so --fov 0 failed as "camera vectors must be finite".
+  if (o.fov && !(*o.fov > 0.0 && *o.fov < 180.0)) throw UsageError("--fov must be in (0, 180) degrees");
   if ((o.lookAt || o.up) && !o.eye) throw UsageError("--look-at and --up need --eye");
   if (!colorModeNamed(o.color))
     throw UsageError("--color: unknown mode \"" + o.color + "\"; choose " + kColorModeNames);

@@ -29,6 +29,10 @@ struct RenderOptions : SceneFlags {
   int repeat = 0, tessellate = 0, maxIterations = render::MarchParams{}.maxIterations;
   double epsilon = render::MarchParams{}.epsilon;
   bool verbose = false, stats = false, quiet = false;
+  // The first of --gamma, --iterations and --epsilon given: `render` refuses
+  // it for glyphs that do not march (a Teem user's --gamma on a file's
+  // default ellipsoids); view and Python may switch to superquadrics later.
+  std::string marchFlag;
 };
 
 

@@ -93,8 +93,11 @@ TG_LANE_CLONES void buildRange(std::span<const float> pos, std::span<const float
       // dropped ones take the neutral values.
       const Lanes4 lane = splat<Lanes4>(double(k)) + Lanes4{0, 1, 2, 3};
       const auto kept = lane < splat<Lanes4>(double(n)) && !dr;
-      mdLo = lmin(mdLo, kept ? an.md : inf);
-      mdHi = lmax(mdHi, kept ? an.md : -inf);
+      // MD's colour range leaves out zero tensors, which draw nothing: the
+      // background of a DTI volume would pull it to 0.
+      const auto sized = kept && (l[0] != zero || l[2] != zero);
+      mdLo = lmin(mdLo, sized ? an.md : inf);
+      mdHi = lmax(mdHi, sized ? an.md : -inf);
       eLo = lmin(eLo, kept ? l[2] : inf);
       eHi = lmax(eHi, kept ? l[0] : -inf);
       absHi = lmax(absHi, kept ? lmax(labs(l[0]), labs(l[2])) : zero);
@@ -241,6 +244,10 @@ GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> te
   set.maxAbsEigenvalue = all.maxAbs;
   set.mdMin = all.mdMin;
   set.mdMax = all.mdMax;
+  // A field of one MD stored in floats (Kindlmann's dt-helix) varies by
+  // rounding alone; mapped onto a colour map, that spread drew noise. A
+  // spread single precision cannot resolve against the eigenvalues is one MD.
+  if (set.mdMin <= set.mdMax && set.mdMax - set.mdMin <= 1e-6 * all.maxAbs) set.mdMin = set.mdMax = 0.5 * (all.mdMin + all.mdMax);
   set.eigenvalueMin = all.eigenMin;
   set.eigenvalueMax = all.eigenMax;
   groupTiles(set, groups.data(), chunks);

@@ -51,7 +51,7 @@ struct GlyphSet {
   std::vector<GlyphTile> tiles;  // ceil(glyphs / kTileGlyphs)
   glm::dvec3 boundsMinWC{0.0}, boundsMaxWC{0.0};  // of glyph centres
   double maxAbsEigenvalue = 0;
-  double mdMin = 0, mdMax = 0;
+  double mdMin = 0, mdMax = 0;  // of the non-zero tensors: the colour range of --color md
   double eigenvalueMin = 0, eigenvalueMax = 0;  // signed: a stress field's compression and tension
   // Totals over the tiles: three equal eigenvalues; definite (all positive
   // or all negative); the rest have eigenvalues of mixed sign or zero.

@@ -86,3 +86,49 @@ TEST(GlyphRecords, ClampAndShapeFilterApplyPerLane) {
     for (int k = 0; k < 3; ++k) EXPECT_EQ(g.eigenvalues[k], float(std::max(es.values[k], 0.05)));
   }
 }
+
+// Kindlmann's dt-helix has one MD (0.5) everywhere, stored in floats: rotated
+// tensors' traces differ by rounding alone. --color md mapped that spread
+// (about 1e-7) onto viridis, so glyphs of one MD came out yellow and purple.
+TEST(GlyphRecords, AnMdSpreadBelowSinglePrecisionIsOneMd) {
+  std::mt19937_64 rng(11);
+  std::normal_distribution<double> g;
+  const std::size_t n = 2000;
+  auto rotated = [&](glm::dvec3 lambda) {
+    std::vector<float> ten;
+    for (std::size_t i = 0; i < n; ++i) {
+      const glm::dmat3 r = glm::mat3_cast(glm::normalize(glm::dquat(g(rng), g(rng), g(rng), g(rng))));
+      const glm::dmat3 d = r * glm::dmat3(lambda.x, 0, 0, 0, lambda.y, 0, 0, 0, lambda.z) * glm::transpose(r);
+      ten.insert(ten.end(), {float(d[0][0]), float(d[0][1]), float(d[0][2]), float(d[1][1]), float(d[1][2]),
+                             float(d[2][2])});
+    }
+    return ten;
+  };
+  const std::vector<float> pos(3 * n, 0.0f);
+  for (const glm::dvec3 lambda : {glm::dvec3(0.9, 0.4, 0.2), glm::dvec3(300, 0, -300)}) {
+    const GlyphSet set = buildGlyphs(pos, rotated(lambda), {}, 1);
+    EXPECT_EQ(float(set.mdMin), float(set.mdMax)) << set.mdMin << " " << set.mdMax;
+    EXPECT_NEAR(set.mdMin, (lambda.x + lambda.y + lambda.z) / 3, 1e-6 * lambda.x);
+  }
+  // A real spread, however small against the mean, is kept.
+  std::vector<float> ten = rotated(glm::dvec3(0.9, 0.4, 0.2));
+  for (std::size_t i = 0; i < n; i += 2)
+    for (int c : {0, 3, 5}) ten[6 * i + std::size_t(c)] *= 1.0001f;
+  const GlyphSet varied = buildGlyphs(pos, ten, {}, 1);
+  EXPECT_GT(varied.mdMax - varied.mdMin, 4e-5);
+}
+
+// Slicer's estimated helix is 95% zero tensors (background), which draw
+// nothing; --color md spread the drawn glyphs over [0, max], half the bar.
+TEST(GlyphRecords, MdRangeLeavesOutZeroTensors) {
+  std::vector<float> ten, pos;
+  for (int i = 0; i < 13; ++i) {
+    const float s = i % 3 == 0 ? 1.0f : i % 3 == 1 ? 2.0f : 0.0f;
+    ten.insert(ten.end(), {3 * s, 0, 0, 2 * s, 0, s});
+    pos.insert(pos.end(), {float(i), 0, 0});
+  }
+  const GlyphSet set = buildGlyphs(pos, ten, {}, 1);
+  EXPECT_DOUBLE_EQ(set.mdMin, 2.0);
+  EXPECT_DOUBLE_EQ(set.mdMax, 4.0);
+  EXPECT_EQ(set.glyphs.size(), 13u);  // the zero tensors are still records (they are counted as drawn)
+}

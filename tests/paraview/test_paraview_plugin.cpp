@@ -467,4 +467,20 @@ TEST_P(ParaViewLegend, ScalarBarShowsTheGlyphColoursAndRange) {
 
 INSTANTIATE_TEST_SUITE_P(Modes, ParaViewLegend, ::testing::Values(1, 2, 5));
 
+// A dataset without tensors (a scalar map, or the 7-component masked tensors
+// ParaView's NRRD reader gives as plain scalars) drew a blank view and said
+// nothing; the representation now warns in ParaView's output messages.
+TEST_F(ParaViewPlugin, DatasetWithoutTensorsIsSaidSo) {
+  TG_SKIP_WITHOUT_PARAVIEW();
+  const fs::path in = dir / "scalars.vtk", png = dir / "scalars.png";
+  std::ofstream(in) << "# vtk DataFile Version 3.0\nscalars only\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n"
+                       "0 0 0 1 0 0 0 1 0\nPOINT_DATA 3\nSCALARS fa float 1\nLOOKUP_TABLE default\n0.1 0.5 0.9\n";
+  const CmdResult r = runPvbatch("--output " + png.string() + " --input " + in.string(), dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("no point tensors to draw"), std::string::npos) << r.err;
+  const CmdResult kitten = runPvbatch("--output " + png.string() + " " + kCamera, dir);
+  ASSERT_EQ(kitten.code, 0) << kitten.err;
+  EXPECT_EQ(kitten.err.find("no point tensors to draw"), std::string::npos) << kitten.err;
+}
+
 }  // namespace

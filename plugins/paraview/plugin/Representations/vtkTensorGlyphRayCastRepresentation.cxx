@@ -43,6 +43,11 @@ int vtkTensorGlyphRayCastRepresentation::RequestData(
   vtkDataSet* input =
     inputVector[0]->GetNumberOfInformationObjects() == 1 ? vtkDataSet::GetData(inputVector[0], 0) : nullptr;
   vtkDataArray* tensors = input ? this->GetInputArrayToProcess(0, input) : nullptr;
+  // Without a tensor array nothing is drawn; a dataset with points then
+  // needs a word, or the representation is a blank view.
+  if (!tensors && input && input->GetNumberOfPoints() > 0)
+    vtkWarningMacro(<< "no point tensors to draw: the dataset has no active tensors; choose a point array of 9 "
+                       "components (3x3) or 6 (XX YY ZZ XY YZ XZ) as Tensors");
   try {
     // Collective over the ranks: every rank runs this, with or without points.
     this->Prepared->ShallowCopy(
