@@ -19,6 +19,8 @@ namespace {
 struct Partial {
   glm::dvec3 lo{std::numeric_limits<double>::infinity()};
   glm::dvec3 hi{-std::numeric_limits<double>::infinity()};
+  glm::dvec3 sizedLo{std::numeric_limits<double>::infinity()};  // of the glyphs with a size
+  glm::dvec3 sizedHi{-std::numeric_limits<double>::infinity()};
   double maxAbs = 0;
   double mdMin = std::numeric_limits<double>::infinity();
   double mdMax = -std::numeric_limits<double>::infinity();
@@ -70,8 +72,9 @@ TG_LANE_CLONES void buildRange(std::span<const float> pos, std::span<const float
   const Lanes4 clamp = splat<Lanes4>(opt.minEigenvalue ? *opt.minEigenvalue : -std::numeric_limits<double>::infinity());
   const Lanes4 inf = splat<Lanes4>(std::numeric_limits<double>::infinity()), zero = splat<Lanes4>(0.0);
   Lanes4 mdLo = inf, mdHi = -inf, eLo = inf, eHi = -inf, absHi = zero;
-  float lo[3], hi[3];
-  for (int c = 0; c < 3; ++c) lo[c] = std::numeric_limits<float>::infinity(), hi[c] = -lo[c];
+  float lo[3], hi[3], sizedLo[3], sizedHi[3];
+  for (int c = 0; c < 3; ++c)
+    sizedLo[c] = lo[c] = std::numeric_limits<float>::infinity(), sizedHi[c] = hi[c] = -lo[c];
   for (std::size_t b = begin; b < end; b += B) {
     const std::size_t n = std::min(B, end - b);
     eigensolveBlock(&ten[6 * b], n, eb);
@@ -124,6 +127,11 @@ TG_LANE_CLONES void buildRange(std::span<const float> pos, std::span<const float
         lo[c] = std::min(lo[c], g.posWC[c]);
         hi[c] = std::max(hi[c], g.posWC[c]);
       }
+      if (g.eigenvalues[0] != 0.0f || g.eigenvalues[2] != 0.0f)
+        for (int c = 0; c < 3; ++c) {
+          sizedLo[c] = std::min(sizedLo[c], g.posWC[c]);
+          sizedHi[c] = std::max(sizedHi[c], g.posWC[c]);
+        }
     }
   }
   for (std::size_t j = 0; j < kLanes; ++j) {
@@ -136,6 +144,8 @@ TG_LANE_CLONES void buildRange(std::span<const float> pos, std::span<const float
   for (int c = 0; c < 3; ++c) {
     p.lo[c] = std::min(p.lo[c], double(lo[c]));
     p.hi[c] = std::max(p.hi[c], double(hi[c]));
+    p.sizedLo[c] = std::min(p.sizedLo[c], double(sizedLo[c]));
+    p.sizedHi[c] = std::max(p.sizedHi[c], double(sizedHi[c]));
   }
 }
 
@@ -233,6 +243,8 @@ GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> te
   for (const Partial& p : parts) {
     all.lo = glm::min(all.lo, p.lo);
     all.hi = glm::max(all.hi, p.hi);
+    all.sizedLo = glm::min(all.sizedLo, p.sizedLo);
+    all.sizedHi = glm::max(all.sizedHi, p.sizedHi);
     all.maxAbs = std::max(all.maxAbs, p.maxAbs);
     all.mdMin = std::min(all.mdMin, p.mdMin);
     all.mdMax = std::max(all.mdMax, p.mdMax);
@@ -241,6 +253,8 @@ GlyphSet buildGlyphs(std::span<const float> positions, std::span<const float> te
   }
   set.boundsMinWC = all.lo;
   set.boundsMaxWC = all.hi;
+  set.sizedBoundsMinWC = all.sizedLo;
+  set.sizedBoundsMaxWC = all.sizedHi;
   set.maxAbsEigenvalue = all.maxAbs;
   set.mdMin = all.mdMin;
   set.mdMax = all.mdMax;

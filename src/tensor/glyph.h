@@ -50,6 +50,10 @@ struct GlyphSet {
   util::MappedArray<GlyphRecord> glyphs;  // untouched until built: no zeroing pass
   std::vector<GlyphTile> tiles;  // ceil(glyphs / kTileGlyphs)
   glm::dvec3 boundsMinWC{0.0}, boundsMaxWC{0.0};  // of glyph centres
+  // Of the centres of glyphs that have a size (not every eigenvalue zero):
+  // what a view frames, since a DTI volume's zero background draws nothing.
+  // Empty (min > max) when no glyph has a size.
+  glm::dvec3 sizedBoundsMinWC{0.0}, sizedBoundsMaxWC{0.0};
   double maxAbsEigenvalue = 0;
   double mdMin = 0, mdMax = 0;  // of the non-zero tensors: the colour range of --color md
   double eigenvalueMin = 0, eigenvalueMax = 0;  // signed: a stress field's compression and tension

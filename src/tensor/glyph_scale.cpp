@@ -4,6 +4,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include <glm/vector_relational.hpp>
+
 namespace tg::tensor {
 namespace {
 
@@ -143,6 +145,14 @@ FramingBox framingBox(const GlyphSet& set, bool scattered, double padWC) {
   b.lo = set.boundsMinWC;
   b.hi = set.boundsMaxWC;
   b.why = scattered ? "the sample points' bounds" : "the grid samples' bounds";
+  const bool someZero = set.sizedBoundsMinWC != set.boundsMinWC || set.sizedBoundsMaxWC != set.boundsMaxWC;
+  const bool framesZero = !(someZero && glm::all(glm::lessThanEqual(set.sizedBoundsMinWC, set.sizedBoundsMaxWC)));
+  if (!framesZero) {
+    b.lo = set.sizedBoundsMinWC;
+    b.hi = set.sizedBoundsMaxWC;
+    b.why = scattered ? "the bounds of the sample points whose tensors are not zero"
+                      : "the bounds of the grid samples whose tensors are not zero";
+  }
   const std::size_t n = set.glyphs.size();
   if (scattered && n >= 200) {
     const std::size_t step = std::max<std::size_t>(1, (n + kSampleMax - 1) / kSampleMax);
@@ -152,7 +162,15 @@ FramingBox framingBox(const GlyphSet& set, bool scattered, double padWC) {
     v.reserve(n / step + 1);
     for (int a = 0; a < 3; ++a) {
       v.clear();
-      for (std::size_t i = 0; i < n; i += step) v.push_back(set.glyphs[i].posWC[a]);
+      for (std::size_t i = 0; i < n; i += step) {
+        const GlyphRecord& g = set.glyphs[i];
+        if (!framesZero && g.eigenvalues[0] == 0.0f && g.eigenvalues[2] == 0.0f) continue;
+        v.push_back(g.posWC[a]);
+      }
+      if (v.empty()) {  // the sample met only zero tensors: keep the bounds
+        outliers = false;
+        break;
+      }
       std::sort(v.begin(), v.end());
       plo[a] = quantile(v, 0.005);
       phi[a] = quantile(v, 0.995);

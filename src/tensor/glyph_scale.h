@@ -104,7 +104,9 @@ inline double maxGlyphRadiusWC(const GlyphSet& set, double scale, const SizeMapp
 BoxWC glyphBoxWC(const GlyphSet& set, double scale, const SizeMapping& s);
 
 // What the default camera frames: the sample positions, not the glyphs grown
-// by their largest one. Their bounds; for scattered points (no grid) whose
+// by their largest one; where some tensors are zero (a DTI volume's
+// background), only the positions of those that are not. Their bounds; for
+// scattered points (no grid) whose
 // bounds are more than kOutlierSpread times the 0.5..99.5 percentile box on
 // an axis, that box. Either grown by `padWC` (a typical glyph's radius).
 struct FramingBox {

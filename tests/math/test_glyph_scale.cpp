@@ -192,3 +192,32 @@ TEST(GlyphScale, ZeroTensorsDoNotSetTheScale) {
   const auto r = tensor::resolveScale({}, tensor::sampleMagnitudes(set, 1.0));
   EXPECT_NEAR(r.scale * 2e-3, 0.5, 1e-6);  // the drawn glyphs are one spacing across (2e-3 in float)
 }
+
+TEST(GlyphScale, FramingLeavesOutZeroTensors) {
+  // A 10^3 grid whose tensors are zero but in the block [2, 4] x [3, 6] x
+  // [1, 2], as a DTI volume's brain sits in its zero background: the view
+  // frames that block, not the grid. Built on several threads, so that the
+  // per-thread bounds are merged.
+  std::vector<float> pos, ten;
+  for (int i = 0; i < 1000; ++i) {
+    const int x = i % 10, y = (i / 10) % 10, z = i / 100;
+    pos.insert(pos.end(), {float(x), float(y), float(z)});
+    const bool in = x >= 2 && x <= 4 && y >= 3 && y <= 6 && z >= 1 && z <= 2;
+    const float v = in ? 1.0f : 0.0f;
+    ten.insert(ten.end(), {v, 0, 0, v / 2, 0, v / 4});
+  }
+  const auto set = tensor::buildGlyphs(pos, ten, {}, 4);
+  EXPECT_EQ(set.boundsMaxWC, glm::dvec3(9.0));
+  for (bool scattered : {false, true}) {
+    const auto box = tensor::framingBox(set, scattered, 0.5);
+    EXPECT_EQ(box.lo, glm::dvec3(1.5, 2.5, 0.5));
+    EXPECT_EQ(box.hi, glm::dvec3(4.5, 6.5, 2.5));
+    EXPECT_NE(box.why.find("not zero"), std::string::npos) << box.why;
+  }
+  // An eigenvalue floor gives the zero tensors a size: they are drawn, and framed.
+  tensor::GlyphOptions floor;
+  floor.minEigenvalue = 1e-3;
+  const auto floored = tensor::buildGlyphs(pos, ten, {}, 4, floor);
+  EXPECT_EQ(tensor::framingBox(floored, false, 0.0).hi, glm::dvec3(9.0));
+  EXPECT_EQ(tensor::framingBox(floored, false, 0.0).why.find("not zero"), std::string::npos);
+}
