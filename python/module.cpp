@@ -45,10 +45,15 @@ void applyOptions(const app::OptionTable& table, const OptionList& given, const 
   }
 }
 
-io::ArrayRef arrayRef(const py::array& a) {
+// With the GIL held: the view is read later without it.
+io::ArrayRef arrayRef(const py::array& a, const char* arg) {
   io::ArrayRef r;
   r.data = a.data();
-  if (a.dtype().kind() != 'f') throw std::domain_error("values must be float32 or float64");
+  if (a.dtype().kind() != 'f') throw std::domain_error(std::string(arg) + ": values must be float32 or float64");
+  // The values are read in place: swapped bytes would be other, finite numbers.
+  if (!a.dtype().attr("isnative").cast<bool>())
+    throw std::domain_error(std::string(arg) + ": values must be in this machine's byte order, not " +
+                            std::string(py::str(a.dtype())));
   r.itemBytes = int(a.itemsize());
   for (py::ssize_t k = 0; k < a.ndim(); ++k) {
     r.shape.push_back(a.shape(k));
@@ -61,7 +66,8 @@ class ProgressCallback;
 
 // What the glyphs come from: arrays, a file, or the built-in scene.
 struct Source {
-  std::optional<py::array> tensors, positions;
+  std::optional<py::array> tensors, positions;  // kept alive for the views
+  std::optional<io::ArrayRef> tensorsRef, positionsRef;
   std::optional<std::vector<double>> affine;  // 16, row-major
   std::string layout, frame, path;
   std::shared_ptr<ProgressCallback> progress;
@@ -97,26 +103,15 @@ class ProgressCallback {
 };
 
 app::Scene loadSource(const Source& s, const app::RenderOptions& o) {
-  if (!s.tensors) {
+  if (!s.tensorsRef) {
     io::ReadOptions read = o.field.read;
     read.progress = s.progress->sink();
     return app::loadScene(s.path, read);
   }
   app::Scene scene;
-  io::ArrayRef t;
-  try {
-    t = arrayRef(*s.tensors);
-  } catch (const std::domain_error& e) {
-    throw std::domain_error(std::string("tensors: ") + e.what());
-  }
-  if (s.positions) {
-    io::ArrayRef p;
-    try {
-      p = arrayRef(*s.positions);
-    } catch (const std::domain_error& e) {
-      throw std::domain_error(std::string("positions: ") + e.what());
-    }
-    scene.field = io::fieldFromPoints(t, s.layout, p);
+  const io::ArrayRef& t = *s.tensorsRef;
+  if (s.positionsRef) {
+    scene.field = io::fieldFromPoints(t, s.layout, *s.positionsRef);
   } else {
     if (!s.affine) throw std::invalid_argument("affine: a volume needs its 4x4 voxel-to-world affine");
     scene.field = io::fieldFromVolume(t, s.layout, s.affine->data(), s.frame,
@@ -271,8 +266,12 @@ Source makeSource(std::optional<py::array> tensors, std::optional<py::array> pos
   if (positions && !tensors) throw std::invalid_argument("positions: given without tensors");
   if (affine && affine->size() != 16) throw std::invalid_argument("affine: must be 4x4");
   if (positions && affine) throw std::invalid_argument("affine: applies to a volume, not to points with positions");
+  if (positions && !frame.empty())
+    throw std::invalid_argument("frame: applies to a volume; the tensors of points with positions are in world axes");
   s.tensors = std::move(tensors);
   s.positions = std::move(positions);
+  if (s.tensors) s.tensorsRef = arrayRef(*s.tensors, "tensors");
+  if (s.positions) s.positionsRef = arrayRef(*s.positions, "positions");
   s.affine = std::move(affine);
   s.layout = std::move(layout);
   s.frame = std::move(frame);

@@ -133,6 +133,22 @@ def points(n=5):
     return m + np.swapaxes(m, 1, 2) + 6 * np.eye(3), rng.uniform(0, 10, size=(n, 3))
 
 
+_TMP = tempfile.TemporaryDirectory()  # removed when the interpreter exits
+
+
+def _nifti_file():
+    """A small positive-definite fsl-order NIfTI (det > 0), written once."""
+    path = os.path.join(_TMP.name, "dt.nii")
+    if not os.path.exists(path):
+        import nibabel as nib
+        rng = np.random.default_rng(3)
+        L = rng.normal(size=(4, 4, 3, 3, 3)) * 0.3 + np.eye(3) * [1.0, 0.5, 0.25]
+        D = L @ np.swapaxes(L, -1, -2)
+        fsl = np.stack([D[..., 0, 0], D[..., 0, 1], D[..., 0, 2], D[..., 1, 1], D[..., 1, 2], D[..., 2, 2]], -1)
+        nib.save(nib.Nifti1Image(fsl.astype(np.float32), np.diag([2.0, 2.0, 2.0, 1.0])), path)
+    return path
+
+
 class BadInput(unittest.TestCase):
     def test_each_bad_argument_raises_and_names_it(self):
         t, p = points()
@@ -157,12 +173,43 @@ class BadInput(unittest.TestCase):
             (ValueError, "--glyph", lambda: tg.render(t, positions=p, glyph="teapot")),
             (ValueError, "missing.vtk", lambda: tg.render("/nonexistent/missing.vtk")),
             (ValueError, "layout", lambda: tg.render(np.zeros((2, 2, 2, 6)) + 1, affine=np.eye(4), layout="xyz")),
+            # Points' tensors are in world axes: a frame would be ignored.
+            (ValueError, "frame", lambda: tg.render(t, positions=p, frame="voxel")),
+            (ValueError, "--layout", lambda: tg.render(_nifti_file(), layout="xyz")),
+            (TypeError, "layout", lambda: tg.Renderer(t, positions=p).set(layout="mrtrix")),
+            # The core itself refuses what it would misread.
+            (TypeError, "byte order", lambda: tg._core.Renderer(t.astype(">f8"), p, None, "", "", "", [], None)),
         ]
         for exc, word, call in cases:
             with self.subTest(word=word):
                 with self.assertRaises(exc) as cm:
                     call()
                 self.assertIn(word, str(cm.exception))
+
+    def test_big_endian_arrays_draw_as_native_ones(self):
+        """'>f4' (a big-endian NIfTI's data through nibabel) read in place as
+        little-endian is other, mostly finite numbers: once drawn without a word."""
+        t, p = points(12)
+        opts = dict(size=(64, 48), scale_mode="absolute", scale=0.3, eye=(5, 5, 40), look_at=(5, 5, 5))
+        native = tg.render(t.astype(np.float32), positions=p.astype(np.float32), **opts).image
+        self.assertGreater(np.count_nonzero(native[..., 3]), 200, "nothing drawn")
+        for tt, pp in [(t.astype(">f4"), p.astype(np.float32)), (t.astype(np.float32), p.astype(">f4")),
+                       (t.astype(">f8"), p.astype(">f8"))]:
+            with self.subTest(tensors=tt.dtype.str, positions=pp.dtype.str):
+                self.assertTrue(np.array_equal(native, tg.render(tt, positions=pp, **opts).image))
+
+    def test_a_files_layout_and_frame_are_used(self):
+        """layout= and frame= with a path are the reader's --layout and
+        --frame: once they were taken and silently ignored."""
+        path = _nifti_file()
+        opts = dict(size=(64, 48), glyph="superquadric", color="fa")
+        as_fsl = tg.render(path, **opts).image
+        as_mrtrix = tg.render(path, layout="mrtrix", frame="world", **opts).image
+        self.assertFalse(np.array_equal(as_fsl, as_mrtrix), "layout= was ignored")
+        self.assertTrue(np.array_equal(as_mrtrix, tg.Renderer(path, **opts).set(layout="mrtrix", frame="world")
+                                       .render().image))
+        self.assertTrue(np.array_equal(tg.render(path, frame="world", **opts).image,
+                                       tg.Renderer(path, **opts).set(frame="world").render().image))
 
     def test_exr_needs_channels_and_png_bytes_are_a_png(self):
         t, p = points()
