@@ -143,7 +143,7 @@ class Renderer {
     app::addRenderOptions(table, o);
     applyOptions(table, options, "render");
     app::validateRenderOptions(o, false);
-    if (reloadKeys(table, options) != reloadKeys_) {
+    if (!session_ || reloadKeys(table, options) != reloadKeys_) {
       py::gil_scoped_release release;
       build(o, options, table);
     }
@@ -172,8 +172,8 @@ class Renderer {
     return out;
   }
 
-  std::uint64_t uploads() const { return previousUploads_ + session_->renderer().uploadCount(); }
-  std::size_t glyphCount() const { return session_->glyphCount(); }
+  std::uint64_t uploads() const { return previousUploads_ + (session_ ? session_->renderer().uploadCount() : 0); }
+  std::size_t glyphCount() const { return session_ ? session_->glyphCount() : 0; }
 
  private:
   // The values of every reloading option given, in order: equal lists mean
@@ -200,6 +200,8 @@ class Renderer {
     app::reportLoad(scene.field, "python");
     std::vector<io::MeshData> meshes = o.mesh.read(source_.path, "python");
     if (session_) previousUploads_ += session_->renderer().uploadCount();
+    // Freed before the next is made (peak memory): if making it throws, the
+    // next render builds again instead of drawing with no session.
     session_.reset();
     session_ = std::make_unique<app::RenderSession>(o, std::move(scene), std::move(meshes), true, "python",
                                                     [](io::TensorField& f) { f.releaseSamples(); },

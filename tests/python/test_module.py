@@ -244,6 +244,20 @@ class Interactive(unittest.TestCase):
         self.assertEqual(r.uploads, 2, "a new selection must load and upload")
         print("ms per change from Python: " + ", ".join(f"{k} {v:.1f}" for k, v in times.items()), file=sys.stderr)
 
+    def test_a_failed_reload_leaves_the_renderer_usable(self):
+        """A reload that fails after the old session is freed (here the
+        underlay file) once left no session: going back to the old options
+        drew with none and crashed the interpreter."""
+        t, p = points(20)
+        r = tg.Renderer(t, positions=p, size=(48, 32))
+        first = r.render().image
+        with self.assertRaises(ValueError) as cm:
+            r.render(plane="z:0", underlay="/nonexistent/underlay.nii")
+        self.assertIn("underlay.nii", str(cm.exception))
+        again = r.set(plane=None, underlay=None).render().image
+        self.assertTrue(np.array_equal(first, again))
+        self.assertEqual(r.uploads, 2)
+
     def test_progress_reaches_a_python_callback(self):
         import nibabel as nib
         n = (40, 40, 50)  # 80,000 tensors: more than one 65,536-tensor block
