@@ -150,6 +150,23 @@ TEST_F(ParaViewPlugin, PictureMatchesTheCli) {
   EXPECT_LE(differing(a, b, 1.0f / 255.0f), a.width * a.height / 1000);
 }
 
+// The tensors as cell data, picked from Python (the property's list offers
+// point arrays only): one tuple per cell, so read per point they were other
+// cells' tensors drawn at the points, without a word. The representation
+// must say so and draw nothing.
+TEST_F(ParaViewPlugin, CellTensorsAreRefusedNotReadPerPoint) {
+  TG_SKIP_WITHOUT_PARAVIEW();
+  const fs::path pv = dir / "pv.png";
+  const CmdResult r = runPvbatch("--output " + pv.string() + " " + kCamera + " --cell-tensors", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("the tensors must be point data"), std::string::npos) << r.err;
+  const Image b = readImage(pv);
+  ASSERT_EQ(b.width, 400);
+  long glyphPixels = 0;
+  for (int i = 0; i < b.width * b.height; ++i) glyphPixels += covered(b, i, kBackground);
+  EXPECT_EQ(glyphPixels, 0);
+}
+
 // A ParaView slice through the kitten, facing the camera at the look-at
 // point, so that its depth along the view axis is |eye - look-at| at every
 // pixel. Where a glyph and the slice cover the same pixel, the CLI's depth

@@ -7,7 +7,7 @@ and the benchmark's one ParaView driver.
           [--slice-normal X Y Z --slice-origin X Y Z] [--background R G B]
           [--select X0 Y0 X1 Y1 ... --select-cells X0 Y0 X1 Y1 ...
            --selection-out TXT]
-          [--scalar-bar] [--legend-out TXT]
+          [--scalar-bar] [--legend-out TXT] [--cell-tensors]
 
 Under mpiexec, --redistribute spreads the dataset over the ranks (or give a
 partitioned .pvtu); each rank draws its own glyphs and IceT composites the
@@ -53,6 +53,8 @@ def main():
     ap.add_argument("--redistribute", action="store_true",
                     help="spread the dataset over the MPI ranks (ParaView's RedistributeDataSet)")
     ap.add_argument("--fxaa", action="store_true")
+    ap.add_argument("--cell-tensors", action="store_true",
+                    help="move the tensors to cell data (PointDatatoCellData) and pick that cell array")
     ap.add_argument("--select", type=int, nargs=4, action="append", default=[])
     ap.add_argument("--select-cells", type=int, nargs=4, action="append", default=[])
     ap.add_argument("--selection-out")
@@ -67,6 +69,9 @@ def main():
         sys.exit("render_glyphs.py: %s: ParaView has no reader for it" % a.input)
     if a.redistribute:
         reader = simple.RedistributeDataSet(Input=reader)
+    if a.cell_tensors:
+        reader = simple.PointDatatoCellData(Input=reader)
+        reader.PassPointData = 0
     view = simple.CreateRenderView()
     view.ViewSize = a.size
     view.OrientationAxesVisibility = 0
@@ -84,6 +89,9 @@ def main():
         disp.TensorGlyphScaleMode = a.scale_mode
         disp.TensorGlyphScaleFactor = a.scale
         disp.TensorGlyphColorMode = a.color
+        if a.cell_tensors:
+            names = [k for k in reader.CellData.keys() if reader.CellData[k].GetNumberOfComponents() in (6, 9)]
+            disp.TensorGlyphTensors = ["CELLS", names[0]]
     if a.slice_normal:
         sl = simple.Slice(Input=reader)
         sl.SliceType = "Plane"

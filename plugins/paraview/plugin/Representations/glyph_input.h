@@ -34,7 +34,9 @@ struct SizingInfo {
 // tensorglyph's order and ids; `tensors` holds 9 components (row-major 3x3,
 // symmetrised) or 6 in ParaView's order XX YY ZZ XY YZ XZ. The sizing sample
 // is merged over the ranks of `controller` (a collective call; null: this
-// process alone). Throws std::invalid_argument for another component count.
+// process alone). Throws std::invalid_argument when `input` has points but
+// `tensors` is null, has another component count, or is not one tuple per
+// point; after the collective calls, so that no rank is left waiting.
 vtkSmartPointer<vtkPolyData> prepareGlyphInput(vtkDataSet* input, vtkDataArray* tensors,
                                                vtkMultiProcessController* controller);
 
