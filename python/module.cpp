@@ -144,8 +144,11 @@ class Renderer {
     applyOptions(table, options, "render");
     app::validateRenderOptions(o, false);
     if (!session_ || reloadKeys(table, options) != reloadKeys_) {
-      py::gil_scoped_release release;
-      build(o, options, table);
+      {
+        py::gil_scoped_release release;
+        build(o, options, table);
+      }
+      warnLoaded();
     }
     render::FrameImage img;
     {
@@ -191,13 +194,32 @@ class Renderer {
     app::addRenderOptions(table, o);
     applyOptions(table, options, "Renderer");
     app::validateRenderOptions(o, false);
-    py::gil_scoped_release release;
-    build(o, options, table);
+    {
+      py::gil_scoped_release release;
+      build(o, options, table);
+    }
+    warnLoaded();
+  }
+
+  // What the CLI prints of a load (app::reportLoad) as Python warnings, which
+  // a notebook shows and a script can filter or turn into errors; the C
+  // stderr that reportLoad writes is not shown in Jupyter.
+  void warnLoaded() {
+    for (const std::string& w : std::exchange(loadWarnings_, {}))
+      if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) < 0) throw py::error_already_set();
   }
 
   void build(const app::RenderOptions& o, const OptionList& options, const app::OptionTable& table) {
+    loadWarnings_.clear();
     app::Scene scene = loadSource(source_, o);
-    app::reportLoad(scene.field, "python");
+    const io::TensorField& loaded = scene.field;
+    for (const std::string& w : loaded.warnings) loadWarnings_.push_back(loaded.path + ": " + w);
+    if (loaded.skippedNonFinite)
+      loadWarnings_.push_back(loaded.path + ": skipped " + std::to_string(loaded.skippedNonFinite) +
+                              " tensors with NaN/Inf components");
+    if (loaded.skippedOverflow)
+      loadWarnings_.push_back(loaded.path + ": skipped " + std::to_string(loaded.skippedOverflow) +
+                              " tensors whose values overflow single precision (beyond 3.4e38)");
     std::vector<io::MeshData> meshes = o.mesh.read(source_.path, "python");
     if (session_) previousUploads_ += session_->renderer().uploadCount();
     // Freed before the next is made (peak memory): if making it throws, the
@@ -213,6 +235,7 @@ class Renderer {
   Source source_;
   std::unique_ptr<app::RenderSession> session_;
   OptionList reloadKeys_;
+  std::vector<std::string> loadWarnings_;  // made without the GIL, raised with it
   std::uint64_t previousUploads_ = 0;
   std::mutex mutex_;
 };

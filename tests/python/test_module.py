@@ -89,6 +89,25 @@ class DipyPipeline(unittest.TestCase):
         self.assertGreaterEqual(passed, 0.9 * checked, f"{passed} of {checked} long axes follow DIPY's")
 
 
+    def test_lower_triangular_in_the_default_order_warns(self):
+        """DIPY's fit.lower_triangular() is xx xy yy xz yz zz, the "nifti"
+        order; arrays default to "fsl", so passing it bare swaps yy and xz.
+        The module warns as the NIfTI reader does, naming the order that fits;
+        in the right order, or as quadratic_form, it says nothing."""
+        import warnings
+        img, fit = fit_small_64d()
+        opts = dict(size=(96, 72))
+        with self.assertWarnsRegex(UserWarning, "indefinite .* as --layout fsl .*--layout nifti --frame voxel"):
+            tg.render(fit.lower_triangular(), affine=img.affine, **opts)
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            right = tg.render(fit.lower_triangular(), affine=img.affine, layout="nifti", frame="voxel", **opts)
+            self.assertTrue(np.array_equal(right, tg.render(fit, affine=img.affine, **opts)))
+            # Indefinite in any order (stress): no order is evidence, no warning.
+            rng = np.random.default_rng(2)
+            tg.render(rng.normal(size=(50, 6)), positions=rng.uniform(0, 10, (50, 3)), **opts)
+
+
 @unittest.skipUnless(CLI, "TG_CLI names the tensorglyph binary")
 class ModuleAgainstCli(unittest.TestCase):
     def test_same_nifti_same_pixels(self):
@@ -204,7 +223,8 @@ class BadInput(unittest.TestCase):
         path = _nifti_file()
         opts = dict(size=(64, 48), glyph="superquadric", color="fa")
         as_fsl = tg.render(path, **opts).image
-        as_mrtrix = tg.render(path, layout="mrtrix", frame="world", **opts).image
+        with self.assertWarnsRegex(UserWarning, "indefinite .* try --layout fsl"):  # the reader's check
+            as_mrtrix = tg.render(path, layout="mrtrix", frame="world", **opts).image
         self.assertFalse(np.array_equal(as_fsl, as_mrtrix), "layout= was ignored")
         self.assertTrue(np.array_equal(as_mrtrix, tg.Renderer(path, **opts).set(layout="mrtrix", frame="world")
                                        .render().image))
