@@ -167,6 +167,21 @@ TEST_F(ParaViewPlugin, CellTensorsAreRefusedNotReadPerPoint) {
   EXPECT_EQ(glyphPixels, 0);
 }
 
+// Points whose tensors have NaN are left out, as the CLI leaves them out,
+// and said so, as the CLI says it: 14,961 points, every 10th one NaN.
+TEST_F(ParaViewPlugin, SkippedNaNTensorsAreReported) {
+  TG_SKIP_WITHOUT_PARAVIEW();
+  const fs::path pv = dir / "pv.png";
+  const CmdResult r = runPvbatch("--output " + pv.string() + " " + kCamera + " --nan-every 10", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("skipped 1497 points whose tensors have NaN/Inf"), std::string::npos) << r.err;
+  const Image b = readImage(pv);
+  ASSERT_EQ(b.width, 400);
+  long glyphPixels = 0;
+  for (int i = 0; i < b.width * b.height; ++i) glyphPixels += covered(b, i, kBackground);
+  EXPECT_GT(glyphPixels, 2000) << "the other points must still be drawn";
+}
+
 // A ParaView slice through the kitten, facing the camera at the look-at
 // point, so that its depth along the view axis is |eye - look-at| at every
 // pixel. Where a glyph and the slice cover the same pixel, the CLI's depth

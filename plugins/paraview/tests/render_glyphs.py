@@ -7,7 +7,7 @@ and the benchmark's one ParaView driver.
           [--slice-normal X Y Z --slice-origin X Y Z] [--background R G B]
           [--select X0 Y0 X1 Y1 ... --select-cells X0 Y0 X1 Y1 ...
            --selection-out TXT]
-          [--scalar-bar] [--legend-out TXT] [--cell-tensors]
+          [--scalar-bar] [--legend-out TXT] [--cell-tensors] [--nan-every K]
 
 Under mpiexec, --redistribute spreads the dataset over the ranks (or give a
 partitioned .pvtu); each rank draws its own glyphs and IceT composites the
@@ -55,6 +55,8 @@ def main():
     ap.add_argument("--fxaa", action="store_true")
     ap.add_argument("--cell-tensors", action="store_true",
                     help="move the tensors to cell data (PointDatatoCellData) and pick that cell array")
+    ap.add_argument("--nan-every", type=int, metavar="K",
+                    help="set the first component of every K-th point's tensor to NaN")
     ap.add_argument("--select", type=int, nargs=4, action="append", default=[])
     ap.add_argument("--select-cells", type=int, nargs=4, action="append", default=[])
     ap.add_argument("--selection-out")
@@ -69,6 +71,14 @@ def main():
         sys.exit("render_glyphs.py: %s: ParaView has no reader for it" % a.input)
     if a.redistribute:
         reader = simple.RedistributeDataSet(Input=reader)
+    if a.nan_every:
+        reader = simple.ProgrammableFilter(Input=reader)
+        reader.Script = "\n".join([
+            "out = self.GetOutput()", "out.ShallowCopy(self.GetInput())",
+            "t = out.GetPointData().GetTensors()", "c = t.NewInstance()", "c.DeepCopy(t)",
+            "for i in range(0, c.GetNumberOfTuples(), %d):" % a.nan_every,
+            "    c.SetComponent(i, 0, float('nan'))",
+            "out.GetPointData().SetTensors(c)"])
     if a.cell_tensors:
         reader = simple.PointDatatoCellData(Input=reader)
         reader.PassPointData = 0

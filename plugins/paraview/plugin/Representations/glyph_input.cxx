@@ -94,9 +94,10 @@ std::string readPiece(vtkDataSet* input, vtkDataArray* tensors, io::TensorField&
 }  // namespace
 
 vtkSmartPointer<vtkPolyData> prepareGlyphInput(vtkDataSet* input, vtkDataArray* tensors,
-                                               vtkMultiProcessController* controller) {
+                                               vtkMultiProcessController* controller, std::size_t* skipped) {
   io::TensorField f;
   const std::string problem = readPiece(input, tensors, f);
+  if (skipped) *skipped = f.skippedNonFinite + f.skippedOverflow;
   const std::size_t kept = f.size();
   double spacing = gridSpacing(input);
   if (spacing <= 0.0) spacing = io::estimateSampleSpacing(f.positions);

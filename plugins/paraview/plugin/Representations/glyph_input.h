@@ -1,6 +1,7 @@
 // From a ParaView dataset to the mapper's input, and the sizing that every
 // rank of a distributed run shares.
 #pragma once
+#include <cstddef>
 #include <span>
 
 #include <vtkSmartPointer.h>
@@ -37,8 +38,11 @@ struct SizingInfo {
 // process alone). Throws std::invalid_argument when `input` has points but
 // `tensors` is null, has another component count, or is not one tuple per
 // point; after the collective calls, so that no rank is left waiting.
+// `skipped` (when given) receives how many of this rank's points were left
+// out for NaN/Inf or values beyond single precision, for the caller to report.
 vtkSmartPointer<vtkPolyData> prepareGlyphInput(vtkDataSet* input, vtkDataArray* tensors,
-                                               vtkMultiProcessController* controller);
+                                               vtkMultiProcessController* controller,
+                                               std::size_t* skipped = nullptr);
 
 // The glyphs of a prepared input (null or empty: none), and what
 // prepareGlyphInput stored of the whole dataset.

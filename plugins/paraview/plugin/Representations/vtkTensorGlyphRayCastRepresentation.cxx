@@ -45,8 +45,14 @@ int vtkTensorGlyphRayCastRepresentation::RequestData(
   vtkDataArray* tensors = input ? this->GetInputArrayToProcess(0, input) : nullptr;
   try {
     // Collective over the ranks: every rank runs this, with or without points.
-    this->Prepared->ShallowCopy(
-      tg::paraview::prepareGlyphInput(input, tensors, vtkMultiProcessController::GetGlobalController()));
+    std::size_t skipped = 0;
+    this->Prepared->ShallowCopy(tg::paraview::prepareGlyphInput(
+      input, tensors, vtkMultiProcessController::GetGlobalController(), &skipped));
+    // As the CLI says it: points left out are not drawn without a word.
+    if (skipped > 0)
+      vtkWarningMacro(<< "prepareGlyphInput: array '" << (tensors && tensors->GetName() ? tensors->GetName() : "")
+                      << "': skipped " << skipped
+                      << " points whose tensors have NaN/Inf components or overflow single precision");
   } catch (const std::exception& e) {
     vtkErrorMacro(<< e.what());
     this->Prepared->Initialize();
