@@ -254,6 +254,11 @@ py::array_t<T, py::array::c_style | py::array::forcecast> channel(const py::dict
 // float and geometry channels (render(..., channels=True)), every other
 // format the 8-bit image.
 void saveFrame(const py::dict& frame, const std::string& path) {
+  // A cast would write a float image in 0..1 as black: refused instead.
+  const py::array given = py::array::ensure(frame["rgba"]);
+  if (!given || !given.dtype().is(py::dtype::of<std::uint8_t>()))
+    throw py::type_error("image: must be the (H, W, 4) uint8 image, not " +
+                         (given ? std::string(py::str(given.dtype())) : std::string("a non-array")));
   auto rgba = py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>::ensure(frame["rgba"]);
   if (!rgba || rgba.ndim() != 3 || rgba.shape(2) != 4) throw std::invalid_argument("image: must be (H, W, 4) uint8");
   render::FrameImage img;

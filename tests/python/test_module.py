@@ -196,6 +196,8 @@ class BadInput(unittest.TestCase):
             (ValueError, "frame", lambda: tg.render(t, positions=p, frame="voxel")),
             (ValueError, "--layout", lambda: tg.render(_nifti_file(), layout="xyz")),
             (TypeError, "layout", lambda: tg.Renderer(t, positions=p).set(layout="mrtrix")),
+            # A float image in 0..1 cast to uint8 was saved black.
+            (TypeError, "uint8", lambda: tg.save(np.full((8, 8, 4), 0.9), os.path.join(_TMP.name, "f.png"))),
             # The core itself refuses what it would misread.
             (TypeError, "byte order", lambda: tg._core.Renderer(t.astype(">f8"), p, None, "", "", "", [], None)),
         ]
