@@ -140,6 +140,9 @@ TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, co
   }
   refuseOverflow("tensors", f);
   if (six) sample.warnInto(f, *l);
+  // As the VTK reader estimates it for points: spacing-mode sizing (the
+  // default) needs it, and the same points must draw as their file does.
+  f.sampleSpacing = estimateSampleSpacing(f.positions);
   return f;
 }
 

@@ -85,6 +85,20 @@ TEST(ArrayField, SixComponentsInAnImplausibleOrderWarn) {
   EXPECT_TRUE(tg::io::fieldFromVolume(view(lower, {4, 4, 4, 6}), "nifti", affine, "").warnings.empty());
 }
 
+// The default sizing (spacing mode) needs the sample spacing: points from
+// arrays once had none, and drew larger or smaller than the same points read
+// from a file.
+TEST(ArrayField, PointsGetTheSampleSpacingTheVtkReaderEstimates) {
+  std::vector<double> t, pos;
+  for (int i = 0; i < 27; ++i) {
+    t.insert(t.end(), {3, 0, 0, 1, 0, 1});
+    pos.insert(pos.end(), {0.5 * (i % 3), 0.5 * (i / 3 % 3), 0.5 * (i / 9)});
+  }
+  const auto f = tg::io::fieldFromPoints(view(t, {27, 6}), "fsl", view(pos, {27, 3}));
+  EXPECT_GT(f.sampleSpacing, 0.0);
+  EXPECT_EQ(f.sampleSpacing, tg::io::estimateSampleSpacing(f.positions));
+}
+
 TEST(ArrayField, StridedFloat32ViewsReadLikeContiguousOnes) {
   // Two tensors stored as columns of a (6, 2) float32 array: a transposed view.
   std::vector<float> cols = {1, 10, 2, 20, 3, 30, 4, 40, 5, 50, 6, 60};

@@ -140,6 +140,36 @@ class ModuleAgainstCli(unittest.TestCase):
             self.assertGreater(np.count_nonzero(from_cli[..., 3]), 500, "nothing drawn")
 
 
+    def test_points_from_arrays_draw_as_their_vtk_file(self):
+        """Points from arrays are sized as the VTK reader sizes the same
+        points (spacing mode, the default): once they had no sample spacing
+        and drew at another size."""
+        import vtk
+        from vtk.util.numpy_support import numpy_to_vtk
+        t, p = points(60)
+        opts = dict(size=(120, 90), glyph="superquadric")
+        with tempfile.TemporaryDirectory() as d:
+            grid = vtk.vtkPolyData()
+            pts = vtk.vtkPoints()
+            pts.SetData(numpy_to_vtk(p.astype(np.float32), deep=1))
+            grid.SetPoints(pts)
+            arr = numpy_to_vtk(t.reshape(-1, 9).astype(np.float32), deep=1)
+            arr.SetName("tensors")
+            grid.GetPointData().SetTensors(arr)
+            path = os.path.join(d, "points.vtp")
+            w = vtk.vtkXMLPolyDataWriter()
+            w.SetFileName(path)
+            w.SetInputData(grid)
+            self.assertEqual(w.Write(), 1)
+            png = os.path.join(d, "cli.png")
+            subprocess.run([CLI, "render", path, "-o", png, "--size", "120", "90", "--glyph", "superquadric"],
+                           check=True)
+            from_cli = _read_png(png)
+        from_arrays = tg.render(t.astype(np.float32), positions=p.astype(np.float32), **opts).image
+        self.assertGreater(np.count_nonzero(from_cli[..., 3]), 300, "nothing drawn")
+        self.assertTrue(np.array_equal(from_cli, from_arrays))
+
+
 def _read_png(path):
     # matplotlib's PNG reader (Debian's python3-matplotlib comes with DIPY) as 8-bit.
     import matplotlib.image
