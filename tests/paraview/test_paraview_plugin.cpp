@@ -167,6 +167,17 @@ TEST_F(ParaViewPlugin, CellTensorsAreRefusedNotReadPerPoint) {
   EXPECT_EQ(glyphPixels, 0);
 }
 
+// A multiblock input (every Exodus reader's output) is refused with what to
+// do, not with the pipeline's error about output ports.
+TEST_F(ParaViewPlugin, MultiblockInputSaysToMergeBlocks) {
+  TG_SKIP_WITHOUT_PARAVIEW();
+  const fs::path pv = dir / "pv.png";
+  const CmdResult r = runPvbatch("--output " + pv.string() + " " + kCamera + " --multiblock", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("apply Merge Blocks"), std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find("without output ports"), std::string::npos) << r.err;
+}
+
 // Points whose tensors have NaN are left out, as the CLI leaves them out,
 // and said so, as the CLI says it: 14,961 points, every 10th one NaN.
 TEST_F(ParaViewPlugin, SkippedNaNTensorsAreReported) {

@@ -8,6 +8,7 @@ and the benchmark's one ParaView driver.
           [--select X0 Y0 X1 Y1 ... --select-cells X0 Y0 X1 Y1 ...
            --selection-out TXT]
           [--scalar-bar] [--legend-out TXT] [--cell-tensors] [--nan-every K]
+          [--multiblock]
 
 Under mpiexec, --redistribute spreads the dataset over the ranks (or give a
 partitioned .pvtu); each rank draws its own glyphs and IceT composites the
@@ -55,6 +56,7 @@ def main():
     ap.add_argument("--fxaa", action="store_true")
     ap.add_argument("--cell-tensors", action="store_true",
                     help="move the tensors to cell data (PointDatatoCellData) and pick that cell array")
+    ap.add_argument("--multiblock", action="store_true", help="show the dataset as a block of a multiblock")
     ap.add_argument("--nan-every", type=int, metavar="K",
                     help="set the first component of every K-th point's tensor to NaN")
     ap.add_argument("--select", type=int, nargs=4, action="append", default=[])
@@ -71,6 +73,8 @@ def main():
         sys.exit("render_glyphs.py: %s: ParaView has no reader for it" % a.input)
     if a.redistribute:
         reader = simple.RedistributeDataSet(Input=reader)
+    if a.multiblock:
+        reader = simple.GroupDatasets(Input=[reader])
     if a.nan_every:
         reader = simple.ProgrammableFilter(Input=reader)
         reader.Script = "\n".join([

@@ -4,6 +4,7 @@
 
 #include <vtkActor.h>
 #include <vtkAlgorithmOutput.h>
+#include <vtkCompositeDataSet.h>
 #include <vtkDataSet.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -33,6 +34,9 @@ vtkTensorGlyphRayCastMapper* vtkTensorGlyphRayCastRepresentation::GetMapper() { 
 
 int vtkTensorGlyphRayCastRepresentation::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  // Accepted so that RequestData can say what to do: refused by the
+  // pipeline, a multiblock input drew nothing with an error about ports.
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
   info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   return 1;
 }
@@ -43,6 +47,12 @@ int vtkTensorGlyphRayCastRepresentation::RequestData(
   vtkDataSet* input =
     inputVector[0]->GetNumberOfInformationObjects() == 1 ? vtkDataSet::GetData(inputVector[0], 0) : nullptr;
   vtkDataArray* tensors = input ? this->GetInputArrayToProcess(0, input) : nullptr;
+  if (!input && vtkCompositeDataSet::GetData(inputVector[0], 0)) {
+    // One id per point of one dataset (picking, the spreadsheet): blocks
+    // would need a block index as well.
+    vtkErrorMacro(<< "RequestData: a composite (multiblock) dataset; apply Merge Blocks and show its output");
+    return this->Superclass::RequestData(request, inputVector, outputVector);
+  }
   try {
     // Collective over the ranks: every rank runs this, with or without points.
     std::size_t skipped = 0;
