@@ -137,7 +137,14 @@ class Renderer {
   // uploads again only when an option that reloads (OptionTable::reloads)
   // changed; γ, FA threshold, scale, colour, camera and depth cues do not.
   py::dict render(const OptionList& options, bool channels) {
-    std::lock_guard<std::mutex> lock(mutex_);
+    // Waited for without the GIL: the thread holding the lock needs the GIL
+    // to finish (the result, the progress callback), so waiting with it
+    // deadlocked two threads sharing one Renderer.
+    std::unique_lock<std::mutex> lock(mutex_, std::defer_lock);
+    {
+      py::gil_scoped_release release;
+      lock.lock();
+    }
     app::RenderOptions o;
     app::OptionTable table;
     app::addRenderOptions(table, o);

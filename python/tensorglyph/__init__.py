@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import numbers
 import os
+import threading
 
 import numpy as np
 
@@ -191,6 +192,7 @@ class Renderer:
         """`progress`: None, or f(stage, done, total, unit), called while a
         file loads and the tensors are decomposed (total 0: not known)."""
         self._options = {}
+        self._lock = threading.RLock()
         self._array_source = False
         self.set(**options)
         t, p, a, lay, fr, path = _source(tensors, positions, affine, layout, frame)
@@ -203,22 +205,31 @@ class Renderer:
 
     def set(self, **options):
         """Changes options (None: back to the default); returns self."""
+        with self._lock:
+            return self._set(options)
+
+    def _set(self, options):
+        # Checked on a copy: a refused value must not stay behind and fail
+        # every later render.
+        changed = dict(self._options)
         for kw, value in options.items():
             _occurrences(kw, value)  # TypeError now, not at render time
             if self._array_source and kw in ("layout", "frame"):
                 raise TypeError(f"{kw}: an array's {kw} is given when the Renderer is made")
             if value is None:
-                self._options.pop(kw, None)
+                changed.pop(kw, None)
             else:
-                self._options[kw] = value
-        _core.check(_option_list(self._options))
+                changed[kw] = value
+        _core.check(_option_list(changed))
+        self._options = changed
         return self
 
     def render(self, channels=False, **options):
         """Draws with the current options (updated by `options` first)."""
-        if options:
-            self.set(**options)
-        return Figure(self._core.render(_option_list(self._options), bool(channels)))
+        with self._lock:  # another thread's set() must not change this call's options
+            if options:
+                self.set(**options)
+            return Figure(self._core.render(_option_list(self._options), bool(channels)))
 
     @property
     def options(self):

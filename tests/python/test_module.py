@@ -310,6 +310,41 @@ class Interactive(unittest.TestCase):
         self.assertTrue(np.array_equal(first, again))
         self.assertEqual(r.uploads, 2)
 
+    def test_one_renderer_shared_by_two_threads(self):
+        """The core's lock was waited for with the GIL held while the holder
+        needed the GIL to finish: two threads on one Renderer deadlocked.
+        Each call draws with its own options."""
+        t, p = points(50)
+        opts = dict(size=(96, 64), glyph="superquadric")
+        alone = {g: tg.render(t, positions=p, gamma=g, **opts).image for g in (1.0, 4.0)}
+        r = tg.Renderer(t, positions=p, **opts)
+        wrong, errors = [], []
+
+        def work(g):
+            try:
+                for _ in range(4):
+                    if not np.array_equal(r.render(gamma=g).image, alone[g]):
+                        wrong.append(g)
+            except Exception as e:  # reported below, not lost in the thread
+                errors.append(e)
+
+        threads = [threading.Thread(target=work, args=(g,), daemon=True) for g in (1.0, 4.0)]
+        for th in threads:
+            th.start()
+        for th in threads:
+            th.join(timeout=120)
+        self.assertFalse(any(th.is_alive() for th in threads), "deadlocked")
+        self.assertEqual(errors, [])
+        self.assertEqual(wrong, [])
+
+    def test_a_refused_option_does_not_stay_behind(self):
+        t, p = points(10)
+        r = tg.Renderer(t, positions=p, size=(32, 24))
+        with self.assertRaises(ValueError):
+            r.set(gamma=-1)
+        self.assertNotIn("gamma", r.options)
+        self.assertEqual(r.render().shape, (24, 32, 4))
+
     def test_progress_reaches_a_python_callback(self):
         import nibabel as nib
         n = (40, 40, 50)  # 80,000 tensors: more than one 65,536-tensor block
