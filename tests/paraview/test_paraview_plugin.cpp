@@ -167,6 +167,25 @@ TEST_F(ParaViewPlugin, CellTensorsAreRefusedNotReadPerPoint) {
   EXPECT_EQ(glyphPixels, 0);
 }
 
+// The kitten's tensors (9 components, exactly symmetric) given as 6 in VTK's
+// symmetric order XX YY ZZ XY YZ XZ draw the same picture: the 6-component
+// path, which the 9-component kitten never takes, reads VTK's order.
+TEST_F(ParaViewPlugin, SixComponentTensorsDrawAsNine) {
+  TG_SKIP_WITHOUT_PARAVIEW();
+  const fs::path nine = dir / "nine.png", six = dir / "six.png";
+  const CmdResult a = runPvbatch("--output " + nine.string() + " " + kCamera, dir);
+  ASSERT_EQ(a.code, 0) << a.err;
+  const CmdResult b = runPvbatch("--output " + six.string() + " " + kCamera + " --as-six", dir);
+  ASSERT_EQ(b.code, 0) << b.err;
+  const Image x = readImage(nine), y = readImage(six);
+  ASSERT_EQ(x.width, 400);
+  ASSERT_EQ(y.width, x.width);
+  long glyphPixels = 0;
+  for (int i = 0; i < x.width * x.height; ++i) glyphPixels += covered(x, i, kBackground);
+  ASSERT_GT(glyphPixels, 2000);
+  EXPECT_EQ(differing(x, y, 0.0f), 0);
+}
+
 // A multiblock input (every Exodus reader's output) is refused with what to
 // do, not with the pipeline's error about output ports.
 TEST_F(ParaViewPlugin, MultiblockInputSaysToMergeBlocks) {

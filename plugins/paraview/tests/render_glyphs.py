@@ -8,7 +8,7 @@ and the benchmark's one ParaView driver.
           [--select X0 Y0 X1 Y1 ... --select-cells X0 Y0 X1 Y1 ...
            --selection-out TXT]
           [--scalar-bar] [--legend-out TXT] [--cell-tensors] [--nan-every K]
-          [--multiblock]
+          [--multiblock] [--as-six]
 
 Under mpiexec, --redistribute spreads the dataset over the ranks (or give a
 partitioned .pvtu); each rank draws its own glyphs and IceT composites the
@@ -57,6 +57,8 @@ def main():
     ap.add_argument("--cell-tensors", action="store_true",
                     help="move the tensors to cell data (PointDatatoCellData) and pick that cell array")
     ap.add_argument("--multiblock", action="store_true", help="show the dataset as a block of a multiblock")
+    ap.add_argument("--as-six", action="store_true",
+                    help="give the tensors as 6 components in VTK's order XX YY ZZ XY YZ XZ")
     ap.add_argument("--nan-every", type=int, metavar="K",
                     help="set the first component of every K-th point's tensor to NaN")
     ap.add_argument("--select", type=int, nargs=4, action="append", default=[])
@@ -73,6 +75,17 @@ def main():
         sys.exit("render_glyphs.py: %s: ParaView has no reader for it" % a.input)
     if a.redistribute:
         reader = simple.RedistributeDataSet(Input=reader)
+    if a.as_six:
+        reader = simple.ProgrammableFilter(Input=reader)
+        reader.Script = "\n".join([
+            "from vtkmodules.vtkCommonCore import vtkDoubleArray",
+            "out = self.GetOutput()", "out.ShallowCopy(self.GetInput())",
+            "t = out.GetPointData().GetTensors()", "s = vtkDoubleArray()", "s.SetName(t.GetName())",
+            "s.SetNumberOfComponents(6)", "s.SetNumberOfTuples(t.GetNumberOfTuples())",
+            "for i in range(t.GetNumberOfTuples()):",
+            "    v = t.GetTuple9(i)",
+            "    s.SetTuple6(i, v[0], v[4], v[8], v[1], v[5], v[2])",
+            "out.GetPointData().SetTensors(s)"])
     if a.multiblock:
         reader = simple.GroupDatasets(Input=[reader])
     if a.nan_every:
