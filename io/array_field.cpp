@@ -1,5 +1,6 @@
 #include "io/array_field.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -73,6 +74,30 @@ const NiftiLayout& layoutNamed(std::string_view layout) {
   return *l;
 }
 
+// Every step-th element's six stored values, for the order check that a
+// NIfTI file gets (implausibleLayoutWarning): a DIPY user's
+// fit.lower_triangular() is "nifti", not the default "fsl".
+class LayoutSample {
+ public:
+  explicit LayoutSample(std::uint64_t count) : step_(std::max<std::uint64_t>(1, count / kElements)) {}
+  void offer(std::uint64_t index, const double v[6]) {
+    if (index % step_ == 0) rows_.insert(rows_.end(), v, v + 6);
+  }
+  void warnInto(TensorField& f, const NiftiLayout& chosen) const {
+    const std::size_t m = rows_.size() / 6;
+    std::vector<float> byComponent(rows_.size());
+    for (std::size_t e = 0; e < m; ++e)
+      for (std::size_t c = 0; c < 6; ++c) byComponent[c * m + e] = float(rows_[6 * e + c]);
+    if (std::string w = implausibleLayoutWarning(byComponent, m, chosen, true); !w.empty())
+      f.warnings.push_back(std::move(w));
+  }
+
+ private:
+  static constexpr std::uint64_t kElements = 16384;
+  std::uint64_t step_;
+  std::vector<double> rows_;
+};
+
 void refuseOverflow(std::string_view arg, const TensorField& f) {
   if (f.skippedOverflow > 0)
     fail(arg, std::to_string(f.skippedOverflow) + " tensors lie beyond single precision (|D| > 3.4e38)");
@@ -98,6 +123,7 @@ TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, co
   f.layout = six ? std::string(l->name) + ": " + l->order : "3x3";
   f.frame = "world: the tensors are given in WC";
   f.reserve(std::size_t(n));
+  LayoutSample sample{std::uint64_t(n)};
   for (std::int64_t i = 0; i < n; ++i) {
     const auto where = [i] { return "index " + std::to_string(i); };
     double p[3], v[9], s6[6];
@@ -108,10 +134,15 @@ TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, co
       symmetricPart(v, s6);
     } else {
       for (int k = 0; k < 6; ++k) s6[k] = v[l->sym[std::size_t(k)]];
+      sample.offer(std::uint64_t(i), v);
     }
     f.addSym(std::uint32_t(i), p, s6);
   }
   refuseOverflow("tensors", f);
+  if (six) sample.warnInto(f, *l);
+  // As the VTK reader estimates it for points: spacing-mode sizing (the
+  // default) needs it, and the same points must draw as their file does.
+  f.sampleSpacing = estimateSampleSpacing(f.positions);
   return f;
 }
 
@@ -168,6 +199,8 @@ TensorField fieldFromVolume(const ArrayRef& tensors, std::string_view layout, co
   const GridPlacement placed = placementOf(g);
   const Selector sel(selection, f.path, g.dims, &placed);
   VolumeSink sink(f, g, cl, sel, 0.0);
+  LayoutSample sample{voxels};
+  std::uint64_t index = 0;
   double v[9];
   for (int k = 0; k < g.dims[2]; ++k)
     for (int j = 0; j < g.dims[1]; ++j)
@@ -178,10 +211,13 @@ TensorField fieldFromVolume(const ArrayRef& tensors, std::string_view layout, co
         };
         if (!readElement(tensors, base, 3, v)) fail("tensors", "NaN or Inf at " + where());
         if (full && !symmetric(v)) fail("tensors", "the 3x3 tensor at " + where() + " is not symmetric");
+        if (six) sample.offer(index, v);
+        ++index;
         sink.push(v);
       }
   sink.finish();
   refuseOverflow("tensors", f);
+  if (six) sample.warnInto(f, *l);
   return f;
 }
 

@@ -79,7 +79,8 @@ Definiteness definiteness(const std::vector<float>& values, std::size_t voxels, 
   return d;
 }
 
-std::string implausibleLayoutWarning(const std::vector<float>& values, std::size_t voxels, const NiftiLayout& chosen) {
+std::string implausibleLayoutWarning(const std::vector<float>& values, std::size_t voxels, const NiftiLayout& chosen,
+                                     bool onlyIfAnotherFits) {
   const Definiteness mine = definiteness(values, voxels, chosen.sym);
   if (mine.sampled == 0 || 2 * mine.indefinite <= mine.sampled) return "";
   std::string msg = std::to_string(mine.indefinite) + " of " + std::to_string(mine.sampled) +
@@ -94,6 +95,7 @@ std::string implausibleLayoutWarning(const std::vector<float>& values, std::size
       better += std::string(better.empty() ? "" : " or ") + "--layout " + l.name + " --frame " +
                 tensorFrameName(l.frame) + " (" + std::to_string(other.indefinite) + " indefinite)";
   }
+  if (better.empty() && onlyIfAnotherFits) return "";
   return msg + (better.empty() ? "; no other layout reads them as diffusion tensors" : "; try " + better);
 }
 

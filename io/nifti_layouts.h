@@ -55,7 +55,11 @@ Definiteness definiteness(const std::vector<float>& values, std::size_t voxels, 
 // "" when most sampled tensors are positive semi-definite under `chosen`;
 // else one line saying how many are not, naming the layouts (and their
 // frames) that read most of them as positive semi-definite. `values` are
-// component-major: component c of voxel v at c * voxels + v.
-std::string implausibleLayoutWarning(const std::vector<float>& values, std::size_t voxels, const NiftiLayout& chosen);
+// component-major: component c of voxel v at c * voxels + v. With
+// `onlyIfAnotherFits`, "" also when no other layout does better: tensors
+// that may be indefinite (stress, arrays from any source) are no evidence of
+// a wrong order by themselves.
+std::string implausibleLayoutWarning(const std::vector<float>& values, std::size_t voxels, const NiftiLayout& chosen,
+                                     bool onlyIfAnotherFits = false);
 
 }  // namespace tg::io

@@ -45,10 +45,15 @@ void applyOptions(const app::OptionTable& table, const OptionList& given, const 
   }
 }
 
-io::ArrayRef arrayRef(const py::array& a) {
+// With the GIL held: the view is read later without it.
+io::ArrayRef arrayRef(const py::array& a, const char* arg) {
   io::ArrayRef r;
   r.data = a.data();
-  if (a.dtype().kind() != 'f') throw std::domain_error("values must be float32 or float64");
+  if (a.dtype().kind() != 'f') throw std::domain_error(std::string(arg) + ": values must be float32 or float64");
+  // The values are read in place: swapped bytes would be other, finite numbers.
+  if (!a.dtype().attr("isnative").cast<bool>())
+    throw std::domain_error(std::string(arg) + ": values must be in this machine's byte order, not " +
+                            std::string(py::str(a.dtype())));
   r.itemBytes = int(a.itemsize());
   for (py::ssize_t k = 0; k < a.ndim(); ++k) {
     r.shape.push_back(a.shape(k));
@@ -61,7 +66,8 @@ class ProgressCallback;
 
 // What the glyphs come from: arrays, a file, or the built-in scene.
 struct Source {
-  std::optional<py::array> tensors, positions;
+  std::optional<py::array> tensors, positions;  // kept alive for the views
+  std::optional<io::ArrayRef> tensorsRef, positionsRef;
   std::optional<std::vector<double>> affine;  // 16, row-major
   std::string layout, frame, path;
   std::shared_ptr<ProgressCallback> progress;
@@ -97,26 +103,15 @@ class ProgressCallback {
 };
 
 app::Scene loadSource(const Source& s, const app::RenderOptions& o) {
-  if (!s.tensors) {
+  if (!s.tensorsRef) {
     io::ReadOptions read = o.field.read;
     read.progress = s.progress->sink();
     return app::loadScene(s.path, read);
   }
   app::Scene scene;
-  io::ArrayRef t;
-  try {
-    t = arrayRef(*s.tensors);
-  } catch (const std::domain_error& e) {
-    throw std::domain_error(std::string("tensors: ") + e.what());
-  }
-  if (s.positions) {
-    io::ArrayRef p;
-    try {
-      p = arrayRef(*s.positions);
-    } catch (const std::domain_error& e) {
-      throw std::domain_error(std::string("positions: ") + e.what());
-    }
-    scene.field = io::fieldFromPoints(t, s.layout, p);
+  const io::ArrayRef& t = *s.tensorsRef;
+  if (s.positionsRef) {
+    scene.field = io::fieldFromPoints(t, s.layout, *s.positionsRef);
   } else {
     if (!s.affine) throw std::invalid_argument("affine: a volume needs its 4x4 voxel-to-world affine");
     scene.field = io::fieldFromVolume(t, s.layout, s.affine->data(), s.frame,
@@ -142,15 +137,25 @@ class Renderer {
   // uploads again only when an option that reloads (OptionTable::reloads)
   // changed; γ, FA threshold, scale, colour, camera and depth cues do not.
   py::dict render(const OptionList& options, bool channels) {
-    std::lock_guard<std::mutex> lock(mutex_);
+    // Waited for without the GIL: the thread holding the lock needs the GIL
+    // to finish (the result, the progress callback), so waiting with it
+    // deadlocked two threads sharing one Renderer.
+    std::unique_lock<std::mutex> lock(mutex_, std::defer_lock);
+    {
+      py::gil_scoped_release release;
+      lock.lock();
+    }
     app::RenderOptions o;
     app::OptionTable table;
     app::addRenderOptions(table, o);
     applyOptions(table, options, "render");
     app::validateRenderOptions(o, false);
-    if (reloadKeys(table, options) != reloadKeys_) {
-      py::gil_scoped_release release;
-      build(o, options, table);
+    if (!session_ || reloadKeys(table, options) != reloadKeys_) {
+      {
+        py::gil_scoped_release release;
+        build(o, options, table);
+      }
+      warnLoaded();
     }
     render::FrameImage img;
     {
@@ -177,8 +182,8 @@ class Renderer {
     return out;
   }
 
-  std::uint64_t uploads() const { return previousUploads_ + session_->renderer().uploadCount(); }
-  std::size_t glyphCount() const { return session_->glyphCount(); }
+  std::uint64_t uploads() const { return previousUploads_ + (session_ ? session_->renderer().uploadCount() : 0); }
+  std::size_t glyphCount() const { return session_ ? session_->glyphCount() : 0; }
 
  private:
   // The values of every reloading option given, in order: equal lists mean
@@ -196,15 +201,36 @@ class Renderer {
     app::addRenderOptions(table, o);
     applyOptions(table, options, "Renderer");
     app::validateRenderOptions(o, false);
-    py::gil_scoped_release release;
-    build(o, options, table);
+    {
+      py::gil_scoped_release release;
+      build(o, options, table);
+    }
+    warnLoaded();
+  }
+
+  // What the CLI prints of a load (app::reportLoad) as Python warnings, which
+  // a notebook shows and a script can filter or turn into errors; the C
+  // stderr that reportLoad writes is not shown in Jupyter.
+  void warnLoaded() {
+    for (const std::string& w : std::exchange(loadWarnings_, {}))
+      if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) < 0) throw py::error_already_set();
   }
 
   void build(const app::RenderOptions& o, const OptionList& options, const app::OptionTable& table) {
+    loadWarnings_.clear();
     app::Scene scene = loadSource(source_, o);
-    app::reportLoad(scene.field, "python");
+    const io::TensorField& loaded = scene.field;
+    for (const std::string& w : loaded.warnings) loadWarnings_.push_back(loaded.path + ": " + w);
+    if (loaded.skippedNonFinite)
+      loadWarnings_.push_back(loaded.path + ": skipped " + std::to_string(loaded.skippedNonFinite) +
+                              " tensors with NaN/Inf components");
+    if (loaded.skippedOverflow)
+      loadWarnings_.push_back(loaded.path + ": skipped " + std::to_string(loaded.skippedOverflow) +
+                              " tensors whose values overflow single precision (beyond 3.4e38)");
     std::vector<io::MeshData> meshes = o.mesh.read(source_.path, "python");
     if (session_) previousUploads_ += session_->renderer().uploadCount();
+    // Freed before the next is made (peak memory): if making it throws, the
+    // next render builds again instead of drawing with no session.
     session_.reset();
     session_ = std::make_unique<app::RenderSession>(o, std::move(scene), std::move(meshes), true, "python",
                                                     [](io::TensorField& f) { f.releaseSamples(); },
@@ -216,6 +242,7 @@ class Renderer {
   Source source_;
   std::unique_ptr<app::RenderSession> session_;
   OptionList reloadKeys_;
+  std::vector<std::string> loadWarnings_;  // made without the GIL, raised with it
   std::uint64_t previousUploads_ = 0;
   std::mutex mutex_;
 };
@@ -234,6 +261,11 @@ py::array_t<T, py::array::c_style | py::array::forcecast> channel(const py::dict
 // float and geometry channels (render(..., channels=True)), every other
 // format the 8-bit image.
 void saveFrame(const py::dict& frame, const std::string& path) {
+  // A cast would write a float image in 0..1 as black: refused instead.
+  const py::array given = py::array::ensure(frame["rgba"]);
+  if (!given || !given.dtype().is(py::dtype::of<std::uint8_t>()))
+    throw py::type_error("image: must be the (H, W, 4) uint8 image, not " +
+                         (given ? std::string(py::str(given.dtype())) : std::string("a non-array")));
   auto rgba = py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>::ensure(frame["rgba"]);
   if (!rgba || rgba.ndim() != 3 || rgba.shape(2) != 4) throw std::invalid_argument("image: must be (H, W, 4) uint8");
   render::FrameImage img;
@@ -271,8 +303,12 @@ Source makeSource(std::optional<py::array> tensors, std::optional<py::array> pos
   if (positions && !tensors) throw std::invalid_argument("positions: given without tensors");
   if (affine && affine->size() != 16) throw std::invalid_argument("affine: must be 4x4");
   if (positions && affine) throw std::invalid_argument("affine: applies to a volume, not to points with positions");
+  if (positions && !frame.empty())
+    throw std::invalid_argument("frame: applies to a volume; the tensors of points with positions are in world axes");
   s.tensors = std::move(tensors);
   s.positions = std::move(positions);
+  if (s.tensors) s.tensorsRef = arrayRef(*s.tensors, "tensors");
+  if (s.positions) s.positionsRef = arrayRef(*s.positions, "positions");
   s.affine = std::move(affine);
   s.layout = std::move(layout);
   s.frame = std::move(frame);

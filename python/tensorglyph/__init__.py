@@ -15,6 +15,7 @@ from __future__ import annotations
 
 import numbers
 import os
+import threading
 
 import numpy as np
 
@@ -96,6 +97,18 @@ def _nifti_placement(img, frame):
     return np.diag(zooms + [1.0]), "voxel" if frame in (None, "", "fsl") else frame
 
 
+def _values(name, a):
+    """An array the core reads in place: float32 or float64 in this machine's
+    byte order (a big-endian NIfTI's data is '>f4'; its bytes read as
+    little-endian are other numbers). Integers and booleans become float64."""
+    a = np.asarray(a)
+    if a.dtype.kind in "iub":
+        return a.astype(np.float64)
+    if a.dtype.kind != "f":
+        raise TypeError(f"{name}: dtype {a.dtype} is not a number type")
+    return a if a.dtype.isnative else a.astype(a.dtype.newbyteorder("="))
+
+
 def _source(tensors, positions, affine, layout, frame):
     """(tensors array or None, positions, affine 16 floats, layout, frame, path)."""
     path = ""
@@ -119,20 +132,12 @@ def _source(tensors, positions, affine, layout, frame):
             affine, frame = _nifti_placement(img, frame)
         layout = layout or _nifti_layout(img)
     if tensors is not None:
-        if not isinstance(tensors, np.ndarray):
-            tensors = np.asarray(tensors)
-        if tensors.dtype.kind not in "f":
-            if tensors.dtype.kind in "iub":
-                tensors = tensors.astype(np.float64)
-            else:
-                raise TypeError(f"tensors: dtype {tensors.dtype} is not a number type")
+        tensors = _values("tensors", tensors)
         if positions is None and affine is None:
             raise ValueError("positions: tensors (N, 3, 3) or (N, 6) need positions (N, 3); "
                              "a volume (X, Y, Z, 6 | 3, 3) needs an affine")
     if positions is not None:
-        positions = np.asarray(positions)
-        if positions.dtype.kind in "iu":
-            positions = positions.astype(np.float64)
+        positions = _values("positions", positions)
     if affine is not None:
         a = np.asarray(affine, dtype=np.float64)
         if a.shape != (4, 4):
@@ -201,26 +206,44 @@ class Renderer:
         """`progress`: None, or f(stage, done, total, unit), called while a
         file loads and the tensors are decomposed (total 0: not known)."""
         self._options = {}
+        self._lock = threading.RLock()
+        self._array_source = False
         self.set(**options)
         t, p, a, lay, fr, path = _source(tensors, positions, affine, layout, frame)
+        if path:
+            # A file's order and frame are its reader's options, --layout and --frame.
+            self.set(**{k: v for k, v in (("layout", lay), ("frame", fr)) if v})
+            lay = fr = ""
+        self._array_source = t is not None
         self._core = _core.Renderer(t, p, a, lay, fr, path, _option_list(self._options), progress)
 
     def set(self, **options):
         """Changes options (None: back to the default); returns self."""
+        with self._lock:
+            return self._set(options)
+
+    def _set(self, options):
+        # Checked on a copy: a refused value must not stay behind and fail
+        # every later render.
+        changed = dict(self._options)
         for kw, value in options.items():
             _occurrences(kw, value)  # TypeError now, not at render time
+            if self._array_source and kw in ("layout", "frame"):
+                raise TypeError(f"{kw}: an array's {kw} is given when the Renderer is made")
             if value is None:
-                self._options.pop(kw, None)
+                changed.pop(kw, None)
             else:
-                self._options[kw] = value
-        _core.check(_option_list(self._options))
+                changed[kw] = value
+        _core.check(_option_list(changed))
+        self._options = changed
         return self
 
     def render(self, channels=False, **options):
         """Draws with the current options (updated by `options` first)."""
-        if options:
-            self.set(**options)
-        return Figure(self._core.render(_option_list(self._options), bool(channels)))
+        with self._lock:  # another thread's set() must not change this call's options
+            if options:
+                self.set(**options)
+            return Figure(self._core.render(_option_list(self._options), bool(channels)))
 
     @property
     def options(self):

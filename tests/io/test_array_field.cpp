@@ -58,6 +58,47 @@ TEST(ArrayField, PointsReadEachLayoutsOrder) {
             (std::vector<float>{1, 2, 3, 4, 5, 6}));
 }
 
+// DIPY's lower_triangular() order (xx xy yy xz yz zz, "nifti") passed as the
+// default "fsl" swaps yy and xz: diffusion tensors become indefinite. The
+// arrays get the NIfTI reader's check, as a warning naming the order that
+// fits; tensors indefinite in every order (stress) get none.
+TEST(ArrayField, SixComponentsInAnImplausibleOrderWarn) {
+  const int n = 64;
+  std::vector<double> lower, stress, pos;
+  for (int i = 0; i < n; ++i) {
+    const double a = 0.1 * i, c = std::cos(a), s = std::sin(a);
+    // diag(3, 1, 0.5) rotated about z by a: xx xy yy xz yz zz.
+    const double xx = 3 * c * c + s * s, xy = 2 * c * s, yy = 3 * s * s + c * c;
+    lower.insert(lower.end(), {xx, xy, yy, 0.0, 0.0, 0.5});
+    stress.insert(stress.end(), {1.0 + i, -2.0, -3.0 - i, 0.5, 0.25, 0.1});
+    pos.insert(pos.end(), {double(i), 0.0, 0.0});
+  }
+  const auto asFsl = tg::io::fieldFromPoints(view(lower, {n, 6}), "fsl", view(pos, {n, 3}));
+  ASSERT_EQ(asFsl.warnings.size(), 1u);
+  EXPECT_NE(asFsl.warnings[0].find("try --layout nifti --frame voxel"), std::string::npos) << asFsl.warnings[0];
+  EXPECT_TRUE(tg::io::fieldFromPoints(view(lower, {n, 6}), "nifti", view(pos, {n, 3})).warnings.empty());
+  EXPECT_TRUE(tg::io::fieldFromPoints(view(stress, {n, 6}), "fsl", view(pos, {n, 3})).warnings.empty());
+  const double affine[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+  const auto volume = tg::io::fieldFromVolume(view(lower, {4, 4, 4, 6}), "fsl", affine, "");
+  ASSERT_EQ(volume.warnings.size(), 1u);
+  EXPECT_NE(volume.warnings[0].find("--layout nifti"), std::string::npos) << volume.warnings[0];
+  EXPECT_TRUE(tg::io::fieldFromVolume(view(lower, {4, 4, 4, 6}), "nifti", affine, "").warnings.empty());
+}
+
+// The default sizing (spacing mode) needs the sample spacing: points from
+// arrays once had none, and drew larger or smaller than the same points read
+// from a file.
+TEST(ArrayField, PointsGetTheSampleSpacingTheVtkReaderEstimates) {
+  std::vector<double> t, pos;
+  for (int i = 0; i < 27; ++i) {
+    t.insert(t.end(), {3, 0, 0, 1, 0, 1});
+    pos.insert(pos.end(), {0.5 * (i % 3), 0.5 * (i / 3 % 3), 0.5 * (i / 9)});
+  }
+  const auto f = tg::io::fieldFromPoints(view(t, {27, 6}), "fsl", view(pos, {27, 3}));
+  EXPECT_GT(f.sampleSpacing, 0.0);
+  EXPECT_EQ(f.sampleSpacing, tg::io::estimateSampleSpacing(f.positions));
+}
+
 TEST(ArrayField, StridedFloat32ViewsReadLikeContiguousOnes) {
   // Two tensors stored as columns of a (6, 2) float32 array: a transposed view.
   std::vector<float> cols = {1, 10, 2, 20, 3, 30, 4, 40, 5, 50, 6, 60};

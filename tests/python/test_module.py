@@ -89,6 +89,25 @@ class DipyPipeline(unittest.TestCase):
         self.assertGreaterEqual(passed, 0.9 * checked, f"{passed} of {checked} long axes follow DIPY's")
 
 
+    def test_lower_triangular_in_the_default_order_warns(self):
+        """DIPY's fit.lower_triangular() is xx xy yy xz yz zz, the "nifti"
+        order; arrays default to "fsl", so passing it bare swaps yy and xz.
+        The module warns as the NIfTI reader does, naming the order that fits;
+        in the right order, or as quadratic_form, it says nothing."""
+        import warnings
+        img, fit = fit_small_64d()
+        opts = dict(size=(96, 72))
+        with self.assertWarnsRegex(UserWarning, "indefinite .* as --layout fsl .*--layout nifti --frame voxel"):
+            tg.render(fit.lower_triangular(), affine=img.affine, **opts)
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            right = tg.render(fit.lower_triangular(), affine=img.affine, layout="nifti", frame="voxel", **opts)
+            self.assertTrue(np.array_equal(right, tg.render(fit, affine=img.affine, **opts)))
+            # Indefinite in any order (stress): no order is evidence, no warning.
+            rng = np.random.default_rng(2)
+            tg.render(rng.normal(size=(50, 6)), positions=rng.uniform(0, 10, (50, 3)), **opts)
+
+
 @unittest.skipUnless(CLI, "TG_CLI names the tensorglyph binary")
 class ModuleAgainstCli(unittest.TestCase):
     def test_same_nifti_same_pixels(self):
@@ -150,6 +169,35 @@ class ModuleAgainstCli(unittest.TestCase):
             self.assertTrue(np.array_equal(from_cli, tg.render(loaded, **opts).image))
             self.assertGreater(np.count_nonzero(from_cli[..., 3]), 300, "nothing drawn")
 
+    def test_points_from_arrays_draw_as_their_vtk_file(self):
+        """Points from arrays are sized as the VTK reader sizes the same
+        points (spacing mode, the default): once they had no sample spacing
+        and drew at another size."""
+        import vtk
+        from vtk.util.numpy_support import numpy_to_vtk
+        t, p = points(60)
+        opts = dict(size=(120, 90), glyph="superquadric")
+        with tempfile.TemporaryDirectory() as d:
+            grid = vtk.vtkPolyData()
+            pts = vtk.vtkPoints()
+            pts.SetData(numpy_to_vtk(p.astype(np.float32), deep=1))
+            grid.SetPoints(pts)
+            arr = numpy_to_vtk(t.reshape(-1, 9).astype(np.float32), deep=1)
+            arr.SetName("tensors")
+            grid.GetPointData().SetTensors(arr)
+            path = os.path.join(d, "points.vtp")
+            w = vtk.vtkXMLPolyDataWriter()
+            w.SetFileName(path)
+            w.SetInputData(grid)
+            self.assertEqual(w.Write(), 1)
+            png = os.path.join(d, "cli.png")
+            subprocess.run([CLI, "render", path, "-o", png, "--size", "120", "90", "--glyph", "superquadric"],
+                           check=True)
+            from_cli = _read_png(png)
+        from_arrays = tg.render(t.astype(np.float32), positions=p.astype(np.float32), **opts).image
+        self.assertGreater(np.count_nonzero(from_cli[..., 3]), 300, "nothing drawn")
+        self.assertTrue(np.array_equal(from_cli, from_arrays))
+
 
 def _read_png(path):
     # matplotlib's PNG reader (Debian's python3-matplotlib comes with DIPY) as 8-bit.
@@ -161,6 +209,22 @@ def points(n=5):
     rng = np.random.default_rng(1)
     m = rng.normal(size=(n, 3, 3))
     return m + np.swapaxes(m, 1, 2) + 6 * np.eye(3), rng.uniform(0, 10, size=(n, 3))
+
+
+_TMP = tempfile.TemporaryDirectory()  # removed when the interpreter exits
+
+
+def _nifti_file():
+    """A small positive-definite fsl-order NIfTI (det > 0), written once."""
+    path = os.path.join(_TMP.name, "dt.nii")
+    if not os.path.exists(path):
+        import nibabel as nib
+        rng = np.random.default_rng(3)
+        L = rng.normal(size=(4, 4, 3, 3, 3)) * 0.3 + np.eye(3) * [1.0, 0.5, 0.25]
+        D = L @ np.swapaxes(L, -1, -2)
+        fsl = np.stack([D[..., 0, 0], D[..., 0, 1], D[..., 0, 2], D[..., 1, 1], D[..., 1, 2], D[..., 2, 2]], -1)
+        nib.save(nib.Nifti1Image(fsl.astype(np.float32), np.diag([2.0, 2.0, 2.0, 1.0])), path)
+    return path
 
 
 class BadInput(unittest.TestCase):
@@ -187,12 +251,46 @@ class BadInput(unittest.TestCase):
             (ValueError, "--glyph", lambda: tg.render(t, positions=p, glyph="teapot")),
             (ValueError, "missing.vtk", lambda: tg.render("/nonexistent/missing.vtk")),
             (ValueError, "layout", lambda: tg.render(np.zeros((2, 2, 2, 6)) + 1, affine=np.eye(4), layout="xyz")),
+            # Points' tensors are in world axes: a frame would be ignored.
+            (ValueError, "frame", lambda: tg.render(t, positions=p, frame="voxel")),
+            (ValueError, "--layout", lambda: tg.render(_nifti_file(), layout="xyz")),
+            (TypeError, "layout", lambda: tg.Renderer(t, positions=p).set(layout="mrtrix")),
+            # A float image in 0..1 cast to uint8 was saved black.
+            (TypeError, "uint8", lambda: tg.save(np.full((8, 8, 4), 0.9), os.path.join(_TMP.name, "f.png"))),
+            # The core itself refuses what it would misread.
+            (TypeError, "byte order", lambda: tg._core.Renderer(t.astype(">f8"), p, None, "", "", "", [], None)),
         ]
         for exc, word, call in cases:
             with self.subTest(word=word):
                 with self.assertRaises(exc) as cm:
                     call()
                 self.assertIn(word, str(cm.exception))
+
+    def test_big_endian_arrays_draw_as_native_ones(self):
+        """'>f4' (a big-endian NIfTI's data through nibabel) read in place as
+        little-endian is other, mostly finite numbers: once drawn without a word."""
+        t, p = points(12)
+        opts = dict(size=(64, 48), scale_mode="absolute", scale=0.3, eye=(5, 5, 40), look_at=(5, 5, 5))
+        native = tg.render(t.astype(np.float32), positions=p.astype(np.float32), **opts).image
+        self.assertGreater(np.count_nonzero(native[..., 3]), 200, "nothing drawn")
+        for tt, pp in [(t.astype(">f4"), p.astype(np.float32)), (t.astype(np.float32), p.astype(">f4")),
+                       (t.astype(">f8"), p.astype(">f8"))]:
+            with self.subTest(tensors=tt.dtype.str, positions=pp.dtype.str):
+                self.assertTrue(np.array_equal(native, tg.render(tt, positions=pp, **opts).image))
+
+    def test_a_files_layout_and_frame_are_used(self):
+        """layout= and frame= with a path are the reader's --layout and
+        --frame: once they were taken and silently ignored."""
+        path = _nifti_file()
+        opts = dict(size=(64, 48), glyph="superquadric", color="fa")
+        as_fsl = tg.render(path, **opts).image
+        with self.assertWarnsRegex(UserWarning, "indefinite .* try --layout fsl"):  # the reader's check
+            as_mrtrix = tg.render(path, layout="mrtrix", frame="world", **opts).image
+        self.assertFalse(np.array_equal(as_fsl, as_mrtrix), "layout= was ignored")
+        self.assertTrue(np.array_equal(as_mrtrix, tg.Renderer(path, **opts).set(layout="mrtrix", frame="world")
+                                       .render().image))
+        self.assertTrue(np.array_equal(tg.render(path, frame="world", **opts).image,
+                                       tg.Renderer(path, **opts).set(frame="world").render().image))
 
     def test_exr_needs_channels_and_png_bytes_are_a_png(self):
         t, p = points()
@@ -226,6 +324,55 @@ class Interactive(unittest.TestCase):
         r.render()
         self.assertEqual(r.uploads, 2, "a new selection must load and upload")
         print("ms per change from Python: " + ", ".join(f"{k} {v:.1f}" for k, v in times.items()), file=sys.stderr)
+
+    def test_a_failed_reload_leaves_the_renderer_usable(self):
+        """A reload that fails after the old session is freed (here the
+        underlay file) once left no session: going back to the old options
+        drew with none and crashed the interpreter."""
+        t, p = points(20)
+        r = tg.Renderer(t, positions=p, size=(48, 32))
+        first = r.render().image
+        with self.assertRaises(ValueError) as cm:
+            r.render(plane="z:0", underlay="/nonexistent/underlay.nii")
+        self.assertIn("underlay.nii", str(cm.exception))
+        again = r.set(plane=None, underlay=None).render().image
+        self.assertTrue(np.array_equal(first, again))
+        self.assertEqual(r.uploads, 2)
+
+    def test_one_renderer_shared_by_two_threads(self):
+        """The core's lock was waited for with the GIL held while the holder
+        needed the GIL to finish: two threads on one Renderer deadlocked.
+        Each call draws with its own options."""
+        t, p = points(50)
+        opts = dict(size=(96, 64), glyph="superquadric")
+        alone = {g: tg.render(t, positions=p, gamma=g, **opts).image for g in (1.0, 4.0)}
+        r = tg.Renderer(t, positions=p, **opts)
+        wrong, errors = [], []
+
+        def work(g):
+            try:
+                for _ in range(4):
+                    if not np.array_equal(r.render(gamma=g).image, alone[g]):
+                        wrong.append(g)
+            except Exception as e:  # reported below, not lost in the thread
+                errors.append(e)
+
+        threads = [threading.Thread(target=work, args=(g,), daemon=True) for g in (1.0, 4.0)]
+        for th in threads:
+            th.start()
+        for th in threads:
+            th.join(timeout=120)
+        self.assertFalse(any(th.is_alive() for th in threads), "deadlocked")
+        self.assertEqual(errors, [])
+        self.assertEqual(wrong, [])
+
+    def test_a_refused_option_does_not_stay_behind(self):
+        t, p = points(10)
+        r = tg.Renderer(t, positions=p, size=(32, 24))
+        with self.assertRaises(ValueError):
+            r.set(gamma=-1)
+        self.assertNotIn("gamma", r.options)
+        self.assertEqual(r.render().shape, (24, 32, 4))
 
     def test_progress_reaches_a_python_callback(self):
         import nibabel as nib

@@ -7,7 +7,8 @@ and the benchmark's one ParaView driver.
           [--slice-normal X Y Z --slice-origin X Y Z] [--background R G B]
           [--select X0 Y0 X1 Y1 ... --select-cells X0 Y0 X1 Y1 ...
            --selection-out TXT]
-          [--scalar-bar] [--legend-out TXT]
+          [--scalar-bar] [--legend-out TXT] [--cell-tensors] [--nan-every K]
+          [--multiblock] [--as-six]
 
 Under mpiexec, --redistribute spreads the dataset over the ranks (or give a
 partitioned .pvtu); each rank draws its own glyphs and IceT composites the
@@ -53,6 +54,13 @@ def main():
     ap.add_argument("--redistribute", action="store_true",
                     help="spread the dataset over the MPI ranks (ParaView's RedistributeDataSet)")
     ap.add_argument("--fxaa", action="store_true")
+    ap.add_argument("--cell-tensors", action="store_true",
+                    help="move the tensors to cell data (PointDatatoCellData) and pick that cell array")
+    ap.add_argument("--multiblock", action="store_true", help="show the dataset as a block of a multiblock")
+    ap.add_argument("--as-six", action="store_true",
+                    help="give the tensors as 6 components in VTK's order XX YY ZZ XY YZ XZ")
+    ap.add_argument("--nan-every", type=int, metavar="K",
+                    help="set the first component of every K-th point's tensor to NaN")
     ap.add_argument("--select", type=int, nargs=4, action="append", default=[])
     ap.add_argument("--select-cells", type=int, nargs=4, action="append", default=[])
     ap.add_argument("--selection-out")
@@ -67,6 +75,30 @@ def main():
         sys.exit("render_glyphs.py: %s: ParaView has no reader for it" % a.input)
     if a.redistribute:
         reader = simple.RedistributeDataSet(Input=reader)
+    if a.as_six:
+        reader = simple.ProgrammableFilter(Input=reader)
+        reader.Script = "\n".join([
+            "from vtkmodules.vtkCommonCore import vtkDoubleArray",
+            "out = self.GetOutput()", "out.ShallowCopy(self.GetInput())",
+            "t = out.GetPointData().GetTensors()", "s = vtkDoubleArray()", "s.SetName(t.GetName())",
+            "s.SetNumberOfComponents(6)", "s.SetNumberOfTuples(t.GetNumberOfTuples())",
+            "for i in range(t.GetNumberOfTuples()):",
+            "    v = t.GetTuple9(i)",
+            "    s.SetTuple6(i, v[0], v[4], v[8], v[1], v[5], v[2])",
+            "out.GetPointData().SetTensors(s)"])
+    if a.multiblock:
+        reader = simple.GroupDatasets(Input=[reader])
+    if a.nan_every:
+        reader = simple.ProgrammableFilter(Input=reader)
+        reader.Script = "\n".join([
+            "out = self.GetOutput()", "out.ShallowCopy(self.GetInput())",
+            "t = out.GetPointData().GetTensors()", "c = t.NewInstance()", "c.DeepCopy(t)",
+            "for i in range(0, c.GetNumberOfTuples(), %d):" % a.nan_every,
+            "    c.SetComponent(i, 0, float('nan'))",
+            "out.GetPointData().SetTensors(c)"])
+    if a.cell_tensors:
+        reader = simple.PointDatatoCellData(Input=reader)
+        reader.PassPointData = 0
     view = simple.CreateRenderView()
     view.ViewSize = a.size
     view.OrientationAxesVisibility = 0
@@ -84,6 +116,9 @@ def main():
         disp.TensorGlyphScaleMode = a.scale_mode
         disp.TensorGlyphScaleFactor = a.scale
         disp.TensorGlyphColorMode = a.color
+        if a.cell_tensors:
+            names = [k for k in reader.CellData.keys() if reader.CellData[k].GetNumberOfComponents() in (6, 9)]
+            disp.TensorGlyphTensors = ["CELLS", names[0]]
     if a.slice_normal:
         sl = simple.Slice(Input=reader)
         sl.SliceType = "Plane"

@@ -55,33 +55,49 @@ vtkSmartPointer<vtkDoubleArray> doubles(const char* name, const T& values) {
   return a;
 }
 
+// Reads this rank's piece into `f`; the problem, or "" when it is fine.
+// A problem is reported after the collective calls, so that the other ranks
+// are not left waiting in them.
+std::string readPiece(vtkDataSet* input, vtkDataArray* tensors, io::TensorField& f) {
+  const vtkIdType n = input ? input->GetNumberOfPoints() : 0;
+  if (n == 0) return "";
+  if (!tensors)
+    return "prepareGlyphInput: " + std::to_string(n) + " points but no point array of tensors (9 or 6 components)";
+  const std::string name = tensors->GetName() ? tensors->GetName() : "";
+  const int nc = tensors->GetNumberOfComponents();
+  if (nc != 9 && nc != 6)
+    return "prepareGlyphInput: array '" + name + "' has " + std::to_string(nc) +
+           " components; tensors need 9 (3x3) or 6 (XX YY ZZ XY YZ XZ)";
+  // A cell array (chosen from Python: the property's list offers point
+  // arrays only) has one tuple per cell: read per point, it is out of bounds
+  // or another cell's tensor.
+  if (tensors->GetNumberOfTuples() != n)
+    return "prepareGlyphInput: array '" + name + "' has " + std::to_string(tensors->GetNumberOfTuples()) +
+           " tuples for " + std::to_string(n) + " points; the tensors must be point data";
+  if (std::uint64_t(n) > io::kMaxInputs)
+    return "prepareGlyphInput: " + std::to_string(n) + " points; at most " + std::to_string(io::kMaxInputs) +
+           " fit the id channel";
+  double p[3], t[9], s6[6];
+  for (vtkIdType i = 0; i < n; ++i) {
+    input->GetPoint(i, p);
+    tensors->GetTuple(i, t);
+    if (nc == 9) {
+      f.addFull(std::uint32_t(i), p, t);
+    } else {
+      symFromParaView(t, s6);
+      f.addSym(std::uint32_t(i), p, s6);
+    }
+  }
+  return "";
+}
+
 }  // namespace
 
 vtkSmartPointer<vtkPolyData> prepareGlyphInput(vtkDataSet* input, vtkDataArray* tensors,
-                                               vtkMultiProcessController* controller) {
+                                               vtkMultiProcessController* controller, std::size_t* skipped) {
   io::TensorField f;
-  const vtkIdType n = input ? input->GetNumberOfPoints() : 0;
-  if (n > 0 && tensors) {
-    const int nc = tensors->GetNumberOfComponents();
-    if (nc != 9 && nc != 6)
-      throw std::invalid_argument(std::string("prepareGlyphInput: array '") +
-                                  (tensors->GetName() ? tensors->GetName() : "") + "' has " + std::to_string(nc) +
-                                  " components; tensors need 9 (3x3) or 6 (XX YY ZZ XY YZ XZ)");
-    if (std::uint64_t(n) > io::kMaxInputs)
-      throw std::invalid_argument("prepareGlyphInput: " + std::to_string(n) + " points; at most " +
-                                  std::to_string(io::kMaxInputs) + " fit the id channel");
-    double p[3], t[9], s6[6];
-    for (vtkIdType i = 0; i < n; ++i) {
-      input->GetPoint(i, p);
-      tensors->GetTuple(i, t);
-      if (nc == 9) {
-        f.addFull(std::uint32_t(i), p, t);
-      } else {
-        symFromParaView(t, s6);
-        f.addSym(std::uint32_t(i), p, s6);
-      }
-    }
-  }
+  const std::string problem = readPiece(input, tensors, f);
+  if (skipped) *skipped = f.skippedNonFinite + f.skippedOverflow;
   const std::size_t kept = f.size();
   double spacing = gridSpacing(input);
   if (spacing <= 0.0) spacing = io::estimateSampleSpacing(f.positions);
@@ -156,6 +172,7 @@ vtkSmartPointer<vtkPolyData> prepareGlyphInput(vtkDataSet* input, vtkDataArray* 
   const double scalars[6] = {info.sample.maxAbs, info.sample.spacing, info.mdMin, info.mdMax, info.eigenMin,
                              info.eigenMax};
   out->GetFieldData()->AddArray(doubles(kInfoArray, std::span<const double>(scalars)));
+  if (!problem.empty()) throw std::invalid_argument(problem);
   return out;
 }
 

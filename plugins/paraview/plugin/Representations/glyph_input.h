@@ -1,6 +1,7 @@
 // From a ParaView dataset to the mapper's input, and the sizing that every
 // rank of a distributed run shares.
 #pragma once
+#include <cstddef>
 #include <span>
 
 #include <vtkSmartPointer.h>
@@ -34,9 +35,14 @@ struct SizingInfo {
 // tensorglyph's order and ids; `tensors` holds 9 components (row-major 3x3,
 // symmetrised) or 6 in ParaView's order XX YY ZZ XY YZ XZ. The sizing sample
 // is merged over the ranks of `controller` (a collective call; null: this
-// process alone). Throws std::invalid_argument for another component count.
+// process alone). Throws std::invalid_argument when `input` has points but
+// `tensors` is null, has another component count, or is not one tuple per
+// point; after the collective calls, so that no rank is left waiting.
+// `skipped` (when given) receives how many of this rank's points were left
+// out for NaN/Inf or values beyond single precision, for the caller to report.
 vtkSmartPointer<vtkPolyData> prepareGlyphInput(vtkDataSet* input, vtkDataArray* tensors,
-                                               vtkMultiProcessController* controller);
+                                               vtkMultiProcessController* controller,
+                                               std::size_t* skipped = nullptr);
 
 // The glyphs of a prepared input (null or empty: none), and what
 // prepareGlyphInput stored of the whole dataset.

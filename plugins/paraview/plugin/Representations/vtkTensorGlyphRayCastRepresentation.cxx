@@ -4,6 +4,7 @@
 
 #include <vtkActor.h>
 #include <vtkAlgorithmOutput.h>
+#include <vtkCompositeDataSet.h>
 #include <vtkDataSet.h>
 #include <vtkInformation.h>
 #include <vtkInformationVector.h>
@@ -33,6 +34,9 @@ vtkTensorGlyphRayCastMapper* vtkTensorGlyphRayCastRepresentation::GetMapper() { 
 
 int vtkTensorGlyphRayCastRepresentation::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
+  // Accepted so that RequestData can say what to do: refused by the
+  // pipeline, a multiblock input drew nothing with an error about ports.
+  info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
   info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   return 1;
 }
@@ -43,15 +47,22 @@ int vtkTensorGlyphRayCastRepresentation::RequestData(
   vtkDataSet* input =
     inputVector[0]->GetNumberOfInformationObjects() == 1 ? vtkDataSet::GetData(inputVector[0], 0) : nullptr;
   vtkDataArray* tensors = input ? this->GetInputArrayToProcess(0, input) : nullptr;
-  // Without a tensor array nothing is drawn; a dataset with points then
-  // needs a word, or the representation is a blank view.
-  if (!tensors && input && input->GetNumberOfPoints() > 0)
-    vtkWarningMacro(<< "no point tensors to draw: the dataset has no active tensors; choose a point array of 9 "
-                       "components (3x3) or 6 (XX YY ZZ XY YZ XZ) as Tensors");
+  if (!input && vtkCompositeDataSet::GetData(inputVector[0], 0)) {
+    // One id per point of one dataset (picking, the spreadsheet): blocks
+    // would need a block index as well.
+    vtkErrorMacro(<< "RequestData: a composite (multiblock) dataset; apply Merge Blocks and show its output");
+    return this->Superclass::RequestData(request, inputVector, outputVector);
+  }
   try {
     // Collective over the ranks: every rank runs this, with or without points.
-    this->Prepared->ShallowCopy(
-      tg::paraview::prepareGlyphInput(input, tensors, vtkMultiProcessController::GetGlobalController()));
+    std::size_t skipped = 0;
+    this->Prepared->ShallowCopy(tg::paraview::prepareGlyphInput(
+      input, tensors, vtkMultiProcessController::GetGlobalController(), &skipped));
+    // As the CLI says it: points left out are not drawn without a word.
+    if (skipped > 0)
+      vtkWarningMacro(<< "prepareGlyphInput: array '" << (tensors && tensors->GetName() ? tensors->GetName() : "")
+                      << "': skipped " << skipped
+                      << " points whose tensors have NaN/Inf components or overflow single precision");
   } catch (const std::exception& e) {
     vtkErrorMacro(<< e.what());
     this->Prepared->Initialize();
