@@ -510,7 +510,16 @@ TensorField impl::readVtk(const std::string& path, const ReadOptions& opt) {
                            " to " + std::to_string(b[5]));
   }
   std::optional<GridPlacement> placed;
-  if (image) placed = imagePlacement(image);
+  if (image) {
+    placed = imagePlacement(image);
+    // As the volume readers refuse a singular grid: drawn, every glyph along
+    // an axis of spacing 0 would lie on one plane.
+    if (gridIsSingular(image->GetDimensions(), placed->axesWC)) {
+      const double* s = image->GetSpacing();
+      fail(path, s[0] == 0 || s[1] == 0 || s[2] == 0 ? "the image spacing is singular (a spacing of 0)"
+                                                     : "the image grid is singular (its Direction and spacing)");
+    }
+  }
   const Selector sel(opt.selection, path, image ? image->GetDimensions() : nullptr, placed ? &*placed : nullptr);
   if (sel.selectsAll()) f.reserve(std::size_t(n));
   double p[3], t[9], full[9];
