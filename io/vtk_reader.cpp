@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -144,6 +145,14 @@ std::uint64_t checkLegacyCounts(const std::string& path, std::uint64_t fileSize)
       if (newCellFormat ? (a > 1 && b < a - 1) : b < 2 * a)
         fail(path, "\"" + key + "\" size " + std::to_string((long long)b) + " is too small for " +
                        std::to_string((long long)a) + " cells");
+    } else if (key == "SPACING" || key == "ORIGIN" || key == "ASPECT_RATIO") {
+      // VTK's stream stops at "nan" or "inf" and reads no arrays at all, which
+      // was then reported as a file without tensors.
+      for (std::string word; ls >> word;) {
+        char* end = nullptr;
+        const double v = std::strtod(word.c_str(), &end);
+        if (end == word.c_str() + word.size() && !std::isfinite(v)) fail(path, key + ": " + word + " is not finite");
+      }
     } else if (key == "CELL_TYPES" && (ls >> a)) {
       impossible(key, a);
     } else if (key == "DIMENSIONS" && (ls >> a >> b >> c)) {

@@ -92,3 +92,21 @@ TEST(GridChecks, VtkImageWithAZeroSpacingIsRefused) {
   EXPECT_EQ(io::readTensorField((d / "flat.vtk").string(), {}).size(), 4u);
 }
 
+// VTK stops reading at the word and finds no arrays: the message was "no
+// point tensors".
+TEST(GridChecks, VtkNonFiniteSpacingOrOriginIsSaidSo) {
+  const fs::path d = tmpDir();
+  const struct {
+    const char* file;
+    std::string bytes;
+    const char* expect;
+  } cases[] = {
+      {"spacing-nan.vtk", structuredPoints("2 1 1", "nan 1 1", "0 0 0", 2), "SPACING: nan is not finite"},
+      {"origin-inf.vtk", structuredPoints("2 1 1", "1 1 1", "inf 0 0", 2), "ORIGIN: inf is not finite"},
+      {"origin-big.vtk", structuredPoints("2 1 1", "1 1 1", "0 -1e999 0", 2), "ORIGIN: -1e999 is not finite"},
+  };
+  for (const auto& c : cases) {
+    test::writeFile(d / c.file, c.bytes);
+    expectRefused(d / c.file, c.expect);
+  }
+}
