@@ -92,10 +92,7 @@ void VolumeSink::emit(std::uint64_t index, const double p[3], const double* v) {
   double s[6];
   if (layout_.full) {
     symmetricPart(v, s);
-    const double asym = std::max({std::abs(v[1] - v[3]), std::abs(v[2] - v[6]), std::abs(v[5] - v[7])});
-    const double norm = std::max({std::abs(s[0]), std::abs(s[1]), std::abs(s[2]), std::abs(s[3]), std::abs(s[4]),
-                                  std::abs(s[5])});
-    if (asym > 0 && norm > 0) maxAsym_ = std::max(maxAsym_, asym / norm);
+    maxAsym_ = std::max(maxAsym_, asymmetry(v));
   } else {
     for (int k = 0; k < 6; ++k) s[k] = v[layout_.sym[k]];
   }
@@ -119,9 +116,8 @@ void VolumeSink::finish() {
 }
 
 void VolumeSink::warnIfAsymmetric() {
-  if (layout_.full && maxAsym_ > 1e-3)
-    f_.warnings.push_back("3D-matrix tensors are asymmetric (max |D - Dᵀ| / |D| = " + std::to_string(maxAsym_) +
-                          "); drawn symmetrised, (D + Dᵀ)/2");
+  if (const std::string w = asymmetryWarning("3D-matrix tensors", maxAsym_); layout_.full && !w.empty())
+    f_.warnings.push_back(w);
 }
 
 GridPlacement placementOf(const VolumeGeometry& g) {

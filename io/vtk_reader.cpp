@@ -532,6 +532,7 @@ TensorField impl::readVtk(const std::string& path, const ReadOptions& opt) {
   const Selector sel(opt.selection, path, image ? image->GetDimensions() : nullptr, placed ? &*placed : nullptr);
   if (sel.selectsAll()) f.reserve(std::size_t(n));
   double p[3], t[9], full[9];
+  double maxAsym = 0;
   for (vtkIdType i = 0; i < n; ++i) {
     ds->GetPoint(i, p);
     for (double& x : p) x = read.nonFinite.restore(x);
@@ -542,9 +543,11 @@ TensorField impl::readVtk(const std::string& path, const ReadOptions& opt) {
       arr->GetTuple(i, t);
       for (int k = 0; k < nc; ++k) t[k] = read.nonFinite.restore(t[k]);
       fullTensor(nc, t, full);
+      if (nc == 9) maxAsym = std::max(maxAsym, asymmetry(full));
       f.addFull(std::uint32_t(i), p, full);
     }
   }
+  if (std::string w = asymmetryWarning("9-component tensors", maxAsym); !w.empty()) f.warnings.push_back(std::move(w));
   if (auto* img = image) {
     GridInfo g;
     img->GetDimensions(g.dims);

@@ -110,3 +110,30 @@ TEST(GridChecks, VtkNonFiniteSpacingOrOriginIsSaidSo) {
     expectRefused(d / c.file, c.expect);
   }
 }
+
+// As NRRD's 3D-matrix tensors: drawn symmetrised, with one warning saying so.
+TEST(GridChecks, AsymmetricVtkTensorsAreSymmetrisedWithAWarning) {
+  const fs::path d = tmpDir();
+  const std::string legacy = "# vtk DataFile Version 3.0\nt\nASCII\nDATASET POLYDATA\nPOINTS 2 float\n0 0 0 1 0 0\n"
+                             "POINT_DATA 2\nTENSORS t float\n1 0 0 0 1 0 0 0 1\n1 0.2 0 0.4 2 0 0 0 3\n";
+  test::writeFile(d / "asym.vtk", legacy);
+  test::writeFile(d / "asym.vtp",
+                  "<?xml version=\"1.0\"?>\n<VTKFile type=\"PolyData\" version=\"0.1\">\n<PolyData>\n"
+                  "<Piece NumberOfPoints=\"2\"><Points><DataArray type=\"Float32\" NumberOfComponents=\"3\" "
+                  "format=\"ascii\">0 0 0 1 0 0</DataArray></Points><PointData Tensors=\"t\">"
+                  "<DataArray type=\"Float32\" Name=\"t\" NumberOfComponents=\"9\" format=\"ascii\">"
+                  "1 0 0 0 1 0 0 0 1 1 0.2 0 0.4 2 0 0 0 3</DataArray></PointData></Piece>\n</PolyData>\n</VTKFile>\n");
+  for (const char* name : {"asym.vtk", "asym.vtp"}) {
+    const io::TensorField f = io::readTensorField((d / name).string(), {});
+    ASSERT_EQ(f.size(), 2u) << name;
+    EXPECT_FLOAT_EQ(f.tensors[6 + 1], 0.3f) << name;
+    ASSERT_EQ(f.warnings.size(), 1u) << name;
+    EXPECT_NE(f.warnings[0].find("9-component tensors are asymmetric (max |D - Dᵀ| / |D| = 0.066667"), std::string::npos)
+        << f.warnings[0];
+  }
+  // Asymmetry within 1e-3 (a writer's rounding) is no news.
+  std::string slight = legacy;
+  slight.replace(slight.find("0.4 2"), 5, "0.2002 2");
+  test::writeFile(d / "slight.vtk", slight);
+  EXPECT_TRUE(io::readTensorField((d / "slight.vtk").string(), {}).warnings.empty());
+}
