@@ -132,29 +132,26 @@ double determinant3(const double a[9]) {
 }
 
 bool gridIsSingular(const int dims[3], const double axes[9]) {
-  // Singleton axes' steps are never taken: a unit vector stands in for each,
-  // orthogonal to the others' span wherever possible.
-  double a[9];
+  // A singleton axis's step is never taken: a coordinate axis stands in for
+  // it, whichever of them best completes the others (all 27 choices tried).
   double lengths = 1;
+  int stepped = 0;
   for (int k = 0; k < 3; ++k) {
     const double len = std::hypot(axes[k], axes[3 + k], axes[6 + k]);
     if (dims[k] > 1) {
       if (!std::isfinite(len) || !(len > 0)) return true;
       lengths *= len;
+      ++stepped;
     }
   }
-  int many = 0;
-  for (int k = 0; k < 3; ++k) many += dims[k] > 1;
-  double best = 0;
-  // Try each choice of unit stand-ins for the singleton axes; the grid spans
-  // its axes if any choice gives a non-degenerate matrix.
+  double a[9], best = 0;
   for (int pick = 0; pick < 27; ++pick) {
-    int choice[3] = {pick % 3, pick / 3 % 3, pick / 9};
+    const int choice[3] = {pick % 3, pick / 3 % 3, pick / 9};
     for (int k = 0; k < 3; ++k)
       for (int r = 0; r < 3; ++r) a[3 * r + k] = dims[k] > 1 ? axes[3 * r + k] : (r == choice[k] ? 1.0 : 0.0);
     best = std::max(best, std::abs(determinant3(a)));
   }
-  return many > 0 && !(best > 1e-6 * lengths);
+  return stepped > 0 && !(best > 1e-6 * lengths);
 }
 
 std::array<double, 9> orthogonalPart(const double m[9]) {
