@@ -400,6 +400,11 @@ TensorField impl::readNrrd(const std::string& path, const ReadOptions& opt) {
   const ComponentLayout layout = layoutOf(path, n, f);
   f.hasConfidence = layout.confidence >= 0;
   VolumeGeometry g = geometry(path, n, 1, f);
+  // As NIfTI's and MRtrix's readers refuse a singular affine: drawn, every
+  // glyph along a zero or parallel axis would lie on one plane.
+  if (gridIsSingular(g.dims, g.axesWC))
+    fail(path, n->spaceDim == 3 ? "the space directions are singular (a zero or parallel direction)"
+                                : "the axis spacings are singular (a spacing of 0)");
   const std::uint64_t voxels = std::uint64_t(g.dims[0]) * std::uint64_t(g.dims[1]) * std::uint64_t(g.dims[2]);
 
   double flip[3];

@@ -24,6 +24,21 @@ void symmetricPart(const double t[9], double s[6]) {
   s[3] = t[4], s[4] = 0.5 * (t[5] + t[7]), s[5] = t[8];
 }
 
+double asymmetry(const double t[9]) {
+  double s[6];
+  symmetricPart(t, s);
+  const double asym = std::max({std::abs(t[1] - t[3]), std::abs(t[2] - t[6]), std::abs(t[5] - t[7])});
+  const double norm = std::max({std::abs(s[0]), std::abs(s[1]), std::abs(s[2]), std::abs(s[3]), std::abs(s[4]),
+                                std::abs(s[5])});
+  return asym > 0 && norm > 0 ? asym / norm : 0.0;
+}
+
+std::string asymmetryWarning(const std::string& what, double maxAsymmetry) {
+  if (!(maxAsymmetry > 1e-3)) return "";
+  return what + " are asymmetric (max |D - Dᵀ| / |D| = " + std::to_string(maxAsymmetry) +
+         "); drawn symmetrised, (D + Dᵀ)/2";
+}
+
 void congruence(const double t[9], const double s[6], double out[6]) {
   const double d[9] = {s[0], s[1], s[2], s[1], s[3], s[4], s[2], s[4], s[5]};
   double td[9];  // T D

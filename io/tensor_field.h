@@ -115,6 +115,11 @@ struct TensorField {
 
 // (D + Dᵀ)/2 of a row-major 3x3 as xx xy xz yy yz zz.
 void symmetricPart(const double t9[9], double s6[6]);
+// max |D - Dᵀ| / max |(D + Dᵀ)/2| of a row-major 3x3; 0 for a zero one.
+double asymmetry(const double t9[9]);
+// The warning a reader adds when the largest asymmetry of its 9-component
+// tensors (`what`) exceeds 1e-3, since they are drawn symmetrised; empty below.
+std::string asymmetryWarning(const std::string& what, double maxAsymmetry);
 // T S Tᵀ for a symmetric S (xx xy xz yy yz zz) and a row-major 3x3 T: a
 // tensor carried from one frame into another.
 void congruence(const double t[9], const double s6[6], double out6[6]);

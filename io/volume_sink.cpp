@@ -92,10 +92,7 @@ void VolumeSink::emit(std::uint64_t index, const double p[3], const double* v) {
   double s[6];
   if (layout_.full) {
     symmetricPart(v, s);
-    const double asym = std::max({std::abs(v[1] - v[3]), std::abs(v[2] - v[6]), std::abs(v[5] - v[7])});
-    const double norm = std::max({std::abs(s[0]), std::abs(s[1]), std::abs(s[2]), std::abs(s[3]), std::abs(s[4]),
-                                  std::abs(s[5])});
-    if (asym > 0 && norm > 0) maxAsym_ = std::max(maxAsym_, asym / norm);
+    maxAsym_ = std::max(maxAsym_, asymmetry(v));
   } else {
     for (int k = 0; k < 6; ++k) s[k] = v[layout_.sym[k]];
   }
@@ -119,9 +116,8 @@ void VolumeSink::finish() {
 }
 
 void VolumeSink::warnIfAsymmetric() {
-  if (layout_.full && maxAsym_ > 1e-3)
-    f_.warnings.push_back("3D-matrix tensors are asymmetric (max |D - Dᵀ| / |D| = " + std::to_string(maxAsym_) +
-                          "); drawn symmetrised, (D + Dᵀ)/2");
+  if (const std::string w = asymmetryWarning("3D-matrix tensors", maxAsym_); layout_.full && !w.empty())
+    f_.warnings.push_back(w);
 }
 
 GridPlacement placementOf(const VolumeGeometry& g) {
@@ -133,6 +129,29 @@ GridPlacement placementOf(const VolumeGeometry& g) {
 
 double determinant3(const double a[9]) {
   return a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) + a[2] * (a[3] * a[7] - a[4] * a[6]);
+}
+
+bool gridIsSingular(const int dims[3], const double axes[9]) {
+  // A singleton axis's step is never taken: a coordinate axis stands in for
+  // it, whichever of them best completes the others (all 27 choices tried).
+  double lengths = 1;
+  int stepped = 0;
+  for (int k = 0; k < 3; ++k) {
+    const double len = std::hypot(axes[k], axes[3 + k], axes[6 + k]);
+    if (dims[k] > 1) {
+      if (!std::isfinite(len) || !(len > 0)) return true;
+      lengths *= len;
+      ++stepped;
+    }
+  }
+  double a[9], best = 0;
+  for (int pick = 0; pick < 27; ++pick) {
+    const int choice[3] = {pick % 3, pick / 3 % 3, pick / 9};
+    for (int k = 0; k < 3; ++k)
+      for (int r = 0; r < 3; ++r) a[3 * r + k] = dims[k] > 1 ? axes[3 * r + k] : (r == choice[k] ? 1.0 : 0.0);
+    best = std::max(best, std::abs(determinant3(a)));
+  }
+  return stepped > 0 && !(best > 1e-6 * lengths);
 }
 
 std::array<double, 9> orthogonalPart(const double m[9]) {

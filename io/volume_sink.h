@@ -104,6 +104,13 @@ class FloatGather {
 
 double determinant3(const double m[9]);  // row-major
 
+// Whether the steps of the axes holding more than one sample (`axes` row-major,
+// column k one step along index k) fail to span as many dimensions as there
+// are such axes: a zero, non-finite or parallel step, which would draw every
+// sample along it on one point or plane. Relative to the steps' lengths, as
+// MRtrix's transform check is.
+bool gridIsSingular(const int dims[3], const double axes[9]);
+
 // Polar decomposition's rotation (or rotation-reflection, if det < 0) of a
 // row-major 3x3, which strips scaling and shear from an affine's linear part
 // (Higham's iteration, "Computing the polar decomposition", 1986).

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 
@@ -144,6 +145,14 @@ std::uint64_t checkLegacyCounts(const std::string& path, std::uint64_t fileSize)
       if (newCellFormat ? (a > 1 && b < a - 1) : b < 2 * a)
         fail(path, "\"" + key + "\" size " + std::to_string((long long)b) + " is too small for " +
                        std::to_string((long long)a) + " cells");
+    } else if (key == "SPACING" || key == "ORIGIN" || key == "ASPECT_RATIO") {
+      // VTK's stream stops at "nan" or "inf" and reads no arrays at all, which
+      // was then reported as a file without tensors.
+      for (std::string word; ls >> word;) {
+        char* end = nullptr;
+        const double v = std::strtod(word.c_str(), &end);
+        if (end == word.c_str() + word.size() && !std::isfinite(v)) fail(path, key + ": " + word + " is not finite");
+      }
     } else if (key == "CELL_TYPES" && (ls >> a)) {
       impossible(key, a);
     } else if (key == "DIMENSIONS" && (ls >> a >> b >> c)) {
@@ -510,10 +519,20 @@ TensorField impl::readVtk(const std::string& path, const ReadOptions& opt) {
                            " to " + std::to_string(b[5]));
   }
   std::optional<GridPlacement> placed;
-  if (image) placed = imagePlacement(image);
+  if (image) {
+    placed = imagePlacement(image);
+    // As the volume readers refuse a singular grid: drawn, every glyph along
+    // an axis of spacing 0 would lie on one plane.
+    if (gridIsSingular(image->GetDimensions(), placed->axesWC)) {
+      const double* s = image->GetSpacing();
+      fail(path, s[0] == 0 || s[1] == 0 || s[2] == 0 ? "the image spacing is singular (a spacing of 0)"
+                                                     : "the image grid is singular (its Direction and spacing)");
+    }
+  }
   const Selector sel(opt.selection, path, image ? image->GetDimensions() : nullptr, placed ? &*placed : nullptr);
   if (sel.selectsAll()) f.reserve(std::size_t(n));
   double p[3], t[9], full[9];
+  double maxAsym = 0;
   for (vtkIdType i = 0; i < n; ++i) {
     ds->GetPoint(i, p);
     for (double& x : p) x = read.nonFinite.restore(x);
@@ -524,9 +543,11 @@ TensorField impl::readVtk(const std::string& path, const ReadOptions& opt) {
       arr->GetTuple(i, t);
       for (int k = 0; k < nc; ++k) t[k] = read.nonFinite.restore(t[k]);
       fullTensor(nc, t, full);
+      if (nc == 9) maxAsym = std::max(maxAsym, asymmetry(full));
       f.addFull(std::uint32_t(i), p, full);
     }
   }
+  if (std::string w = asymmetryWarning("9-component tensors", maxAsym); !w.empty()) f.warnings.push_back(std::move(w));
   if (auto* img = image) {
     GridInfo g;
     img->GetDimensions(g.dims);

@@ -450,3 +450,25 @@ TEST(Hostile, AllZeroTensorsHaveNothingToDraw) {
   for (const char* f : {"zero.nrrd", "subnormal.nrrd"})
     expectRefused(f, "every tensor is zero", 20, " --shadows --legend", {"render"});
 }
+
+// A grid that would draw every glyph along an axis on one plane, and a
+// non-finite SPACING or ORIGIN (once refused as "no point tensors").
+TEST(Hostile, SingularOrNonFiniteGridsAreRefusedByName) {
+  const std::string nrrd = "NRRD0005\ntype: float\ndimension: 4\nsizes: 6 2 2 2\n" + kNrrdTensor +
+                           "space: RAS\nspace directions: none (1,0,0) (2,0,0) (0,0,1)\n\n" +
+                           bin(std::vector<float>(48, 1.0f));
+  write(dir() / "parallel.nrrd", nrrd);
+  expectRefused("parallel.nrrd", "the space directions are singular");
+  auto points = [](const std::string& spacing, const std::string& origin) {
+    std::string s = "# vtk DataFile Version 3.0\ng\nASCII\nDATASET STRUCTURED_POINTS\nDIMENSIONS 2 2 1\nSPACING " +
+                    spacing + "\nORIGIN " + origin + "\nPOINT_DATA 4\nTENSORS t float\n";
+    for (int i = 0; i < 4; ++i) s += "1 0 0 0 1 0 0 0 1\n";
+    return s;
+  };
+  write(dir() / "spacing0.vtk", points("1 0 1", "0 0 0"));
+  expectRefused("spacing0.vtk", "the image spacing is singular");
+  write(dir() / "spacingnan.vtk", points("nan 1 1", "0 0 0"));
+  expectRefused("spacingnan.vtk", "SPACING: nan is not finite");
+  write(dir() / "origininf.vtk", points("1 1 1", "inf 0 0"));
+  expectRefused("origininf.vtk", "ORIGIN: inf is not finite");
+}
