@@ -46,7 +46,8 @@ void checkPlanes(const SliceFlags& f, const render::UnderlayVolume& volume, cons
 
 // What a user would otherwise not see: one line each (without the command's
 // name) for an underlay whose box does not overlap the glyphs' (another grid,
-// other units, a wrong affine?), and for an index plane whose slice holds no
+// other units, a wrong affine?), for a plane that passes beside the glyphs'
+// box where the boxes do overlap, and for an index plane whose slice holds no
 // finite value (all holes: masked voxels, or a --slice elsewhere).
 std::vector<std::string> underlayWarnings(const SliceFlags& f, const render::UnderlayVolume& volume,
                                           const glm::dvec3& glyphLoWC, const glm::dvec3& glyphHiWC);

@@ -177,6 +177,22 @@ TEST(SliceCli, InvisiblePlanesAreReported) {
   const CmdResult near = runBinary("render -o " + out.string() + " --size 64 48 --underlay fa", dir);
   EXPECT_EQ(near.code, 0) << near.err;
   EXPECT_EQ(near.err.find("does not overlap"), std::string::npos) << near.err;
+  EXPECT_EQ(near.err.find("passes beside"), std::string::npos) << near.err;
+  // A box around the glyphs whose planes lie at z = -50 and 50, beyond the
+  // built-in scene's |z| < 15: each plane hides every glyph or none.
+  const auto around = writePlaced(dir, "around.nrrd", "(100,0,0) (0,100,0) (0,0,100)", "(-200,-100,-50)");
+  const CmdResult beside =
+      runBinary("render -o " + out.string() + " --size 64 48 --underlay " + around + " --plane z:0 --plane z:1", dir);
+  EXPECT_EQ(beside.code, 0) << beside.err;
+  EXPECT_EQ(beside.err.find("does not overlap"), std::string::npos) << beside.err;
+  for (const char* plane : {"plane z:0 passes beside the glyphs' box", "plane z:1 passes beside the glyphs' box"})
+    EXPECT_NE(beside.err.find(plane), std::string::npos) << beside.err;
+  // A plane through the glyphs is not reported.
+  const CmdResult through = runBinary("render -o " + out.string() + " --size 64 48 --underlay " + around +
+                                          " --plane-at 0 0 0 0 0 1",
+                                      dir);
+  EXPECT_EQ(through.code, 0) << through.err;
+  EXPECT_EQ(through.err.find("passes beside"), std::string::npos) << through.err;
   // The built-in scene selected to slice z:2 has no tensor, so no FA, on z:5.
   const CmdResult holes =
       runBinary("render -o " + out.string() + " --size 64 48 --slice z:2 --underlay fa --plane z:5", dir);
