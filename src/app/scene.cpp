@@ -1,9 +1,11 @@
 #include "app/scene.h"
 
+#include "app/cli_values.h"
 #include "app/field_flags.h"
 
 #include "data-synthetic/generators.h"
 #include "io/readers.h"
+#include "io/selection.h"
 
 #include <algorithm>
 #include <cmath>
@@ -39,11 +41,19 @@ Scene defaultScene() {
 Scene loadScene(const std::string& input, const io::ReadOptions& opt) {
   checkOptionsApply(input, opt);
   Scene s;
-  if (input.empty()) {
-    s = defaultScene();
-    io::applySelection(s.field, opt.selection);
-  } else {
-    s.field = io::readTensorField(input, opt);
+  try {
+    if (input.empty()) {
+      s = defaultScene();
+      io::applySelection(s.field, opt.selection);
+    } else {
+      s.field = io::readTensorField(input, opt);
+    }
+  } catch (const io::SliceOutOfRange& e) {
+    const std::string thick = e.spec.thickness > 1 ? ":" + std::to_string(e.spec.thickness) : "";
+    throw UsageError(std::string("--slice ") + "xyz"[e.spec.axis] + ":" + std::to_string(e.spec.index) + thick +
+                     ": index " + std::to_string(e.spec.index) + " is outside 0.." + std::to_string(e.size - 1) +
+                     " along " + "xyz"[e.spec.axis] + " of the grid of " +
+                     (input.empty() ? std::string("the built-in scene") : input));
   }
   checkLoaded(s.field, opt);
   return s;

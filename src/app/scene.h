@@ -23,7 +23,8 @@ Scene defaultScene();
 
 // The built-in scene when `input` is empty, else the file; the selection in
 // `opt` applies to both. Refuses options that do not apply and an empty
-// result (checkOptionsApply, checkLoaded).
+// result (checkOptionsApply, checkLoaded); a --slice index beyond the grid
+// is a UsageError naming the valid range.
 Scene loadScene(const std::string& input, const io::ReadOptions& opt);
 
 // The view used when no camera flag is given: the scene's preferred view if

@@ -175,6 +175,12 @@ render::UnderlayVolume loadUnderlay(const SliceFlags& f, const io::TensorField& 
 }
 
 void checkPlanes(const SliceFlags& f, const render::UnderlayVolume& volume, const char* command) {
+  for (const render::PlaneSpec& p : f.planes)
+    if (p.axis >= 0 && (p.index < 0 || p.index >= volume.dims[p.axis]))
+      throw UsageError(std::string("--plane ") + "xyz"[p.axis] + ":" + std::to_string(p.index) + ": index " +
+                       std::to_string(p.index) +
+                       " is outside 0.." + std::to_string(volume.dims[p.axis] - 1) + " along " + "xyz"[p.axis] +
+                       " of the underlay's grid (" + volume.name + ")");
   try {
     for (const render::PlaneSpec& p : f.planesFor(volume)) render::planeQuad(volume, p);
   } catch (const std::invalid_argument& e) {

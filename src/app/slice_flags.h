@@ -40,8 +40,10 @@ struct SliceFlags {
 // `command` begins the message where the field has no grid.
 render::UnderlayVolume loadUnderlay(const SliceFlags& f, const io::TensorField& field, const char* command = "render");
 
-// GL-free: throws io::InputError, as addSlicePlanes would, for a plane
-// outside the volume, so the viewer can refuse it before its window opens.
+// GL-free: throws UsageError for an index --plane outside the volume's grid
+// (the range is known only once the volume is read) and io::InputError, as
+// addSlicePlanes would, for an oblique plane that misses it; before any
+// window opens or GL starts.
 void checkPlanes(const SliceFlags& f, const render::UnderlayVolume& volume, const char* command);
 
 // What a user would otherwise not see: one line each (without the command's

@@ -36,7 +36,7 @@ TEST(SliceCli, RendersAnUnderlayFileAndRefusesBadOnesInOneLine) {
   expectFailsCleanly("render -o " + out.string() + " --underlay " + writeUnderlay(dir, "unplaced.nrrd", false),
                      "unplaced.nrrd: the file does not say where its voxels lie", out, dir, 1);
   expectFailsCleanly("render -o " + out.string() + " --underlay " + good + " --plane z:2",
-                     "plane z:2 is outside the underlay's grid (0..1)", out, dir, 1);
+                     "--plane z:2: index 2 is outside 0..1 along z of the underlay's grid", out, dir, 1);
   expectFailsCleanly("render -o " + out.string() + " --underlay fa --plane q:1", "--plane", out, dir, 1);
   expectFailsCleanly("render -o " + out.string() + " --underlay-window 0 1", "needs --underlay or --plane", out, dir, 1);
   expectFailsCleanly("render -o " + out.string() + " --underlay fa --underlay-window 1 0", "LO must be below HI", out,
@@ -93,7 +93,7 @@ TEST(SliceCli, ViewRefusesPlanesAndPlaneStepsBeforeOpeningAWindow) {
                      none, dir, 1);
   std::ofstream(script) << "plane 1 off\n";
   expectFailsCleanly("view --script " + script.string(), "s.txt:1: plane 1: the view has no slice planes", none, dir, 1);
-  expectFailsCleanly("view --underlay fa --plane z:20", "plane z:20 is outside the underlay's grid (0..19)", none, dir, 1);
+  expectFailsCleanly("view --underlay fa --plane z:20", "--plane z:20: index 20 is outside 0..19 along z", none, dir, 1);
   EXPECT_EQ(runBinary("view --underlay-window 1 0 --underlay fa", dir).code, 2);
   std::filesystem::remove_all(dir);
 }
@@ -161,6 +161,31 @@ TEST(SliceCli, PlanePicksLieOnThePlane) {
     const std::string rest = r.out.substr(at + 11);
     const double z = std::stod(rest.substr(rest.rfind(',', rest.find(']')) + 1));
     EXPECT_NEAR(z, 1.5, 1e-6) << "offset " << offset << ": " << r.out;
+  }
+}
+
+// An index beyond the grid is a command-line mistake, though only the file
+// tells the range: exit 2, one line with the option, its value and the
+// range, and no image.
+TEST(SliceCli, IndicesBeyondTheGridAreUsageErrors) {
+  const auto dir = cliDir("slice_range");
+  const auto out = dir / "out.png";
+  const std::string under = writeUnderlay(dir, "under.nrrd", true);
+  const std::pair<std::string, std::string> cases[] = {
+      {"render -o " + out.string() + " --slice z:400", "--slice z:400: index 400 is outside 0..19 along z of the grid of the built-in scene"},
+      {"render -o " + out.string() + " --slice x:40:3", "--slice x:40:3: index 40 is outside 0..39 along x"},
+      {"render -o " + out.string() + " --plane z:100", "--plane z:100: index 100 is outside 0..19 along z of the underlay's grid (fa)"},
+      {"render -o " + out.string() + " --underlay " + under + " --plane y:3", "--plane y:3: index 3 is outside 0..2 along y"},
+      {"view --plane z:20", "--plane z:20: index 20 is outside 0..19 along z"},
+      {"view --slice y:40", "--slice y:40: index 40 is outside 0..39 along y"},
+  };
+  for (const auto& [args, what] : cases) {
+    std::filesystem::remove(out);
+    const CmdResult r = runBinary(args, dir);
+    EXPECT_EQ(r.code, 2) << args << " -> " << r.err;
+    EXPECT_NE(r.err.find(what), std::string::npos) << args << " -> " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << " -> " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << args;
   }
 }
 
