@@ -171,6 +171,8 @@ TEST(SliceCli, IndicesBeyondTheGridAreUsageErrors) {
   const auto dir = cliDir("slice_range");
   const auto out = dir / "out.png";
   const std::string under = writeUnderlay(dir, "under.nrrd", true);
+  const std::string helix = (dir / "helix.nrrd").string();
+  ASSERT_EQ(runBinary("synth helix -o " + helix, dir).code, 0);
   const std::pair<std::string, std::string> cases[] = {
       {"render -o " + out.string() + " --slice z:400", "--slice z:400: index 400 is outside 0..19 along z of the grid of the built-in scene"},
       {"render -o " + out.string() + " --slice x:40:3", "--slice x:40:3: index 40 is outside 0..39 along x"},
@@ -178,6 +180,8 @@ TEST(SliceCli, IndicesBeyondTheGridAreUsageErrors) {
       {"render -o " + out.string() + " --underlay " + under + " --plane y:3", "--plane y:3: index 3 is outside 0..2 along y"},
       {"view --plane z:20", "--plane z:20: index 20 is outside 0..19 along z"},
       {"view --slice y:40", "--slice y:40: index 40 is outside 0..39 along y"},
+      {"info " + helix + " --slice z:999", "--slice z:999: index 999 is outside 0.."},
+      {"render " + helix + " -o " + out.string() + " --slice y:999:3", "--slice y:999:3: index 999 is outside 0.."},
   };
   for (const auto& [args, what] : cases) {
     std::filesystem::remove(out);
