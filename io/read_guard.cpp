@@ -25,6 +25,7 @@
 #include "io/guard_wire.h"
 #include "io/read_progress.h"
 #include "io/module_loader.h"
+#include "io/selection.h"
 
 namespace tg::io {
 namespace {
@@ -79,7 +80,8 @@ TensorField readField(WireIn& r) {
 // 'P' + 8 bytes: a promise of decoded bytes; 'O': the field follows on the
 // data socket; 'E' + text: the reader's InputError or ModuleError, verbatim;
 // 'M' + text: out of memory; 'X' + text: any other exception, which the
-// parent words with the file.
+// parent words with the file; 'S' + "axis index thickness size;" + text: a
+// SliceOutOfRange, which the CLI reports as a command-line error.
 
 std::string sizeText(std::uint64_t bytes) {
   return bytes >= (std::uint64_t(1) << 20) ? std::to_string(bytes >> 20) + " MiB"
@@ -173,6 +175,12 @@ void readVolume(WireIn& r, ScalarVolume& v) {
     send(w);
     w.finish();  // with `send`'s data alive: the parent may be copying from it
     _exit(0);
+  } catch (const SliceOutOfRange& e) {
+    char head[128];
+    const int n = std::snprintf(head, sizeof head, "S%d %lld %lld %d;", e.spec.axis, e.spec.index, e.spec.thickness,
+                                e.size);
+    sendAll(statusFd, head, std::size_t(n));
+    sendAll(statusFd, e.what(), std::strlen(e.what()));
   } catch (const InputError& e) {
     sendAll(statusFd, "E", 1);
     sendAll(statusFd, e.what(), std::strlen(e.what()));
@@ -337,6 +345,14 @@ void runInChild(const std::string& who, const std::string& path, const ReadLimit
     throw fail("corrupt file: the reader crashed on it (" + signalName(sig) + ")");
   }
   if (!status.empty() && status[0] == 'E') throw InputError(status.substr(1));
+  if (!status.empty() && status[0] == 'S') {
+    SliceSpec s;
+    int size = 0, used = 0;
+    if (std::sscanf(status.c_str() + 1, "%d %lld %lld %d;%n", &s.axis, &s.index, &s.thickness, &size, &used) == 4 &&
+        used > 0 && s.axis >= 0 && s.axis < 3)
+      throw SliceOutOfRange(status.substr(1 + std::size_t(used)), s, size);
+    throw InputError(status.substr(1));
+  }
   if (!status.empty() && status[0] == 'M') throw fail(status.substr(1));
   if (!status.empty() && status[0] == 'X') throw fail("the reader failed (" + status.substr(1) + "): the file is corrupt");
   throw fail("the reader ended without a result (exit status " + std::to_string(WEXITSTATUS(ws)) + ")");

@@ -181,8 +181,9 @@ Selector::Selector(const Selection& sel, const std::string& path, const int* dim
   if (sel.slice) {
     const SliceSpec& s = *sel.slice;
     if (s.index >= dims_[s.axis])
-      throw InputError("Selector: " + path + ": slice index " + std::to_string(s.index) + " is beyond axis " +
-                       std::to_string(s.axis) + " of size " + std::to_string(dims_[s.axis]));
+      throw SliceOutOfRange("Selector: " + path + ": slice index " + std::to_string(s.index) + " is beyond axis " +
+                                std::to_string(s.axis) + " of size " + std::to_string(dims_[s.axis]),
+                            s, dims_[s.axis]);
     slabLo_ = s.index - (s.thickness - 1) / 2;
     slabHi_ = s.index + s.thickness / 2;
   }

@@ -21,6 +21,16 @@ struct SliceSpec {
   long long thickness = 1;
 };
 
+// A --slice index beyond the grid: found only once the header is read, yet a
+// command-line mistake, which the CLI reports as one (exit 2).
+class SliceOutOfRange : public InputError {
+ public:
+  SliceOutOfRange(const std::string& what, const SliceSpec& s, int axisSize)
+      : InputError(what), spec(s), size(axisSize) {}
+  SliceSpec spec;
+  int size;
+};
+
 struct Selection {
   std::optional<SliceSpec> slice;  // grids only
   long long stride = 1;            // grids: every stride-th voxel along each axis; point sets: every stride-th point

@@ -195,6 +195,21 @@ def save(image, path):
     _core.save(frame, os.fspath(path))
 
 
+def _guarded(progress, inside):
+    """`progress`, noting in `inside` the threads running it (the core calls
+    it from worker threads too): a render() from there would wait for the
+    render that called it. It holds the set, not the Renderer, so that the
+    core's reference to it makes no cycle."""
+    def call(*args):
+        me = threading.get_ident()
+        inside.add(me)
+        try:
+            return progress(*args)
+        finally:
+            inside.discard(me)
+    return call
+
+
 class Renderer:
     """Keeps the GL context and the uploaded glyphs: ``set`` changes options,
     ``render`` draws. Changing gamma, fa_min, scale, colour, camera or depth
@@ -207,6 +222,9 @@ class Renderer:
         file loads and the tensors are decomposed (total 0: not known)."""
         self._options = {}
         self._lock = threading.RLock()
+        self._callback_threads = set()
+        if callable(progress):
+            progress = _guarded(progress, self._callback_threads)
         self._array_source = False
         self.set(**options)
         t, p, a, lay, fr, path = _source(tensors, positions, affine, layout, frame)
@@ -240,6 +258,9 @@ class Renderer:
 
     def render(self, channels=False, **options):
         """Draws with the current options (updated by `options` first)."""
+        if threading.get_ident() in self._callback_threads:
+            raise RuntimeError("Renderer.render: a re-entrant call from this Renderer's own progress callback "
+                               "would wait forever for the render that called it; render after it returns")
         with self._lock:  # another thread's set() must not change this call's options
             if options:
                 self.set(**options)

@@ -9,6 +9,7 @@
 #include "app/commands.h"
 #include "app/field_flags.h"
 #include "app/progress.h"
+#include "app/scene.h"
 #include "io/readers.h"
 #include "tensor/glyph.h"
 #include "tensor/glyph_scale.h"
@@ -30,7 +31,13 @@ int cmdInfo(int argc, const char** argv) {
   checkOptionsApply(input, flags.read);
   TerminalProgress progress(quiet);
   flags.read.progress = progress.sink();
-  const io::TensorField f = io::readTensorField(input, flags.read);
+  const io::TensorField f = [&] {
+    try {
+      return io::readTensorField(input, flags.read);
+    } catch (const io::SliceOutOfRange& e) {
+      throw sliceUsageError(e, input);
+    }
+  }();
   checkLoaded(f, flags.read);
   if (flags.read.progress) flags.read.progress({}, 0, 0, {});
   for (const std::string& w : f.warnings) std::fprintf(stderr, "tensorglyph info: %s: %s\n", f.path.c_str(), w.c_str());

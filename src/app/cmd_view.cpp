@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <memory>
 #include <optional>
+#include <stdexcept>
 #include <string>
 
 #include "app/option_table.h"
@@ -146,7 +147,15 @@ int cmdView(int argc, const char** argv) {
   // camera the flags give.
   v.camera = OrbitCamera(chooseCamera(o, scene, tensor::framingBox(glyphs, !scene.field.grid, sized.typicalRadiusWC)));
 
-  auto ctx = gl::createGlfwContext({o.width, o.height, true, "tensorglyph"});
+  std::unique_ptr<gl::Context> ctx;
+  try {
+    ctx = gl::createGlfwContext({o.width, o.height, true, "tensorglyph"});
+  } catch (const std::runtime_error& e) {
+    // Most often no display at all: a server, a container, CI.
+    throw std::runtime_error(std::string(e.what()) +
+                             "; without a display use `xvfb-run -a tensorglyph view ...`, or `tensorglyph render` "
+                             "for headless images");
+  }
   GLFWwindow* window = gl::glfwWindowOf(*ctx);
   glfwSwapInterval(script.empty() ? 1 : 0);  // a script runs as fast as it can
   const gl::Api& api = ctx->api();

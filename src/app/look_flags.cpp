@@ -10,8 +10,12 @@ void LookFlags::addTo(OptionTable& ap) {
   using Args = OptionArgs;
   ap.arg("--no-shadows").help("the built-in scene without its shadows").action([this](Args) { noShadows = true; });
   ap.arg("--no-ao").help("... without its ambient occlusion").action([this](Args) { noAo = true; });
-  ap.arg("--no-outlines").help("... without its outlines").action([this](Args) { noOutlines = true; });
   ap.arg("--no-legend").help("... without its legend").action([this](Args) { noLegend = true; });
+  // The scene's look leaves outlines off (SceneLook), so this flag only
+  // states the default; it stays for scripts that pass every --no-* flag.
+  ap.arg("--no-outlines")
+      .help("no outlines: the default for every input, the built-in scene included (refused with --outlines)")
+      .action([this](Args) { noOutlines = true; });
 }
 
 void LookFlags::validate(bool shadows, bool ao, bool outlines, bool legend) const {

@@ -30,6 +30,7 @@ RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io
   std::optional<render::UnderlayVolume> underlay;
   if (o.slices.any()) {
     underlay = loadUnderlay(o.slices, scene_.field, command_);
+    checkPlanes(o.slices, *underlay, command_);
     for (const std::string& w : underlayWarnings(o.slices, *underlay, first.glyphsWC.lo, first.glyphsWC.hi))
       std::fprintf(stderr, "tensorglyph %s: --underlay %s: %s\n", command_, underlay->name.c_str(), w.c_str());
     std::tie(underlayLoWC_, underlayHiWC_) = underlay->boundsWC();

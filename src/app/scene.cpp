@@ -1,9 +1,11 @@
 #include "app/scene.h"
 
+#include "app/cli_values.h"
 #include "app/field_flags.h"
 
 #include "data-synthetic/generators.h"
 #include "io/readers.h"
+#include "io/selection.h"
 
 #include <algorithm>
 #include <cmath>
@@ -39,14 +41,27 @@ Scene defaultScene() {
 Scene loadScene(const std::string& input, const io::ReadOptions& opt) {
   checkOptionsApply(input, opt);
   Scene s;
-  if (input.empty()) {
-    s = defaultScene();
-    io::applySelection(s.field, opt.selection);
-  } else {
-    s.field = io::readTensorField(input, opt);
+  try {
+    if (input.empty()) {
+      s = defaultScene();
+      io::applySelection(s.field, opt.selection);
+    } else {
+      s.field = io::readTensorField(input, opt);
+    }
+  } catch (const io::SliceOutOfRange& e) {
+    throw sliceUsageError(e, input);
   }
   checkLoaded(s.field, opt);
   return s;
+}
+
+UsageError sliceUsageError(const io::SliceOutOfRange& e, const std::string& input) {
+  // Appended, not `":" + std::to_string(...)`: GCC 12 warns falsely (-Wrestrict).
+  std::string value = std::string(1, "xyz"[e.spec.axis]) + ":" + std::to_string(e.spec.index);
+  if (e.spec.thickness > 1) value.append(":").append(std::to_string(e.spec.thickness));
+  return UsageError("--slice " + value + ": index " + std::to_string(e.spec.index) + " is outside 0.." + std::to_string(e.size - 1) +
+                    " along " + "xyz"[e.spec.axis] + " of the grid of " +
+                    (input.empty() ? std::string("the built-in scene") : input));
 }
 
 render::CameraDesc sceneCamera(const Scene& s, const glm::dvec3& loWC, const glm::dvec3& hiWC, render::Projection p,

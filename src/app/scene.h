@@ -3,8 +3,10 @@
 #include <optional>
 #include <string>
 
+#include "app/cli_values.h"
 #include "app/look_flags.h"
 #include "io/readers.h"
+#include "io/selection.h"
 #include "render/camera.h"
 
 namespace tg::app {
@@ -23,8 +25,13 @@ Scene defaultScene();
 
 // The built-in scene when `input` is empty, else the file; the selection in
 // `opt` applies to both. Refuses options that do not apply and an empty
-// result (checkOptionsApply, checkLoaded).
+// result (checkOptionsApply, checkLoaded); a --slice index beyond the grid
+// is a UsageError naming the valid range.
 Scene loadScene(const std::string& input, const io::ReadOptions& opt);
+
+// The UsageError for a --slice index beyond the grid of `input` (empty: the
+// built-in scene): the option, its value and the valid range.
+UsageError sliceUsageError(const io::SliceOutOfRange& e, const std::string& input);
 
 // The view used when no camera flag is given: the scene's preferred view if
 // it has one, else fitBox's default over the box (tensor::framingBox).

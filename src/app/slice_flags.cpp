@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <optional>
+#include <stdexcept>
 
 #include <glm/geometric.hpp>
 #include <glm/mat3x3.hpp>
@@ -173,6 +175,12 @@ render::UnderlayVolume loadUnderlay(const SliceFlags& f, const io::TensorField& 
 }
 
 void checkPlanes(const SliceFlags& f, const render::UnderlayVolume& volume, const char* command) {
+  for (const render::PlaneSpec& p : f.planes)
+    if (p.axis >= 0 && (p.index < 0 || p.index >= volume.dims[p.axis]))
+      throw UsageError(std::string("--plane ") + "xyz"[p.axis] + ":" + std::to_string(p.index) + ": index " +
+                       std::to_string(p.index) +
+                       " is outside 0.." + std::to_string(volume.dims[p.axis] - 1) + " along " + "xyz"[p.axis] +
+                       " of the underlay's grid (" + volume.name + ")");
   try {
     for (const render::PlaneSpec& p : f.planesFor(volume)) render::planeQuad(volume, p);
   } catch (const std::invalid_argument& e) {
@@ -186,16 +194,36 @@ std::vector<std::string> underlayWarnings(const SliceFlags& f, const render::Und
   const auto [lo, hi] = volume.boundsWC();
   bool overlap = true;
   for (int a = 0; a < 3; ++a) overlap = overlap && lo[a] <= glyphHiWC[a] && hi[a] >= glyphLoWC[a];
+  auto box = [](const glm::dvec3& l, const glm::dvec3& h) {
+    char b[160];
+    std::snprintf(b, sizeof b, "(%g, %g, %g)..(%g, %g, %g)", l.x, l.y, l.z, h.x, h.y, h.z);
+    return std::string(b);
+  };
   if (!overlap) {
-    auto box = [](const glm::dvec3& l, const glm::dvec3& h) {
-      char b[160];
-      std::snprintf(b, sizeof b, "(%g, %g, %g)..(%g, %g, %g)", l.x, l.y, l.z, h.x, h.y, h.z);
-      return std::string(b);
-    };
     lines.push_back("the underlay's box " + box(lo, hi) + " does not overlap the glyphs' " +
                     box(glyphLoWC, glyphHiWC) + ": another grid, other units or another affine?");
   }
   for (const render::PlaneSpec& p : f.planesFor(volume)) {
+    // A plane beside the glyphs' box lies in front of or behind all of them:
+    // the image shows the plane alone (another grid whose box still overlaps).
+    if (overlap) {
+      std::optional<render::PlaneQuad> q;
+      try {
+        q = render::planeQuad(volume, p);
+      } catch (const std::invalid_argument&) {
+      }
+      bool above = false, below = false;
+      for (int c = 0; q && c < 8; ++c) {
+        const glm::dvec3 corner(c & 1 ? glyphHiWC.x : glyphLoWC.x, c & 2 ? glyphHiWC.y : glyphLoWC.y,
+                                c & 4 ? glyphHiWC.z : glyphLoWC.z);
+        const double d = glm::dot(q->normalWC, corner - q->pointWC);
+        above |= d >= 0;
+        below |= d <= 0;
+      }
+      if (q && !(above && below))
+        lines.push_back(p.label() + " passes beside the glyphs' box " + box(glyphLoWC, glyphHiWC) +
+                        ", in front of or behind every glyph: another grid, other units or another affine?");
+    }
     if (p.axis < 0 || p.index < 0 || p.index >= volume.dims[p.axis]) continue;
     const int a = p.axis, b = (a + 1) % 3, c = (a + 2) % 3;
     bool any = false;

@@ -40,13 +40,16 @@ struct SliceFlags {
 // `command` begins the message where the field has no grid.
 render::UnderlayVolume loadUnderlay(const SliceFlags& f, const io::TensorField& field, const char* command = "render");
 
-// GL-free: throws io::InputError, as addSlicePlanes would, for a plane
-// outside the volume, so the viewer can refuse it before its window opens.
+// GL-free: throws UsageError for an index --plane outside the volume's grid
+// (the range is known only once the volume is read) and io::InputError, as
+// addSlicePlanes would, for an oblique plane that misses it; before any
+// window opens or GL starts.
 void checkPlanes(const SliceFlags& f, const render::UnderlayVolume& volume, const char* command);
 
 // What a user would otherwise not see: one line each (without the command's
 // name) for an underlay whose box does not overlap the glyphs' (another grid,
-// other units, a wrong affine?), and for an index plane whose slice holds no
+// other units, a wrong affine?), for a plane that passes beside the glyphs'
+// box where the boxes do overlap, and for an index plane whose slice holds no
 // finite value (all holes: masked voxels, or a --slice elsewhere).
 std::vector<std::string> underlayWarnings(const SliceFlags& f, const render::UnderlayVolume& volume,
                                           const glm::dvec3& glyphLoWC, const glm::dvec3& glyphHiWC);

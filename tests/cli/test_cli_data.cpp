@@ -142,7 +142,7 @@ TEST(CliData, BadSelectionFailsBeforeRendering) {
   const std::string otherGrid = tg::test::realData("kindlmann-dt-helix/dt-helix.nhdr");
   const std::pair<std::string, std::string> cases[] = {
       {"render " + in + " -o " + out.string() + " --slice q:3", "--slice: unknown axis"},
-      {"render " + in + " -o " + out.string() + " --slice z:99", "beyond axis 2"},
+      {"render " + in + " -o " + out.string() + " --slice z:99", "--slice z:99: index 99 is outside 0.."},
       {"render " + in + " -o " + out.string() + " --stride 0", "--stride"},
       {"render " + in + " -o " + out.string() + " --scale-mode huge", "--scale-mode"},
       {"render " + in + " -o " + out.string() + " --cl-min 2", "--cl-min"},

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <set>
 #include <sstream>
 #include <string>
@@ -246,4 +247,27 @@ TEST(Newcomer, MeshNamesNoReaderTakesAreUsageErrors) {
     tg::test::expectFailsCleanly(args, c.said, out, dir(), 1);
     EXPECT_EQ(run(args).code, 2) << args;
   }
+}
+
+// --no-outlines' help said "the built-in scene without its outlines", but
+// that scene has none: the flag changes nothing, and its help says so.
+TEST(Newcomer, NoOutlinesHelpSaysItIsTheDefault) {
+  const CmdResult help = run("render --help");
+  ASSERT_EQ(help.code, 0);
+  const std::size_t at = help.out.find("\n  --no-outlines");
+  ASSERT_NE(at, std::string::npos) << help.out;
+  const std::string line = help.out.substr(at + 1, help.out.find('\n', at + 1) - at - 1);
+  EXPECT_EQ(line.find("without its outlines"), std::string::npos) << line;
+  EXPECT_NE(line.find("the default"), std::string::npos) << line;
+  const fs::path a = dir() / "plain.png", b = dir() / "no_outlines.png";
+  ASSERT_EQ(run("render --size 64 48 -o " + a.string()).code, 0);
+  ASSERT_EQ(run("render --size 64 48 --no-outlines -o " + b.string()).code, 0);
+  auto bytes = [](const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  };
+  EXPECT_EQ(bytes(a), bytes(b));
+  // With --outlines the image differs, so the comparison above could fail.
+  ASSERT_EQ(run("render --size 64 48 --outlines -o " + b.string()).code, 0);
+  EXPECT_NE(bytes(a), bytes(b));
 }

@@ -36,7 +36,7 @@ TEST(SliceCli, RendersAnUnderlayFileAndRefusesBadOnesInOneLine) {
   expectFailsCleanly("render -o " + out.string() + " --underlay " + writeUnderlay(dir, "unplaced.nrrd", false),
                      "unplaced.nrrd: the file does not say where its voxels lie", out, dir, 1);
   expectFailsCleanly("render -o " + out.string() + " --underlay " + good + " --plane z:2",
-                     "plane z:2 is outside the underlay's grid (0..1)", out, dir, 1);
+                     "--plane z:2: index 2 is outside 0..1 along z of the underlay's grid", out, dir, 1);
   expectFailsCleanly("render -o " + out.string() + " --underlay fa --plane q:1", "--plane", out, dir, 1);
   expectFailsCleanly("render -o " + out.string() + " --underlay-window 0 1", "needs --underlay or --plane", out, dir, 1);
   expectFailsCleanly("render -o " + out.string() + " --underlay fa --underlay-window 1 0", "LO must be below HI", out,
@@ -93,7 +93,7 @@ TEST(SliceCli, ViewRefusesPlanesAndPlaneStepsBeforeOpeningAWindow) {
                      none, dir, 1);
   std::ofstream(script) << "plane 1 off\n";
   expectFailsCleanly("view --script " + script.string(), "s.txt:1: plane 1: the view has no slice planes", none, dir, 1);
-  expectFailsCleanly("view --underlay fa --plane z:20", "plane z:20 is outside the underlay's grid (0..19)", none, dir, 1);
+  expectFailsCleanly("view --underlay fa --plane z:20", "--plane z:20: index 20 is outside 0..19 along z", none, dir, 1);
   EXPECT_EQ(runBinary("view --underlay-window 1 0 --underlay fa", dir).code, 2);
   std::filesystem::remove_all(dir);
 }
@@ -164,6 +164,35 @@ TEST(SliceCli, PlanePicksLieOnThePlane) {
   }
 }
 
+// An index beyond the grid is a command-line mistake, though only the file
+// tells the range: exit 2, one line with the option, its value and the
+// range, and no image.
+TEST(SliceCli, IndicesBeyondTheGridAreUsageErrors) {
+  const auto dir = cliDir("slice_range");
+  const auto out = dir / "out.png";
+  const std::string under = writeUnderlay(dir, "under.nrrd", true);
+  const std::string helix = (dir / "helix.nrrd").string();
+  ASSERT_EQ(runBinary("synth helix -o " + helix, dir).code, 0);
+  const std::pair<std::string, std::string> cases[] = {
+      {"render -o " + out.string() + " --slice z:400", "--slice z:400: index 400 is outside 0..19 along z of the grid of the built-in scene"},
+      {"render -o " + out.string() + " --slice x:40:3", "--slice x:40:3: index 40 is outside 0..39 along x"},
+      {"render -o " + out.string() + " --plane z:100", "--plane z:100: index 100 is outside 0..19 along z of the underlay's grid (fa)"},
+      {"render -o " + out.string() + " --underlay " + under + " --plane y:3", "--plane y:3: index 3 is outside 0..2 along y"},
+      {"view --plane z:20", "--plane z:20: index 20 is outside 0..19 along z"},
+      {"view --slice y:40", "--slice y:40: index 40 is outside 0..39 along y"},
+      {"info " + helix + " --slice z:999", "--slice z:999: index 999 is outside 0.."},
+      {"render " + helix + " -o " + out.string() + " --slice y:999:3", "--slice y:999:3: index 999 is outside 0.."},
+  };
+  for (const auto& [args, what] : cases) {
+    std::filesystem::remove(out);
+    const CmdResult r = runBinary(args, dir);
+    EXPECT_EQ(r.code, 2) << args << " -> " << r.err;
+    EXPECT_NE(r.err.find(what), std::string::npos) << args << " -> " << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << args << " -> " << r.err;
+    EXPECT_FALSE(std::filesystem::exists(out)) << args;
+  }
+}
+
 // Planes a user would not see are said so on stderr (the render still runs):
 // an underlay far from the glyphs, and a slice that is all holes.
 TEST(SliceCli, InvisiblePlanesAreReported) {
@@ -177,6 +206,22 @@ TEST(SliceCli, InvisiblePlanesAreReported) {
   const CmdResult near = runBinary("render -o " + out.string() + " --size 64 48 --underlay fa", dir);
   EXPECT_EQ(near.code, 0) << near.err;
   EXPECT_EQ(near.err.find("does not overlap"), std::string::npos) << near.err;
+  EXPECT_EQ(near.err.find("passes beside"), std::string::npos) << near.err;
+  // A box around the glyphs whose planes lie at z = -50 and 50, beyond the
+  // built-in scene's |z| < 15: each plane hides every glyph or none.
+  const auto around = writePlaced(dir, "around.nrrd", "(100,0,0) (0,100,0) (0,0,100)", "(-200,-100,-50)");
+  const CmdResult beside =
+      runBinary("render -o " + out.string() + " --size 64 48 --underlay " + around + " --plane z:0 --plane z:1", dir);
+  EXPECT_EQ(beside.code, 0) << beside.err;
+  EXPECT_EQ(beside.err.find("does not overlap"), std::string::npos) << beside.err;
+  for (const char* plane : {"plane z:0 passes beside the glyphs' box", "plane z:1 passes beside the glyphs' box"})
+    EXPECT_NE(beside.err.find(plane), std::string::npos) << beside.err;
+  // A plane through the glyphs is not reported.
+  const CmdResult through = runBinary("render -o " + out.string() + " --size 64 48 --underlay " + around +
+                                          " --plane-at 0 0 0 0 0 1",
+                                      dir);
+  EXPECT_EQ(through.code, 0) << through.err;
+  EXPECT_EQ(through.err.find("passes beside"), std::string::npos) << through.err;
   // The built-in scene selected to slice z:2 has no tensor, so no FA, on z:5.
   const CmdResult holes =
       runBinary("render -o " + out.string() + " --size 64 48 --slice z:2 --underlay fa --plane z:5", dir);

@@ -199,3 +199,15 @@ TEST(View, ScriptTogglesAMeshAsRenderDrawsIt) {
   EXPECT_GT(differing(readRgba(dir / "r0.png", w, h), readRgba(dir / "r1.png", w, h)), 5000u);
   std::filesystem::remove_all(dir);
 }
+
+// Without a display the one line says what to do instead, and the exit is 1.
+TEST(View, WithoutADisplaySaysWhatToRunInstead) {
+  const auto dir = tg::test::cliDir("view_nodisplay");
+  const tg::test::CmdResult r = runBinary("view", dir, "env -u DISPLAY -u WAYLAND_DISPLAY " + std::string(TG_BINARY));
+  EXPECT_EQ(r.code, 1) << r.err;
+  EXPECT_NE(r.err.find("DISPLAY"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("xvfb-run -a tensorglyph view"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("tensorglyph render"), std::string::npos) << r.err;
+  EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+  std::filesystem::remove_all(dir);
+}

@@ -186,6 +186,24 @@ TEST_F(ParaViewPlugin, SixComponentTensorsDrawAsNine) {
   EXPECT_EQ(differing(x, y, 0.0f), 0);
 }
 
+// vtkSetClampMacro stores a NaN (no comparison with it is true): a NaN
+// Gamma or ScaleFactor set from Python drew another picture. It is ignored,
+// so the picture is the one with the values kept (the defaults, 3 and 1).
+TEST_F(ParaViewPlugin, NaNGammaAndScaleFactorAreIgnored) {
+  TG_SKIP_WITHOUT_PARAVIEW();
+  const fs::path plain = dir / "plain.png", nan = dir / "nan.png";
+  const CmdResult a = runPvbatch("--output " + plain.string() + " " + kCamera, dir);
+  ASSERT_EQ(a.code, 0) << a.err;
+  const CmdResult b = runPvbatch("--output " + nan.string() + " " + kCamera + " --gamma nan --scale nan", dir);
+  ASSERT_EQ(b.code, 0) << b.err;
+  const Image x = readImage(plain), y = readImage(nan);
+  ASSERT_EQ(y.width, x.width);
+  long glyphPixels = 0;
+  for (int i = 0; i < x.width * x.height; ++i) glyphPixels += covered(x, i, kBackground);
+  ASSERT_GT(glyphPixels, 2000);
+  EXPECT_EQ(differing(x, y, 0.0f), 0);
+}
+
 // A multiblock input (every Exodus reader's output) is refused with what to
 // do, not with the pipeline's error about output ports.
 TEST_F(ParaViewPlugin, MultiblockInputSaysToMergeBlocks) {

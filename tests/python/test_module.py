@@ -416,6 +416,35 @@ class Interactive(unittest.TestCase):
         self.assertTrue(np.array_equal(out[0], alone[0]))
         self.assertTrue(np.array_equal(out[1], alone[1]))
 
+    def test_render_from_its_own_progress_callback_raises(self):
+        # It waited for the very render that called it: a hang. A reload (a
+        # new size) reports progress. All in one thread, which may hang.
+        t, p = points(10)
+        errors, shapes = [], []
+
+        def work():
+            holder = {}
+
+            def again(*a):
+                if "r" in holder:
+                    holder["r"].render()
+            r = tg.Renderer(t, positions=p, size=(32, 24), progress=again)
+            holder["r"] = r
+            try:
+                r.render(size=(40, 30))
+            except Exception as e:  # reported below
+                errors.append(e)
+            del holder["r"]
+            shapes.append(r.render(size=(48, 36)).shape)  # the Renderer still works
+        th = threading.Thread(target=work, daemon=True)
+        th.start()
+        th.join(60)
+        self.assertFalse(th.is_alive(), "render() from its own progress callback hung")
+        self.assertEqual(len(errors), 1)
+        self.assertIsInstance(errors[0], RuntimeError)
+        self.assertIn("re-entrant", str(errors[0]))
+        self.assertEqual(shapes, [(36, 48, 4)])
+
 
 if __name__ == "__main__":
     unittest.main()

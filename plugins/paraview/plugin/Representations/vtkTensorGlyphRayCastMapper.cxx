@@ -1,6 +1,8 @@
 #include "vtkTensorGlyphRayCastMapper.h"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <optional>
 
 #include <vtkCamera.h>
@@ -78,6 +80,36 @@ vtkStandardNewMacro(vtkTensorGlyphRayCastMapper);
 vtkTensorGlyphRayCastMapper::vtkTensorGlyphRayCastMapper() : Impl(std::make_unique<Internals>()) {}
 
 vtkTensorGlyphRayCastMapper::~vtkTensorGlyphRayCastMapper() = default;
+
+namespace {
+
+// `v` clamped into [lo, hi] as vtkSetClampMacro does; false (nothing set)
+// for a NaN, which the macro would store, and for the value already held.
+bool setClamped(double& field, double v, double lo, double hi) {
+  if (std::isnan(v)) return false;
+  v = std::clamp(v, lo, hi);
+  if (field == v) return false;
+  field = v;
+  return true;
+}
+
+}  // namespace
+
+void vtkTensorGlyphRayCastMapper::SetGamma(double v) {
+  if (setClamped(this->Gamma, v, 0.0, 1e6)) this->Modified();
+}
+
+void vtkTensorGlyphRayCastMapper::SetScaleFactor(double v) {
+  if (setClamped(this->ScaleFactor, v, 0.0, 1e300)) this->Modified();
+}
+
+void vtkTensorGlyphRayCastMapper::SetFAThreshold(double v) {
+  if (setClamped(this->FAThreshold, v, 0.0, 1e6)) this->Modified();
+}
+
+void vtkTensorGlyphRayCastMapper::SetMarchEpsilon(double v) {
+  if (setClamped(this->MarchEpsilon, v, 1e-12, 1.0)) this->Modified();
+}
 
 int vtkTensorGlyphRayCastMapper::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");

@@ -24,21 +24,24 @@ public:
   // Glyph kind: 0 ellipsoid, 1 superquadric, 2 cylinder, 3 box.
   vtkSetClampMacro(GlyphKind, int, 0, 3);
   vtkGetMacro(GlyphKind, int);
-  vtkSetClampMacro(Gamma, double, 0.0, 1e6);
+  // The double setters clamp as vtkSetClampMacro would, but ignore a NaN
+  // (keeping the old value), which the macro stores: every comparison with
+  // NaN is false.
+  void SetGamma(double v);
   vtkGetMacro(Gamma, double);
   // Scale mode: 0 absolute, 1 max, 2 spacing (tensor::ScaleMode).
   vtkSetClampMacro(ScaleMode, int, 0, 2);
   vtkGetMacro(ScaleMode, int);
-  vtkSetClampMacro(ScaleFactor, double, 0.0, 1e300);
+  void SetScaleFactor(double v);
   vtkGetMacro(ScaleFactor, double);
-  vtkSetClampMacro(FAThreshold, double, 0.0, 1e6);
+  void SetFAThreshold(double v);
   vtkGetMacro(FAThreshold, double);
   // Colour mode: 0 DEC, 1 FA, 2 MD, 3 cl, 4 cp, 5 sign (render::ColorMode).
   vtkSetClampMacro(ColorMode, int, 0, 5);
   vtkGetMacro(ColorMode, int);
   vtkSetClampMacro(MarchIterations, int, 1, 1000);
   vtkGetMacro(MarchIterations, int);
-  vtkSetClampMacro(MarchEpsilon, double, 1e-12, 1.0);
+  void SetMarchEpsilon(double v);
   vtkGetMacro(MarchEpsilon, double);
   // The renderer's deferred depth cues (render/ao_pass.h, outline_pass.h,
   // shadow_pass.h), off by default as in the CLI.
