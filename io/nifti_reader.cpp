@@ -15,6 +15,7 @@
 #include <string_view>
 
 #include "io/format_impl.h"
+#include "io/gzip_errors.h"
 #include "io/nifti_layouts.h"
 #include "io/readers.h"
 #include "io/selection.h"
@@ -183,7 +184,7 @@ void checkDataSize(const std::string& path, const nifti_image& nim, std::uint64_
 // The image file's bytes from the data offset on. A .gz image is read with
 // zlib itself rather than through znz: znzread turns a zlib error into a
 // count near 2^64 and cannot say what it was, and a stream cut at its
-// trailer would go unnoticed; gzerror tells both (as the NRRD reader does).
+// trailer would go unnoticed; gzerror tells both (io/gzip_errors.h, shared with the NRRD reader).
 class ImageBytes {
  public:
   ImageBytes(const std::string& path, const nifti_image& nim) : path_(path) {
@@ -212,20 +213,11 @@ class ImageBytes {
     if (!gz_ || gzdirect(gz_.get())) return;
     char extra;
     if (gzread(gz_.get(), &extra, 1) < 0) corrupt();
-    int code = Z_OK;
-    gzerror(gz_.get(), &code);
-    if (code != Z_OK && code != Z_STREAM_END)
-      fail(path_, "gzip data is corrupt: the stream ends without its trailer (no CRC to check the data by)");
+    if (const std::string problem = gzipTrailerError(gz_.get()); !problem.empty()) fail(path_, problem);
   }
 
  private:
-  [[noreturn]] void corrupt() {
-    int code = Z_OK;
-    std::string why = gzerror(gz_.get(), &code);
-    // zlib begins its message with the file's name.
-    if (const auto colon = why.find(": "); colon != std::string::npos) why.erase(0, colon + 2);
-    fail(path_, "gzip data is corrupt: " + why);
-  }
+  [[noreturn]] void corrupt() { fail(path_, gzipReadError(gz_.get())); }
   struct GzClose {
     void operator()(gzFile g) const { gzclose(g); }
   };

@@ -19,6 +19,7 @@
 #include <memory>
 
 #include "io/format_impl.h"
+#include "io/gzip_errors.h"
 #include "io/raw_samples.h"
 #include "io/readers.h"
 #include "io/teem_util.h"
@@ -246,12 +247,7 @@ void decode(const std::string& path, Header& h, std::uint64_t count, std::size_t
     if (gzdirect(gz.get())) fail(path, "gzip data is corrupt: no gzip stream where the data begins");
     read = [&](char* dst, std::size_t want) {
       const int got = gzread(gz.get(), dst, unsigned(want));
-      int code = 0;
-      if (got < 0) {
-        std::string why = gzerror(gz.get(), &code);
-        if (why.rfind("<fd:", 0) == 0 && why.find(": ") != std::string::npos) why.erase(0, why.find(": ") + 2);
-        fail(path, "gzip data is corrupt: " + why);
-      }
+      if (got < 0) fail(path, gzipReadError(gz.get()));
       return std::size_t(got);
     };
   } else if (nio->encoding == nrrdEncodingBzip2) {
@@ -292,9 +288,8 @@ void decode(const std::string& path, Header& h, std::uint64_t count, std::size_t
   if (nio->encoding == nrrdEncodingGzip || nio->encoding == nrrdEncodingBzip2) {
     char extra;
     read(&extra, 1);
-    int code = Z_OK;
-    if (nio->encoding == nrrdEncodingGzip && (gzerror(gz.get(), &code), code != Z_OK && code != Z_STREAM_END))
-      fail(path, "gzip data is corrupt: the stream ends without its trailer (no CRC to check the data by)");
+    if (nio->encoding == nrrdEncodingGzip)
+      if (const std::string problem = gzipTrailerError(gz.get()); !problem.empty()) fail(path, problem);
   }
 }
 
