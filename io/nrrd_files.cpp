@@ -122,10 +122,17 @@ void impl::checkNrrdHeaderText(const char* who, const std::string& path, FILE* i
       refuse("header line " + std::to_string(line) + " is " + std::to_string(length) + " bytes long; only comments, " +
              "key:=value pairs and content may be longer than " + std::to_string(kMaxFieldLine));
   };
-  // The header ends at its first empty line (CRLF headers included).
+  // Lines end as Teem's airOneLine ends them: at "\n", "\r\n" or a lone
+  // "\r" (a comment holding a "\r" hid a long field line from this check).
+  // The header ends at its first empty line.
   for (int c; (c = std::fgetc(in)) != EOF; prev = c) {
+    if (c == '\r') {
+      const int next = std::fgetc(in);
+      if (next != '\n' && next != EOF) std::ungetc(next, in);
+      c = '\n';
+    }
     if (c == '\n') {
-      if (length == 0 || (length == 1 && prev == '\r')) break;
+      if (length == 0) break;
       check();
       ++line;
       length = 0;
@@ -146,9 +153,11 @@ void impl::checkNrrdHeaderText(const char* who, const std::string& path, FILE* i
       if (++pairs > kMaxKeyValues) refuse("header has more than " + std::to_string(kMaxKeyValues) + " key:=value pairs");
     }
     field |= c == ' ' && prev == ':';
-    if (start.size() < 8) {
+    // Teem finds the field at the line's first ": "; "content:" followed by
+    // anything else is a line it refuses, quoting it.
+    if (start.size() < 9) {
       start.push_back(char(c));
-      free |= start == "content:";
+      free |= start == "content: ";
     }
   }
   check();

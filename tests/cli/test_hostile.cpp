@@ -343,6 +343,17 @@ TEST(Hostile, LongNrrdFieldLinesAreRefusedBeforeTeemQuotesThem) {
   expectRefused("longtype.nrrd", "header line 2 is 3006 bytes long");
   write(dir() / "noline.nrrd", "NRRD0004\ntype: float\n" + longWord + "\n" + body + data);
   expectRefused("noline.nrrd", "header line 3 is 3000 bytes long");
+  // Teem ends a line at a lone "\r" too: a field line hidden behind one in a
+  // comment, content or key:=value line (CI's fuzzer found these), and
+  // "content:" without the space Teem looks for, which it refuses quoting it.
+  write(dir() / "crcomment.nrrd", "NRRD0004\n# note\rtype: " + longWord + "\n" + body + data);
+  expectRefused("crcomment.nrrd", "header line 3 is 3006 bytes long");
+  write(dir() / "crcontent.nrrd", "NRRD0004\ncontent: a\r" + longWord + "\n" + body + data);
+  expectRefused("crcontent.nrrd", "header line 3 is 3000 bytes long");
+  write(dir() / "crpair.nrrd", "NRRD0004\nk:=v\r" + longWord + "\n" + body + data);
+  expectRefused("crpair.nrrd", "header line 3 is 3000 bytes long");
+  write(dir() / "content.nrrd", "NRRD0004\ncontent:" + longWord + "\n" + body + data);
+  expectRefused("content.nrrd", "header line 2 is 3008 bytes long");
   // A mask's header is parsed in the parent as well.
   write(dir() / "longmask.nhdr", "NRRD0004\ntype: uchar\ndimension: 3\nsizes: 1 1 1\nencoding: raw\ndata file: " +
                                      longWord + "\n");
