@@ -21,6 +21,7 @@
 #include "app/render_options.h"
 #include "app/render_session.h"
 #include "app/scene.h"
+#include "gl/context.h"
 #include "io/array_field.h"
 #include "io/image_writer.h"
 #include "io/tensor_field.h"
@@ -129,6 +130,21 @@ py::array_t<float> floatImage(const std::vector<float>& v, int h, int w, int c) 
   return a;
 }
 
+// The session's context, current for one call and released after it: the
+// next call on this Renderer may come from another Python thread, and a
+// context is current on one thread at a time (EGL refuses it elsewhere until
+// released).
+class CurrentFor {
+ public:
+  explicit CurrentFor(gl::Context& c) : c_(c) { c_.makeCurrent(); }
+  ~CurrentFor() { c_.releaseCurrent(); }
+  CurrentFor(const CurrentFor&) = delete;
+  CurrentFor& operator=(const CurrentFor&) = delete;
+
+ private:
+  gl::Context& c_;
+};
+
 class Renderer {
  public:
   Renderer(Source source, OptionList options) : source_(std::move(source)) { rebuild(options); }
@@ -160,7 +176,7 @@ class Renderer {
     render::FrameImage img;
     {
       py::gil_scoped_release release;
-      session_->context().makeCurrent();
+      const CurrentFor current(session_->context());
       const app::RenderSession::Frame f = session_->frame(o);
       session_->draw(f);
       img = session_->readback(f, channels ? render::Channels::All : render::Channels::Rgba8);
@@ -235,6 +251,7 @@ class Renderer {
     session_ = std::make_unique<app::RenderSession>(o, std::move(scene), std::move(meshes), true, "python",
                                                     [](io::TensorField& f) { f.releaseSamples(); },
                                                     source_.progress->sink());
+    session_->context().releaseCurrent();  // made current on this thread; the next call may come from another
     reloadKeys_ = reloadKeys(table, options);
     source_.progress->rethrow();
   }

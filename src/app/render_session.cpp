@@ -55,7 +55,22 @@ RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io
   if (!keepGlyphs) glyphs_.glyphs = {};
 }
 
-RenderSession::~RenderSession() = default;
+// The GL objects below are deleted through this session's context, which
+// must be current on the destroying thread: a Python Renderer may be reloaded
+// or collected on another thread than the one that drew last, and GL calls
+// with no current context crashed in Mesa.
+RenderSession::~RenderSession() {
+  if (!ctx_) return;
+  try {
+    ctx_->makeCurrent();
+  } catch (const std::exception&) {
+    // Their GL objects cannot be deleted without the context, and destroying
+    // the context frees them: the wrappers are let go rather than crash.
+    static_cast<void>(target_.release());
+    static_cast<void>(renderer_.release());
+    static_cast<void>(lib_.release());
+  }
+}
 
 // The boxes are O(N) in the glyphs: computed again only when the scale
 // changes, so redrawing for γ, colour or camera costs nothing here.

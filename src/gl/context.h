@@ -15,6 +15,10 @@ class Context {
 
   virtual const char* backendName() const = 0;
   virtual void makeCurrent() = 0;
+  // Leaves no context current on this thread. A context is current on one
+  // thread at a time (EGL refuses another's eglMakeCurrent until it is
+  // released), so code that hands a context between threads releases it.
+  virtual void releaseCurrent() = 0;
   virtual void* procAddress(const char* name) const = 0;
 
   const Api& api() const { return api_; }

@@ -81,6 +81,7 @@ class EglBackend final : public Context {
     if (!eglMakeCurrent(dpy_, EGL_NO_SURFACE, EGL_NO_SURFACE, ctx_))
       throw std::runtime_error("createEglContext: eglMakeCurrent failed");
   }
+  void releaseCurrent() override { eglMakeCurrent(dpy_, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT); }
   void* procAddress(const char* name) const override { return reinterpret_cast<void*>(eglGetProcAddress(name)); }
 
  private:

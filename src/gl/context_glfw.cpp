@@ -39,6 +39,7 @@ class GlfwBackend final : public Context {
   }
   const char* backendName() const override { return "glfw"; }
   void makeCurrent() override { glfwMakeContextCurrent(window_); }
+  void releaseCurrent() override { glfwMakeContextCurrent(nullptr); }
   void* procAddress(const char* name) const override { return reinterpret_cast<void*>(glfwGetProcAddress(name)); }
   GLFWwindow* window() const { return window_; }
 

@@ -56,6 +56,7 @@ class OSMesaBackend final : public Context {
     if (!lib_.makeCurrent(ctx_, pixel_, GL_UNSIGNED_BYTE, 1, 1))
       throw std::runtime_error("createOSMesaContext: OSMesaMakeCurrent failed");
   }
+  void releaseCurrent() override { lib_.makeCurrent(nullptr, nullptr, 0, 0, 0); }
   void* procAddress(const char* name) const override {
     return reinterpret_cast<void*>(lib_.getProcAddress(name));
   }

@@ -2,6 +2,7 @@
 a DIPY pipeline, the module against the CLI, bad input, uploads, threads,
 the type stubs."""
 import ast
+import gc
 import os
 import subprocess
 import sys
@@ -365,6 +366,40 @@ class Interactive(unittest.TestCase):
         self.assertFalse(any(th.is_alive() for th in threads), "deadlocked")
         self.assertEqual(errors, [])
         self.assertEqual(wrong, [])
+
+    def test_one_renderer_handed_between_threads(self):
+        """A Renderer made on one thread, reloaded on others and collected on
+        yet another: the old session's GL objects were deleted with no context
+        current there, and the interpreter crashed (segfault in Mesa). Each
+        call makes the context current and releases it, which EGL needs too."""
+        t, p = points(20)
+        for backend in ("osmesa", "egl"):
+            with self.subTest(backend=backend):
+                opts = dict(positions=p, backend=backend, glyph="superquadric")
+                alone = {w: tg.render(t, size=(w, 32), **opts).image for w in (48, 56, 64)}
+                box, wrong, errors = {}, [], []
+
+                def on_thread(f):
+                    def run():
+                        try:
+                            f()
+                        except Exception as e:  # reported below, not lost in the thread
+                            errors.append(e)
+                    th = threading.Thread(target=run)
+                    th.start()
+                    th.join(timeout=120)
+                    self.assertFalse(th.is_alive())
+
+                on_thread(lambda: box.setdefault("r", tg.Renderer(t, size=(48, 32), **opts)))
+                for w in (56, 64, 48, 56):  # each a reload: the size changes the session
+                    def draw(w=w):
+                        if not np.array_equal(box["r"].render(size=(w, 32)).image, alone[w]):
+                            wrong.append(w)
+                    on_thread(draw)
+                    draw(64 if w != 64 else 48)  # and on this thread in turn
+                on_thread(lambda: (box.clear(), gc.collect()))
+                self.assertEqual(errors, [])
+                self.assertEqual(wrong, [])
 
     def test_a_refused_option_does_not_stay_behind(self):
         t, p = points(10)
