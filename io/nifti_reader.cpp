@@ -7,10 +7,12 @@
 #include <zlib.h>
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
+#include <sstream>
 #include <memory>
 #include <string_view>
 
@@ -63,6 +65,7 @@ class SilenceStderr {
 struct RawHeader {
   int version = 0;
   double voxOffset = 0;
+  double pixdim[4] = {};  // as the file has them: libnifti2 turns a 0 into 1
 };
 
 // libnifti2 3.0.1's nifti_image_read copies dim[1..dim[0]] into arrays of
@@ -98,6 +101,7 @@ RawHeader checkRawHeader(const std::string& path) {
                          : std::bit_cast<float>(__builtin_bswap32(std::bit_cast<std::uint32_t>(h->vox_offset)));
   }
   std::free(raw);
+  std::copy(pixdim, pixdim + 4, r.pixdim);
   if (!sized) fail(path, "not a readable NIfTI-1/-2 header");
   if (dim[0] < 1 || dim[0] > 7) fail(path, "dim[0] is " + std::to_string(dim[0]) + ", not 1..7");
   for (int k = 1; k <= dim[0]; ++k)
@@ -135,6 +139,8 @@ Image readHeader(const std::string& path) {
   }
   if (!nim) fail(path, "not a readable NIfTI-1/-2 header");
   checkDataOffset(path, *nim, raw);
+  // The file's voxel sizes, for placement to judge (voxelSizes).
+  for (int k = 1; k <= 3; ++k) nim->pixdim[k] = raw.pixdim[k];
   if (!nim->iname) fail(path, "no image file named");
   return nim;
 }
@@ -256,9 +262,37 @@ void streamValues(const std::string& path, const nifti_image& nim, std::uint64_t
   in.finish();
 }
 
+// A voxel size of 0 or below is invalid. libnifti2 builds the qform and we
+// built "method 1" with 1 in its place; nibabel (and so DIPY) uses |pixdim|
+// and 1 for 0. Where pixdim places the voxels, nibabel's reading is taken and
+// said, so that the two readers put the glyphs in the same place.
+std::string shortNumber(double v) {
+  std::ostringstream o;
+  o << v;
+  return o.str();
+}
+
+std::array<double, 3> voxelSizes(const nifti_image& nim, std::vector<std::string>* warnings) {
+  std::array<double, 3> d{};
+  for (int k = 0; k < 3; ++k) {
+    const double p = nim.pixdim[k + 1];
+    d[std::size_t(k)] = p > 0 ? p : p < 0 ? -p : 1.0;
+    if (!(p > 0) && warnings)
+      warnings->push_back("pixdim[" + std::to_string(k + 1) + "] (a voxel size) is " + shortNumber(p) + "; " +
+                           shortNumber(d[std::size_t(k)]) + " is used, as nibabel uses it");
+  }
+  return d;
+}
+
 // The affine in use: sform if coded, else qform, else pixdim (NIfTI's "method 1").
 void placement(const nifti_image& nim, VolumeGeometry& g, TensorField& f) {
-  const nifti_dmat44* m = nim.sform_code > 0 ? &nim.sto_xyz : nim.qform_code > 0 ? &nim.qto_xyz : nullptr;
+  nifti_dmat44 qform = nim.qto_xyz;
+  if (nim.qform_code > 0) {
+    const std::array<double, 3> d = voxelSizes(nim, nim.sform_code > 0 ? nullptr : &f.warnings);
+    qform = nifti_quatern_to_dmat44(nim.quatern_b, nim.quatern_c, nim.quatern_d, nim.qoffset_x, nim.qoffset_y,
+                                    nim.qoffset_z, d[0], d[1], d[2], nim.qfac);
+  }
+  const nifti_dmat44* m = nim.sform_code > 0 ? &nim.sto_xyz : nim.qform_code > 0 ? &qform : nullptr;
   if (m) {
     for (int r = 0; r < 3; ++r) {
       for (int c = 0; c < 3; ++c) g.axesWC[3 * r + c] = m->m[r][c];
@@ -271,7 +305,7 @@ void placement(const nifti_image& nim, VolumeGeometry& g, TensorField& f) {
       double diff = 0, step = 0;
       for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 4; ++c) {
-          diff = std::max(diff, std::abs(nim.sto_xyz.m[r][c] - nim.qto_xyz.m[r][c]));
+          diff = std::max(diff, std::abs(nim.sto_xyz.m[r][c] - qform.m[r][c]));
           if (c < 3) step = std::max(step, std::abs(nim.sto_xyz.m[r][c]));
         }
       if (!(diff <= 1e-3 * step))
@@ -279,7 +313,8 @@ void placement(const nifti_image& nim, VolumeGeometry& g, TensorField& f) {
                              "); the sform is used, as FSL, nibabel and MRtrix use it");
     }
   } else {
-    for (int k = 0; k < 3; ++k) g.axesWC[4 * k] = nim.pixdim[k + 1] > 0 ? nim.pixdim[k + 1] : 1.0;
+    const std::array<double, 3> d = voxelSizes(nim, &f.warnings);
+    for (int k = 0; k < 3; ++k) g.axesWC[4 * k] = d[std::size_t(k)];
     f.space = "voxel grid (no sform or qform)";
     f.warnings.push_back("no sform or qform; placed by pixdim alone");
   }

@@ -405,6 +405,74 @@ TEST(Nifti, DisagreeingSformAndQformAreSaid) {
   EXPECT_FLOAT_EQ(f.positions[2], 30);  // the sform's
 }
 
+// A voxel size of 0 or below is invalid; libnifti2 put 1 in its place
+// (a qform with pixdim -2 placed voxels 1 apart, where nibabel, and so DIPY,
+// places them 2 apart). nibabel's reading is taken and said, for a qform and
+// for pixdim alone; with an sform pixdim places nothing and is not said.
+TEST(Nifti, NonPositiveVoxelSizesAreReadAsNibabelReadsThem) {
+  Fixture fx;
+  fx.voxels = {{{1, 0, 0, 1, 0, 1}}, {{2, 0, 0, 2, 0, 2}}};
+  const fs::path p = tmpDir() / "pixdim.nii";
+  write(p, fx);
+  std::string bytes;
+  {
+    std::ifstream in(p, std::ios::binary);
+    bytes.assign(std::istreambuf_iterator<char>(in), {});
+  }
+  auto with = [&](float pixdimX, std::int16_t qform, std::int16_t sform) {
+    std::string b = bytes;
+    std::memcpy(&b[252], &qform, 2);
+    std::memcpy(&b[254], &sform, 2);
+    const float zero = 0, unit = 1;
+    for (int k = 0; k < 6; ++k) std::memcpy(&b[256 + 4 * k], &zero, 4);  // no rotation, no offset
+    std::memcpy(&b[76], &unit, 4);  // qfac
+    std::memcpy(&b[80], &pixdimX, 4);
+    for (int k = 2; k <= 3; ++k) std::memcpy(&b[76 + 4 * k], &unit, 4);
+    test::writeFile(p, b);
+    return io::readTensorField(p.string(), {});
+  };
+  struct Case {
+    float pixdim;
+    std::int16_t qform, sform;
+    float stepX;
+    const char* said;
+  };
+  const Case cases[] = {{-2, 1, 0, 2, "pixdim[1] (a voxel size) is -2; 2 is used, as nibabel uses it"},
+                        {0, 1, 0, 1, "pixdim[1] (a voxel size) is 0; 1 is used"},
+                        {-3, 0, 0, 3, "pixdim[1] (a voxel size) is -3; 3 is used"},
+                        {2, 1, 0, 2, nullptr}};
+  for (const Case& c : cases) {
+    const io::TensorField f = with(c.pixdim, c.qform, c.sform);
+    ASSERT_EQ(f.positions.size(), 6u);
+    EXPECT_FLOAT_EQ(f.positions[3] - f.positions[0], c.stepX) << c.pixdim << " qform " << c.qform;
+    const bool said = std::any_of(f.warnings.begin(), f.warnings.end(), [&](const std::string& w) {
+      return c.said && w.find(c.said) != std::string::npos;
+    });
+    EXPECT_EQ(said, c.said != nullptr) << c.pixdim << " qform " << c.qform;
+    if (!c.said) {
+      for (const std::string& w : f.warnings) EXPECT_EQ(w.find("pixdim"), std::string::npos) << w;
+    }
+  }
+  // With an sform (diag 2 from the fixture) pixdim places nothing: no word,
+  // and the qform built from |pixdim| agrees with it.
+  {
+    std::string b = bytes;
+    const std::int16_t one = 1;
+    const float zero = 0, unit = 1, minusTwo = -2, two = 2;
+    std::memcpy(&b[252], &one, 2);
+    for (int k = 0; k < 3; ++k) std::memcpy(&b[256 + 4 * k], &zero, 4);
+    std::memcpy(&b[76], &unit, 4);
+    std::memcpy(&b[80], &minusTwo, 4);
+    for (int k = 2; k <= 3; ++k) std::memcpy(&b[76 + 4 * k], &two, 4);
+    const float offset[3] = {10, 20, 30};
+    for (int k = 0; k < 3; ++k) std::memcpy(&b[268 + 4 * k], &offset[k], 4);
+    test::writeFile(p, b);
+    const io::TensorField f = io::readTensorField(p.string(), {});
+    EXPECT_TRUE(f.warnings.empty()) << f.warnings.front();
+    EXPECT_FLOAT_EQ(f.positions[3] - f.positions[0], 2);
+  }
+}
+
 // Six volumes whose header says they are a vector (or any intent but none,
 // a parameter estimate or SYMMATRIX) are read as asked, with a warning.
 TEST(Nifti, AnIntentOtherThanATensorIsSaid) {
