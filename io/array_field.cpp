@@ -128,7 +128,13 @@ TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, co
     const auto where = [i] { return "index " + std::to_string(i); };
     double p[3], v[9], s6[6];
     if (!readElement(positions, i * positions.strides[0], 1, p)) fail("positions", "NaN or Inf at " + where());
-    if (!readElement(tensors, i * tensors.strides[0], 1, v)) fail("tensors", "NaN or Inf at " + where());
+    // A tensor with a NaN/Inf component is skipped and counted (addSym), as
+    // the file readers skip it: the same data as an array or a file draws alike.
+    if (!readElement(tensors, i * tensors.strides[0], 1, v)) {
+      for (double& x : s6) x = NAN;
+      f.addSym(std::uint32_t(i), p, s6);
+      continue;
+    }
     if (full) {
       if (!symmetric(v)) fail("tensors", "the 3x3 tensor at " + where() + " is not symmetric");
       symmetricPart(v, s6);
@@ -209,9 +215,9 @@ TensorField fieldFromVolume(const ArrayRef& tensors, std::string_view layout, co
         const auto where = [&] {
           return "voxel (" + std::to_string(i) + ", " + std::to_string(j) + ", " + std::to_string(k) + ")";
         };
-        if (!readElement(tensors, base, 3, v)) fail("tensors", "NaN or Inf at " + where());
-        if (full && !symmetric(v)) fail("tensors", "the 3x3 tensor at " + where() + " is not symmetric");
-        if (six) sample.offer(index, v);
+        const bool finite = readElement(tensors, base, 3, v);  // else skipped and counted, as by the readers
+        if (finite && full && !symmetric(v)) fail("tensors", "the 3x3 tensor at " + where() + " is not symmetric");
+        if (six && finite) sample.offer(index, v);
         ++index;
         sink.push(v);
       }

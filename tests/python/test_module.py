@@ -236,8 +236,9 @@ class BadInput(unittest.TestCase):
             (ValueError, "tensors", lambda: tg.render(np.zeros((5, 3, 2)), positions=p)),
             (TypeError, "tensors", lambda: tg.render(np.zeros((5, 3, 3), complex), positions=p)),
             (TypeError, "tensors", lambda: tg.render(np.array([["a"] * 6] * 5), positions=p)),
-            (ValueError, "tensors", lambda: tg.render(np.where(np.eye(3) > 0, np.nan, 1.0)[None].repeat(5, 0),
-                                                       positions=p)),
+            # NaN tensors are skipped, as the readers skip them; all of them is nothing to draw.
+            (ValueError, "5 skipped (NaN/Inf)", lambda: tg.render(np.where(np.eye(3) > 0, np.nan, 1.0)[None]
+                                                                  .repeat(5, 0), positions=p)),
             (ValueError, "positions", lambda: tg.render(t, positions=p[:3])),
             (ValueError, "positions", lambda: tg.render(t)),
             (ValueError, "affine", lambda: tg.render(np.zeros((2, 2, 2, 6)), affine=np.eye(3))),
@@ -278,6 +279,28 @@ class BadInput(unittest.TestCase):
                        (t.astype(">f8"), p.astype(">f8"))]:
             with self.subTest(tensors=tt.dtype.str, positions=pp.dtype.str):
                 self.assertTrue(np.array_equal(native, tg.render(tt, positions=pp, **opts).image))
+
+    def test_nan_tensors_are_skipped_as_the_file_reader_skips_them(self):
+        """A NIfTI with a NaN voxel: read as a path it was drawn without that
+        voxel and a warning; through nibabel (an array) it was refused."""
+        import nibabel as nib
+        path = os.path.join(_TMP.name, "nan.nii")
+        img = nib.load(_nifti_file())
+        data = np.asarray(img.dataobj).copy()
+        data[1, 2, 0, 3] = np.nan
+        nib.save(nib.Nifti1Image(data, img.affine), path)
+        opts = dict(size=(64, 48), glyph="superquadric")
+        with self.assertWarnsRegex(UserWarning, "skipped 1 tensors with NaN/Inf"):
+            from_file = tg.render(path, **opts)
+        with self.assertWarnsRegex(UserWarning, "skipped 1 tensors with NaN/Inf"):
+            from_array = tg.render(nib.load(path), **opts)
+        self.assertEqual(from_file.glyphs, 4 * 4 * 3 - 1)
+        self.assertEqual(from_array.glyphs, from_file.glyphs)
+        self.assertTrue(np.array_equal(from_file.image, from_array.image))
+        t, p = points(6)
+        t[4, 1, 1] = np.inf
+        with self.assertWarnsRegex(UserWarning, "skipped 1 tensors"):
+            self.assertEqual(tg.render(t, positions=p, size=(32, 24)).glyphs, 5)
 
     def test_a_files_layout_and_frame_are_used(self):
         """layout= and frame= with a path are the reader's --layout and
