@@ -12,6 +12,7 @@
 #include <teem/nrrd.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cfloat>
 #include <cmath>
 #include <cstring>
@@ -67,9 +68,14 @@ std::unique_ptr<Header> readHeader(const std::string& path) {
     // A header it cannot parse: nrrdLoad below reports the same fault as ours.
   }
   if (dataFiles.size() > 1) fail(path, "multiple detached data files are not supported");
+  // Said here, not by Teem: its message quotes the data file's whole path
+  // into biff's 1 KiB stack buffer, which a header in a deep directory
+  // overflowed (an abort, reported as a crash of the reader).
   for (const std::string& data : dataFiles) {
     struct stat st {};
-    if (stat(data.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) fail(path, "data file " + data + " is not a regular file");
+    if (stat(data.c_str(), &st) != 0 || access(data.c_str(), R_OK) != 0)
+      fail(path, "data file " + data + " cannot be read: " + std::strerror(errno));
+    if (!S_ISREG(st.st_mode)) fail(path, "data file " + data + " is not a regular file");
   }
   auto h = std::make_unique<Header>();
   h->nio->skipData = AIR_TRUE;

@@ -371,6 +371,20 @@ TEST(Hostile, LongNrrdFieldLinesAreRefusedBeforeTeemQuotesThem) {
   expectRefused("hugecomment.nrrd", "header line 2 is longer than 1 MiB");
 }
 
+// A detached header in a deep directory whose data file is missing: Teem's
+// message quoted the data file's whole path into biff's 1 KiB stack buffer
+// and aborted the reader, which the guard reported as a crash of a corrupt
+// file. The missing file is said.
+TEST(Hostile, AMissingDataFileBesideADeepHeaderIsSaid) {
+  fs::path deep = dir();
+  for (int k = 0; k < 15; ++k) deep /= std::string(70, 'd');
+  fs::create_directories(deep);
+  const std::string name = std::string(200, 'x') + ".raw";  // within NAME_MAX
+  write(deep / "h.nhdr", "NRRD0004\ntype: float\ndimension: 4\nsizes: 6 1 1 1\n" + kNrrdTensor + "data file: " +
+                             name + "\n");
+  expectRefused(fs::relative(deep / "h.nhdr", dir()).string(), name + " cannot be read: No such file or directory");
+}
+
 // Cells whose point ids lie outside the points (VTK's readers keep them as
 // the file gives them): a negative id drew a triangle to a vertex read from
 // before the points, and remapping it wrote outside our own array; cells

@@ -243,7 +243,7 @@ TEST(Nrrd, BadInputGetsOneLineNamingFileAndProblem) {
        "axes"},
       {"gz.nrrd", "NRRD0005\ntype: float\ndimension: 4\nsizes: 6 1 1 1\nencoding: gzip\nendian: little\n\nnot gzip at all", "gzip"},
       {"nodata.nhdr", "NRRD0005\ntype: float\ndimension: 4\nsizes: 6 1 1 1\nencoding: raw\nendian: little\ndata file: missing.raw\n",
-       "readNrrd"},
+       "missing.raw cannot be read: No such file or directory"},
       {"garbage.nrrd", "NRRD0005\nthis is not a field\n", "readNrrd"},
       {"longtoken.nrrd",
        "NRRD0005\ntype: float\ndimension: 4\nsizes: 6 1 1 1\nencoding: ascii\n\n" + std::string(5000, '7'), "token"},
