@@ -16,6 +16,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <functional>
 #include <memory>
 
@@ -80,12 +81,25 @@ std::unique_ptr<Header> readHeader(const std::string& path) {
   auto h = std::make_unique<Header>();
   h->nio->skipData = AIR_TRUE;
   h->nio->keepNrrdDataFileOpen = AIR_TRUE;
-  if (nrrdLoad(h->nrrd, path.c_str(), h->nio)) {
+  // nrrdLoad's steps, with the header opened here: its own message on any
+  // failure quotes the header's whole path into biff's 1 KiB stack buffer,
+  // which a header in a deep directory overflowed (an abort). Teem finds
+  // detached data through nio->path, the header's directory, as nrrdLoad
+  // sets it.
+  const std::filesystem::path where(path);
+  h->nio->path = airStrdup(where.has_parent_path() ? where.parent_path().c_str() : ".");
+  FILE* file = std::fopen(path.c_str(), "rb");
+  if (!file) fail(path, std::string("cannot open file: ") + std::strerror(errno));
+  if (nrrdRead(h->nrrd, file, h->nio)) {
     // On failure Teem may already have closed the file it left in dataFile
     // (found by fuzz_nrrd: a double fclose); it is not ours to close then.
     h->nio->dataFile = nullptr;
+    std::fclose(file);
     fail(path, teemNrrdError());
   }
+  // An attached header's file is its data file, kept open; a detached
+  // header's file is done with.
+  if (h->nio->dataFile != file) std::fclose(file);
   if (h->nio->format != nrrdFormatNRRD) fail(path, "not a NRRD file");
   if (!h->nio->dataFile) fail(path, "multiple detached data files are not supported");
   // A device or pipe never ends or cannot be sized; only a file can hold data.

@@ -375,7 +375,7 @@ TEST(Hostile, LongNrrdFieldLinesAreRefusedBeforeTeemQuotesThem) {
 // message quoted the data file's whole path into biff's 1 KiB stack buffer
 // and aborted the reader, which the guard reported as a crash of a corrupt
 // file. The missing file is said.
-TEST(Hostile, AMissingDataFileBesideADeepHeaderIsSaid) {
+TEST(Hostile, FaultsOfAHeaderInADeepDirectoryAreSaid) {
   fs::path deep = dir();
   for (int k = 0; k < 15; ++k) deep /= std::string(70, 'd');
   fs::create_directories(deep);
@@ -383,6 +383,10 @@ TEST(Hostile, AMissingDataFileBesideADeepHeaderIsSaid) {
   write(deep / "h.nhdr", "NRRD0004\ntype: float\ndimension: 4\nsizes: 6 1 1 1\n" + kNrrdTensor + "data file: " +
                              name + "\n");
   expectRefused(fs::relative(deep / "h.nhdr", dir()).string(), name + " cannot be read: No such file or directory");
+  // And any fault Teem finds in a header there: nrrdLoad's own line quoted
+  // the header's path the same way.
+  write(deep / "type.nrrd", "NRRD0004\ntype: notatype\ndimension: 4\nsizes: 6 1 1 1\nencoding: raw\n\n");
+  expectRefused(fs::relative(deep / "type.nrrd", dir()).string(), "couldn't parse type \"notatype\"");
 }
 
 // Cells whose point ids lie outside the points (VTK's readers keep them as
