@@ -370,36 +370,45 @@ TEST(Nifti, CorruptGzipIsRefusedNamingTheFault) {
   EXPECT_NE(e.find("gzip data is corrupt: incorrect data check"), std::string::npos) << e;
 }
 
+// The two-voxel fixture's bytes with the NIfTI-1 placement fields set: the
+// qform and sform codes, an unrotated qform (qfac 1) at `offset`, and pixdim.
+struct Placement {
+  std::int16_t qform = 1, sform = 1;
+  float pixdim[3] = {2, 2, 2};
+  float offset[3] = {10, 20, 30};
+};
+
+std::string placedBytes(const fs::path& p, const Placement& pl) {
+  Fixture fx;
+  fx.voxels = {{{1, 0, 0, 1, 0, 1}}, {{2, 0, 0, 2, 0, 2}}};
+  write(p, fx);  // sform diag(2) + (10, 20, 30)
+  std::ifstream in(p, std::ios::binary);
+  std::string b(std::istreambuf_iterator<char>(in), {});
+  std::memcpy(&b[252], &pl.qform, 2);
+  std::memcpy(&b[254], &pl.sform, 2);
+  const float zero = 0, unit = 1;
+  for (int k = 0; k < 3; ++k) std::memcpy(&b[256 + 4 * k], &zero, 4);  // quatern_b..d: no rotation
+  for (int k = 0; k < 3; ++k) std::memcpy(&b[268 + 4 * k], &pl.offset[k], 4);  // qoffset_x..z
+  std::memcpy(&b[76], &unit, 4);  // pixdim[0]: qfac
+  for (int k = 0; k < 3; ++k) std::memcpy(&b[80 + 4 * k], &pl.pixdim[k], 4);
+  return b;
+}
+
+io::TensorField readPlaced(const Placement& pl) {
+  const fs::path p = tmpDir() / "placed.nii";
+  test::writeFile(p, placedBytes(p, pl));
+  return io::readTensorField(p.string(), {});
+}
+
 // A file holding two placements that disagree draws where the sform says
 // (as FSL, nibabel and MRtrix read it) and says so; one whose qform matches
 // its sform says nothing.
 TEST(Nifti, DisagreeingSformAndQformAreSaid) {
-  Fixture fx;
-  fx.voxels = {{{1, 0, 0, 1, 0, 1}}, {{2, 0, 0, 2, 0, 2}}};
-  const fs::path p = tmpDir() / "sq.nii";
-  write(p, fx);  // sform diag(2) + (10, 20, 30)
-  std::string bytes;
-  {
-    std::ifstream in(p, std::ios::binary);
-    bytes.assign(std::istreambuf_iterator<char>(in), {});
-  }
-  auto withQform = [&](float pixdim, const float offset[3]) {
-    std::string b = bytes;
-    const std::int16_t one = 1;
-    std::memcpy(&b[252], &one, 2);  // qform_code
-    const float zero = 0, unit = 1;
-    for (int k = 0; k < 3; ++k) std::memcpy(&b[256 + 4 * k], &zero, 4);  // quatern_b..d: no rotation
-    for (int k = 0; k < 3; ++k) std::memcpy(&b[268 + 4 * k], &offset[k], 4);  // qoffset_x..z
-    std::memcpy(&b[76], &unit, 4);  // pixdim[0]: qfac
-    for (int k = 1; k <= 3; ++k) std::memcpy(&b[76 + 4 * k], &pixdim, 4);
-    return b;
-  };
-  const float same[3] = {10, 20, 30}, moved[3] = {10, 20, 35};
-  test::writeFile(p, withQform(2, same));
-  const io::TensorField agree = io::readTensorField(p.string(), {});
+  const io::TensorField agree = readPlaced({});
   EXPECT_TRUE(agree.warnings.empty()) << agree.warnings.front();
-  test::writeFile(p, withQform(2, moved));
-  const io::TensorField f = io::readTensorField(p.string(), {});
+  Placement moved;
+  moved.offset[2] = 35;
+  const io::TensorField f = readPlaced(moved);
   ASSERT_EQ(f.warnings.size(), 1u);
   EXPECT_NE(f.warnings[0].find("the sform and qform disagree (by up to 5.0"), std::string::npos) << f.warnings[0];
   EXPECT_FLOAT_EQ(f.positions[2], 30);  // the sform's
@@ -410,27 +419,6 @@ TEST(Nifti, DisagreeingSformAndQformAreSaid) {
 // places them 2 apart). nibabel's reading is taken and said, for a qform and
 // for pixdim alone; with an sform pixdim places nothing and is not said.
 TEST(Nifti, NonPositiveVoxelSizesAreReadAsNibabelReadsThem) {
-  Fixture fx;
-  fx.voxels = {{{1, 0, 0, 1, 0, 1}}, {{2, 0, 0, 2, 0, 2}}};
-  const fs::path p = tmpDir() / "pixdim.nii";
-  write(p, fx);
-  std::string bytes;
-  {
-    std::ifstream in(p, std::ios::binary);
-    bytes.assign(std::istreambuf_iterator<char>(in), {});
-  }
-  auto with = [&](float pixdimX, std::int16_t qform, std::int16_t sform) {
-    std::string b = bytes;
-    std::memcpy(&b[252], &qform, 2);
-    std::memcpy(&b[254], &sform, 2);
-    const float zero = 0, unit = 1;
-    for (int k = 0; k < 6; ++k) std::memcpy(&b[256 + 4 * k], &zero, 4);  // no rotation, no offset
-    std::memcpy(&b[76], &unit, 4);  // qfac
-    std::memcpy(&b[80], &pixdimX, 4);
-    for (int k = 2; k <= 3; ++k) std::memcpy(&b[76 + 4 * k], &unit, 4);
-    test::writeFile(p, b);
-    return io::readTensorField(p.string(), {});
-  };
   struct Case {
     float pixdim;
     std::int16_t qform, sform;
@@ -440,9 +428,17 @@ TEST(Nifti, NonPositiveVoxelSizesAreReadAsNibabelReadsThem) {
   const Case cases[] = {{-2, 1, 0, 2, "pixdim[1] (a voxel size) is -2; 2 is used, as nibabel uses it"},
                         {0, 1, 0, 1, "pixdim[1] (a voxel size) is 0; 1 is used"},
                         {-3, 0, 0, 3, "pixdim[1] (a voxel size) is -3; 3 is used"},
-                        {2, 1, 0, 2, nullptr}};
+                        {2, 1, 0, 2, nullptr},
+                        // The sform's diag(2) places: no word, and the qform
+                        // built from |pixdim| agrees with it.
+                        {-2, 1, 1, 2, nullptr}};
   for (const Case& c : cases) {
-    const io::TensorField f = with(c.pixdim, c.qform, c.sform);
+    Placement pl;
+    pl.qform = c.qform;
+    pl.sform = c.sform;
+    pl.pixdim[0] = c.pixdim;
+    if (!c.sform) pl.pixdim[1] = pl.pixdim[2] = 1;
+    const io::TensorField f = readPlaced(pl);
     ASSERT_EQ(f.positions.size(), 6u);
     EXPECT_FLOAT_EQ(f.positions[3] - f.positions[0], c.stepX) << c.pixdim << " qform " << c.qform;
     const bool said = std::any_of(f.warnings.begin(), f.warnings.end(), [&](const std::string& w) {
@@ -450,26 +446,9 @@ TEST(Nifti, NonPositiveVoxelSizesAreReadAsNibabelReadsThem) {
     });
     EXPECT_EQ(said, c.said != nullptr) << c.pixdim << " qform " << c.qform;
     if (!c.said) {
+      EXPECT_TRUE(c.sform == 0 || f.warnings.empty()) << f.warnings.front();
       for (const std::string& w : f.warnings) EXPECT_EQ(w.find("pixdim"), std::string::npos) << w;
     }
-  }
-  // With an sform (diag 2 from the fixture) pixdim places nothing: no word,
-  // and the qform built from |pixdim| agrees with it.
-  {
-    std::string b = bytes;
-    const std::int16_t one = 1;
-    const float zero = 0, unit = 1, minusTwo = -2, two = 2;
-    std::memcpy(&b[252], &one, 2);
-    for (int k = 0; k < 3; ++k) std::memcpy(&b[256 + 4 * k], &zero, 4);
-    std::memcpy(&b[76], &unit, 4);
-    std::memcpy(&b[80], &minusTwo, 4);
-    for (int k = 2; k <= 3; ++k) std::memcpy(&b[76 + 4 * k], &two, 4);
-    const float offset[3] = {10, 20, 30};
-    for (int k = 0; k < 3; ++k) std::memcpy(&b[268 + 4 * k], &offset[k], 4);
-    test::writeFile(p, b);
-    const io::TensorField f = io::readTensorField(p.string(), {});
-    EXPECT_TRUE(f.warnings.empty()) << f.warnings.front();
-    EXPECT_FLOAT_EQ(f.positions[3] - f.positions[0], 2);
   }
 }
 
