@@ -8,7 +8,8 @@ and the benchmark's one ParaView driver.
           [--select X0 Y0 X1 Y1 ... --select-cells X0 Y0 X1 Y1 ...
            --selection-out TXT]
           [--scalar-bar] [--legend-out TXT] [--cell-tensors] [--nan-every K]
-          [--multiblock] [--as-six]
+          [--multiblock] [--as-six] [--merge-blocks]
+  pvbatch render_glyphs.py --input FILE --write-blocks VTM [--second-without-tensors]
 
 Under mpiexec, --redistribute spreads the dataset over the ranks (or give a
 partitioned .pvtu); each rank draws its own glyphs and IceT composites the
@@ -19,7 +20,14 @@ dataset, drawn as a surface, to check that the two mix by depth.
 (origin bottom left, corners inclusive) as ParaView's "Select Points On"
 does, after the screenshot, --select-cells the surface cells ("Select Cells
 On"); --selection-out lists what each rectangle selected, "points K ID" or
-"cells K ID" per line (K counts each kind's rectangles from 0).
+"cells K ID" per line (K counts each kind's rectangles from 0); on a composite
+input "blockpoints K FLATINDEX ID".
+
+--write-blocks splits the input's points into two point-only blocks (the
+first half of the point ids, then the rest, with their point data) and writes
+them as a multiblock .vtm (--second-without-tensors: the second block
+without its tensor array); nothing is drawn. --merge-blocks shows ParaView's
+Merge Blocks of the input instead of the input.
 
 --scalar-bar shows ParaView's scalar bar of the glyphs' colour legend (the
 representation's TensorGlyphColorLegend* properties) on the right;
@@ -35,9 +43,12 @@ from paraview import selection, servermanager, simple
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("--plugin", required=True)
+    ap.add_argument("--plugin")
     ap.add_argument("--input", required=True)
-    ap.add_argument("--output", required=True)
+    ap.add_argument("--output")
+    ap.add_argument("--write-blocks", metavar="VTM")
+    ap.add_argument("--second-without-tensors", action="store_true")
+    ap.add_argument("--merge-blocks", action="store_true")
     ap.add_argument("--size", type=int, nargs=2, default=[400, 300])
     ap.add_argument("--eye", type=float, nargs=3)
     ap.add_argument("--look-at", type=float, nargs=3)
@@ -68,6 +79,11 @@ def main():
     ap.add_argument("--legend-out")
     ap.add_argument("--background", type=float, nargs=3, default=[0.08, 0.08, 0.10])
     a = ap.parse_args()
+    if a.write_blocks:
+        write_blocks(a.input, a.write_blocks, a.second_without_tensors)
+        return
+    if not a.plugin or not a.output:
+        sys.exit("render_glyphs.py: --plugin and --output are required")
 
     simple.LoadPlugin(a.plugin, remote=False, ns=globals())
     reader = simple.OpenDataFile(a.input)
@@ -88,6 +104,10 @@ def main():
             "out.GetPointData().SetTensors(s)"])
     if a.multiblock:
         reader = simple.GroupDatasets(Input=[reader])
+    if a.merge_blocks:
+        reader = simple.MergeBlocks(Input=reader)
+        if hasattr(reader, "MergePoints"):
+            reader.MergePoints = 0  # the blocks' points as they are, in block order
     if a.nan_every:
         reader = simple.ProgrammableFilter(Input=reader)
         reader.Script = "\n".join([
@@ -153,8 +173,11 @@ def main():
         with open(a.selection_out, "w") as f:
             for kind, rects in (("points", a.select), ("cells", a.select_cells)):
                 for k, rect in enumerate(rects):
-                    for pid in select_ids(reader, view, rect, kind):
-                        f.write("%s %d %d\n" % (kind, k, pid))
+                    for flat, pid in select_ids(reader, view, rect, kind):
+                        if flat is None:
+                            f.write("%s %d %d\n" % (kind, k, pid))
+                        else:
+                            f.write("block%s %d %d %d\n" % (kind, k, flat, pid))
 
 
 def show_legend(disp, view, visible):
@@ -219,10 +242,44 @@ def select_ids(source, view, rect, kind):
         return ids
     app = servermanager._getPyProxy(found)
     for node in (app.Input if app.GetXMLName() == "AppendSelections" else [app]):
-        if node.GetXMLName() != "IDSelectionSource" or node.FieldType != kind[:-1].upper():
+        if node.FieldType != kind[:-1].upper():
+            sys.exit("render_glyphs.py: unexpected selection of %s" % node.FieldType)
+        v = list(node.IDs)
+        if node.GetXMLName() == "IDSelectionSource":
+            ids += [(None, i) for i in v[1::2]]  # (process, id) pairs
+        elif node.GetXMLName() == "CompositeDataIDSelectionSource":
+            ids += list(zip(v[0::3], v[2::3]))  # (flat index, process, id) triples
+        else:
             sys.exit("render_glyphs.py: unexpected selection %s" % node.GetXMLName())
-        ids += list(node.IDs)[1::2]  # (process, id) pairs
-    return sorted(set(ids))
+    return sorted(set(ids), key=lambda t: (-1 if t[0] is None else t[0], t[1]))
+
+
+def write_blocks(path, vtm, second_without_tensors=False):
+    """The input's points split in two point-only blocks, written as a .vtm."""
+    from vtkmodules.vtkCommonDataModel import vtkMultiBlockDataSet, vtkPolyData
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkIOXML import vtkXMLMultiBlockDataWriter
+    data = servermanager.Fetch(simple.OpenDataFile(path))
+    n = data.GetNumberOfPoints()
+    blocks = vtkMultiBlockDataSet()
+    for b, (lo, hi) in enumerate(((0, n // 2), (n // 2, n))):
+        part = vtkPolyData()
+        pts = vtkPoints()
+        pts.SetDataType(data.GetPoints().GetDataType())
+        part.GetPointData().CopyAllocate(data.GetPointData(), hi - lo)
+        for i in range(lo, hi):
+            pts.InsertNextPoint(data.GetPoint(i))
+            part.GetPointData().CopyData(data.GetPointData(), i, i - lo)
+        part.SetPoints(pts)
+        tensors = part.GetPointData().GetTensors()
+        if b == 1 and second_without_tensors and tensors is not None:
+            part.GetPointData().RemoveArray(tensors.GetName())
+        blocks.SetBlock(b, part)
+    w = vtkXMLMultiBlockDataWriter()
+    w.SetFileName(vtm)
+    w.SetInputData(blocks)
+    if not w.Write():
+        sys.exit("render_glyphs.py: %s: could not be written" % vtm)
 
 
 if __name__ == "__main__":

@@ -55,51 +55,92 @@ vtkSmartPointer<vtkDoubleArray> doubles(const char* name, const T& values) {
   return a;
 }
 
-// Reads this rank's piece into `f`; the problem, or "" when it is fine.
-// A problem is reported after the collective calls, so that the other ranks
-// are not left waiting in them.
-std::string readPiece(vtkDataSet* input, vtkDataArray* tensors, io::TensorField& f) {
+// Reads one piece into `f`, its points numbered from `firstId`; the problem,
+// or "" when it is fine. A problem is reported after the collective calls, so
+// that the other ranks are not left waiting in them.
+std::string readPiece(const Piece& piece, std::uint64_t firstId, io::TensorField& f, LoadReport& report) {
+  vtkDataSet* input = piece.data;
+  vtkDataArray* tensors = piece.tensors;
   const vtkIdType n = input ? input->GetNumberOfPoints() : 0;
   if (n == 0) return "";
+  const std::string where = piece.flatIndex ? "block " + std::to_string(piece.flatIndex) + ": " : "";
   if (!tensors)
-    return "prepareGlyphInput: " + std::to_string(n) + " points but no point array of tensors (9 or 6 components)";
+    return "prepareGlyphInput: " + where + std::to_string(n) + " points but no point array of tensors (9 or 6 components)";
   const std::string name = tensors->GetName() ? tensors->GetName() : "";
   const int nc = tensors->GetNumberOfComponents();
   if (nc != 9 && nc != 6)
-    return "prepareGlyphInput: array '" + name + "' has " + std::to_string(nc) +
+    return "prepareGlyphInput: " + where + "array '" + name + "' has " + std::to_string(nc) +
            " components; tensors need 9 (3x3) or 6 (XX YY ZZ XY YZ XZ)";
   // A cell array (chosen from Python: the property's list offers point
   // arrays only) has one tuple per cell: read per point, it is out of bounds
   // or another cell's tensor.
   if (tensors->GetNumberOfTuples() != n)
-    return "prepareGlyphInput: array '" + name + "' has " + std::to_string(tensors->GetNumberOfTuples()) +
+    return "prepareGlyphInput: " + where + "array '" + name + "' has " + std::to_string(tensors->GetNumberOfTuples()) +
            " tuples for " + std::to_string(n) + " points; the tensors must be point data";
-  if (std::uint64_t(n) > io::kMaxInputs)
-    return "prepareGlyphInput: " + std::to_string(n) + " points; at most " + std::to_string(io::kMaxInputs) +
-           " fit the id channel";
+  if (firstId + std::uint64_t(n) > io::kMaxInputs)
+    return "prepareGlyphInput: " + std::to_string(firstId + std::uint64_t(n)) + " points; at most " +
+           std::to_string(io::kMaxInputs) + " fit the id channel";
   double p[3], t[9], s6[6];
   for (vtkIdType i = 0; i < n; ++i) {
     input->GetPoint(i, p);
     tensors->GetTuple(i, t);
+    const auto id = std::uint32_t(firstId + std::uint64_t(i));
     if (nc == 9) {
-      f.addFull(std::uint32_t(i), p, t);
+      // As io/vtk_reader.cpp measures it, for the same warning.
+      report.maxAsymmetry = std::max(report.maxAsymmetry, io::asymmetry(t));
+      f.addFull(id, p, t);
     } else {
       symFromParaView(t, s6);
-      f.addSym(std::uint32_t(i), p, s6);
+      f.addSym(id, p, s6);
     }
   }
   return "";
 }
 
+// The grid spacing when every piece with points is an image (the smallest),
+// else 0: the caller estimates it from the points.
+double piecesGridSpacing(std::span<const Piece> pieces) {
+  double s = INFINITY;
+  for (const Piece& piece : pieces) {
+    if (!piece.data || !piece.tensors || piece.data->GetNumberOfPoints() == 0) continue;
+    const double g = gridSpacing(piece.data);
+    if (!(g > 0.0)) return 0.0;
+    s = std::min(s, g);
+  }
+  return std::isfinite(s) ? s : 0.0;
+}
+
 }  // namespace
 
-vtkSmartPointer<vtkPolyData> prepareGlyphInput(vtkDataSet* input, vtkDataArray* tensors,
-                                               vtkMultiProcessController* controller, std::size_t* skipped) {
+vtkSmartPointer<vtkPolyData> prepareGlyphInput(std::span<const Piece> pieces, bool composite,
+                                               vtkMultiProcessController* controller, LoadReport* reportOut) {
   io::TensorField f;
-  const std::string problem = readPiece(input, tensors, f);
-  if (skipped) *skipped = f.skippedNonFinite + f.skippedOverflow;
+  LoadReport report;
+  std::string problem;
+  std::vector<std::uint32_t> blocks;  // (first id, flat index)
+  std::uint64_t nextId = 0;
+  for (const Piece& piece : pieces) {
+    const vtkIdType n = piece.data ? piece.data->GetNumberOfPoints() : 0;
+    if (composite && n > 0 && !piece.tensors) {
+      ++report.piecesWithout;  // blocks without the array are not drawn, as ParaView's Tensor Glyph skips them
+      continue;
+    }
+    if (n > 0) ++report.piecesWithTensors;
+    std::string p = readPiece(piece, nextId, f, report);
+    if (!p.empty()) {
+      if (problem.empty()) problem = std::move(p);
+      continue;
+    }
+    if (composite && n > 0) {
+      blocks.push_back(std::uint32_t(nextId));
+      blocks.push_back(piece.flatIndex);
+    }
+    nextId += std::uint64_t(n);
+  }
+  report.skippedNonFinite = f.skippedNonFinite;
+  report.skippedOverflow = f.skippedOverflow;
   const std::size_t kept = f.size();
-  double spacing = gridSpacing(input);
+  double spacing = piecesGridSpacing(pieces);
   if (spacing <= 0.0) spacing = io::estimateSampleSpacing(f.positions);
   const tensor::GlyphSet glyphs = tensor::buildGlyphs(f.positions, f.tensors, f.ids);
   SizingInfo info;
@@ -147,7 +188,19 @@ vtkSmartPointer<vtkPolyData> prepareGlyphInput(vtkDataSet* input, vtkDataArray* 
     info.eigenMin = lowOut[2];
     info.mdMax = highOut[0];
     info.eigenMax = highOut[1];
+    // The load's warnings, said once for the whole dataset.
+    const double loadCounts[4] = {double(report.skippedNonFinite), double(report.skippedOverflow),
+                              double(report.piecesWithTensors), double(report.piecesWithout)};
+    double countsOut[4];
+    controller->AllReduce(loadCounts, countsOut, 4, vtkCommunicator::SUM_OP);
+    report.skippedNonFinite = std::size_t(countsOut[0]);
+    report.skippedOverflow = std::size_t(countsOut[1]);
+    report.piecesWithTensors = std::size_t(countsOut[2]);
+    report.piecesWithout = std::size_t(countsOut[3]);
+    double asym = report.maxAsymmetry;
+    controller->AllReduce(&asym, &report.maxAsymmetry, 1, vtkCommunicator::MAX_OP);
   }
+  if (reportOut) *reportOut = report;
 
   auto out = vtkSmartPointer<vtkPolyData>::New();
   auto points = vtkSmartPointer<vtkPoints>::New();
@@ -172,6 +225,13 @@ vtkSmartPointer<vtkPolyData> prepareGlyphInput(vtkDataSet* input, vtkDataArray* 
   const double scalars[6] = {info.sample.maxAbs, info.sample.spacing, info.mdMin, info.mdMax, info.eigenMin,
                              info.eigenMax};
   out->GetFieldData()->AddArray(doubles(kInfoArray, std::span<const double>(scalars)));
+  if (composite) {
+    auto table = vtkSmartPointer<vtkTypeUInt32Array>::New();
+    table->SetName(kBlockArray);
+    table->SetNumberOfTuples(vtkIdType(blocks.size()));
+    std::copy(blocks.begin(), blocks.end(), table->GetPointer(0));
+    out->GetFieldData()->AddArray(table);
+  }
   if (!problem.empty()) throw std::invalid_argument(problem);
   return out;
 }
@@ -202,6 +262,12 @@ SizingInfo sizingInfo(vtkPolyData* prepared) {
   info.eigenMin = s[4];
   info.eigenMax = s[5];
   return info;
+}
+
+std::vector<std::uint32_t> blockTable(vtkPolyData* prepared) {
+  auto* table = prepared ? vtkTypeUInt32Array::SafeDownCast(prepared->GetFieldData()->GetArray(kBlockArray)) : nullptr;
+  if (!table) return {};
+  return {table->GetPointer(0), table->GetPointer(0) + table->GetNumberOfTuples()};
 }
 
 vtkIdType largestId(vtkPolyData* prepared) {

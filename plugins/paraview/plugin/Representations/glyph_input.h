@@ -2,7 +2,9 @@
 // rank of a distributed run shares.
 #pragma once
 #include <cstddef>
+#include <cstdint>
 #include <span>
+#include <vector>
 
 #include <vtkSmartPointer.h>
 #include <vtkType.h>
@@ -19,9 +21,10 @@ namespace tg::paraview {
 
 // Names of what prepareGlyphInput writes.
 inline constexpr const char* kTensorArray = "tg_tensor6";  // xx xy xz yy yz zz, float
-inline constexpr const char* kIdArray = "tg_ids";          // the point's index in its input
+inline constexpr const char* kIdArray = "tg_ids";          // the glyph's id: see Piece
 inline constexpr const char* kSampleArray = "tg_scale_sample";  // sorted glyph magnitudes, all ranks
 inline constexpr const char* kInfoArray = "tg_scale_info";      // see SizingInfo
+inline constexpr const char* kBlockArray = "tg_blocks";  // composite input: (first id, flat index) per piece
 
 // What the mapper needs of the whole dataset, over all ranks: the inputs of
 // tensor::resolveScale, and the ranges the colour modes map.
@@ -30,26 +33,51 @@ struct SizingInfo {
   double mdMin = 0, mdMax = 0, eigenMin = 0, eigenMax = 0;
 };
 
-// The points of `input` whose tensor in `tensors` is finite (the CLI's
-// rules: io::TensorField::addFull/addSym), as float positions, tensors in
-// tensorglyph's order and ids; `tensors` holds 9 components (row-major 3x3,
-// symmetrised) or 6 in ParaView's order XX YY ZZ XY YZ XZ. The sizing sample
-// is merged over the ranks of `controller` (a collective call; null: this
-// process alone). Throws std::invalid_argument when `input` has points but
-// `tensors` is null, has another component count, or is not one tuple per
+// One dataset to glyph: a whole input (flatIndex 0), or one leaf block of a
+// composite input with its flat index (ParaView's composite id).
+struct Piece {
+  vtkDataSet* data = nullptr;
+  vtkDataArray* tensors = nullptr;  // null: the piece has none
+  unsigned flatIndex = 0;
+};
+
+// What a load left out or changed, over all ranks (sums and the maximum; a
+// point that two ranks share counts on each): the CLI's load warnings
+// (app::reportLoad), for the caller to report once.
+struct LoadReport {
+  std::size_t skippedNonFinite = 0;
+  std::size_t skippedOverflow = 0;
+  double maxAsymmetry = 0;          // io::asymmetry over the 9-component tensors
+  std::size_t piecesWithTensors = 0;
+  std::size_t piecesWithout = 0;    // pieces with points but no tensors (skipped)
+};
+
+// The points of the pieces whose tensor is finite (the CLI's rules:
+// io::TensorField::addFull/addSym), as float positions, tensors in
+// tensorglyph's order and ids; a piece's tensors hold 9 components (row-major
+// 3x3, symmetrised) or 6 in ParaView's order XX YY ZZ XY YZ XZ. A glyph's id
+// is its point id when `composite` is false (one piece); otherwise the pieces'
+// points are numbered on in order and kBlockArray maps an id back to (flat
+// index, point id); its pieces without tensors are skipped (counted in
+// LoadReport::piecesWithout). The sizing sample is merged over the ranks of
+// `controller` (a collective call; null: this process alone). Throws
+// std::invalid_argument when a single piece has points but no tensors, or
+// any piece's tensors have another component count or are not one tuple per
 // point; after the collective calls, so that no rank is left waiting.
-// `skipped` (when given) receives how many of this rank's points were left
-// out for NaN/Inf or values beyond single precision, for the caller to report.
-vtkSmartPointer<vtkPolyData> prepareGlyphInput(vtkDataSet* input, vtkDataArray* tensors,
+vtkSmartPointer<vtkPolyData> prepareGlyphInput(std::span<const Piece> pieces, bool composite,
                                                vtkMultiProcessController* controller,
-                                               std::size_t* skipped = nullptr);
+                                               LoadReport* report = nullptr);
+
+// The composite table of a prepared input: (first id, flat index) pairs in
+// ascending id order; empty for a single dataset.
+std::vector<std::uint32_t> blockTable(vtkPolyData* prepared);
 
 // The glyphs of a prepared input (null or empty: none), and what
 // prepareGlyphInput stored of the whole dataset.
 tensor::GlyphSet buildGlyphSet(vtkPolyData* prepared);
 SizingInfo sizingInfo(vtkPolyData* prepared);
 
-// The largest input point id among the prepared points; -1 when none.
+// The largest glyph id among the prepared points; -1 when none.
 vtkIdType largestId(vtkPolyData* prepared);
 
 // The points' bounds grown by the reach of the largest glyph of the whole

@@ -131,6 +131,8 @@ void HostComposite::draw(const render::Camera& cam, const render::GBuffer& targe
   render::setCameraUniforms(program_, cam);
   program_.set("uOutput", int(out.kind));
   program_.set("uSelectColor", out.constant);
+  program_.set("uBlockCount", out.blocks ? out.blockCount : 0);
+  if (out.blocks) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, out.blocks);
   program_.set("uOriginDC", glm::vec2(float(originX), float(originY)));
   program_.set("uHostZRow", glm::vec4(float(hostProjVCCC[8]), float(hostProjVCCC[9]), float(hostProjVCCC[10]),
                                       float(hostProjVCCC[11])));

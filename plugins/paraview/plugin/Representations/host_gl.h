@@ -55,11 +55,15 @@ class HostState {
 // What the composite writes as colour (shaders/host_composite.frag): the lit
 // glyphs, or what one of the host's selection passes reads back: a constant
 // colour (prop, composite or process id), or each glyph's input point id
-// split into its low 24 bits (RGB bytes) and its bits 24..31 (red).
+// split into its low 24 bits (RGB bytes) and its bits 24..31 (red), or its
+// block's flat index (composite inputs). `blocks` (a buffer of `blockCount`
+// (first id, flat index) pairs; none: one dataset) maps glyph ids to blocks.
 struct CompositeOutput {
-  enum class Kind { Lit = 0, Constant = 1, IdLow24 = 2, IdHigh8 = 3 };
+  enum class Kind { Lit = 0, Constant = 1, IdLow24 = 2, IdHigh8 = 3, CompositeIndex = 4 };
   Kind kind = Kind::Lit;
   glm::vec3 constant{0.0f};
+  GLuint blocks = 0;
+  int blockCount = 0;
 };
 
 // Draws the glyphs of `target` into the bound host framebuffer: colour as

@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cmath>
 #include <optional>
+#include <vector>
 
 #include <vtkCamera.h>
 #include <vtkDataObject.h>
@@ -34,6 +35,13 @@ struct GLState {
   std::unique_ptr<render::GBuffer> target;
   std::unique_ptr<paraview::HostComposite> composite;
   vtkMTimeType uploaded = 0;  // input time of the records on the GPU
+  GLuint blocks = 0;          // the composite input's block table (blockTable), or none
+  ~GLState() {
+    if (blocks) host.api.DeleteBuffers(1, &blocks);
+  }
+  GLState() = default;
+  GLState(const GLState&) = delete;
+  GLState& operator=(const GLState&) = delete;
 };
 
 }  // namespace
@@ -45,7 +53,8 @@ struct vtkTensorGlyphRayCastMapper::Internals {
   glm::dvec3 centresLo{0.0}, centresHi{0.0};
   double maxAbsEigenvalue = 0;
   std::size_t count = 0;
-  vtkIdType maxId = -1;  // the largest input point id among the glyphs
+  vtkIdType maxId = -1;  // the largest glyph id
+  std::vector<std::uint32_t> blocks;  // composite input: (first id, flat index) pairs
   vtkMTimeType built = 0;  // input time of `glyphs`
   vtkPolyData* builtFrom = nullptr;
 
@@ -69,6 +78,7 @@ struct vtkTensorGlyphRayCastMapper::Internals {
     maxAbsEigenvalue = glyphs.maxAbsEigenvalue;
     count = glyphs.glyphs.size();
     maxId = paraview::largestId(input);
+    blocks = paraview::blockTable(input);
     builtFrom = input;
     built = t;
     return true;
@@ -131,7 +141,7 @@ tensor::ResolvedScale resolve(vtkTensorGlyphRayCastMapper& m, const paraview::Si
 // do; says what the composite writes in this pass.
 class SelectionPass {
  public:
-  SelectionPass(vtkHardwareSelector* sel, vtkIdType maxId) : sel_(sel) {
+  SelectionPass(vtkHardwareSelector* sel, vtkIdType maxId, bool composite) : sel_(sel) {
     if (!sel_) return;
     sel_->BeginRenderProp();
     const int pass = sel_->GetCurrentPass();
@@ -146,7 +156,9 @@ class SelectionPass {
       // selected themselves.
       return;
     }
-    if (pass == vtkHardwareSelector::POINT_ID_LOW24) {
+    if (pass == vtkHardwareSelector::COMPOSITE_INDEX_PASS && composite) {
+      out_.kind = Kind::CompositeIndex;  // each glyph's block (host_composite.frag)
+    } else if (pass == vtkHardwareSelector::POINT_ID_LOW24) {
       out_.kind = Kind::IdLow24;
     } else if (pass == vtkHardwareSelector::POINT_ID_HIGH24) {
       out_.kind = Kind::IdHigh8;
@@ -160,7 +172,7 @@ class SelectionPass {
   }
   SelectionPass(const SelectionPass&) = delete;
   SelectionPass& operator=(const SelectionPass&) = delete;
-  const paraview::CompositeOutput& output() const { return out_; }
+  paraview::CompositeOutput& output() { return out_; }
 
  private:
   vtkHardwareSelector* sel_;
@@ -196,7 +208,7 @@ void vtkTensorGlyphRayCastMapper::Render(vtkRenderer* ren, vtkActor*) {
   double ms = 0;
   if (in.refresh(input, ms)) this->LastBuildMilliseconds = ms;
   if (in.count == 0) return;
-  const SelectionPass selection(ren->GetSelector(), in.maxId);
+  SelectionPass selection(ren->GetSelector(), in.maxId, !in.blocks.empty());
   try {
     if (!in.gl) {
       in.gl.emplace();
@@ -212,7 +224,16 @@ void vtkTensorGlyphRayCastMapper::Render(vtkRenderer* ren, vtkActor*) {
       g.renderer->upload(in.glyphs);
       g.uploaded = in.built;
       in.glyphs.glyphs = {};  // on the GPU now
+      if (g.blocks) g.host.api.DeleteBuffers(1, &g.blocks);
+      g.blocks = 0;
+      if (!in.blocks.empty()) {
+        g.host.api.CreateBuffers(1, &g.blocks);
+        g.host.api.NamedBufferStorage(g.blocks, GLsizeiptr(in.blocks.size() * sizeof(std::uint32_t)),
+                                      in.blocks.data(), 0);
+      }
     }
+    selection.output().blocks = g.blocks;
+    selection.output().blockCount = int(in.blocks.size() / 2);
     int width = 0, height = 0, x0 = 0, y0 = 0;
     ren->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
     if (width <= 0 || height <= 0) return;

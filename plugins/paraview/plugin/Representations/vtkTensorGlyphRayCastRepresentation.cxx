@@ -1,9 +1,12 @@
 #include "vtkTensorGlyphRayCastRepresentation.h"
 
 #include <exception>
+#include <string>
+#include <vector>
 
 #include <vtkActor.h>
 #include <vtkAlgorithmOutput.h>
+#include <vtkCompositeDataIterator.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkDataSet.h>
 #include <vtkInformation.h>
@@ -18,6 +21,7 @@
 
 #include "color_legend.h"
 #include "glyph_input.h"
+#include "io/tensor_field.h"
 #include "vtkTensorGlyphRayCastMapper.h"
 
 vtkStandardNewMacro(vtkTensorGlyphRayCastRepresentation);
@@ -34,35 +38,62 @@ vtkTensorGlyphRayCastMapper* vtkTensorGlyphRayCastRepresentation::GetMapper() { 
 
 int vtkTensorGlyphRayCastRepresentation::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkDataSet");
-  // Accepted so that RequestData can say what to do: refused by the
-  // pipeline, a multiblock input drew nothing with an error about ports.
+  // Every leaf block is drawn (RequestData).
   info->Append(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkCompositeDataSet");
   info->Set(vtkAlgorithm::INPUT_IS_OPTIONAL(), 1);
   return 1;
 }
 
+namespace {
+
+// The CLI's load warnings (app::reportLoad), in its words, with the array in
+// place of the file. RequestData runs once per update, not once per render.
+void reportLoad(vtkObject* self, const tg::paraview::LoadReport& report,
+                const std::vector<tg::paraview::Piece>& pieces) {
+  std::string name;
+  for (const auto& piece : pieces)
+    if (piece.tensors && piece.tensors->GetName()) name = piece.tensors->GetName();
+  const std::string array = "prepareGlyphInput: array '" + name + "': ";
+  if (const std::string w = tg::io::asymmetryWarning("9-component tensors", report.maxAsymmetry); !w.empty())
+    vtkWarningWithObjectMacro(self, << array << w);
+  if (report.skippedNonFinite)
+    vtkWarningWithObjectMacro(self, << array << "skipped " << report.skippedNonFinite << " tensors with NaN/Inf components");
+  if (report.skippedOverflow)
+    vtkWarningWithObjectMacro(self, << array << "skipped " << report.skippedOverflow
+                    << " tensors whose values overflow single precision (beyond 3.4e38)");
+  if (report.piecesWithTensors == 0 && report.piecesWithout > 0)
+    vtkErrorWithObjectMacro(self, << "prepareGlyphInput: none of the " << report.piecesWithout
+                  << " blocks with points has a point array of tensors (9 or 6 components)");
+}
+
+}  // namespace
+
 int vtkTensorGlyphRayCastRepresentation::RequestData(
   vtkInformation* request, vtkInformationVector** inputVector, vtkInformationVector* outputVector) {
   this->Prepared->Initialize();
-  vtkDataSet* input =
-    inputVector[0]->GetNumberOfInformationObjects() == 1 ? vtkDataSet::GetData(inputVector[0], 0) : nullptr;
-  vtkDataArray* tensors = input ? this->GetInputArrayToProcess(0, input) : nullptr;
-  if (!input && vtkCompositeDataSet::GetData(inputVector[0], 0)) {
-    // One id per point of one dataset (picking, the spreadsheet): blocks
-    // would need a block index as well.
-    vtkErrorMacro(<< "RequestData: a composite (multiblock) dataset; apply Merge Blocks and show its output");
-    return this->Superclass::RequestData(request, inputVector, outputVector);
+  const bool one = inputVector[0]->GetNumberOfInformationObjects() == 1;
+  vtkDataSet* input = one ? vtkDataSet::GetData(inputVector[0], 0) : nullptr;
+  vtkCompositeDataSet* blocks = one && !input ? vtkCompositeDataSet::GetData(inputVector[0], 0) : nullptr;
+  // Every leaf block, each with its own tensor array (the same name or
+  // attribute), as ParaView's Tensor Glyph draws a composite input.
+  std::vector<tg::paraview::Piece> pieces;
+  if (blocks) {
+    vtkSmartPointer<vtkCompositeDataIterator> it;
+    it.TakeReference(blocks->NewIterator());
+    it->SkipEmptyNodesOn();
+    for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
+      if (auto* leaf = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
+        pieces.push_back({leaf, this->GetInputArrayToProcess(0, leaf), it->GetCurrentFlatIndex()});
+  } else {
+    pieces.push_back({input, input ? this->GetInputArrayToProcess(0, input) : nullptr, 0});
   }
+  auto* controller = vtkMultiProcessController::GetGlobalController();
   try {
     // Collective over the ranks: every rank runs this, with or without points.
-    std::size_t skipped = 0;
-    this->Prepared->ShallowCopy(tg::paraview::prepareGlyphInput(
-      input, tensors, vtkMultiProcessController::GetGlobalController(), &skipped));
-    // As the CLI says it: points left out are not drawn without a word.
-    if (skipped > 0)
-      vtkWarningMacro(<< "prepareGlyphInput: array '" << (tensors && tensors->GetName() ? tensors->GetName() : "")
-                      << "': skipped " << skipped
-                      << " points whose tensors have NaN/Inf components or overflow single precision");
+    tg::paraview::LoadReport report;
+    this->Prepared->ShallowCopy(tg::paraview::prepareGlyphInput(pieces, blocks != nullptr, controller, &report));
+    // The counts are the whole dataset's: said once, by the first rank.
+    if (!controller || controller->GetLocalProcessId() == 0) reportLoad(this, report, pieces);
   } catch (const std::exception& e) {
     vtkErrorMacro(<< e.what());
     this->Prepared->Initialize();
