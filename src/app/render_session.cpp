@@ -13,6 +13,7 @@
 #include "app/names.h"
 #include "app/slice_flags.h"
 #include "render/legend_pass.h"
+#include "render/legend_room.h"
 
 namespace tg::app {
 
@@ -26,7 +27,10 @@ RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io
   buildMs_ = msSince(t0);
   if (progress) progress("preparing", 0, 0, {});
   magnitudes_ = tensor::sampleMagnitudes(glyphs_, scene_.field.sampleSpacing);
-  const Boxes first = boxes(tensor::resolveScale(o.field.scaleParams(), magnitudes_));
+  const tensor::ResolvedScale firstScale = tensor::resolveScale(o.field.scaleParams(), magnitudes_);
+  const Boxes first = boxes(firstScale);
+  // The records go after the upload: a legend shown now needs its cells first.
+  if (!keepGlyphs && frameParams(o, scene_, firstScale).legend.enabled) cells();
   std::optional<render::UnderlayVolume> underlay;
   if (o.slices.any()) {
     underlay = loadUnderlay(o.slices, scene_.field, command_);
@@ -87,6 +91,15 @@ RenderSession::Boxes RenderSession::boxes(const tensor::ResolvedScale& sized) co
   return b;
 }
 
+const std::vector<render::GlyphCell>& RenderSession::cells() const {
+  if (!cells_) {
+    if (glyphs_.glyphs.empty() && glyphCount_ > 0)
+      throw std::logic_error("RenderSession::frame: a legend's room needs the glyph records, which were dropped");
+    cells_ = render::glyphCells(glyphs_);
+  }
+  return *cells_;
+}
+
 RenderSession::Frame RenderSession::frame(const RenderOptions& o) const {
   Frame f;
   f.sized = tensor::resolveScale(o.field.scaleParams(), magnitudes_);
@@ -105,7 +118,18 @@ RenderSession::Frame RenderSession::frame(const RenderOptions& o) const {
                          ": the glyphs extend beyond the floating-point range (scale " + std::to_string(params.scale) +
                          ")");
   f.framing = b.framing;
-  f.camera = render::makeCamera(chooseCamera(o, scene_, f.framing), o.width, o.height, lo, hi);
+  render::CameraDesc desc = chooseCamera(o, scene_, f.framing);
+  // A camera the data chose leaves the legend room; one the user gave (an
+  // eye, an ortho height) is kept as given.
+  if (params.legend.enabled && !o.eye && !o.ortho) {
+    const render::LegendInputs in{params.color,          params.scale,          float(glyphs_.mdMin),
+                                  float(glyphs_.mdMax),  glyphs_.eigenvalueMin, glyphs_.eigenvalueMax,
+                                  params.sizing,         renderer_->legendKeys()};
+    desc = render::frameBesideLegend(desc, o.width, o.height, lo, hi,
+                                     render::drawnCellBoxes(cells(), params.faMin, params.scale, params.sizing),
+                                     params.legend, in);
+  }
+  f.camera = render::makeCamera(desc, o.width, o.height, lo, hi);
   return f;
 }
 

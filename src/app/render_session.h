@@ -18,6 +18,7 @@
 #include "io/mesh_reader.h"
 #include "render/frame_image.h"
 #include "render/gbuffer.h"
+#include "render/legend_room.h"
 #include "render/renderer.h"
 #include "tensor/glyph.h"
 #include "util/progress.h"
@@ -69,6 +70,9 @@ class RenderSession {
     tensor::FramingBox framing;
   };
   Boxes boxes(const tensor::ResolvedScale& sized) const;
+  // Where the glyphs lie, for the legend's room: made from the records on
+  // first need, so a session that never shows a legend never pays for it.
+  const std::vector<render::GlyphCell>& cells() const;
 
   Scene scene_;
   tensor::GlyphSet glyphs_;  // the records, kept only with keepGlyphs
@@ -76,7 +80,8 @@ class RenderSession {
   std::size_t glyphCount_ = 0;
   glm::dvec3 underlayLoWC_{INFINITY}, underlayHiWC_{-INFINITY};
   glm::dvec3 meshLoWC_{INFINITY}, meshHiWC_{-INFINITY};
-  mutable std::optional<Boxes> last_;  // for the last scale asked; all that is left once the records go
+  mutable std::optional<Boxes> last_;
+  mutable std::optional<std::vector<render::GlyphCell>> cells_;  // for the last scale asked; all that is left once the records go
   std::unique_ptr<gl::Context> ctx_;
   std::unique_ptr<gl::ShaderLibrary> lib_;
   std::unique_ptr<render::GlyphRenderer> renderer_;
