@@ -17,6 +17,20 @@
 
 namespace tg::app {
 
+bool leavesLegendRoom(const RenderOptions& o, const render::FrameParams& p) {
+  return p.legend.enabled && !o.eye && !o.ortho;
+}
+
+render::CameraDesc withLegendRoom(const RenderOptions& o, const render::FrameParams& p, const render::CameraDesc& desc,
+                                  const std::vector<render::GlyphCell>& cells, const tensor::GlyphSet& set,
+                                  const render::GlyphRenderer& r, const glm::dvec3& lo, const glm::dvec3& hi) {
+  // What the legend pass will be given (GlyphRenderer::render): its panel's size.
+  const render::LegendInputs in{p.color,        p.scale,           float(set.mdMin), float(set.mdMax),
+                                set.eigenvalueMin, set.eigenvalueMax, p.sizing,         r.legendKeys()};
+  return render::frameBesideLegend(desc, o.width, o.height, lo, hi,
+                                   render::drawnCellBoxes(cells, p.faMin, p.scale, p.sizing), p.legend, in);
+}
+
 RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io::MeshData> meshes, bool keepGlyphs,
                              const char* command, const std::function<void(io::TensorField&)>& beforeUpload,
                              const util::ProgressSink& progress)
@@ -30,7 +44,7 @@ RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io
   const tensor::ResolvedScale firstScale = tensor::resolveScale(o.field.scaleParams(), magnitudes_);
   const Boxes first = boxes(firstScale);
   // The records go after the upload: a legend shown now needs its cells first.
-  if (!keepGlyphs && frameParams(o, scene_, firstScale).legend.enabled) cells();
+  if (!keepGlyphs && leavesLegendRoom(o, frameParams(o, scene_, firstScale))) cells();
   std::optional<render::UnderlayVolume> underlay;
   if (o.slices.any()) {
     underlay = loadUnderlay(o.slices, scene_.field, command_);
@@ -119,16 +133,7 @@ RenderSession::Frame RenderSession::frame(const RenderOptions& o) const {
                          ")");
   f.framing = b.framing;
   render::CameraDesc desc = chooseCamera(o, scene_, f.framing);
-  // A camera the data chose leaves the legend room; one the user gave (an
-  // eye, an ortho height) is kept as given.
-  if (params.legend.enabled && !o.eye && !o.ortho) {
-    const render::LegendInputs in{params.color,          params.scale,          float(glyphs_.mdMin),
-                                  float(glyphs_.mdMax),  glyphs_.eigenvalueMin, glyphs_.eigenvalueMax,
-                                  params.sizing,         renderer_->legendKeys()};
-    desc = render::frameBesideLegend(desc, o.width, o.height, lo, hi,
-                                     render::drawnCellBoxes(cells(), params.faMin, params.scale, params.sizing),
-                                     params.legend, in);
-  }
+  if (leavesLegendRoom(o, params)) desc = withLegendRoom(o, params, desc, cells(), glyphs_, *renderer_, lo, hi);
   f.camera = render::makeCamera(desc, o.width, o.height, lo, hi);
   return f;
 }

@@ -25,6 +25,17 @@
 
 namespace tg::app {
 
+// Whether a frame's camera leaves the legend room: a legend is shown and
+// the camera was chosen (no --eye, no --ortho, which are kept as given).
+bool leavesLegendRoom(const RenderOptions& o, const render::FrameParams& p);
+// `desc` moved so that the legend's panel covers none of the glyphs
+// (render/legend_room.h): `cells` of `set` (whose statistics the legend
+// shows), the underlays' keys from `r`, and the scene box [lo, hi] for depth.
+// render, Python (RenderSession::frame) and view call it alike.
+render::CameraDesc withLegendRoom(const RenderOptions& o, const render::FrameParams& p, const render::CameraDesc& desc,
+                                  const std::vector<render::GlyphCell>& cells, const tensor::GlyphSet& set,
+                                  const render::GlyphRenderer& r, const glm::dvec3& lo, const glm::dvec3& hi);
+
 class RenderSession {
  public:
   // Builds the glyphs from `scene` (checkDrawable), reads the underlay and
