@@ -133,7 +133,21 @@ RenderSession::Frame RenderSession::frame(const RenderOptions& o) const {
                          ")");
   f.framing = b.framing;
   render::CameraDesc desc = chooseCamera(o, scene_, f.framing);
-  if (leavesLegendRoom(o, params)) desc = withLegendRoom(o, params, desc, cells(), glyphs_, *renderer_, lo, hi);
+  if (leavesLegendRoom(o, params)) {
+    const auto same = [&](const Room& r) {
+      const render::CameraDesc& a = r.chosen;
+      const render::FrameParams& q = r.params;
+      return a.eyeWC == desc.eyeWC && a.lookAtWC == desc.lookAtWC && a.upWC == desc.upWC &&
+             a.projection == desc.projection && a.fovYDeg == desc.fovYDeg && a.orthoHeight == desc.orthoHeight &&
+             r.width == o.width && r.height == o.height && q.legend == params.legend && q.color == params.color &&
+             q.scale == params.scale && q.sizing == params.sizing && q.faMin == params.faMin &&
+             r.keys == renderer_->legendKeys();
+    };
+    if (!room_ || !same(*room_))
+      room_ = Room{desc, withLegendRoom(o, params, desc, cells(), glyphs_, *renderer_, lo, hi), o.width, o.height,
+                   params, renderer_->legendKeys()};
+    desc = room_->moved;
+  }
   f.camera = render::makeCamera(desc, o.width, o.height, lo, hi);
   return f;
 }

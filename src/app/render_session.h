@@ -91,8 +91,17 @@ class RenderSession {
   std::size_t glyphCount_ = 0;
   glm::dvec3 underlayLoWC_{INFINITY}, underlayHiWC_{-INFINITY};
   glm::dvec3 meshLoWC_{INFINITY}, meshHiWC_{-INFINITY};
-  mutable std::optional<Boxes> last_;
-  mutable std::optional<std::vector<render::GlyphCell>> cells_;  // for the last scale asked; all that is left once the records go
+  mutable std::optional<Boxes> last_;  // for the last scale asked; all that is left once the records go
+  mutable std::optional<std::vector<render::GlyphCell>> cells_;
+  // The last room left for the legend and what it was worked out from: a
+  // redraw that changes none of it (gamma, lighting, effects) reuses it.
+  struct Room {
+    render::CameraDesc chosen, moved;
+    int width = 0, height = 0;
+    render::FrameParams params;  // only the fields withLegendRoom reads are compared
+    std::vector<render::UnderlayKey> keys;
+  };
+  mutable std::optional<Room> room_;
   std::unique_ptr<gl::Context> ctx_;
   std::unique_ptr<gl::ShaderLibrary> lib_;
   std::unique_ptr<render::GlyphRenderer> renderer_;
