@@ -32,6 +32,7 @@
 #include "app/output_check.h"
 #include "app/pick.h"
 #include "app/pick_json.h"
+#include "app/render_session.h"
 #include "app/scene.h"
 #include "app/view_panel.h"
 #include "app/view_script.h"
@@ -165,6 +166,11 @@ int cmdView(int argc, const char** argv) {
   // Moving or hiding a plane later changes its quad only: the volume stays on the GPU.
   std::vector<render::SlicePlane*> planes;
   if (underlay) planes = addSlicePlanes(renderer, api, lib, o.slices, std::move(*underlay), glyphs.maxAbsEigenvalue);
+  // As render: a legend shown from the start gets room (the underlays' keys included).
+  if (leavesLegendRoom(o, p)) {
+    const auto [lo, hi] = tensor::glyphBoxWC(glyphs, p.scale, p.sizing);
+    v.camera = OrbitCamera(withLegendRoom(o, p, v.camera.desc(), render::glyphCells(glyphs), glyphs, renderer, lo, hi));
+  }
   std::vector<PlaneView> appliedPlanes = v.planes;
   const std::size_t firstMesh = renderer.context().size();
   addMeshes(renderer, api, lib, meshes, o.mesh.params);

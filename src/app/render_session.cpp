@@ -13,8 +13,23 @@
 #include "app/names.h"
 #include "app/slice_flags.h"
 #include "render/legend_pass.h"
+#include "render/legend_room.h"
 
 namespace tg::app {
+
+bool leavesLegendRoom(const RenderOptions& o, const render::FrameParams& p) {
+  return p.legend.enabled && !o.eye && !o.ortho;
+}
+
+render::CameraDesc withLegendRoom(const RenderOptions& o, const render::FrameParams& p, const render::CameraDesc& desc,
+                                  const std::vector<render::GlyphCell>& cells, const tensor::GlyphSet& set,
+                                  const render::GlyphRenderer& r, const glm::dvec3& lo, const glm::dvec3& hi) {
+  // What the legend pass will be given (GlyphRenderer::render): its panel's size.
+  const render::LegendInputs in{p.color,        p.scale,           float(set.mdMin), float(set.mdMax),
+                                set.eigenvalueMin, set.eigenvalueMax, p.sizing,         r.legendKeys()};
+  return render::frameBesideLegend(desc, o.width, o.height, lo, hi,
+                                   render::drawnCellBoxes(cells, p.faMin, p.scale, p.sizing), p.legend, in);
+}
 
 RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io::MeshData> meshes, bool keepGlyphs,
                              const char* command, const std::function<void(io::TensorField&)>& beforeUpload,
@@ -26,7 +41,10 @@ RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io
   buildMs_ = msSince(t0);
   if (progress) progress("preparing", 0, 0, {});
   magnitudes_ = tensor::sampleMagnitudes(glyphs_, scene_.field.sampleSpacing);
-  const Boxes first = boxes(tensor::resolveScale(o.field.scaleParams(), magnitudes_));
+  const tensor::ResolvedScale firstScale = tensor::resolveScale(o.field.scaleParams(), magnitudes_);
+  const Boxes first = boxes(firstScale);
+  // The records go after the upload: a legend shown now needs its cells first.
+  if (!keepGlyphs && leavesLegendRoom(o, frameParams(o, scene_, firstScale))) cells();
   std::optional<render::UnderlayVolume> underlay;
   if (o.slices.any()) {
     underlay = loadUnderlay(o.slices, scene_.field, command_);
@@ -87,6 +105,15 @@ RenderSession::Boxes RenderSession::boxes(const tensor::ResolvedScale& sized) co
   return b;
 }
 
+const std::vector<render::GlyphCell>& RenderSession::cells() const {
+  if (!cells_) {
+    if (glyphs_.glyphs.empty() && glyphCount_ > 0)
+      throw std::logic_error("RenderSession::frame: a legend's room needs the glyph records, which were dropped");
+    cells_ = render::glyphCells(glyphs_);
+  }
+  return *cells_;
+}
+
 RenderSession::Frame RenderSession::frame(const RenderOptions& o) const {
   Frame f;
   f.sized = tensor::resolveScale(o.field.scaleParams(), magnitudes_);
@@ -105,7 +132,23 @@ RenderSession::Frame RenderSession::frame(const RenderOptions& o) const {
                          ": the glyphs extend beyond the floating-point range (scale " + std::to_string(params.scale) +
                          ")");
   f.framing = b.framing;
-  f.camera = render::makeCamera(chooseCamera(o, scene_, f.framing), o.width, o.height, lo, hi);
+  render::CameraDesc desc = chooseCamera(o, scene_, f.framing);
+  if (leavesLegendRoom(o, params)) {
+    const auto same = [&](const Room& r) {
+      const render::CameraDesc& a = r.chosen;
+      const render::FrameParams& q = r.params;
+      return a.eyeWC == desc.eyeWC && a.lookAtWC == desc.lookAtWC && a.upWC == desc.upWC &&
+             a.projection == desc.projection && a.fovYDeg == desc.fovYDeg && a.orthoHeight == desc.orthoHeight &&
+             r.width == o.width && r.height == o.height && q.legend == params.legend && q.color == params.color &&
+             q.scale == params.scale && q.sizing == params.sizing && q.faMin == params.faMin &&
+             r.keys == renderer_->legendKeys();
+    };
+    if (!room_ || !same(*room_))
+      room_ = Room{desc, withLegendRoom(o, params, desc, cells(), glyphs_, *renderer_, lo, hi), o.width, o.height,
+                   params, renderer_->legendKeys()};
+    desc = room_->moved;
+  }
+  f.camera = render::makeCamera(desc, o.width, o.height, lo, hi);
   return f;
 }
 

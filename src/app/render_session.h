@@ -18,11 +18,23 @@
 #include "io/mesh_reader.h"
 #include "render/frame_image.h"
 #include "render/gbuffer.h"
+#include "render/legend_room.h"
 #include "render/renderer.h"
 #include "tensor/glyph.h"
 #include "util/progress.h"
 
 namespace tg::app {
+
+// Whether a frame's camera leaves the legend room: a legend is shown and
+// the camera was chosen (no --eye, no --ortho, which are kept as given).
+bool leavesLegendRoom(const RenderOptions& o, const render::FrameParams& p);
+// `desc` moved so that the legend's panel covers none of the glyphs
+// (render/legend_room.h): `cells` of `set` (whose statistics the legend
+// shows), the underlays' keys from `r`, and the scene box [lo, hi] for depth.
+// render, Python (RenderSession::frame) and view call it alike.
+render::CameraDesc withLegendRoom(const RenderOptions& o, const render::FrameParams& p, const render::CameraDesc& desc,
+                                  const std::vector<render::GlyphCell>& cells, const tensor::GlyphSet& set,
+                                  const render::GlyphRenderer& r, const glm::dvec3& lo, const glm::dvec3& hi);
 
 class RenderSession {
  public:
@@ -69,6 +81,9 @@ class RenderSession {
     tensor::FramingBox framing;
   };
   Boxes boxes(const tensor::ResolvedScale& sized) const;
+  // Where the glyphs lie, for the legend's room: made from the records on
+  // first need, so a session that never shows a legend never pays for it.
+  const std::vector<render::GlyphCell>& cells() const;
 
   Scene scene_;
   tensor::GlyphSet glyphs_;  // the records, kept only with keepGlyphs
@@ -77,6 +92,16 @@ class RenderSession {
   glm::dvec3 underlayLoWC_{INFINITY}, underlayHiWC_{-INFINITY};
   glm::dvec3 meshLoWC_{INFINITY}, meshHiWC_{-INFINITY};
   mutable std::optional<Boxes> last_;  // for the last scale asked; all that is left once the records go
+  mutable std::optional<std::vector<render::GlyphCell>> cells_;
+  // The last room left for the legend and what it was worked out from: a
+  // redraw that changes none of it (gamma, lighting, effects) reuses it.
+  struct Room {
+    render::CameraDesc chosen, moved;
+    int width = 0, height = 0;
+    render::FrameParams params;  // only the fields withLegendRoom reads are compared
+    std::vector<render::UnderlayKey> keys;
+  };
+  mutable std::optional<Room> room_;
   std::unique_ptr<gl::Context> ctx_;
   std::unique_ptr<gl::ShaderLibrary> lib_;
   std::unique_ptr<render::GlyphRenderer> renderer_;

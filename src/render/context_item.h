@@ -13,6 +13,7 @@
 
 #include "render/camera.h"
 #include "render/gbuffer.h"
+#include "render/legend_key.h"
 
 namespace tg::render {
 
@@ -54,6 +55,8 @@ class ContextItem {
   virtual std::optional<glm::dvec3> trueSurface(const glm::dvec3& /*originWC*/, const glm::dvec3& /*dirWC*/) const {
     return std::nullopt;
   }
+  // The colour key the legend shows for the item (a slice plane's underlay), or nothing.
+  virtual std::optional<UnderlayKey> legendKey() const { return std::nullopt; }
   // GPU memory the item holds.
   virtual std::size_t gpuBytes() const = 0;
 

@@ -139,7 +139,20 @@ const char* colorTitle(ColorMode m) {
     case ColorMode::Sign: return "sign of normal stress";
     case ColorMode::DEC: break;
   }
-  return "DEC: principal direction";
+  return "DEC: principal eigenvector e1";
+}
+
+// The values at a bar's ends, and its middle where that clears both ends by a character.
+void tickLabels(Builder& b, const LegendFont& font, glm::dvec2 values, float barLen) {
+  const float y = b.y();
+  const double lo = values[0], hi = values[1];
+  const LegendRect left = b.text(number(lo), 0, y, 0);
+  const LegendRect right = b.text(number(hi), barLen, y, 1);
+  const std::string mid = number(0.5 * (lo + hi));
+  const float half = 0.5f * font.textSize(mid).x, gap = font.textSize(" ").x;
+  if (left.x1 + gap <= 0.5f * barLen - half && 0.5f * barLen + half + gap <= right.x0)
+    b.text(mid, 0.5f * barLen, y, 0.5f);
+  b.skip(font.lineHeight());
 }
 
 void colorBar(Builder& b, LegendLayout& out, const LegendParams& p, const LegendInputs& in, const LegendFont& font,
@@ -172,15 +185,7 @@ void colorBar(Builder& b, LegendLayout& out, const LegendParams& p, const Legend
     b.text(number(in.mdMin), 0.5f * barLen, y, 0.5f);
     b.skip(font.lineHeight());
   } else {
-    const double lo = out.barValues[0], hi = out.barValues[1];
-    const LegendRect left = b.text(number(lo), 0, y, 0);
-    const LegendRect right = b.text(number(hi), barLen, y, 1);
-    // The middle value only where it clears both ends by a character.
-    const std::string mid = number(0.5 * (lo + hi));
-    const float half = 0.5f * font.textSize(mid).x, gap = font.textSize(" ").x;
-    if (left.x1 + gap <= 0.5f * barLen - half && 0.5f * barLen + half + gap <= right.x0)
-      b.text(mid, 0.5f * barLen, y, 0.5f);
-    b.skip(font.lineHeight());
+    tickLabels(b, font, out.barValues, barLen);
   }
 }
 
@@ -213,7 +218,36 @@ void decKey(Builder& b, LegendLayout& out, const LegendFont& font, const Camera&
     b.text(std::string(1, m.axis), std::round(at.x), std::round(at.y - 0.5f * f), 0.5f);
   }
   b.skip(d + 2 * margin);
-  b.line("|e1| as RGB, FA 1");
+  // What decColor (shaders/lib/color.glsl) does: |e1| mixed with white by
+  // 1 - FA. The sphere shows FA 1.
+  b.line("RGB = |x|,|y|,|z| of e1");
+  b.line("paler as FA falls: white at 0");
+}
+
+// A file underlay by its file name alone: a long path would widen the panel.
+std::string underlayTitle(const UnderlayKey& key) {
+  std::string name = key.name;
+  if (const std::size_t slash = name.find_last_of('/'); slash != std::string::npos && slash + 1 < name.size())
+    name = name.substr(slash + 1);
+  constexpr std::size_t kMax = 28;
+  if (name.size() > kMax) name = name.substr(0, kMax / 2 - 1) + "..." + name.substr(name.size() - (kMax / 2 - 2));
+  return "underlay: " + name;
+}
+
+// The plane's colormap over its window, as slice_plane.frag maps values.
+void underlayBar(Builder& b, LegendLayout& out, const UnderlayKey& key, const LegendFont& font, float barLen) {
+  const float k = b.k();
+  b.line(underlayTitle(key));
+  b.skip(4 * k);
+  LegendSwatch s;
+  s.kind = key.colormap == Colormap::Viridis ? SwatchKind::Viridis : SwatchKind::Gray;
+  s.rect = {0, b.y(), barLen, b.y() + 12 * k};
+  out.swatches.push_back(s);
+  out.underlayBars.push_back(s.rect);
+  out.underlayValues.emplace_back(key.lo, key.hi);
+  b.widen(barLen);
+  b.skip(s.rect.height() + 5 * k);
+  tickLabels(b, font, out.underlayValues.back(), barLen);
 }
 
 // What the bar's length means for the glyphs, under the magnitude mapping
@@ -271,8 +305,12 @@ LegendLayout layoutLegend(const LegendParams& p, const LegendInputs& in, const C
     if (in.color == ColorMode::DEC) decKey(b, out, font, cam, barLen);
     else colorBar(b, out, p, in, font, barLen);
   }
+  for (const UnderlayKey& key : in.underlays) {
+    if (b.y() > 0) b.skip(8 * k);
+    underlayBar(b, out, key, font, barLen);
+  }
   if (p.scaleBar) {
-    if (p.colorKey) b.skip(8 * k);
+    if (b.y() > 0) b.skip(8 * k);
     scaleBar(b, out, p, in, cam, barLen);
   }
   const float pad = 6 * k, margin = 8 * k;
@@ -290,6 +328,7 @@ LegendLayout layoutLegend(const LegendParams& p, const LegendInputs& in, const C
   offset(out.colorBar, dx, dy);
   offset(out.sphere, dx, dy);
   offset(out.scaleBar, dx, dy);
+  for (LegendRect& r : out.underlayBars) offset(r, dx, dy);
   out.swatches[0] = {SwatchKind::Fill, out.panel, 0, 1, glm::vec4(0.02f, 0.02f, 0.03f, 0.72f)};
   return out;
 }
@@ -308,6 +347,15 @@ void frame(ImDrawList& dl, const LegendRect& r, float t, ImU32 col) {
   dl.AddRectFilled(v(r.x0 - t, r.y1), v(r.x1 + t, r.y1 + t), col);
   dl.AddRectFilled(v(r.x0 - t, r.y0), v(r.x0, r.y1), col);
   dl.AddRectFilled(v(r.x1, r.y0), v(r.x1 + t, r.y1), col);
+}
+
+// A bar's frame and its tick marks at both ends and the middle.
+void bar(ImDrawList& dl, const LegendRect& r, float k) {
+  frame(dl, r, k, kText);
+  for (const float t : {0.0f, 0.5f, 1.0f}) {
+    const float x = std::clamp(std::round(r.x0 + t * r.width() - 0.5f * k), r.x0, r.x1 - k);
+    dl.AddRectFilled(v(x, r.y1 + k), v(x + k, r.y1 + 4 * k), kText);
+  }
 }
 
 }  // namespace
@@ -329,15 +377,8 @@ std::vector<LegendVertex> legendTriangles(const LegendLayout& layout, const Lege
   dl.PushClipRectFullScreen();
 
   const float k = float(layout.textScale);
-  if (layout.hasColorBar) {
-    const LegendRect& r = layout.colorBar;
-    frame(dl, r, k, kText);
-    for (const float t : {0.0f, 0.5f, 1.0f}) {
-      const float x = std::round(r.x0 + t * r.width() - 0.5f * k);
-      dl.AddRectFilled(v(std::clamp(x, r.x0, r.x1 - k), r.y1 + k), v(std::clamp(x, r.x0, r.x1 - k) + k, r.y1 + 4 * k),
-                       kText);
-    }
-  }
+  if (layout.hasColorBar) bar(dl, layout.colorBar, k);
+  for (const LegendRect& r : layout.underlayBars) bar(dl, r, k);
   if (layout.hasSphere) {
     const LegendRect& r = layout.sphere;
     dl.AddCircle(v(0.5f * (r.x0 + r.x1), 0.5f * (r.y0 + r.y1)), 0.5f * r.width() + 0.5f * k, kText, 0, k);

@@ -13,6 +13,7 @@
 #include <glm/vec4.hpp>
 
 #include "render/camera.h"
+#include "render/legend_key.h"
 #include "render/legend_params.h"
 #include "tensor/glyph_scale.h"
 
@@ -28,6 +29,7 @@ struct LegendInputs {
   float mdMin = 0, mdMax = 0;     // the uMdRange uniform
   double eigenMin = 0, eigenMax = 0;  // over the glyphs: the stress range for sign
   tensor::SizeMapping sizing{};       // FrameParams::sizing: magnitude mapping and clamp
+  std::vector<UnderlayKey> underlays{};  // the slice planes' underlays, as drawn (UploadedRanges)
 };
 
 struct LegendRect {
@@ -37,12 +39,12 @@ struct LegendRect {
 };
 
 // Areas the swatch shader fills: values shaders/legend_swatch.frag reads.
-enum class SwatchKind { Fill = 0, Viridis = 1, Sign = 2, DecSphere = 3 };
+enum class SwatchKind { Fill = 0, Viridis = 1, Sign = 2, DecSphere = 3, Gray = 4 };
 struct LegendSwatch {
   SwatchKind kind = SwatchKind::Fill;
   LegendRect rect;
   // Bars: the colour function's argument at the rect's left and right edges
-  // (viridis t in 0..1; sign's normalised normal stress in -1..1).
+  // (viridis and gray t in 0..1; sign's normalised normal stress in -1..1).
   float t0 = 0, t1 = 1;
   glm::vec4 fill{0.0f};  // Fill: straight (not premultiplied) RGBA
 };
@@ -78,6 +80,10 @@ struct LegendLayout {
   glm::dvec2 barValues{0.0, 1.0};
   ScaleBarChoice scale;
   std::vector<LegendAxisMark> axes;
+  // One bar per underlay key, in LegendInputs::underlays' order, and the
+  // values its left and right edges stand for (the window, as labelled).
+  std::vector<LegendRect> underlayBars;
+  std::vector<glm::dvec2> underlayValues;
 };
 
 // The largest 1, 2 or 5 x 10^k not above x; 0 for x <= 0 or not finite.
@@ -123,7 +129,7 @@ class LegendFont {
 };
 
 // Places the panel in its corner and fills it: title, colour bar or sphere,
-// tick labels, scale bar. The layout depends on the camera only through
+// tick labels, the underlays' bars, scale bar. The layout depends on the camera only through
 // the image size, the scale bar and the sphere's axes.
 LegendLayout layoutLegend(const LegendParams& p, const LegendInputs& in, const Camera& cam, const LegendFont& font);
 

@@ -30,7 +30,7 @@ class LegendPass final : public OverlayPass {
   // Draws into the framebuffer bound for lighting (GBuffer::beginLighting).
   void draw(const Camera& cam, const LegendParams& p, const LegendInputs& in);
   void draw(const Camera& cam, const FrameParams& p, const UploadedRanges& r) override {
-    draw(cam, p.legend, {p.color, p.scale, r.mdMin, r.mdMax, r.eigenMin, r.eigenMax, p.sizing});
+    draw(cam, p.legend, {p.color, p.scale, r.mdMin, r.mdMax, r.eigenMin, r.eigenMax, p.sizing, r.underlays});
   }
   const LegendLayout& layout() const { return layout_; }  // of the last draw
   std::size_t gpuBytes() const override;

@@ -209,6 +209,15 @@ ContextItem& GlyphRenderer::addContext(std::unique_ptr<ContextItem> item) {
   return *context_.back();
 }
 
+std::vector<UnderlayKey> GlyphRenderer::legendKeys() const {
+  std::vector<UnderlayKey> keys;
+  for (const auto& item : context_) {
+    const std::optional<UnderlayKey> key = item->visible() ? item->legendKey() : std::nullopt;
+    if (key && std::find(keys.begin(), keys.end(), *key) == keys.end()) keys.push_back(*key);
+  }
+  return keys;
+}
+
 ContextItem* GlyphRenderer::contextItem(std::uint32_t id) const {
   if (!isContextId(id) || id - kContextIdBase >= context_.size()) return nullptr;
   return context_[id - kContextIdBase].get();
@@ -416,7 +425,7 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   if (p.legend.enabled) {
     if (!makeLegend_) throw std::invalid_argument("GlyphRenderer::render: this program has no legend pass");
     if (!legend_) legend_ = makeLegend_(gl_, lib_);
-    legend_->draw(cam, p, {mdMin_, mdMax_, eigenMin_, eigenMax_});
+    legend_->draw(cam, p, {mdMin_, mdMax_, eigenMin_, eigenMax_, legendKeys()});
   } else {
     legend_.reset();
   }

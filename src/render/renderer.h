@@ -113,6 +113,7 @@ struct FrameParams {
 struct UploadedRanges {
   float mdMin = 0, mdMax = 0;         // the uMdRange uniform
   double eigenMin = 0, eigenMax = 0;  // signed, over the glyphs
+  std::vector<UnderlayKey> underlays{};  // of the visible context items, each once
 };
 
 // A pass drawn over the lit image, last before readback: the legend
@@ -188,6 +189,9 @@ class GlyphRenderer {
   ContextItem& addContext(std::unique_ptr<ContextItem> item);
   void clearContext() { context_.clear(); }
   std::span<const std::unique_ptr<ContextItem>> context() const { return context_; }
+  // The legend keys of the visible items, each once (the planes of one
+  // underlay share theirs): what the legend shows beside the glyphs' key.
+  std::vector<UnderlayKey> legendKeys() const;
   // The item an id-channel value names, or null for a glyph or nothing.
   ContextItem* contextItem(std::uint32_t id) const;
   // The deferred effects' passes, created on the first frame that enables

@@ -133,6 +133,11 @@ std::optional<glm::dvec3> SlicePlane::trueSurface(const glm::dvec3& originWC, co
   return originWC + t * dirWC;
 }
 
+std::optional<UnderlayKey> SlicePlane::legendKey() const {
+  const auto [lo, hi] = volume_->window(params_);
+  return UnderlayKey{volume_->volume().name, params_.colormap, lo, hi};
+}
+
 std::size_t SlicePlane::gpuBytes() const {
   return volume_->gpuBytes() / std::size_t(std::max<long>(volume_.use_count(), 1));
 }

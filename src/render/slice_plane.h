@@ -65,6 +65,8 @@ class SlicePlane : public ContextItem {
   std::pair<glm::dvec3, glm::dvec3> boundsWC() const override;
   std::optional<double> valueAt(const glm::dvec3& pointWC) const override;
   std::optional<glm::dvec3> trueSurface(const glm::dvec3& originWC, const glm::dvec3& dirWC) const override;
+  // The underlay's name, colormap and the window the plane is drawn with.
+  std::optional<UnderlayKey> legendKey() const override;
   // Its share of the volume's texture: the planes of one underlay add up to it.
   std::size_t gpuBytes() const override;
 

@@ -43,10 +43,11 @@ Box differing(const std::vector<unsigned char>& a, const std::vector<unsigned ch
 }  // namespace
 
 // --legend changes one corner of the frame, the one --legend-corner names.
+// The camera is given (--ortho): a chosen one would move to leave the legend room.
 TEST(LegendCli, LegendDrawsInTheCornerAsked) {
-  const auto plain = renderRgba("--color fa --no-legend", "plain.png");
-  const auto br = renderRgba("--color fa --legend", "br.png");
-  const auto tl = renderRgba("--color fa --legend --legend-corner top-left --units MPa", "tl.png");
+  const auto plain = renderRgba("--color fa --ortho 50 --no-legend", "plain.png");
+  const auto br = renderRgba("--color fa --ortho 50 --legend", "br.png");
+  const auto tl = renderRgba("--color fa --ortho 50 --legend --legend-corner top-left --units MPa", "tl.png");
   ASSERT_FALSE(plain.empty() || br.empty() || tl.empty());
   const Box a = differing(plain, br), b = differing(plain, tl);
   ASSERT_GE(a.x1, 0);

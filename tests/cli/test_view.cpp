@@ -100,6 +100,26 @@ TEST(View, ScriptedScreenshotsMatchTheHeadlessRenderer) {
   std::filesystem::remove_all(dir);
 }
 
+// With a legend and no camera flags, the viewer's first view leaves the
+// legend the room render leaves it (render/legend_room.h): the same image.
+TEST(View, LeavesTheLegendTheRoomRenderLeaves) {
+  if (!haveDisplay()) GTEST_SKIP() << "no X display";
+  const auto dir = tg::test::cliDir("view_legend");
+  const std::string shot = (dir / "v.png").string();
+  std::ofstream(dir / "script.txt") << "screenshot " << shot << "\n";
+  const std::string flags = " --size 640 480 --no-shadows --no-ao --legend";
+  const auto v = runBinary("view" + flags + " --script " + (dir / "script.txt").string(), dir);
+  ASSERT_EQ(v.code, 0) << v.err;
+  ASSERT_EQ(runBinary("render" + flags + " -o " + (dir / "r.png").string(), dir).code, 0);
+  ASSERT_EQ(runBinary("render" + flags + " --legend-corner top-left -o " + (dir / "tl.png").string(), dir).code, 0);
+  int w = 0, h = 0;
+  const auto s = readRgba(shot, w, h), r = readRgba(dir / "r.png", w, h), tl = readRgba(dir / "tl.png", w, h);
+  ASSERT_EQ(w, 640);
+  EXPECT_EQ(differing(s, r), 0u);
+  EXPECT_GT(differing(s, tl), 10000u);  // the camera follows the legend's corner
+  std::filesystem::remove_all(dir);
+}
+
 // The viewer takes render's camera, background and march flags from the same
 // option table (app/render_options.h): a screenshot before any step is the
 // image render draws with those flags, exactly.
