@@ -177,7 +177,9 @@ TensorField fieldFromVolume(const ArrayRef& tensors, std::string_view layout, co
     g.originWC[r] = affine[4 * r + 3];
   }
   const double det = determinant3(g.axesWC);
-  if (!(std::abs(det) > 0) || !std::isfinite(det)) fail("affine", "singular");
+  // A scale near 1e300 is not singular: its determinant overflows.
+  if (!std::isfinite(det)) fail("affine", "too large: its determinant overflows double precision");
+  if (!(std::abs(det) > 0)) fail("affine", "singular");
   const NiftiLayout* l = six ? &layoutNamed(layout.empty() ? "fsl" : layout) : nullptr;
   std::optional<TensorFrame> named;
   if (!frame.empty()) {

@@ -198,6 +198,10 @@ TEST(ArrayField, VolumesMatchTheNiftiReader) {
   double singular[16] = {0};
   singular[15] = 1;
   EXPECT_EQ(errorOf([&] { tg::io::fieldFromVolume(view(values, {3, 2, 2, 6}), "", singular, ""); }), "affine: singular");
+  // diag(1e300) was called singular: its determinant is infinite.
+  double huge[16] = {1e300, 0, 0, 0, 0, 1e300, 0, 0, 0, 0, 1e300, 0, 0, 0, 0, 1};
+  EXPECT_EQ(errorOf([&] { tg::io::fieldFromVolume(view(values, {3, 2, 2, 6}), "", huge, ""); }),
+            "affine: too large: its determinant overflows double precision");
 }
 
 }  // namespace
