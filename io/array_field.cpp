@@ -1,6 +1,7 @@
 #include "io/array_field.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
@@ -98,11 +99,6 @@ class LayoutSample {
   std::vector<double> rows_;
 };
 
-void refuseOverflow(std::string_view arg, const TensorField& f) {
-  if (f.skippedOverflow > 0)
-    fail(arg, std::to_string(f.skippedOverflow) + " tensors lie beyond single precision (|D| > 3.4e38)");
-}
-
 }  // namespace
 
 TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, const ArrayRef& positions) {
@@ -128,8 +124,12 @@ TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, co
     const auto where = [i] { return "index " + std::to_string(i); };
     double p[3], v[9], s6[6];
     if (!readElement(positions, i * positions.strides[0], 1, p)) fail("positions", "NaN or Inf at " + where());
-    // A tensor with a NaN/Inf component is skipped and counted (addSym), as
-    // the file readers skip it: the same data as an array or a file draws alike.
+    // addSym would count it as a tensor that overflows: it is the position.
+    if (std::abs(p[0]) > FLT_MAX || std::abs(p[1]) > FLT_MAX || std::abs(p[2]) > FLT_MAX)
+      fail("positions", "beyond single precision (3.4e38) at " + where());
+    // A tensor with a NaN/Inf component, or beyond single precision, is
+    // skipped and counted (addSym), as the file readers skip it: the same
+    // data as an array or a file draws alike.
     if (!readElement(tensors, i * tensors.strides[0], 1, v)) {
       for (double& x : s6) x = NAN;
       f.addSym(std::uint32_t(i), p, s6);
@@ -144,7 +144,6 @@ TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, co
     }
     f.addSym(std::uint32_t(i), p, s6);
   }
-  refuseOverflow("tensors", f);
   if (six) sample.warnInto(f, *l);
   // As the VTK reader estimates it for points: spacing-mode sizing (the
   // default) needs it, and the same points must draw as their file does.
@@ -178,7 +177,9 @@ TensorField fieldFromVolume(const ArrayRef& tensors, std::string_view layout, co
     g.originWC[r] = affine[4 * r + 3];
   }
   const double det = determinant3(g.axesWC);
-  if (!(std::abs(det) > 0) || !std::isfinite(det)) fail("affine", "singular");
+  // A scale near 1e300 is not singular: its determinant overflows.
+  if (!std::isfinite(det)) fail("affine", "too large: its determinant overflows double precision");
+  if (!(std::abs(det) > 0)) fail("affine", "singular");
   const NiftiLayout* l = six ? &layoutNamed(layout.empty() ? "fsl" : layout) : nullptr;
   std::optional<TensorFrame> named;
   if (!frame.empty()) {
@@ -222,7 +223,6 @@ TensorField fieldFromVolume(const ArrayRef& tensors, std::string_view layout, co
         sink.push(v);
       }
   sink.finish();
-  refuseOverflow("tensors", f);
   if (six) sample.warnInto(f, *l);
   return f;
 }

@@ -2,8 +2,8 @@
 // Tensor fields from arrays in memory: what the Python module hands over from
 // NumPy, nibabel or DIPY, read with the CLI's conventions (the component
 // orders and frames of io/nifti_layouts.h, the selection of io/selection.h).
-// Unlike a file, an array with NaN/Inf is refused, not skipped: the caller
-// made it and can mask it. Every error is std::invalid_argument, or
+// As a file's, a tensor with NaN/Inf or beyond single precision is skipped
+// and counted; a NaN/Inf or overflowing position is refused. Every error is std::invalid_argument, or
 // std::domain_error for a wrong dtype, beginning with the argument's name
 // ("tensors: shape (4, 5) is ...").
 #include <cstdint>

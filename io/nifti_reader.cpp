@@ -139,8 +139,8 @@ Image readHeader(const std::string& path) {
   }
   if (!nim) fail(path, "not a readable NIfTI-1/-2 header");
   checkDataOffset(path, *nim, raw);
-  // The file's voxel sizes, for placement to judge (voxelSizes).
-  for (int k = 1; k <= 3; ++k) nim->pixdim[k] = raw.pixdim[k];
+  // The file's qfac and voxel sizes, for placement to judge (qfacOf, voxelSizes).
+  for (int k = 0; k <= 3; ++k) nim->pixdim[k] = raw.pixdim[k];
   if (!nim->iname) fail(path, "no image file named");
   return nim;
 }
@@ -284,24 +284,54 @@ std::array<double, 3> voxelSizes(const nifti_image& nim, std::vector<std::string
   return d;
 }
 
-// The affine in use: sform if coded, else qform, else pixdim (NIfTI's "method 1").
-void placement(const nifti_image& nim, VolumeGeometry& g, TensorField& f) {
+// A placement code as nibabel (and so DIPY) reads it: one outside NIfTI's
+// 0..5 is 0, unknown. libnifti2 used any code above 0: a file with
+// sform_code 7 was placed by its sform here and by its qform in nibabel.
+int usableCode(int code, const char* name, std::vector<std::string>& warnings) {
+  if (code >= 0 && code <= NIFTI_XFORM_TEMPLATE_OTHER) return code;
+  if (code > 0)
+    warnings.push_back(std::string(name) + " is " + std::to_string(code) +
+                       ", not a NIfTI code (0..5); it is not used, as nibabel does not use it");
+  return 0;
+}
+
+// The qform's handedness (pixdim[0]) as nibabel reads it: 1 unless it is -1.
+// libnifti2 takes the sign of any value, so a qfac of -2 flipped z here and
+// not in nibabel.
+double qfacOf(const nifti_image& nim, std::vector<std::string>* warnings) {
+  const double p = nim.pixdim[0];
+  if (p < 0 && p != -1.0 && warnings)
+    warnings->push_back("pixdim[0] (qfac) is " + shortNumber(p) + ", not 1 or -1; 1 is used, as nibabel uses it");
+  return p == -1.0 ? -1.0 : 1.0;
+}
+
+// The affine in use: sform if coded, else qform, else pixdim (NIfTI's
+// "method 1"); true when an affine places the voxels.
+bool placement(const nifti_image& nim, VolumeGeometry& g, TensorField& f) {
+  const int sformCode = usableCode(nim.sform_code, "sform_code", f.warnings);
+  const int qformCode = usableCode(nim.qform_code, "qform_code", f.warnings);
   nifti_dmat44 qform = nim.qto_xyz;
-  if (nim.qform_code > 0) {
-    const std::array<double, 3> d = voxelSizes(nim, nim.sform_code > 0 ? nullptr : &f.warnings);
+  if (qformCode > 0) {
+    std::vector<std::string>* said = sformCode > 0 ? nullptr : &f.warnings;
+    const std::array<double, 3> d = voxelSizes(nim, said);
+    const double b = nim.quatern_b, c = nim.quatern_c, q = nim.quatern_d;
+    // libnifti2 scales a longer (b, c, d) to length 1; nibabel refuses it.
+    if (said && b * b + c * c + q * q > 1 + 1e-6)
+      said->push_back("the qform's quaternion (b, c, d) is longer than 1; scaled to 1 as libnifti2 does (nibabel "
+                      "refuses the file)");
     qform = nifti_quatern_to_dmat44(nim.quatern_b, nim.quatern_c, nim.quatern_d, nim.qoffset_x, nim.qoffset_y,
-                                    nim.qoffset_z, d[0], d[1], d[2], nim.qfac);
+                                    nim.qoffset_z, d[0], d[1], d[2], qfacOf(nim, said));
   }
-  const nifti_dmat44* m = nim.sform_code > 0 ? &nim.sto_xyz : nim.qform_code > 0 ? &qform : nullptr;
+  const nifti_dmat44* m = sformCode > 0 ? &nim.sto_xyz : qformCode > 0 ? &qform : nullptr;
   if (m) {
     for (int r = 0; r < 3; ++r) {
       for (int c = 0; c < 3; ++c) g.axesWC[3 * r + c] = m->m[r][c];
       g.originWC[r] = m->m[r][3];
     }
-    f.space = nim.sform_code > 0 ? "RAS (sform)" : "RAS (qform)";
+    f.space = sformCode > 0 ? "RAS (sform)" : "RAS (qform)";
     // Two placements in one file: whichever is right, a reader that takes
     // the other draws elsewhere, so the disagreement is said (as MRtrix does).
-    if (nim.sform_code > 0 && nim.qform_code > 0) {
+    if (sformCode > 0 && qformCode > 0) {
       double diff = 0, step = 0;
       for (int r = 0; r < 3; ++r)
         for (int c = 0; c < 4; ++c) {
@@ -312,12 +342,13 @@ void placement(const nifti_image& nim, VolumeGeometry& g, TensorField& f) {
         f.warnings.push_back("the sform and qform disagree (by up to " + std::to_string(diff) +
                              "); the sform is used, as FSL, nibabel and MRtrix use it");
     }
-  } else {
-    const std::array<double, 3> d = voxelSizes(nim, &f.warnings);
-    for (int k = 0; k < 3; ++k) g.axesWC[4 * k] = d[std::size_t(k)];
-    f.space = "voxel grid (no sform or qform)";
-    f.warnings.push_back("no sform or qform; placed by pixdim alone");
+    return true;
   }
+  const std::array<double, 3> d = voxelSizes(nim, &f.warnings);
+  for (int k = 0; k < 3; ++k) g.axesWC[4 * k] = d[std::size_t(k)];
+  f.space = "voxel grid (no sform or qform)";
+  f.warnings.push_back("no sform or qform; placed by pixdim alone");
+  return false;
 }
 
 // dim[k], or 1 beyond dim[0] (writers leave those 0 or stale).
@@ -390,12 +421,11 @@ TensorField impl::readNifti(const std::string& path, const ReadOptions& opt) {
   cl.sym = conv.layout->sym;
   f.layout = std::string(conv.layout->name) + ": " + conv.layout->order + " (" + conv.layoutSource + ")";
 
-  placement(*nim, g, f);
+  const bool affine = placement(*nim, g, f);
   double a[9];
   std::copy(g.axesWC, g.axesWC + 9, a);
   const double det = determinant3(a);
   if (!(std::abs(det) > 0) || !std::isfinite(det)) fail(path, "the affine is singular");
-  const bool affine = nim->sform_code > 0 || nim->qform_code > 0;
   const FrameMap map = tensorFrameMap(conv.frame, a, affine);
   g.tensorToWC = map.tensorToWC;
   f.tensorToWC = map.tensorToWC;
@@ -464,8 +494,7 @@ ScalarVolume impl::readNiftiScalar(const std::string& path, const int* dims) {
   ScalarVolume s;
   std::copy(g.dims, g.dims + 3, s.dims);
   TensorField unused;
-  placement(*nim, g, unused);
-  if (nim->sform_code > 0 || nim->qform_code > 0) s.placement = placementOf(g);  // else its placement is unstated
+  if (placement(*nim, g, unused)) s.placement = placementOf(g);  // else its placement is unstated
   streamValues(path, *nim, voxels, [&](double x) { s.values.push_back(float(x)); });
   return s;
 }

@@ -108,13 +108,27 @@ constexpr std::size_t kMaxFieldLine = 512;
 // endless line or line after line from costing memory or time.
 constexpr std::size_t kMaxLine = 1 << 20, kMaxHeader = 16 << 20;
 
+// Teem reads any format it knows from a file's first line: plain text,
+// VTK, PNM, PNG. Their parsers quote whole lines into biff's 1 KiB stack
+// buffer, and this check knows only NRRD's lines (a plain-text .nrrd whose
+// "# old min: " comment was 1.5 KB aborted the reader). A .nrrd or .nhdr
+// must begin with NRRD's magic, as Teem's NRRD format tells it.
+void checkMagic(const char* who, const std::string& path, const std::string& first) {
+  NrrdIoState* nio = nrrdIoStateNew();
+  airFree(nio->line);
+  nio->line = airStrdup(first.c_str());
+  const bool nrrd = nrrdFormatNRRD->contentStartsLike(nio);
+  nrrdIoStateNix(nio);
+  if (!nrrd) throw InputError(std::string(who) + ": " + path + ": not a NRRD file (line 1 is not NRRD0001 to NRRD0006)");
+}
+
 }  // namespace
 
 void impl::checkNrrdHeaderText(const char* who, const std::string& path, FILE* in) {
   auto refuse = [&](const std::string& what) { throw InputError(std::string(who) + ": " + path + ": " + what); };
   std::size_t pairs = 0, comments = 0, line = 1, length = 0, total = 0;
   bool free = false, field = false;  // this line: free text (comment, key:=value, content); a "key: " seen
-  std::string start;
+  std::string start, magic;
   int prev = '\n';
   // Line 1 is the magic, which Teem quotes only in part.
   auto check = [&] {
@@ -133,6 +147,7 @@ void impl::checkNrrdHeaderText(const char* who, const std::string& path, FILE* i
     }
     if (c == '\n') {
       if (length == 0) break;
+      if (line == 1) checkMagic(who, path, magic);
       check();
       ++line;
       length = 0;
@@ -141,6 +156,12 @@ void impl::checkNrrdHeaderText(const char* who, const std::string& path, FILE* i
       continue;
     }
     ++length;
+    // Teem's lines are C strings put together from pieces: a NUL cuts a
+    // piece short, and this check would judge other text than Teem's (a
+    // ":=" after a NUL made a 1.5 KB line free text here, and Teem quoted
+    // the rest as a line it could not parse).
+    if (c == '\0') refuse("header line " + std::to_string(line) + " holds a NUL byte");
+    if (line == 1 && magic.size() < 16) magic.push_back(char(c));
     if (++total > kMaxHeader) refuse("header has no empty line ending it within its first 16 MiB");
     if (length > kMaxLine) refuse("header line " + std::to_string(line) + " is longer than 1 MiB");
     if (length == 1 && c == '#') {
@@ -160,6 +181,7 @@ void impl::checkNrrdHeaderText(const char* who, const std::string& path, FILE* i
       free |= start == "content: ";
     }
   }
+  if (line == 1) checkMagic(who, path, magic);
   check();
   std::clearerr(in);
   std::rewind(in);

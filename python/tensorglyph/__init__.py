@@ -13,6 +13,8 @@ lists them.
 """
 from __future__ import annotations
 
+import atexit
+import contextlib
 import numbers
 import os
 import threading
@@ -192,7 +194,68 @@ def save(image, path):
                                           else np.asarray(image))}
     if isinstance(image, Figure):
         frame.update(image.channels)
-    _core.save(frame, os.fspath(path))
+    with _process.call("save", gl=False):
+        _core.save(frame, os.fspath(path))
+
+
+class _Process:
+    """This process's calls into the core, which run without the GIL.
+
+    Exit: Python ends a daemon thread that takes the GIL back during
+    finalization by unwinding its frames, and C++ aborts the process when
+    that unwinding crosses its own ("terminate called without an active
+    exception"). The exit waits for running calls to return; one begun later
+    waits for ever (a daemon thread is not joined), except in a thread that
+    is already inside one (a progress callback's render).
+
+    Fork: GL drivers (Mesa's llvmpipe too) keep threads that a forked child
+    does not have, so a child's GL call after the parent made a context
+    waited for ever (a multiprocessing pool with the fork start method
+    hung). It raises instead."""
+
+    def __init__(self):
+        self.cond = threading.Condition()
+        self.running = {}  # thread ident -> calls it is inside
+        self.exiting = False
+        self.gl_made = False
+        self.forked = False
+
+    @contextlib.contextmanager
+    def call(self, where, gl=True):
+        if gl and self.forked:
+            raise RuntimeError(f"{where}: this process was forked after tensorglyph rendered in it, and GL's "
+                               "threads stay in the parent; render in the parent, or start workers with "
+                               "multiprocessing's 'spawn' or 'forkserver' method")
+        me = threading.get_ident()
+        with self.cond:
+            while self.exiting and me not in self.running:
+                self.cond.wait()
+            self.running[me] = self.running.get(me, 0) + 1
+        self.gl_made = self.gl_made or gl
+        try:
+            yield
+        finally:
+            with self.cond:
+                self.running[me] -= 1
+                if not self.running[me]:
+                    del self.running[me]
+                self.cond.notify_all()
+
+    def wait_at_exit(self):
+        with self.cond:
+            self.exiting = True
+            while self.running:
+                self.cond.wait()
+
+    def after_fork_in_child(self):
+        self.forked = self.forked or self.gl_made
+        self.cond = threading.Condition()  # the parent's may have been held by another thread
+        self.running = {}
+
+
+_process = _Process()
+atexit.register(_process.wait_at_exit)
+os.register_at_fork(after_in_child=_process.after_fork_in_child)
 
 
 def _guarded(progress, inside):
@@ -233,7 +296,8 @@ class Renderer:
             self.set(**{k: v for k, v in (("layout", lay), ("frame", fr)) if v})
             lay = fr = ""
         self._array_source = t is not None
-        self._core = _core.Renderer(t, p, a, lay, fr, path, _option_list(self._options), progress)
+        with _process.call("Renderer"):
+            self._core = _core.Renderer(t, p, a, lay, fr, path, _option_list(self._options), progress)
 
     def set(self, **options):
         """Changes options (None: back to the default); returns self."""
@@ -264,7 +328,8 @@ class Renderer:
         with self._lock:  # another thread's set() must not change this call's options
             if options:
                 self.set(**options)
-            return Figure(self._core.render(_option_list(self._options), bool(channels)))
+            with _process.call("Renderer.render"):
+                return Figure(self._core.render(_option_list(self._options), bool(channels)))
 
     @property
     def options(self):

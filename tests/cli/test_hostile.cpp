@@ -371,6 +371,24 @@ TEST(Hostile, LongNrrdFieldLinesAreRefusedBeforeTeemQuotesThem) {
   expectRefused("hugecomment.nrrd", "header line 2 is longer than 1 MiB");
 }
 
+// Teem reads a .nrrd in any format it knows from the first line, and the
+// plain-text and VTK parsers quote lines this check let through (comments,
+// "content: ") into biff's 1 KiB stack buffer: the reader aborted. A NUL
+// hid a ":=" from Teem (its lines are C strings) that made a 1.5 KB line
+// free text here; Teem quoted the line as one it could not parse.
+TEST(Hostile, NrrdsThatTeemReadsAsOtherTextAreRefusedBeforeItQuotesThem) {
+  const std::string longWord(1500, 'x');
+  write(dir() / "plaintext.nrrd", "# old min: " + longWord + "\n1 2 3\n");
+  expectRefused("plaintext.nrrd", "not a NRRD file (line 1 is not NRRD0001 to NRRD0006)");
+  write(dir() / "vtk.nrrd", "# vtk DataFile Version 3.0\ntitle\ncontent: " + longWord + "\n");
+  expectRefused("vtk.nrrd", "not a NRRD file");
+  write(dir() / "nomagic.nhdr", "\ntype: float\n");
+  expectRefused("nomagic.nhdr", "not a NRRD file");
+  const std::string body = "type: float\ndimension: 4\nsizes: 6 1 1 1\n" + kNrrdTensor;
+  write(dir() / "nul.nrrd", "NRRD0004\n" + body + std::string("ab\0:=", 5) + longWord + "\n\n" + bin({1, 0, 0, 2, 0, 3}));
+  expectRefused("nul.nrrd", "header line 8 holds a NUL byte");
+}
+
 // A detached header in a deep directory whose data file is missing: Teem's
 // message quoted the data file's whole path into biff's 1 KiB stack buffer
 // and aborted the reader, which the guard reported as a crash of a corrupt

@@ -371,11 +371,14 @@ TEST(Nifti, CorruptGzipIsRefusedNamingTheFault) {
 }
 
 // The two-voxel fixture's bytes with the NIfTI-1 placement fields set: the
-// qform and sform codes, an unrotated qform (qfac 1) at `offset`, and pixdim.
+// qform and sform codes, a qform (by default unrotated, qfac 1) at `offset`,
+// and pixdim.
 struct Placement {
   std::int16_t qform = 1, sform = 1;
   float pixdim[3] = {2, 2, 2};
   float offset[3] = {10, 20, 30};
+  float qfac = 1;
+  float quatern[3] = {0, 0, 0};
 };
 
 std::string placedBytes(const fs::path& p, const Placement& pl) {
@@ -386,10 +389,9 @@ std::string placedBytes(const fs::path& p, const Placement& pl) {
   std::string b(std::istreambuf_iterator<char>(in), {});
   std::memcpy(&b[252], &pl.qform, 2);
   std::memcpy(&b[254], &pl.sform, 2);
-  const float zero = 0, unit = 1;
-  for (int k = 0; k < 3; ++k) std::memcpy(&b[256 + 4 * k], &zero, 4);  // quatern_b..d: no rotation
+  for (int k = 0; k < 3; ++k) std::memcpy(&b[256 + 4 * k], &pl.quatern[k], 4);  // quatern_b..d
   for (int k = 0; k < 3; ++k) std::memcpy(&b[268 + 4 * k], &pl.offset[k], 4);  // qoffset_x..z
-  std::memcpy(&b[76], &unit, 4);  // pixdim[0]: qfac
+  std::memcpy(&b[76], &pl.qfac, 4);  // pixdim[0]
   for (int k = 0; k < 3; ++k) std::memcpy(&b[80 + 4 * k], &pl.pixdim[k], 4);
   return b;
 }
@@ -450,6 +452,52 @@ TEST(Nifti, NonPositiveVoxelSizesAreReadAsNibabelReadsThem) {
       for (const std::string& w : f.warnings) EXPECT_EQ(w.find("pixdim"), std::string::npos) << w;
     }
   }
+}
+
+bool saysIt(const io::TensorField& f, const char* what) {
+  return std::any_of(f.warnings.begin(), f.warnings.end(),
+                     [&](const std::string& w) { return w.find(what) != std::string::npos; });
+}
+
+// Fields outside the standard that libnifti2 and nibabel (so DIPY) read
+// apart, which drew the glyphs where nibabel does not put them, unsaid:
+// a qfac of -2 (libnifti2: its sign flips z; nibabel: 1), a code above 5
+// (libnifti2 used the transform; nibabel does not). nibabel's reading is
+// taken and said. A quaternion longer than 1 nibabel refuses; it is said.
+TEST(Nifti, PlacementFieldsOutsideTheStandardAreReadAsNibabelReadsThem) {
+  Placement qfac;
+  qfac.sform = 0;
+  qfac.qfac = -2;
+  io::TensorField f = readPlaced(qfac);
+  ASSERT_TRUE(f.grid);
+  EXPECT_DOUBLE_EQ(f.grid->directions[8], 1) << "z is not flipped";
+  EXPECT_TRUE(saysIt(f, "pixdim[0] (qfac) is -2, not 1 or -1; 1 is used, as nibabel uses it"));
+  qfac.qfac = -1;  // the standard's flip: no word
+  f = readPlaced(qfac);
+  EXPECT_DOUBLE_EQ(f.grid->directions[8], -1);
+  EXPECT_TRUE(f.warnings.empty()) << f.warnings.front();
+
+  Placement sform7;  // sform diag(2) at z 30; the qform says z 35
+  sform7.sform = 7;
+  sform7.offset[2] = 35;
+  f = readPlaced(sform7);
+  EXPECT_FLOAT_EQ(f.positions[2], 35) << "placed by the sform";
+  EXPECT_TRUE(saysIt(f, "sform_code is 7, not a NIfTI code (0..5); it is not used, as nibabel does not use it"));
+  EXPECT_FALSE(saysIt(f, "disagree"));
+
+  Placement qform9;
+  qform9.sform = 0;
+  qform9.qform = 9;
+  f = readPlaced(qform9);
+  EXPECT_FLOAT_EQ(f.positions[0], 0) << "placed by the qform";
+  EXPECT_TRUE(saysIt(f, "qform_code is 9"));
+  EXPECT_TRUE(saysIt(f, "no sform or qform; placed by pixdim alone"));
+
+  Placement longQuaternion;
+  longQuaternion.sform = 0;
+  longQuaternion.quatern[0] = longQuaternion.quatern[1] = 0.9f;
+  f = readPlaced(longQuaternion);
+  EXPECT_TRUE(saysIt(f, "the qform's quaternion (b, c, d) is longer than 1"));
 }
 
 // Six volumes whose header says they are a vector (or any intent but none,

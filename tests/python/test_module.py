@@ -302,6 +302,30 @@ class BadInput(unittest.TestCase):
         with self.assertWarnsRegex(UserWarning, "skipped 1 tensors"):
             self.assertEqual(tg.render(t, positions=p, size=(32, 24)).glyphs, 5)
 
+    def test_overflowing_tensors_are_skipped_as_the_file_reader_skips_them(self):
+        """A float64 NIfTI with a value beyond single precision: as a path it
+        was drawn without that voxel and a warning; through nibabel it was
+        refused, blaming "tensors" (as were points whose positions overflow,
+        which are now refused by their own name)."""
+        import nibabel as nib
+        path = os.path.join(_TMP.name, "overflow.nii")
+        img = nib.load(_nifti_file())
+        data = np.asarray(img.dataobj).astype(np.float64)
+        data[1, 2, 0, 0] = 1e39
+        nib.save(nib.Nifti1Image(data, img.affine), path)
+        opts = dict(size=(64, 48), glyph="superquadric")
+        with self.assertWarnsRegex(UserWarning, "skipped 1 tensors whose values overflow"):
+            from_file = tg.render(path, **opts)
+        with self.assertWarnsRegex(UserWarning, "skipped 1 tensors whose values overflow"):
+            from_array = tg.render(nib.load(path), **opts)
+        self.assertEqual(from_file.glyphs, 4 * 4 * 3 - 1)
+        self.assertEqual(from_array.glyphs, from_file.glyphs)
+        self.assertTrue(np.array_equal(from_file.image, from_array.image))
+        t, p = points(6)
+        p[2, 0] = 1e39
+        with self.assertRaisesRegex(ValueError, "positions: beyond single precision"):
+            tg.render(t, positions=p, size=(32, 24))
+
     def test_a_files_layout_and_frame_are_used(self):
         """layout= and frame= with a path are the reader's --layout and
         --frame: once they were taken and silently ignored."""
