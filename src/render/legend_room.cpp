@@ -51,6 +51,29 @@ double fitScale(const LegendRect& t, const LegendRect& r) {
                    double(t.height()) / std::max(double(r.height()), 1e-9)});
 }
 
+// How far the boxes' image lay beyond the image less its margin, side by
+// side (x0, y0, x1, y1), without a legend. The boxes are loose (a cell's
+// centres grown by a glyph's semi-axis box), so they may stay out only as
+// far as they shrink: at scale s, s times as far. Held where they were, the
+// loose part shrank away and the glyphs themselves crossed the edge.
+struct Overshoot {
+  double x0, y0, x1, y1;
+};
+
+// The image less its margin, widened by the overshoot at scale `s`.
+LegendRect region(const Overshoot& o, double s, int width, int height, float gap) {
+  return {float(gap - s * o.x0), float(gap - s * o.y0), float(double(width) - gap + s * o.x1),
+          float(double(height) - gap + s * o.y1)};
+}
+
+// The largest scale, at most 1, at which [lo, hi] shrunk by s fits in
+// [tlo, thi] widened by s times olo and ohi; 0 when there is no room.
+double fitAxis(double lo, double hi, double tlo, double thi, double olo, double ohi) {
+  const double need = (hi - lo) - olo - ohi, room = thi - tlo;
+  if (!(room > 0.0)) return 0.0;
+  return need <= room ? 1.0 : room / need;
+}
+
 // The least move that brings [lo, hi] into [tlo, thi] (no longer than it).
 double into(double lo, double hi, double tlo, double thi) {
   if (lo < tlo) return tlo - lo;
@@ -141,17 +164,31 @@ CameraDesc leaveRoom(const CameraDesc& d, int width, int height, const glm::dvec
     });
   };
   if (empty(r0) || clear(d)) return d;
-  // Where the glyphs may lie: as far as they reached without a legend, or
-  // the image less an edge margin; beside the panel or above/below it.
-  const float x0 = std::min(gapPx, r0.x0), y0 = std::min(gapPx, r0.y0);
-  const float x1 = std::max(float(width) - gapPx, r0.x1), y1 = std::max(float(height) - gapPx, r0.y1);
+  // Where the glyphs may lie: the image less an edge margin, and beyond it
+  // as far as they reached without a legend, shrunk with them (Overshoot);
+  // beside the panel or above/below it.
+  const double w = width, h = height, g = gapPx;
+  const Overshoot o{std::max(0.0, g - r0.x0), std::max(0.0, g - r0.y0), std::max(0.0, r0.x1 - (w - g)),
+                    std::max(0.0, r0.y1 - (h - g))};
   const bool left = corner == LegendCorner::TopLeft || corner == LegendCorner::BottomLeft;
   const bool top = corner == LegendCorner::TopLeft || corner == LegendCorner::TopRight;
-  const LegendRect beside = left ? LegendRect{p.x1, y0, x1, y1} : LegendRect{x0, y0, p.x0, y1};
-  const LegendRect across = top ? LegendRect{x0, p.y1, x1, y1} : LegendRect{x0, y0, x1, p.y0};
-  const double sBeside = fitScale(beside, r0), sAcross = fitScale(across, r0);
+  const double fitX = fitAxis(r0.x0, r0.x1, g, w - g, o.x0, o.x1), fitY = fitAxis(r0.y0, r0.y1, g, h - g, o.y0, o.y1);
+  const double sBeside = std::min(fitY, left ? fitAxis(r0.x0, r0.x1, p.x1, w - g, 0.0, o.x1)
+                                             : fitAxis(r0.x0, r0.x1, g, p.x0, o.x0, 0.0));
+  const double sAcross = std::min(fitX, top ? fitAxis(r0.y0, r0.y1, p.y1, h - g, 0.0, o.y1)
+                                            : fitAxis(r0.y0, r0.y1, g, p.y0, o.y0, 0.0));
   if (!(std::max(sBeside, sAcross) > 0.0)) return d;  // a panel as large as the image: nothing helps
-  const LegendRect t = sBeside >= sAcross ? beside : across;
+  LegendRect t = region(o, std::max(sBeside, sAcross), width, height, gapPx);
+  if (sBeside >= sAcross)
+    (left ? t.x0 : t.x1) = left ? p.x1 : p.x0;
+  else
+    (top ? t.y0 : t.y1) = top ? p.y1 : p.y0;
+  // A camera on the way keeps the glyphs in the region for its own scale.
+  const auto inRegion = [&](const CameraDesc& c) {
+    const LegendRect r = projectedBoxes(makeCamera(c, width, height, depthLo, depthHi), boxes);
+    const double s = std::min(1.0, double(r.width()) / std::max(double(r0.width()), 1e-9));
+    return !empty(r) && contains(region(o, s, width, height, gapPx), r, 0.5f);
+  };
 
   // Under perspective, pulling back shrinks near corners less than far ones
   // and panning moves them more: repeated on the boxes' new image.
@@ -192,11 +229,12 @@ CameraDesc leaveRoom(const CameraDesc& d, int width, int height, const glm::dvec
     m.orthoHeight = d.orthoHeight * std::pow(c.orthoHeight / d.orthoHeight, a);
     return m;
   };
-  if (!clear(c)) return c;
+  if (!clear(c) || !inRegion(c)) return c;
   double blocked = 0.0, free = 1.0;
   for (int it = 0; it < 16; ++it) {
     const double a = 0.5 * (blocked + free);
-    (clear(partWay(a)) ? free : blocked) = a;
+    const CameraDesc m = partWay(a);
+    (clear(m) && inRegion(m) ? free : blocked) = a;
   }
   return partWay(free);
 }

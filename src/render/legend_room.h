@@ -41,8 +41,8 @@ LegendRect projectedBoxes(const Camera& cam, const std::vector<tensor::BoxWC>& b
 // meets the picture) already clears `panel` by `gapPx`; else the camera,
 // looking the same way, that shows them at the largest size not above
 // today's, beside the panel or above/below it, whichever leaves them larger.
-// On the image's other sides they stay where `d` had them or within gapPx of
-// the edge. `depthLoWC`, `depthHiWC`: the scene box for makeCamera.
+// On the image's other sides they stay within gapPx of the edge, or beyond
+// it as far as `d` had them, shrunk as the picture shrinks. `depthLoWC`, `depthHiWC`: the scene box for makeCamera.
 CameraDesc leaveRoom(const CameraDesc& d, int width, int height, const glm::dvec3& depthLoWC,
                      const glm::dvec3& depthHiWC, const std::vector<tensor::BoxWC>& boxes, const LegendRect& panel,
                      LegendCorner corner, float gapPx);

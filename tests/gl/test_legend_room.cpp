@@ -7,6 +7,7 @@
 #include "render_fixture.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -145,6 +146,43 @@ TEST(LegendRoom, RealFieldsAndTheBuiltInSceneKeepTheirGlyphsOutOfThePanel) {
     std::printf("%s: glyph pixels under the panel %zu without room, 0 with; glyph pixels kept %.2f\n",
                 in.empty() ? "built-in" : in.c_str(), glyphPixelsIn(plain.img, shot.layout.panel), kept);
     EXPECT_GT(kept, 0.5);
+  }
+}
+
+// Glyph pixels in the outermost column or row on each side (left, top, right, bottom).
+std::array<std::size_t, 4> edgePixels(const render::FrameImage& img) {
+  const auto w = float(img.width), h = float(img.height);
+  return {glyphPixelsIn(img, {0, 0, 1, h}), glyphPixelsIn(img, {0, 0, w, 1}), glyphPixelsIn(img, {w - 1, 0, w, h}),
+          glyphPixelsIn(img, {0, h - 1, w, h})};
+}
+
+// Two large spheres side by side, whole in the frame without a legend: the
+// room made for the panel keeps them whole, in every corner. The part of
+// the way that clears the panel once pushed the far sphere over the edge.
+TEST(LegendRoom, GlyphsWholeWithoutALegendStayWholeWithOne) {
+  const auto pair = [] {
+    app::Scene s;
+    for (std::uint32_t k = 0; k < 2; ++k) {
+      const double p[3] = {1000.0 * k, 0.0, 0.0}, t[9] = {10, 0, 0, 0, 10, 0, 0, 0, 10};
+      s.field.addFull(k, p, t);
+    }
+    s.field.path = "(pair)";
+    s.field.sampleSpacing = 1000.0;
+    return s;
+  };
+  app::RenderOptions o = options(false);
+  o.width = 400;
+  o.height = 300;
+  const Shot plain = shoot(o, pair());
+  ASSERT_EQ(edgePixels(plain.img), (std::array<std::size_t, 4>{}));
+  using C = render::LegendCorner;
+  for (const C corner : {C::BottomRight, C::BottomLeft, C::TopRight, C::TopLeft}) {
+    SCOPED_TRACE(int(corner));
+    o.legend.params.enabled = true;
+    o.legend.params.corner = corner;
+    const Shot framed = shoot(o, pair());
+    EXPECT_EQ(glyphPixelsIn(framed.img, framed.layout.panel), 0u);
+    EXPECT_EQ(edgePixels(framed.img), (std::array<std::size_t, 4>{}));
   }
 }
 
