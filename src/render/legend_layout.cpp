@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -225,12 +226,21 @@ void decKey(Builder& b, LegendLayout& out, const LegendFont& font, const Camera&
 }
 
 // A file underlay by its file name alone: a long path would widen the panel.
+// Control characters show as '?' (a newline in a file name started a second
+// line over the bar), and a long name is cut between UTF-8 characters, not
+// inside one.
 std::string underlayTitle(const UnderlayKey& key) {
   std::string name = key.name;
   if (const std::size_t slash = name.find_last_of('/'); slash != std::string::npos && slash + 1 < name.size())
     name = name.substr(slash + 1);
+  for (char& c : name)
+    if (static_cast<unsigned char>(c) < 0x20 || c == 0x7f) c = '?';
+  std::vector<std::size_t> starts;  // where characters begin: not at continuation bytes 10xxxxxx
+  for (std::size_t i = 0; i < name.size(); ++i)
+    if ((static_cast<unsigned char>(name[i]) & 0xC0) != 0x80) starts.push_back(i);
   constexpr std::size_t kMax = 28;
-  if (name.size() > kMax) name = name.substr(0, kMax / 2 - 1) + "..." + name.substr(name.size() - (kMax / 2 - 2));
+  if (starts.size() > kMax)
+    name = name.substr(0, starts[kMax / 2 - 1]) + "..." + name.substr(starts[starts.size() - (kMax / 2 - 2)]);
   return "underlay: " + name;
 }
 

@@ -165,6 +165,47 @@ TEST(LegendLayout, TickLabelsDoNotOverlap) {
   }
 }
 
+// An underlay's file name as its key's title: one line however the file is
+// named (a newline once put the name's tail over the bar), cut between
+// UTF-8 characters when long, and every label clear of the bar.
+TEST(LegendLayout, UnderlayTitleIsOneLineOfWholeCharacters) {
+  const render::LegendFont font(1);
+  render::CameraDesc d;
+  const auto cam = render::makeCamera(d, 640, 480, glm::dvec3(-1), glm::dvec3(1));
+  render::LegendParams p;
+  p.enabled = true;
+  for (const std::string name : {"/data/line1\nline2.nhdr", "esc\x1b[31m\tred\r.nii", "a\x7f.nrrd",
+                                 "/d/Fraktionale-Anisotropie-\xc3\xa4\xc3\xb6\xc3\xbc-\xe6\x97\xa5\xe6\x9c\xac"
+                                 "\xe8\xaa\x9e\xe3\x83\x86\xe3\x82\xb9\xe3\x83\x88.nhdr"}) {
+    SCOPED_TRACE(name);
+    render::LegendInputs in{render::ColorMode::FA, 1.0, 0, 0, 0.0, 0.0};
+    in.underlays = {render::UnderlayKey{name, render::Colormap::Gray, 0.0, 1.0}};
+    const render::LegendLayout l = render::layoutLegend(p, in, cam, font);
+    ASSERT_EQ(l.underlayBars.size(), 1u);
+    const auto title = std::find_if(l.labels.begin(), l.labels.end(), [](const render::LegendLabel& x) {
+      return x.text.rfind("underlay: ", 0) == 0;
+    });
+    ASSERT_NE(title, l.labels.end());
+    std::size_t chars = 0;
+    for (std::size_t i = 0; i < title->text.size();) {
+      const auto c = static_cast<unsigned char>(title->text[i]);
+      EXPECT_TRUE(c >= 0x20 && c != 0x7f) << int(c);
+      const std::size_t len = c < 0x80 ? 1 : c >= 0xF0 ? 4 : c >= 0xE0 ? 3 : 2;
+      ASSERT_LE(i + len, title->text.size());
+      for (std::size_t k = 1; k < len; ++k) EXPECT_EQ(static_cast<unsigned char>(title->text[i + k]) & 0xC0, 0x80);
+      i += len;
+      ++chars;
+    }
+    EXPECT_LE(chars, 10u + 28u);  // "underlay: " and the name, cut
+    const render::LegendRect bar = l.underlayBars[0];
+    for (const render::LegendLabel& x : l.labels) {
+      const render::LegendRect a = x.rect;
+      const bool apart = a.x1 <= bar.x0 || bar.x1 <= a.x0 || a.y1 <= bar.y0 || bar.y1 <= a.y0;
+      EXPECT_TRUE(apart) << x.text;
+    }
+  }
+}
+
 // The scale bar's last line reads through the magnitude mapping: the
 // eigenvalue whose glyph is the bar's length (tensor::mappedMagnitude
 // inverted), what shape-only draws, and a clamp that no glyph can pass.
