@@ -37,7 +37,8 @@ void main() {
   float depth = (uPlaneVC.w - dot(uPlaneVC.xyz, originVC)) / dot(uPlaneVC.xyz, dirVC);
   if (!(depth >= uNearVC)) discard;
   gl_FragDepth = windowDepthFromViewDepth(depth);
-  float x = clamp((v - uWindow.x) / (uWindow.y - uWindow.x), 0.0, 1.0);
+  // Halved first: a window from -3e38 to 3e38 is wider than a float holds.
+  float x = clamp((0.5 * v - 0.5 * uWindow.x) / (0.5 * uWindow.y - 0.5 * uWindow.x), 0.0, 1.0);
   oAlbedo = vec4(uColormap == 1 ? viridis(x) : vec3(x), 1.0);
   oNormalWC = vec4(uNormalWC, 0.0);
   oId = uint(uIdBits);

@@ -222,6 +222,32 @@ TEST_F(SlicePlanes, AOneVoxelRowAmongHolesIsDrawnWithLinearFiltering) {
   EXPECT_FALSE(v.sample({1.2, 0.7, 0.0}, true));
 }
 
+// A window as wide as single precision holds (a volume of +-3e38, whose
+// percentiles span it) maps as a narrow one does: its width overflowed a
+// float, and the whole plane drew black.
+TEST_F(SlicePlanes, AWindowAsWideAsFloatsHoldMapsAsANarrowOne) {
+  const tensor::GlyphSet none = sphereAt({100, 100, 100}, 0.1f);
+  const auto cam = topCamera(96, 72, render::Projection::Orthographic);
+  render::UnderlayVolume v = linearVolume(9, 1.0, glm::dmat4(1.0));
+  for (std::size_t k = 0; k < v.values.size(); ++k) v.values[k] = float(k % 3) - 1.0f;  // -1, 0, 1 along x
+  render::UnderlayVolume wide = v;
+  for (float& x : wide.values) x *= 3e38f;
+  render::PlaneSpec mid;
+  mid.axis = 2;
+  mid.index = 4;
+  render::SliceParams narrow, full;
+  narrow.linear = full.linear = false;
+  narrow.window = std::pair(-1.0, 1.0);
+  full.window = std::pair(-3e38, 3e38);
+  render::FrameParams p;
+  const auto a = drawWith(none, cam, p, &v, &mid, narrow), b = drawWith(none, cam, p, &wide, &mid, full);
+  ASSERT_GT(countId(a, render::kContextIdBase), 1000u);
+  EXPECT_EQ(a.id, b.id);
+  float worst = 0;
+  for (std::size_t k = 0; k < a.rgba.size(); ++k) worst = std::max(worst, std::abs(a.rgba[k] - b.rgba[k]));
+  EXPECT_LT(worst, 1e-3f);
+}
+
 // Depth mixing: an elongated glyph half through an oblique plane, against
 // the reference's ellipsoid and plane (coverage, ids, depth, normals), at
 // true depth and with the offset. Tolerances as the ellipsoid tests': the
