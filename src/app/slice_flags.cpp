@@ -1,5 +1,6 @@
 #include "app/slice_flags.h"
 
+#include <cfloat>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -79,6 +80,12 @@ void SliceFlags::addTo(OptionTable& ap) {
         param("--underlay-window");
         const double lo = parseDouble("--underlay-window", a[1]), hi = parseDouble("--underlay-window", a[2]);
         if (!(lo < hi)) throw UsageError("--underlay-window: LO must be below HI");
+        // The planes map the volume's floats in single precision (slice_plane.frag):
+        // beyond its range a window is infinite, and within its step LO is HI.
+        if (!(std::abs(lo) <= FLT_MAX && std::abs(hi) <= FLT_MAX))
+          throw UsageError("--underlay-window: LO and HI must lie within +-3.4e38 (single precision)");
+        if (!(float(lo) < float(hi)))
+          throw UsageError("--underlay-window: LO and HI are the same number in single precision; widen the window");
         params.window = std::pair(lo, hi);
       });
   ap.arg("--underlay-percentiles LO HI")

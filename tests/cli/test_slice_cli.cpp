@@ -42,6 +42,13 @@ TEST(SliceCli, RendersAnUnderlayFileAndRefusesBadOnesInOneLine) {
   expectFailsCleanly("render -o " + out.string() + " --underlay fa --underlay-window 1 0", "LO must be below HI", out,
                      dir, 1);
   EXPECT_EQ(runBinary("render -o " + out.string() + " --underlay fa --underlay-window 1 0", dir).code, 2);
+  // The planes map in single precision: a window it cannot hold drew black or at random.
+  for (const char* w : {"0 1e300", "-1e39 0", "1e-300 2e-300", "1 1.000000001"}) {
+    SCOPED_TRACE(w);
+    const std::string cmd = "render -o " + out.string() + " --underlay fa --underlay-window " + w;
+    expectFailsCleanly(cmd, "--underlay-window: LO and HI", out, dir, 1);
+    EXPECT_EQ(runBinary(cmd, dir).code, 2);
+  }
   expectFailsCleanly("render -o " + out.string() + " --underlay fa --underlay-percentiles 5 120",
                      "--underlay-percentiles must be within 0..100", out, dir, 1);
   expectFailsCleanly("render -o " + out.string() + " --underlay fa --underlay-percentiles 50 50", "LO must be below HI",
