@@ -86,9 +86,9 @@ int legendTextScale(const LegendParams& p, int imageHeight) {
 
 namespace {
 
-std::string number(double v) {
+std::string number(double v, int digits = 3) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.3g", v);
+  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
   return buf;
 }
 
@@ -147,11 +147,16 @@ const char* colorTitle(ColorMode m) {
 void tickLabels(Builder& b, const LegendFont& font, glm::dvec2 values, float barLen) {
   const float y = b.y();
   const double lo = values[0], hi = values[1];
-  const LegendRect left = b.text(number(lo), 0, y, 0);
-  const LegendRect right = b.text(number(hi), barLen, y, 1);
-  const std::string mid = number(0.5 * (lo + hi));
+  // Three significant digits, or as many more as tell the ends apart (up to
+  // a float's 9): a window of 1 to 1.0000001 read "1 1 1".
+  int digits = 3;
+  while (digits < 9 && number(lo, digits) == number(hi, digits)) ++digits;
+  const std::string loText = number(lo, digits), hiText = number(hi, digits), mid = number(0.5 * (lo + hi), digits);
+  const LegendRect left = b.text(loText, 0, y, 0);
+  const LegendRect right = b.text(hiText, barLen, y, 1);
   const float half = 0.5f * font.textSize(mid).x, gap = font.textSize(" ").x;
-  if (left.x1 + gap <= 0.5f * barLen - half && 0.5f * barLen + half + gap <= right.x0)
+  if (left.x1 + gap <= 0.5f * barLen - half && 0.5f * barLen + half + gap <= right.x0 && mid != loText &&
+      mid != hiText)
     b.text(mid, 0.5f * barLen, y, 0.5f);
   b.skip(font.lineHeight());
 }

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -202,6 +203,39 @@ TEST(LegendLayout, UnderlayTitleIsOneLineOfWholeCharacters) {
       const render::LegendRect a = x.rect;
       const bool apart = a.x1 <= bar.x0 || bar.x1 <= a.x0 || a.y1 <= bar.y0 || bar.y1 <= a.y0;
       EXPECT_TRUE(apart) << x.text;
+    }
+  }
+}
+
+// A window narrower than three digits show: the bar's end labels still
+// differ (1 to 1.0000001 read "1 1 1"), a usual one keeps three digits.
+TEST(LegendLayout, TickLabelsTellTheEndsApart) {
+  const render::LegendFont font(1);
+  render::CameraDesc d;
+  const auto cam = render::makeCamera(d, 640, 480, glm::dvec3(-1), glm::dvec3(1));
+  render::LegendParams p;
+  p.enabled = true;
+  p.colorKey = false;
+  for (const auto& [lo, hi] : {std::pair{1.0, double(std::nextafter(1.0f, 2.0f))}, std::pair{-3e38, 3e38 * (1 - 1e-7)},
+                               std::pair{0.25, 0.75}}) {
+    render::LegendInputs in{render::ColorMode::FA, 1.0, 0, 0, 0.0, 0.0};
+    in.underlays = {render::UnderlayKey{"u.nrrd", render::Colormap::Gray, lo, hi}};
+    const render::LegendLayout l = render::layoutLegend(p, in, cam, font);
+    ASSERT_EQ(l.underlayBars.size(), 1u);
+    // The labels on the row below the bar, left to right.
+    float rowY = INFINITY;
+    for (const render::LegendLabel& x : l.labels)
+      if (x.rect.y0 >= l.underlayBars[0].y1) rowY = std::min(rowY, x.rect.y0);
+    std::vector<render::LegendLabel> below;
+    std::copy_if(l.labels.begin(), l.labels.end(), std::back_inserter(below),
+                 [&](const render::LegendLabel& x) { return x.rect.y0 == rowY; });
+    std::sort(below.begin(), below.end(), [](const auto& a, const auto& b) { return a.rect.x0 < b.rect.x0; });
+    std::vector<std::string> row;
+    for (const render::LegendLabel& x : below) row.push_back(x.text);
+    ASSERT_GE(row.size(), 2u) << lo;
+    EXPECT_NE(row.front(), row.back());
+    if (lo == 0.25) {
+      EXPECT_EQ(row, (std::vector<std::string>{"0.25", "0.5", "0.75"}));
     }
   }
 }
