@@ -16,9 +16,11 @@
 namespace tg::io {
 namespace {
 
+constexpr std::size_t kRandomChars = 12;
+
 std::string randomName() {
   static constexpr char kAlphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789";
-  unsigned char bytes[12];
+  unsigned char bytes[kRandomChars];
   std::size_t got = 0;
   while (got < sizeof bytes) {
     const ssize_t r = getrandom(bytes + got, sizeof bytes - got, 0);
@@ -43,10 +45,21 @@ std::filesystem::path dirOf(const std::string& target) {
 // default ACL), so the committed file has the permissions any new file would
 // have, unlike mkstemp's 0600. The name is registered before the file exists,
 // so that no signal can come between the two and leave it behind.
+// A prefix too long for the file system's name limit (NAME_MAX, 255 bytes on
+// most) is cut, between UTF-8 characters, so that a target named up to the
+// limit is still written: its temporary name is 18 bytes longer.
 void AtomicFile::create(const std::string& dir, const std::string& prefix, const std::string& suffix) {
   const std::filesystem::path d = dir.empty() ? std::filesystem::path(".") : std::filesystem::path(dir);
+  const long limit = pathconf(d.c_str(), _PC_NAME_MAX);
+  const std::size_t nameMax = limit > 0 ? std::size_t(limit) : 255, fixed = kRandomChars + suffix.size();
+  std::string head = prefix;
+  if (head.size() + fixed > nameMax && fixed + 2 <= nameMax) {
+    std::size_t n = nameMax - fixed;
+    while (n > 1 && (static_cast<unsigned char>(head[n]) & 0xC0) == 0x80) --n;
+    head.resize(n);
+  }
   for (int attempt = 0; attempt < 100 && fd_ < 0; ++attempt) {
-    temp_ = (d / (prefix + randomName() + suffix)).string();
+    temp_ = (d / (head + randomName() + suffix)).string();
     slot_ = registerTemp(temp_.c_str());
     fd_ = open(temp_.c_str(), O_RDWR | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0666);
     if (fd_ >= 0) break;

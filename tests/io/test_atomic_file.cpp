@@ -57,6 +57,37 @@ TEST(AtomicFile, CommitReplacesTheTargetWithNormalPermissions) {
   fs::remove_all(d);
 }
 
+// A target named to the file system's limit (255 bytes) is written: its
+// temporary name, 18 bytes longer, was refused ("File name too long"). A
+// unique name is cut to the limit too, between UTF-8 characters.
+TEST(AtomicFile, NamesUpToTheLimitAreWritten) {
+  const fs::path d = freshDir("long");
+  const std::string stem(251, 'n');
+  {
+    AtomicFile f((d / (stem + ".png")).string());
+    EXPECT_EQ(fs::path(f.tempPath()).extension(), ".png");
+    f.write("abc", 3);
+    f.commit(3);
+  }
+  EXPECT_EQ(namesIn(d), std::set<std::string>{stem + ".png"});
+  std::string wide;
+  while (wide.size() < 250) wide += "\xc3\xa4";  // a 2-byte character, 125 times
+  std::string kept;
+  {
+    AtomicFile f(AtomicFile::UniqueName{}, d.string(), wide, ".raw");
+    f.write("abc", 3);
+    f.keep();
+    kept = fs::path(f.tempPath()).filename().string();
+  }
+  EXPECT_LE(kept.size(), 255u);
+  EXPECT_EQ(fs::path(kept).extension(), ".raw");
+  EXPECT_EQ(kept.compare(0, 200, wide, 0, 200), 0);
+  const std::size_t random = kept.size() - 4 - 12;  // where the random part begins
+  EXPECT_EQ(random % 2, 0u) << "cut inside a character";
+  EXPECT_EQ(slurp(d / kept), "abc");
+  fs::remove_all(d);
+}
+
 TEST(AtomicFile, AbandonedOrShortFilesLeaveNothing) {
   const fs::path d = freshDir("abandon");
   std::ofstream(d / "keep.txt") << "old";
