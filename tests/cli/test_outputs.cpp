@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 #include <signal.h>
 #include <sys/mount.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -195,6 +196,25 @@ TEST(Outputs, NoOutputIsWrittenOverAnInputOrItsData) {
   for (const auto& n : namesIn(d))
     if (fs::is_regular_file(d / n)) after.push_back(n + "=" + bytesOf(d / n));
   EXPECT_EQ(before, after) << "an input changed, or an output appeared";
+}
+
+// An output that is a FIFO or a device is refused (exit 2, one line): the
+// file written beside it was renamed over it, so a FIFO became a file and
+// whoever read the pipe waited for ever.
+TEST(Outputs, FifosAndDevicesAreRefusedAndKept) {
+  const Scratch s("special");
+  const fs::path fifo = s.dir / "pipe.png", link = s.dir / "null.png";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0644), 0);
+  fs::create_symlink("/dev/null", link);
+  for (const auto& [out, what] : {std::pair{fifo, "is a FIFO"}, std::pair{link, "is a device"}}) {
+    const CmdResult r = s.run("render --size 64 48 -o " + out.string());
+    EXPECT_EQ(r.code, 2) << r.err;
+    EXPECT_NE(r.err.find(what), std::string::npos) << r.err;
+    EXPECT_EQ(lines(r.err), 1) << r.err;
+  }
+  EXPECT_TRUE(fs::is_fifo(fifo));
+  EXPECT_TRUE(fs::is_symlink(link));
+  EXPECT_EQ(namesIn(s.dir), (std::set<std::string>{"pipe.png", "null.png"}));
 }
 
 // A full disk: every output format fails with exit 1 and one line naming the
