@@ -90,6 +90,8 @@ std::uint64_t typeSize(const std::string& t) {
 // header count beyond the file size is corrupt and a binary file shorter than
 // its arrays is truncated (VTK's binary reader does not notice). Rejecting
 // both here keeps a 20-byte file from allocating terabytes.
+constexpr std::size_t kVtkNameMax = 255;
+
 std::uint64_t checkLegacyCounts(const std::string& path, std::uint64_t fileSize) {
   std::ifstream in(path, std::ios::binary);
   std::string line;
@@ -125,6 +127,16 @@ std::uint64_t checkLegacyCounts(const std::string& path, std::uint64_t fileSize)
     // VTK compares keywords case-insensitively, and so must the counts.
     key = lower;
     std::transform(key.begin(), key.end(), key.begin(), [](unsigned char ch) { return char(std::toupper(ch)); });
+    // VTK reads a keyword or an array's name 255 bytes at a time
+    // (vtkDataReader::ReadString): a longer name was cut, its tail read as
+    // the data type, and the array lost ("no point tensors") or misread.
+    std::string name = lower;
+    for (const char* k : {"scalars", "vectors", "normals", "tensors", "tensors6", "texture_coordinates",
+                          "color_scalars", "field"})
+      if (lower == k) std::istringstream(line) >> name >> name;
+    if (name.size() > kVtkNameMax)
+      fail(path, "a name of " + std::to_string(name.size()) + " bytes (" + name.substr(0, 16) +
+                     "...); VTK's legacy reader takes at most " + std::to_string(kVtkNameMax));
     long double a = -1, b = -1, c = -1;
     if (key == "POINTS" && (ls >> a >> type)) {
       impossible(key, 3 * a);

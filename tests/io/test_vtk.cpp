@@ -154,6 +154,30 @@ TEST(Vtk, BadInputGetsOneLineNamingFileAndProblem) {
   }
 }
 
+// Array names longer than VTK's legacy reader takes (255 bytes) get one
+// line that says so: the name was cut and its tail read as the data type,
+// reported as "no point tensors". 255 bytes still read.
+TEST(Vtk, LegacyNamesBeyondVtksLimitAreNamedAsTheProblem) {
+  const fs::path d = tmpDir();
+  const auto file = [](const std::string& attribute) {
+    return "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 1 float\n0 0 0\nPOINT_DATA 1\n" +
+           attribute + "3 0 0 0 1 0 0 0 0.5\n";
+  };
+  test::writeFile(d / "t256.vtk", file("TENSORS " + std::string(256, 't') + " float\n"));
+  test::writeFile(d / "f300.vtk", file("FIELD f 1\n" + std::string(300, 'q') + " 9 1 float\n"));
+  test::writeFile(d / "field300.vtk", file("FIELD " + std::string(300, 'g') + " 1\nq 9 1 float\n"));
+  for (const char* name : {"t256.vtk", "f300.vtk", "field300.vtk"}) {
+    const std::string msg = errorOf(d / name);
+    EXPECT_NE(msg.find("VTK's legacy reader takes at most 255"), std::string::npos) << name << ": " << msg;
+    EXPECT_NE(msg.find((d / name).string()), std::string::npos) << msg;
+    EXPECT_EQ(msg.find('\n'), std::string::npos) << msg;
+  }
+  test::writeFile(d / "t255.vtk", file("TENSORS " + std::string(255, 't') + " float\n"));
+  io::ReadOptions o;
+  o.arrayName = std::string(255, 't');
+  EXPECT_EQ(io::readTensorField((d / "t255.vtk").string(), o).tensors.size(), 6u);
+}
+
 // 3D-TSV's trailer rows are Sxx Syy Szz Syz Szx Sxy; a row with a seventh
 // number (or anything else after the sixth) is another layout, refused
 // rather than read by its first six.
