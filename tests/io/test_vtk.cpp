@@ -1,6 +1,7 @@
 // Tier 2: VTK input through VTK's readers, round trips and bad input.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -176,6 +177,38 @@ TEST(Vtk, LegacyNamesBeyondVtksLimitAreNamedAsTheProblem) {
   io::ReadOptions o;
   o.arrayName = std::string(255, 't');
   EXPECT_EQ(io::readTensorField((d / "t255.vtk").string(), o).tensors.size(), 6u);
+}
+
+// VTK's ASCII reader never returns from a run of 256 spaces between numbers
+// and the next keyword or the end: such a file fails at once, in one line
+// that says where, not after the 3 s limit. Runs it reads past still read.
+TEST(Vtk, LegacySpaceRunsVtkCannotPassFailAtOnce) {
+  const fs::path d = tmpDir();
+  const std::string head = "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 2 float\n0 0 0\n1 0 0";
+  const std::string data = "\nPOINT_DATA 2\nTENSORS t float\n3 0 0 0 1 0 0 0 0.5\n3 0 0 0 1 0 0 0 0.5";
+  const std::string run(300, ' ');
+  const std::pair<const char*, std::string> stuck[] = {{"trailing.vtk", head + run + data + "\n"},
+                                                       {"blank.vtk", head + "\n" + run + data + "\n"},
+                                                       {"leading.vtk", head + "\n" + run + data.substr(1) + "\n"},
+                                                       {"atend.vtk", head + data + "\n" + run + "\n"}};
+  for (const auto& [name, text] : stuck) {
+    test::writeFile(d / name, text);
+    const auto t0 = std::chrono::steady_clock::now();
+    const std::string msg = errorOf(d / name);
+    EXPECT_LT(std::chrono::steady_clock::now() - t0, std::chrono::seconds(2)) << name;
+    EXPECT_NE(msg.find("a run of 256 or more spaces"), std::string::npos) << name << ": " << msg;
+    EXPECT_NE(msg.find((d / name).string()), std::string::npos) << msg;
+  }
+  const std::pair<const char*, std::string> fine[] = {
+      {"split.vtk", head + std::string(100, ' ') + "\n" + std::string(200, ' ') + data + "\n"},
+      {"inside.vtk", head + data.substr(0, data.rfind('\n')) + run + data.substr(data.rfind('\n')) + "\n"},
+      {"tabs.vtk", head + std::string(300, '\t') + data + "\n"},
+      {"short.vtk", head + std::string(255, ' ') + data + "\n"}};
+  for (const auto& [name, text] : fine) {
+    SCOPED_TRACE(name);
+    test::writeFile(d / name, text);
+    EXPECT_EQ(io::readTensorField((d / name).string(), {}).tensors.size(), 12u);
+  }
 }
 
 // 3D-TSV's trailer rows are Sxx Syy Szz Syz Szx Sxy; a row with a seventh
