@@ -128,19 +128,15 @@ TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, co
     if (std::abs(p[0]) > FLT_MAX || std::abs(p[1]) > FLT_MAX || std::abs(p[2]) > FLT_MAX)
       fail("positions", "beyond single precision (3.4e38) at " + where());
     // A tensor with a NaN/Inf component, or beyond single precision, is
-    // skipped and counted (addSym), as the file readers skip it: the same
+    // skipped and counted by addSym, as the file readers skip it: the same
     // data as an array or a file draws alike.
-    if (!readElement(tensors, i * tensors.strides[0], 1, v)) {
-      for (double& x : s6) x = NAN;
-      f.addSym(std::uint32_t(i), p, s6);
-      continue;
-    }
+    const bool finite = readElement(tensors, i * tensors.strides[0], 1, v);
     if (full) {
-      if (!symmetric(v)) fail("tensors", "the 3x3 tensor at " + where() + " is not symmetric");
+      if (finite && !symmetric(v)) fail("tensors", "the 3x3 tensor at " + where() + " is not symmetric");
       symmetricPart(v, s6);
     } else {
       for (int k = 0; k < 6; ++k) s6[k] = v[l->sym[std::size_t(k)]];
-      sample.offer(std::uint64_t(i), v);
+      if (finite) sample.offer(std::uint64_t(i), v);
     }
     f.addSym(std::uint32_t(i), p, s6);
   }

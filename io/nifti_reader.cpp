@@ -12,7 +12,6 @@
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
-#include <sstream>
 #include <memory>
 #include <string_view>
 
@@ -23,6 +22,7 @@
 #include "io/selection.h"
 #include "io/volume_sink.h"
 #include "util/huge_pages.h"
+#include "util/number_text.h"
 
 namespace tg::io {
 namespace {
@@ -266,20 +266,14 @@ void streamValues(const std::string& path, const nifti_image& nim, std::uint64_t
 // built "method 1" with 1 in its place; nibabel (and so DIPY) uses |pixdim|
 // and 1 for 0. Where pixdim places the voxels, nibabel's reading is taken and
 // said, so that the two readers put the glyphs in the same place.
-std::string shortNumber(double v) {
-  std::ostringstream o;
-  o << v;
-  return o.str();
-}
-
 std::array<double, 3> voxelSizes(const nifti_image& nim, std::vector<std::string>* warnings) {
   std::array<double, 3> d{};
   for (int k = 0; k < 3; ++k) {
     const double p = nim.pixdim[k + 1];
     d[std::size_t(k)] = p > 0 ? p : p < 0 ? -p : 1.0;
     if (!(p > 0) && warnings)
-      warnings->push_back("pixdim[" + std::to_string(k + 1) + "] (a voxel size) is " + shortNumber(p) + "; " +
-                           shortNumber(d[std::size_t(k)]) + " is used, as nibabel uses it");
+      warnings->push_back("pixdim[" + std::to_string(k + 1) + "] (a voxel size) is " + util::numberText(p) + "; " +
+                           util::numberText(d[std::size_t(k)]) + " is used, as nibabel uses it");
   }
   return d;
 }
@@ -301,7 +295,7 @@ int usableCode(int code, const char* name, std::vector<std::string>& warnings) {
 double qfacOf(const nifti_image& nim, std::vector<std::string>* warnings) {
   const double p = nim.pixdim[0];
   if (p < 0 && p != -1.0 && warnings)
-    warnings->push_back("pixdim[0] (qfac) is " + shortNumber(p) + ", not 1 or -1; 1 is used, as nibabel uses it");
+    warnings->push_back("pixdim[0] (qfac) is " + util::numberText(p) + ", not 1 or -1; 1 is used, as nibabel uses it");
   return p == -1.0 ? -1.0 : 1.0;
 }
 

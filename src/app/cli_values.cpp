@@ -1,12 +1,12 @@
 #include "app/cli_values.h"
 
-#include <cstdio>
-
 #include <charconv>
 #include <cctype>
 #include <cmath>
 #include <sstream>
 #include <filesystem>
+
+#include "util/number_text.h"
 
 namespace tg::app {
 
@@ -69,10 +69,6 @@ glm::dvec3 parseVec3(std::string_view flag, std::span<const char* const> a) {
   return {parseDouble(flag, a[0]), parseDouble(flag, a[1]), parseDouble(flag, a[2])};
 }
 
-std::string formatNumber(double v) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%g", v);
-  return buf;
-}
+std::string formatNumber(double v) { return util::numberText(v); }
 
 }  // namespace tg::app
