@@ -5,7 +5,6 @@
 // with those values. Every text number the project reads from a file goes
 // through here, or through a check that the library's own reading of it
 // agrees (io/nrrd_numbers.h, io/mesh_text_checks.h).
-#include <cerrno>
 #include <charconv>
 #include <cmath>
 #include <cstdint>
@@ -32,33 +31,44 @@ inline std::optional<double> nonFiniteWord(std::string_view t) {
   return std::nullopt;
 }
 
-// All of `text` as one decimal number: [+-] digits [. digits] [(e|E) [+-]
-// digits], with a digit on at least one side of the point, or a non-finite
-// word (nonFiniteWord). No spaces, commas, hex or trailing characters. A
-// value beyond double's range is refused; one below it gives what strtod
-// gives (a subnormal or a signed zero).
-inline std::optional<double> parseNumber(std::string_view text) {
-  if (text.empty()) return std::nullopt;
-  if (const auto w = nonFiniteWord(text)) return w;
+namespace detail {
+enum class Decimal { Ok, OutOfRange, Malformed };
+// `text` as [+-] digits [. digits] [(e|E) [+-] digits], whole, into `v`.
+inline Decimal decimal(std::string_view text, double& v) {
   // from_chars takes no '+', and reads "nan(...)" and "-inf" itself: only
   // digits or a point may follow the sign here.
   std::string_view digits = text;
-  if (digits[0] == '+') digits.remove_prefix(1);
+  if (!digits.empty() && digits[0] == '+') digits.remove_prefix(1);
   const std::size_t lead = !digits.empty() && digits[0] == '-' && text[0] != '+' ? 1 : 0;
   if (digits.size() <= lead || !((digits[lead] >= '0' && digits[lead] <= '9') || digits[lead] == '.'))
-    return std::nullopt;
-  double v = 0;
+    return Decimal::Malformed;
   const auto [end, ec] = std::from_chars(digits.data(), digits.data() + digits.size(), v, std::chars_format::general);
-  if (end != digits.data() + digits.size()) return std::nullopt;
+  if (end != digits.data() + digits.size()) return Decimal::Malformed;
   if (ec == std::errc::result_out_of_range) {
     const std::string copy(digits);
-    errno = 0;
     v = std::strtod(copy.c_str(), nullptr);
-    if (!std::isfinite(v)) return std::nullopt;  // overflow
-  } else if (ec != std::errc()) {
-    return std::nullopt;
+    return std::isfinite(v) ? Decimal::Ok : Decimal::OutOfRange;  // underflow gives strtod's value
   }
+  return ec == std::errc() ? Decimal::Ok : Decimal::Malformed;
+}
+}  // namespace detail
+
+// All of `text` as one decimal number: [+-] digits [. digits] [(e|E) [+-]
+// digits], with a digit on at least one side of the point, or a non-finite
+// word (nonFiniteWord). No spaces, commas, hex or trailing characters. A
+// value beyond double's range is refused (outOfRange tells it apart); one
+// below it gives what strtod gives (a subnormal or a signed zero).
+inline std::optional<double> parseNumber(std::string_view text) {
+  if (const auto w = nonFiniteWord(text)) return w;
+  double v = 0;
+  if (detail::decimal(text, v) != detail::Decimal::Ok) return std::nullopt;
   return v;
+}
+
+// Whether `text` is a well-formed decimal number beyond double's range ("1e999").
+inline bool outOfRange(std::string_view text) {
+  double v = 0;
+  return detail::decimal(text, v) == detail::Decimal::OutOfRange;
 }
 
 // parseNumber, finite values only.

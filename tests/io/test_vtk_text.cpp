@@ -1,0 +1,49 @@
+// Tier 2: legacy VTK ASCII numbers with trailing characters (issue 30).
+// VTK's reader streams them: "1,5" read as 1 and ",5" as the next keyword,
+// so the file was refused as having no point tensors, or read on with the
+// prefix where the rest happened to parse. Each is now refused by its line.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <string>
+
+#include "io/io_test_util.h"
+#include "io/readers.h"
+
+using namespace tg;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path tmpDir() { return test::scratchDir("vtk_text"); }
+
+std::string legacy(const std::string& spacing, const std::string& lastValue) {
+  return "# vtk DataFile Version 3.0\nx\nASCII\nDATASET STRUCTURED_POINTS\nDIMENSIONS 2 1 1\nORIGIN 0 0 0\nSPACING " +
+         spacing + "\nPOINT_DATA 2\nTENSORS t float\n1 0 0 0 1 0 0 0 1\n1 0 0 0 1 0 0 0 " + lastValue + "\n";
+}
+
+}  // namespace
+
+TEST(VtkText, LegacyNumbersWithTrailingCharactersAreRefusedByLine) {
+  const fs::path p = tmpDir() / "t.vtk";
+  const struct {
+    std::string spacing, last, problem;
+  } cases[] = {
+      {"1,5 1 1", "1", "line 7: \"1,5\" is not a number"},
+      {"1 1 1.5x", "1", "line 7: \"1.5x\" is not a number"},
+      {"1 1 1", "3,5", "line 11: \"3,5\" is not a number"},
+      {"1 1 1", "1.5abc", "line 11: \"1.5abc\" is not a number"},
+      {"1 1 1", "0x10", "line 11: \"0x10\" is not a number"},
+  };
+  for (const auto& c : cases) {
+    test::writeFile(p, legacy(c.spacing, c.last));
+    EXPECT_EQ(test::readError(p), "readVtk: " + p.string() + ": " + c.problem) << c.spacing << " / " << c.last;
+  }
+  test::writeFile(p, legacy("1 1 1", "1") + "FIELD f 1\n2d 1 2 float\n0 1\n");  // a name may begin with a digit
+  EXPECT_EQ(test::readError(p), "");
+  test::writeFile(p, legacy("+1.5 1E0 1", "-0.5e1"));
+  const io::TensorField f = io::readTensorField(p.string(), {});
+  ASSERT_EQ(f.size(), 2u);
+  EXPECT_FLOAT_EQ(f.positions[3], 1.5f);
+  EXPECT_FLOAT_EQ(f.tensors[11], -5.0f);
+}
