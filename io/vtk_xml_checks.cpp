@@ -18,6 +18,7 @@
 #include <vtkXMLReader.h>
 
 #include "io/tensor_field.h"
+#include "util/strict_number.h"
 
 namespace tg::io {
 namespace {
@@ -115,11 +116,38 @@ void checkAppendedRaw(std::ifstream& in, std::uint64_t pos, const Framing& fr, v
   if (need > room) beyond(need);
 }
 
+// VTK's parser streams an ascii array's values (operator>>), which stop
+// where a number cannot continue: "1.5abc" as the last value read as 1.5,
+// "3,5" as 3. Every word must be a whole number, an integer in an integer
+// array (util/strict_number.h).
+void checkAsciiWords(vtkXMLDataElement* e, std::ifstream& in, const std::string& path) {
+  const std::string type = e->GetAttribute("type") ? e->GetAttribute("type") : "";
+  const bool integral = type.find("Int") != std::string::npos;
+  in.clear();
+  in.seekg(e->GetXMLByteIndex());
+  for (char c; in.get(c) && c != '>';) {}
+  std::string word;
+  auto judge = [&] {
+    if (word.empty()) return;
+    if (integral ? !util::parseInteger(word) : !util::parseNumber(word) && !util::outOfRange(word))
+      fail(path, "ascii array " + arrayName(e) + " holds \"" + word + "\", which is not " +
+                     (integral ? "an integer" : "a number"));
+    word.clear();
+  };
+  for (char c; in.get(c) && c != '<';) {
+    if (std::isspace(static_cast<unsigned char>(c))) judge();
+    else if (word.size() < 256) word.push_back(c);
+    else fail(path, "ascii array " + arrayName(e) + " holds a word longer than 256 characters");
+  }
+  judge();
+}
+
 void checkArrays(vtkXMLDataElement* e, std::ifstream& in, const Framing& fr, const std::string& path) {
   for (int k = 0; k < e->GetNumberOfNestedElements(); ++k) {
     vtkXMLDataElement* child = e->GetNestedElement(k);
     const char* format = child->GetAttribute("format");
     const bool array = std::strcmp(child->GetName(), "DataArray") == 0 && format;
+    if (array && std::strcmp(format, "ascii") == 0) checkAsciiWords(child, in, path);
     if (array && std::strcmp(format, "binary") == 0 && !fr.compressed) {
       unsigned char head[8] = {};
       const std::uint64_t have = base64Bytes(in, child->GetXMLByteIndex(), true, head, fr.prefix);

@@ -47,3 +47,27 @@ TEST(VtkText, LegacyNumbersWithTrailingCharactersAreRefusedByLine) {
   EXPECT_FLOAT_EQ(f.positions[3], 1.5f);
   EXPECT_FLOAT_EQ(f.tensors[11], -5.0f);
 }
+
+// XML ascii arrays too: VTK's stream read the last value "1.5abc" as 1.5.
+TEST(VtkText, XmlAsciiWordsAreReadWhole) {
+  auto vtu = [](const std::string& last, const std::string& connectivity) {
+    return "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n<UnstructuredGrid>\n"
+           "<Piece NumberOfPoints=\"1\" NumberOfCells=\"1\"><Points><DataArray type=\"Float32\" "
+           "NumberOfComponents=\"3\" format=\"ascii\">0 0 0</DataArray></Points><PointData Tensors=\"t\">"
+           "<DataArray type=\"Float32\" Name=\"t\" NumberOfComponents=\"9\" format=\"ascii\">1 0 0 0 1 0 0 0 " +
+           last + "</DataArray></PointData><Cells><DataArray type=\"Int32\" Name=\"connectivity\" format=\"ascii\">" +
+           connectivity + "</DataArray><DataArray type=\"Int32\" Name=\"offsets\" format=\"ascii\">1</DataArray>"
+           "<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">1</DataArray></Cells></Piece>\n"
+           "</UnstructuredGrid>\n</VTKFile>\n";
+  };
+  const fs::path p = tmpDir() / "t.vtu";
+  test::writeFile(p, vtu("1.5abc", "0"));
+  EXPECT_EQ(test::readError(p), "readVtk: " + p.string() + ": ascii array \"t\" holds \"1.5abc\", which is not a number");
+  test::writeFile(p, vtu("1", "0.5"));
+  EXPECT_EQ(test::readError(p),
+            "readVtk: " + p.string() + ": ascii array \"connectivity\" holds \"0.5\", which is not an integer");
+  test::writeFile(p, vtu("+1.5e0", "+0"));
+  const io::TensorField f = io::readTensorField(p.string(), {});
+  ASSERT_EQ(f.size(), 1u);
+  EXPECT_FLOAT_EQ(f.tensors[5], 1.5f);
+}
