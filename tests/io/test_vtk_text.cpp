@@ -71,3 +71,25 @@ TEST(VtkText, XmlAsciiWordsAreReadWhole) {
   ASSERT_EQ(f.size(), 1u);
   EXPECT_FLOAT_EQ(f.tensors[5], 1.5f);
 }
+
+// And XML attributes, which VTK reads with a stream as well: Origin="0 0
+// 1,5" placed the grid at z = 1, NumberOfComponents="9x" read as 9.
+TEST(VtkText, XmlNumericAttributesAreReadWhole) {
+  auto vti = [](const std::string& origin, const std::string& components) {
+    return "<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\" version=\"0.1\">\n<ImageData WholeExtent=\"0 1 0 0 0 0\" "
+           "Origin=\"" + origin + "\" Spacing=\"1 1 1\">\n<Piece Extent=\"0 1 0 0 0 0\"><PointData Tensors=\"t\">"
+           "<DataArray type=\"Float32\" Name=\"t\" NumberOfComponents=\"" + components + "\" format=\"ascii\">"
+           "1 0 0 0 1 0 0 0 1 1 0 0 0 1 0 0 0 1</DataArray></PointData></Piece>\n</ImageData>\n</VTKFile>\n";
+  };
+  const fs::path p = tmpDir() / "t.vti";
+  test::writeFile(p, vti("0 0 1,5", "9"));
+  EXPECT_EQ(test::readError(p), "readVtk: " + p.string() +
+                                    ": ImageData attribute Origin=\"0 0 1,5\" holds \"1,5\", which is not a number");
+  test::writeFile(p, vti("0 0 1.5", "9x"));
+  EXPECT_EQ(test::readError(p), "readVtk: " + p.string() +
+                                    ": DataArray attribute NumberOfComponents=\"9x\" holds \"9x\", which is not an integer");
+  test::writeFile(p, vti("+0 -0 1.5e0", "9"));
+  const io::TensorField f = io::readTensorField(p.string(), {});
+  ASSERT_EQ(f.size(), 2u);
+  EXPECT_FLOAT_EQ(f.positions[2], 1.5f);
+}
