@@ -61,7 +61,7 @@ std::vector<std::uint64_t> checkObjText(const std::string& path, std::uint64_t& 
     const std::size_t from = continued ? 0 : 1;
     continued = false;
     if (!indexLine && (w[0] == "v" || w[0] == "vt" || w[0] == "vn")) {
-      const std::size_t need = w[0] == "vt" ? 2 : 3;
+      const std::size_t need = w[0] == "vt" ? 1 : 3;  // vt u [v [w]]
       if (w.size() - 1 < need)
         failAt(path, n, std::string(w[0]) + " needs " + std::to_string(need) + " numbers, the line has " +
                             std::to_string(w.size() - 1));

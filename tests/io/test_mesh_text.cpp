@@ -85,7 +85,7 @@ TEST(MeshText, ObjNeighboursStillRead) {
   const io::MeshData m = read(p);
   EXPECT_EQ(m.skippedNonFinite, 0u);
   EXPECT_EQ(m.triangleCount(), 2u);
-  test::writeFile(p, "v 0 0 0 1\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvt 0 0\nf 1//1 2//1 3//1\nf 1/1/1 2/1/1 3/1/1\n");
+  test::writeFile(p, "v 0 0 0 1\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvt 0\nf 1//1 2//1 3//1\nf 1/1/1 2/1/1 3/1/1\n");
   EXPECT_EQ(read(p).triangleCount(), 2u);
 }
 
