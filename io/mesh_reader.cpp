@@ -24,6 +24,8 @@
 #include <vtkNew.h>
 #include <vtkOBJReader.h>
 #include <vtkPLYReader.h>
+#include <vtkPointSet.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkSTLReader.h>
 #include <vtkSmartPointer.h>
@@ -32,6 +34,7 @@
 #include <vtkUnstructuredGrid.h>
 
 #include "io/format_impl.h"
+#include "io/mesh_text_checks.h"
 #include "io/readers.h"
 #include "io/vtk_capture.h"
 #include "io/vtk_dataset.h"
@@ -195,6 +198,20 @@ void checkCellPoints(vtkDataSet* ds, const std::string& path) {
   }
 }
 
+// VTK's OBJ reader cannot read a NaN/Inf coordinate (its stream stops and
+// leaves 0 or the last vertex's value): the vertices checkObjText found are
+// made NaN here, so that their cells are skipped and counted.
+void markNonFiniteVertices(vtkDataSet* ds, const std::string& path, const std::vector<std::uint64_t>& vertices,
+                           std::uint64_t fileVertices) {
+  if (vertices.empty()) return;
+  auto* ps = vtkPointSet::SafeDownCast(ds);
+  if (!ps || !ps->GetPoints() || std::uint64_t(ps->GetNumberOfPoints()) != fileVertices)
+    fail(path, "a vertex has a NaN/Inf coordinate, and VTK's points do not follow the file's vertices (faces index "
+               "normals or texture coordinates apart), so its cells cannot be told");
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  for (const std::uint64_t v : vertices) ps->GetPoints()->SetPoint(vtkIdType(v), nan, nan, nan);
+}
+
 constexpr const char* kSourceCell = "tg_source_cell";
 
 // Cells of `ds` with a NaN/Inf or out-of-range vertex, counted in `skipped`;
@@ -292,7 +309,12 @@ MeshData impl::readMesh(const std::string& path, MeshSource source, std::uint64_
   MeshData m;
   if (ext == "stl" || ext == "obj" || ext == "ply") {
     if (ext == "stl") checkStl(path, size);
+    if (ext == "stl") checkStlText(path);
     if (ext == "ply") checkPly(path, size);
+    if (ext == "ply") checkPlyText(path);
+    std::uint64_t objVertices = 0;
+    const std::vector<std::uint64_t> nonFiniteVertices = ext == "obj" ? checkObjText(path, objVertices)
+                                                                       : std::vector<std::uint64_t>{};
     // VTK's points and cells, its triangulated copy and ours: every value
     // takes at least a byte of the file, and becomes at most 8 bytes, thrice.
     const long double need = 24.0L * (long double)size + (64 << 20);
@@ -317,6 +339,7 @@ MeshData impl::readMesh(const std::string& path, MeshSource source, std::uint64_
     runVtk(reader, path);
     auto* ds = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
     if (!ds) fail(path, "VTK read no dataset");
+    markNonFiniteVertices(ds, path, nonFiniteVertices, objVertices);
     checkCellPoints(ds, path);
     std::size_t skipped = 0;
     const std::vector<char> bad = markBadCells(ds, nullptr, skipped);

@@ -21,6 +21,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <optional>
 #include <type_traits>
 #include <utility>
 #include <vector>
@@ -31,6 +32,7 @@
 #include "io/selection.h"
 #include "io/volume_sink.h"
 #include "util/huge_pages.h"
+#include "util/strict_number.h"
 #include "util/unique_fd.h"
 
 namespace tg::io {
@@ -102,21 +104,17 @@ std::vector<std::string_view> splitList(const std::string& path, const std::stri
 }
 
 std::uint64_t parseCount(const std::string& path, const std::string& key, std::string_view s) {
-  std::uint64_t x = 0;
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), x);
-  if (ec != std::errc() || end != s.data() + s.size() || s.empty())
+  const std::optional<long long> x = util::parseInteger(s);
+  if (!x || *x < 0 || s[0] == '+' || s[0] == '-')
     fail(path, key + ": \"" + std::string(s) + "\" is not a non-negative integer");
-  return x;
+  return std::uint64_t(*x);
 }
 
 double parseReal(const std::string& path, const std::string& key, std::string_view s) {
-  if (!s.empty() && s[0] == '+') s.remove_prefix(1);
-  double x = 0;
-  const auto [end, ec] = std::from_chars(s.data(), s.data() + s.size(), x);
-  if (ec != std::errc() || end != s.data() + s.size() || s.empty())
-    fail(path, key + ": \"" + std::string(s) + "\" is not a number");
-  if (!std::isfinite(x)) fail(path, key + ": " + std::string(s) + " is not finite");
-  return x;
+  const std::optional<double> x = util::parseNumber(s);
+  if (!x) fail(path, key + ": \"" + std::string(s) + "\" is not a number");
+  if (!std::isfinite(*x)) fail(path, key + ": " + std::string(s) + " is not finite");
+  return *x;
 }
 
 struct Header {

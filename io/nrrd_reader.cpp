@@ -16,16 +16,21 @@
 #include <cfloat>
 #include <cmath>
 #include <cstring>
+#include <cctype>
+#include <optional>
+#include <string_view>
 #include <filesystem>
 #include <functional>
 #include <memory>
 
 #include "io/format_impl.h"
 #include "io/gzip_errors.h"
+#include "io/nrrd_numbers.h"
 #include "io/raw_samples.h"
 #include "io/readers.h"
 #include "io/teem_util.h"
 #include "io/volume_sink.h"
+#include "util/strict_number.h"
 
 namespace tg::io {
 namespace {
@@ -57,6 +62,7 @@ std::unique_ptr<Header> readHeader(const std::string& path) {
     std::unique_ptr<FILE, int (*)(FILE*)> in(std::fopen(path.c_str(), "rb"), &std::fclose);
     if (!in) fail(path, "cannot open file");
     impl::checkNrrdHeaderText("readNrrd", path, in.get());
+    checkNrrdHeaderNumbers("readNrrd", path, in.get());
   }
   // Teem opens its data files in nrrdLoad even with skipData, and the open of
   // a FIFO blocks; stat tells without opening.
@@ -134,16 +140,6 @@ struct BzStream {
   }
 };
 
-// Teem's loader for nrrdTypeULLong goes through a signed integer, which made
-// values of 2^63 and above negative.
-double loadULLong(const void* p) {
-  std::uint64_t v;
-  std::memcpy(&v, p, sizeof v);
-  return double(v);
-}
-
-double (*loaderFor(int type))(const void*) { return type == nrrdTypeULLong ? loadULLong : nrrdDLoad[type]; }
-
 // The data must fit in what follows the header: raw bytes as they are, text
 // at one byte a value at least (two a byte in hex), gzip within deflate's
 // ratio. Checked before anything is sized from the header.
@@ -176,6 +172,58 @@ RawType rawTypeOf(int type) {
   }
 }
 
+// One whitespace-separated word of ascii data, as Teem's decoder splits
+// them (fscanf's %s), into `word`; false at the end of the file.
+bool nextWord(FILE* file, std::string& word) {
+  word.clear();
+  int c;
+  while ((c = std::getc(file)) != EOF && std::isspace(c)) {}
+  for (; c != EOF && !std::isspace(c); c = std::getc(file)) {
+    // Teem reads each word into a fixed 1 KiB buffer.
+    if (word.size() == 512) return true;
+    word.push_back(char(c));
+  }
+  return !word.empty();
+}
+
+// Ascii data, read here rather than by Teem: its decoder takes a word's
+// longest numeric prefix (sscanf), so "3,5" read as 3 and "1.5abc" as 1.5,
+// and it parses into the declared type, so that 300 became 44 in a uchar
+// file. Each word must be a whole number (util/strict_number.h), in the
+// declared type's range. Commas between values, which Teem passes over, are
+// allowed: an isolated "," and commas before or after a value.
+template <class Consume>
+void decodeAscii(const std::string& path, FILE* file, int declared, std::uint64_t count, std::size_t chunkValues,
+                 std::vector<double>& vals, Consume& consume) {
+  const double lo = nrrdTypeMin[declared], hi = nrrdTypeMax[declared];
+  const bool integral = nrrdTypeIsIntegral[declared];
+  std::string word;
+  std::uint64_t done = 0;
+  std::size_t filled = 0;
+  while (done + filled < count) {
+    if (!nextWord(file, word))
+      fail(path, "data is truncated: the ascii data ends after " + std::to_string(done + filled) + " of " +
+                     std::to_string(count) + " values");
+    if (word.size() == 512) fail(path, "ascii data holds a word longer than 511 characters");
+    const std::size_t first = word.find_first_not_of(',');
+    if (first == std::string::npos) continue;
+    const std::string_view text = std::string_view(word).substr(first, word.find_last_not_of(',') + 1 - first);
+    const std::string where = " (value " + std::to_string(done + filled) + ")";
+    const std::optional<double> v = util::parseNumber(text);
+    if (!v) fail(path, "ascii value \"" + std::string(text) + "\"" + where + " is not a number");
+    if (integral && !(*v >= lo && *v <= hi && *v == std::floor(*v)))
+      fail(path, "ascii value " + std::string(text) + where + " is not a " + airEnumStr(nrrdType, declared));
+    if (declared == nrrdTypeFloat && std::isfinite(*v) && std::abs(*v) > FLT_MAX)
+      fail(path, "ascii value " + std::string(text) + where + " is beyond the float range");
+    vals[filled++] = *v;
+    if (filled == chunkValues || done + filled == count) {
+      consume(vals.data(), filled);
+      done += filled;
+      filled = 0;
+    }
+  }
+}
+
 // Streams `count` values, `record` at a time (a voxel's values never straddle
 // two calls), into `consume(const double* values, size_t n)`.
 template <class Consume>
@@ -186,7 +234,6 @@ void decode(const std::string& path, Header& h, std::uint64_t count, std::size_t
   const std::uint64_t bytes = count * tsize;
   FILE* file = nio->dataFile;
   const long pos = std::ftell(file);
-  double (*load)(const void*) = loaderFor(n->type);
   // Whole records, at most 4 MiB, and no more than the data: a fresh reader
   // process pays a page fault for every page of these buffers.
   const std::uint64_t records = std::min<std::uint64_t>(std::max<std::size_t>(1, kChunkBytes / (tsize * record)),
@@ -200,46 +247,19 @@ void decode(const std::string& path, Header& h, std::uint64_t count, std::size_t
   };
 
   checkEncodedSize(path, h, count);
-  if (nio->encoding == nrrdEncodingAscii || nio->encoding == nrrdEncodingHex) {
-    // Teem's ascii decoder reads each token into a fixed 1 KiB buffer;
-    // refuse longer tokens before it sees them.
-    if (nio->encoding == nrrdEncodingAscii) {
-      std::size_t run = 0;
-      for (int c; (c = std::fgetc(file)) != EOF;) {
-        run = std::isspace(c) ? 0 : run + 1;
-        if (run > 512) fail(path, "ascii data holds a token longer than 512 characters");
-      }
-      std::clearerr(file);
-      std::fseek(file, pos, SEEK_SET);
-    }
-    // Teem parses ascii text into the declared type, so that 300 became 44
-    // in a uchar file: parse into doubles instead and check each value
-    // against the declared type's range (hex is bytes, and cannot wrap).
-    const bool ascii = nio->encoding == nrrdEncodingAscii;
-    const int declared = n->type;
-    const double lo = ascii ? nrrdTypeMin[declared] : 0, hi = ascii ? nrrdTypeMax[declared] : 0;
-    const bool integral = ascii && nrrdTypeIsIntegral[declared];
-    struct RestoreType {
-      Nrrd* n;
-      int type;
-      ~RestoreType() { n->type = type; }
-    } restore{n, declared};
-    if (ascii) n->type = nrrdTypeDouble;
+  if (nio->encoding == nrrdEncodingAscii) {
+    decodeAscii(path, file, n->type, count, chunkValues, vals, consume);
+    return;
+  }
+  if (nio->encoding == nrrdEncodingHex) {
+    // Teem's hex decoder gives the bytes in file order; its nrrdRead swaps
+    // them afterwards where the endian field differs (hex is an encoding
+    // whose endianness matters), as the raw path does here.
+    const bool swap = tsize > 1 && nio->endian != airMyEndian();
     for (std::uint64_t done = 0; done < count;) {
       const std::size_t want = std::size_t(std::min<std::uint64_t>(chunkValues, count - done));
-      if (nio->encoding->read(file, ascii ? static_cast<void*>(vals.data()) : buf.data(), want, n, nio))
-        fail(path, teemNrrdError());
-      for (std::size_t i = 0; i < want; ++i) {
-        if (!ascii) {
-          vals[i] = load(buf.data() + i * tsize);  // native order already
-        } else if (integral && !(vals[i] >= lo && vals[i] <= hi && vals[i] == std::floor(vals[i]))) {
-          fail(path, "ascii value " + std::to_string(vals[i]) + " (value " + std::to_string(done + i) + ") is not a " +
-                         airEnumStr(nrrdType, declared));
-        } else if (!integral && declared == nrrdTypeFloat && std::isfinite(vals[i]) && std::abs(vals[i]) > FLT_MAX) {
-          fail(path, "ascii value " + std::to_string(vals[i]) + " (value " + std::to_string(done + i) +
-                         ") is beyond the float range");
-        }
-      }
+      if (nio->encoding->read(file, buf.data(), want, n, nio)) fail(path, teemNrrdError());
+      rawToDoubles(rawTypeOf(n->type), swap, buf.data(), want, vals.data());
       consume(vals.data(), want);
       done += want;
     }
@@ -326,6 +346,35 @@ std::uint64_t gridDims(const std::string& path, const Nrrd* n, unsigned first, i
   return voxels;
 }
 
+// Where an old header (no space) puts samples 0 and 1 of axis `ax`, as
+// Teem's nrrdAxisInfoPos does: from the axis min and max, cell-centred
+// unless "centers" says node (Teem's default centring), so that sample i of
+// n cells lies at min + (i + 0.5)(max - min)/n, of n nodes at min + i(max -
+// min)/(n - 1). One sample of a cell lies midway; one node must have min ==
+// max. Without a max the spacing (else 1) steps from the min, with the
+// same half step for cells; without a min, back from the max.
+void axisPlacement(const std::string& path, const Nrrd* n, unsigned ax, double& p0, double& step) {
+  const NrrdAxisInfo& a = n->axis[ax];
+  const bool cell = (a.center == nrrdCenterUnknown ? nrrdDefaultCenter : a.center) == nrrdCenterCell;
+  const double size = double(a.size);
+  p0 = 0;
+  step = std::isfinite(a.spacing) ? a.spacing : 1.0;
+  if (std::isfinite(a.min) && std::isfinite(a.max)) {
+    if (cell || a.size > 1) {
+      p0 = nrrdAxisInfoPos(n, ax, 0);
+      step = nrrdAxisInfoPos(n, ax, 1) - p0;
+    } else if (a.min == a.max) {
+      p0 = a.min;
+    } else {
+      fail(path, "axis " + std::to_string(ax) + " holds one node-centred sample, but its axis min and max differ");
+    }
+  } else if (std::isfinite(a.min)) {
+    p0 = a.min + (cell ? step / 2 : 0.0);
+  } else if (std::isfinite(a.max)) {
+    p0 = a.max - step * (cell ? size - 0.5 : size - 1);
+  }
+}
+
 // Index -> WC from space directions, or for old headers from axis
 // spacings or mins/maxs (Teem's nrrdAxisInfoPos honours the centering).
 VolumeGeometry geometry(const std::string& path, const Nrrd* n, unsigned first, TensorField& f) {
@@ -341,21 +390,8 @@ VolumeGeometry geometry(const std::string& path, const Nrrd* n, unsigned first, 
     for (int r = 0; r < 3; ++r) g.originWC[r] = std::isfinite(n->spaceOrigin[r]) ? n->spaceOrigin[r] : 0.0;
     if (!std::isfinite(n->spaceOrigin[0])) f.warnings.push_back("no space origin; using (0,0,0)");
   } else if (n->spaceDim == 0) {
-    for (unsigned k = 0; k < 3; ++k) {
-      double p0 = 0, step = 1;
-      if (first + k < n->dim) {
-        const NrrdAxisInfo& ax = n->axis[first + k];
-        if (std::isfinite(ax.min) && std::isfinite(ax.max) && ax.size > 1) {
-          p0 = nrrdAxisInfoPos(n, first + k, 0);
-          step = nrrdAxisInfoPos(n, first + k, 1) - p0;
-        } else if (std::isfinite(ax.spacing)) {
-          step = ax.spacing;
-          if (std::isfinite(ax.min)) p0 = ax.min;
-        }
-      }
-      g.axesWC[4 * k] = step;
-      g.originWC[k] = p0;
-    }
+    for (unsigned k = 0; k < 3 && first + k < n->dim; ++k)
+      axisPlacement(path, n, first + k, g.originWC[k], g.axesWC[4 * k]);
   } else {
     fail(path, "space of dimension " + std::to_string(n->spaceDim) + " is not supported; tensors need 3");
   }

@@ -4,10 +4,13 @@
 // "Cartesian Stress: N" then N lines "Sxx Syy Szz Syz Szx Sxy".
 #include <charconv>
 #include <cstring>
+#include <optional>
+#include <string_view>
 #include <fstream>
 #include <string>
 
 #include "io/tsv_trailer.h"
+#include "util/strict_number.h"
 
 namespace tg::io {
 
@@ -31,23 +34,28 @@ bool readTsvStressTrailer(const std::string& path, std::uint64_t points, std::ve
     if (!std::getline(in, line))
       throw InputError("readVtk: " + path + ": \"Cartesian Stress\" ends after " + std::to_string(i) + " of " +
                        std::to_string(n) + " rows");
+    // Whole numbers (util/strict_number.h), six of them: a seventh means
+    // another layout than 3D-TSV's, not one to read the first six of.
     double s[6];
-    const char* p = line.data();
-    const char* e = p + line.size();
-    for (double& v : s) {
-      while (p < e && (*p == ' ' || *p == '\t' || *p == '\r')) ++p;
-      const auto r = std::from_chars(p, e, v);
-      if (r.ec != std::errc())
+    std::size_t count = 0;
+    for (std::size_t k = 0; k < line.size();) {
+      while (k < line.size() && (line[k] == ' ' || line[k] == '\t' || line[k] == '\r')) ++k;
+      const std::size_t from = k;
+      while (k < line.size() && !(line[k] == ' ' || line[k] == '\t' || line[k] == '\r')) ++k;
+      if (k == from) break;
+      const std::string_view word = std::string_view(line).substr(from, k - from);
+      const std::optional<double> v = util::parseNumber(word);
+      if (!v)
+        throw InputError("readVtk: " + path + ": \"Cartesian Stress\" row " + std::to_string(i) + ": \"" +
+                         std::string(word) + "\" is not a number");
+      if (count == 6)
         throw InputError("readVtk: " + path + ": \"Cartesian Stress\" row " + std::to_string(i) +
-                         " does not hold six numbers");
-      p = r.ptr;
+                         " holds more than six numbers (Sxx Syy Szz Syz Szx Sxy)");
+      s[count++] = *v;
     }
-    // A seventh number means another layout than 3D-TSV's six, not one to
-    // read the first six of.
-    while (p < e && (*p == ' ' || *p == '\t' || *p == '\r')) ++p;
-    if (p != e)
+    if (count < 6)
       throw InputError("readVtk: " + path + ": \"Cartesian Stress\" row " + std::to_string(i) +
-                       " holds more than six numbers (Sxx Syy Szz Syz Szx Sxy)");
+                       " does not hold six numbers");
     // Sxx Syy Szz Syz Szx Sxy -> row-major 3x3.
     const double m[9] = {s[0], s[5], s[4], s[5], s[1], s[3], s[4], s[3], s[2]};
     std::copy(m, m + 9, &full9[9 * i]);

@@ -4,12 +4,14 @@
 // VTK's own errors. Shared by the tensor reader and the mesh reader
 // (io/mesh_reader.h); run it in the guarded child (io/read_guard.h).
 #include <string>
+#include <vector>
 
 #include <vtkDataSet.h>
 #include <vtkSmartPointer.h>
 
 #include "io/readers.h"
 #include "io/vtk_nonfinite.h"
+#include "io/vtk_xml_pieces.h"
 
 namespace tg::io {
 
@@ -17,6 +19,7 @@ struct ReadResult {
   vtkSmartPointer<vtkDataSet> data;
   std::string vtkSaid;      // VTK's first warning; empty: VTK said nothing
   NonFiniteText nonFinite;  // legacy ASCII read through sentinels: restore each value
+  std::vector<PieceGap> pieceGaps;  // XML point arrays some piece lacks, left unread (io/vtk_xml_pieces.h)
 };
 
 // .vtk (legacy), .vti, .vtu, .vtp or .vts by extension. `dims`: the grid a

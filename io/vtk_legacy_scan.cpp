@@ -6,8 +6,10 @@
 #include <cstdlib>
 #include <fstream>
 #include <sstream>
+#include <vector>
 
 #include "io/tensor_field.h"
+#include "util/strict_number.h"
 
 namespace tg::io {
 namespace {
@@ -73,6 +75,48 @@ class SpaceRunAfterNumbers {
   int runLine_ = 0;
 };
 
+// VTK's ASCII reader streams numbers (operator>>), which stop at the first
+// character that cannot continue one: "1,5" read as 1 and ",5" then as the
+// next keyword, and the file was refused as having no point tensors, or
+// read on with a wrong value where the rest parsed. Every word of a data
+// line (one beginning with a number), and the numbers after the keywords
+// that take them, must be whole numbers (util/strict_number.h).
+void checkAsciiNumbers(const std::string& path, const std::string& line, int lineNo) {
+  std::istringstream ls(line);
+  std::vector<std::string> w;
+  for (std::string word; ls >> word;) w.push_back(word);
+  if (w.empty()) return;
+  auto refuse = [&](const std::string& word) {
+    fail(path, "line " + std::to_string(lineNo + 1) + ": \"" + word + "\" is not a number");
+  };
+  const char c = w[0][0];
+  if (std::isdigit(static_cast<unsigned char>(c)) || c == '-' || c == '+' || c == '.') {
+    // A FIELD array's line: NAME COMPONENTS TUPLES TYPE, whose name may begin with a digit.
+    if (w.size() == 4 && util::parseInteger(w[1]) && util::parseInteger(w[2]) &&
+        std::isalpha(static_cast<unsigned char>(w[3][0])))
+      return;
+    // Beyond double's range ("1e999") is left to the checks that say "not finite".
+    for (const std::string& word : w)
+      if (!util::parseNumber(word) && !util::outOfRange(word)) refuse(word);
+    return;
+  }
+  std::string key = w[0];
+  std::transform(key.begin(), key.end(), key.begin(), [](unsigned char ch) { return char(std::toupper(ch)); });
+  // Where each keyword's numbers are: from word `first`, `count` of them.
+  std::size_t first = 1, count = 0;
+  if (key == "DIMENSIONS" || key == "SPACING" || key == "ORIGIN" || key == "ASPECT_RATIO") count = 3;
+  else if (key == "POINTS" || key == "POINT_DATA" || key == "CELL_DATA" || key == "CELL_TYPES" ||
+           key == "X_COORDINATES" || key == "Y_COORDINATES" || key == "Z_COORDINATES")
+    count = 1;
+  else if (key == "CELLS" || key == "POLYGONS" || key == "LINES" || key == "VERTICES" || key == "TRIANGLE_STRIPS")
+    count = 2;
+  else if (key == "FIELD" || key == "COLOR_SCALARS" || key == "TEXTURE_COORDINATES") first = 2, count = 1;
+  else if (key == "SCALARS") first = 3, count = 1;
+  else if (key == "LOOKUP_TABLE" && w.size() > 2) first = 2, count = 1;
+  for (std::size_t k = first; k < std::min(w.size(), first + count); ++k)
+    if (!util::parseNumber(w[k]) && !util::outOfRange(w[k])) refuse(w[k]);
+}
+
 }  // namespace
 
 // Every value takes at least one byte (ASCII) or its binary size, so a
@@ -83,7 +127,7 @@ std::uint64_t checkLegacyCounts(const std::string& path, std::uint64_t fileSize)
   std::ifstream in(path, std::ios::binary);
   std::string line;
   std::uint64_t points = 0;
-  bool binary = false, newCellFormat = false;
+  bool binary = false, newCellFormat = false, trailer = false;
   std::uint64_t tuples = 0;
   long double dataBytes = 0;  // lower bound for binary files
   auto impossible = [&](const std::string& key, long double values) {
@@ -94,6 +138,9 @@ std::uint64_t checkLegacyCounts(const std::string& path, std::uint64_t fileSize)
     if (lineNo == 0) newCellFormat = line.find("Version 5") != std::string::npos;
     if (lineNo == 2) binary = line.rfind("BINARY", 0) == 0;
     if (!binary && lineNo > 2) spaces.line(path, line, lineNo);
+    // 3D-TSV's stress trailer is read, strictly, by io/tsv_trailer.cpp.
+    trailer |= line.rfind("Cartesian Stress:", 0) == 0;
+    if (!binary && lineNo > 2 && !trailer) checkAsciiNumbers(path, line, lineNo);
     // A binary file's arrays are read as lines too, and their bytes can spell
     // a keyword and numbers; header lines are printable text.
     if (binary && lineNo > 2 && !std::all_of(line.begin(), line.end(), [](unsigned char ch) {

@@ -115,6 +115,7 @@ ReadResult runReader(vtkAlgorithm* reader, const std::string& path, std::uint64_
   };
   const bool xml = legacyPoints == 0;
   std::uint64_t points = legacyPoints;
+  std::vector<PieceGap> gaps;
   // What VTK holds while it parses: the file's values decoded (an ASCII value
   // is at least 2 bytes and becomes at most 8), or for compressed XML all
   // points with a generous 256 bytes of arrays and cells each.
@@ -128,6 +129,8 @@ ReadResult runReader(vtkAlgorithm* reader, const std::string& path, std::uint64_
     if (points > fileSize * 1032) fail(path, "header claims " + std::to_string(points) + " points, more than the file can hold");
     if (xmlCompressed(reader)) libraryBytes = std::max(libraryBytes, 256 * points);
     checkXmlStructure(reader, path);
+    gaps = matchPieceArrays(reader, path);
+    check("unreadable XML header");
     if (dims) {
       int e[6];
       vtkInformation* info = reader->GetOutputInformation(0);
@@ -143,7 +146,7 @@ ReadResult runReader(vtkAlgorithm* reader, const std::string& path, std::uint64_
   auto* out = vtkDataSet::SafeDownCast(reader->GetOutputDataObject(0));
   if (!out) fail(path, said.first().empty() ? "no dataset in file" : said.first());
   checkGridPoints(out, path);
-  return {out, said.first(), {}};
+  return {out, said.first(), {}, std::move(gaps)};
 }
 
 // Index to world of image data: origin + Direction diag(spacing) ijk.
@@ -167,10 +170,18 @@ std::string nameOf(vtkDataArray* a) { return a->GetName() ? a->GetName() : "?"; 
 // Arrays of 3 or 4 components are vectors and colours as often as tensors:
 // without --array, only OpenGeoSys's stress and strain names count, which it
 // writes as 4 components (XX YY ZZ XY) on 2-D meshes.
-bool tensorLike(vtkDataArray* a) {
-  const int nc = a->GetNumberOfComponents();
-  const std::string name = nameOf(a);
+bool tensorLike(int nc, const std::string& name) {
   return nc == 9 || nc == 6 || (nc == 4 && (name == "sigma" || name == "epsilon"));
+}
+bool tensorLike(vtkDataArray* a) { return tensorLike(a->GetNumberOfComponents(), nameOf(a)); }
+
+// An XML point array a piece lacks could be the one read as the tensors
+// (the one --array names, the active tensors, or without --array any
+// tensor-like one): such a file is refused rather than read without it.
+void checkPieceGaps(const ReadResult& read, const std::string& path, const ReadOptions& opt) {
+  for (const PieceGap& g : read.pieceGaps)
+    if (opt.arrayName.empty() ? g.activeTensors || tensorLike(g.components, g.name) : g.name == opt.arrayName)
+      fail(path, g.problem);
 }
 
 bool hasTensorArray(vtkDataSet* ds) {
@@ -356,6 +367,8 @@ ScalarVolume impl::readVtiScalar(const std::string& path, const int* dims) {
   if (!dims) opt.memoryBudget = defaultMemoryBudget();
   const ReadResult read = readDataSet(path, opt, dims);
   if (!read.vtkSaid.empty()) fail(path, read.vtkSaid);
+  // The scalar array is chosen by its place, which a missing array moves.
+  if (!read.pieceGaps.empty()) fail(path, read.pieceGaps[0].problem);
   vtkDataSet* ds = read.data;
   auto* img = vtkImageData::SafeDownCast(ds);
   if (!img) fail(path, "a mask or underlay must be image data");
@@ -375,6 +388,7 @@ TensorField impl::readVtk(const std::string& path, const ReadOptions& opt) {
   if (const std::string o = inapplicableOption(InputFormat::Vtk, opt); !o.empty())
     fail(path, o + " does not apply to VTK, whose tensors have a fixed order in world axes");
   const ReadResult read = readDataSet(path, opt);
+  checkPieceGaps(read, path, opt);
   vtkDataSet* ds = read.data;
   const vtkIdType n = ds->GetNumberOfPoints();
   if (n <= 0) fail(path, "no points");

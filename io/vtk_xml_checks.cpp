@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <string_view>
 #include <vector>
 
 #include <vtkAlgorithm.h>
@@ -18,6 +19,7 @@
 #include <vtkXMLReader.h>
 
 #include "io/tensor_field.h"
+#include "util/strict_number.h"
 
 namespace tg::io {
 namespace {
@@ -115,11 +117,38 @@ void checkAppendedRaw(std::ifstream& in, std::uint64_t pos, const Framing& fr, v
   if (need > room) beyond(need);
 }
 
+// VTK's parser streams an ascii array's values (operator>>), which stop
+// where a number cannot continue: "1.5abc" as the last value read as 1.5,
+// "3,5" as 3. Every word must be a whole number, an integer in an integer
+// array (util/strict_number.h).
+void checkAsciiWords(vtkXMLDataElement* e, std::ifstream& in, const std::string& path) {
+  const std::string type = e->GetAttribute("type") ? e->GetAttribute("type") : "";
+  const bool integral = type.find("Int") != std::string::npos;
+  in.clear();
+  in.seekg(e->GetXMLByteIndex());
+  for (char c; in.get(c) && c != '>';) {}
+  std::string word;
+  auto judge = [&] {
+    if (word.empty()) return;
+    if (integral ? !util::parseInteger(word) : !util::parseNumber(word) && !util::outOfRange(word))
+      fail(path, "ascii array " + arrayName(e) + " holds \"" + word + "\", which is not " +
+                     (integral ? "an integer" : "a number"));
+    word.clear();
+  };
+  for (char c; in.get(c) && c != '<';) {
+    if (std::isspace(static_cast<unsigned char>(c))) judge();
+    else if (word.size() < 256) word.push_back(c);
+    else fail(path, "ascii array " + arrayName(e) + " holds a word longer than 256 characters");
+  }
+  judge();
+}
+
 void checkArrays(vtkXMLDataElement* e, std::ifstream& in, const Framing& fr, const std::string& path) {
   for (int k = 0; k < e->GetNumberOfNestedElements(); ++k) {
     vtkXMLDataElement* child = e->GetNestedElement(k);
     const char* format = child->GetAttribute("format");
     const bool array = std::strcmp(child->GetName(), "DataArray") == 0 && format;
+    if (array && std::strcmp(format, "ascii") == 0) checkAsciiWords(child, in, path);
     if (array && std::strcmp(format, "binary") == 0 && !fr.compressed) {
       unsigned char head[8] = {};
       const std::uint64_t have = base64Bytes(in, child->GetXMLByteIndex(), true, head, fr.prefix);
@@ -293,6 +322,35 @@ void checkPiecesCover(const long long whole[6], const std::vector<std::array<lon
     fail(path, "its pieces leave part of the WholeExtent uncovered: those points would be left unset");
 }
 
+// VTK reads numeric attributes with a stream too (GetVectorAttribute,
+// GetScalarAttribute): Origin="0 0 1,5" read as z = 1, NumberOfComponents="9x"
+// as 9. Each such attribute's words must be whole numbers, integers where
+// VTK reads integers (util/strict_number.h).
+void checkNumericAttributes(vtkXMLDataElement* e, const std::string& path) {
+  static const char* const kIntegers[] = {"WholeExtent",   "Extent",        "NumberOfPoints", "NumberOfCells",
+                                          "NumberOfVerts", "NumberOfLines", "NumberOfStrips", "NumberOfPolys",
+                                          "NumberOfComponents", "NumberOfTuples", "offset"};
+  static const char* const kReals[] = {"Origin", "Spacing", "Direction"};
+  auto check = [&](const char* name, bool integral) {
+    const char* value = e->GetAttribute(name);
+    if (!value) return;
+    const std::string_view v(value);
+    for (std::size_t k = 0; k < v.size();) {
+      while (k < v.size() && std::isspace(static_cast<unsigned char>(v[k]))) ++k;
+      const std::size_t from = k;
+      while (k < v.size() && !std::isspace(static_cast<unsigned char>(v[k]))) ++k;
+      const std::string_view word = v.substr(from, k - from);
+      if (word.empty() || (integral ? util::parseInteger(word).has_value() : util::parseNumber(word).has_value()))
+        continue;
+      fail(path, std::string(e->GetName()) + " attribute " + name + "=\"" + value + "\" holds \"" + std::string(word) +
+                     "\", which is not " + (integral ? "an integer" : "a number"));
+    }
+  };
+  for (const char* name : kIntegers) check(name, true);
+  for (const char* name : kReals) check(name, false);
+  for (int k = 0; k < e->GetNumberOfNestedElements(); ++k) checkNumericAttributes(e->GetNestedElement(k), path);
+}
+
 // A structured dataset's numbers VTK would otherwise replace by defaults
 // when they do not parse (Spacing="nan 1 1" became spacing 1), and pieces
 // outside the whole extent, whose points VTK leaves uninitialised.
@@ -367,6 +425,7 @@ bool xmlCompressed(vtkAlgorithm* reader) {
 void checkXmlStructure(vtkAlgorithm* reader, const std::string& path) {
   vtkXMLDataElement* root = rootOf(reader);
   if (!root) return;
+  checkNumericAttributes(root, path);
   checkStructured(root, path);
   Framing fr;
   fr.compressed = root->GetAttribute("compressor") != nullptr;

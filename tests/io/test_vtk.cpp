@@ -228,7 +228,10 @@ TEST(Vtk, TsvTrailerRowsHoldSixNumbers) {
   for (const char* row : {"1 2 3 0.4 0.5 0.6 0.7", "1 2 3 0.4 0.5 0.6x"}) {
     test::writeFile(d / "tsv7.vtk", head + row + "\n-1 -2 -3 0 0 0\n");
     const std::string msg = errorOf(d / "tsv7.vtk");
-    EXPECT_NE(msg.find("row 0 holds more than six numbers"), std::string::npos) << row << ": " << msg;
+    // A number with more after it is not read by its prefix either (issue 30).
+    EXPECT_NE(msg.find(row[17] == 'x' ? "row 0: \"0.6x\" is not a number" : "row 0 holds more than six numbers"),
+              std::string::npos)
+        << row << ": " << msg;
     EXPECT_NE(msg.find((d / "tsv7.vtk").string()), std::string::npos) << msg;
   }
 }
