@@ -24,6 +24,7 @@
 #include "gl/context.h"
 #include "io/array_field.h"
 #include "io/image_writer.h"
+#include "io/selection.h"
 #include "io/tensor_field.h"
 #include "util/progress.h"
 
@@ -103,6 +104,28 @@ class ProgressCallback {
   std::exception_ptr error_;
 };
 
+// Every option checked as the CLI checks it before loading, against this
+// source: a file's (or the built-in scene's) through app::checkOptionsApply,
+// with the path as the CLI's INPUT (--mesh-from-input reads its mesh);
+// arrays' through io::inapplicableArrayOption, and points' selection by the
+// Selector a VTK file's points get (stride and ROI apply; a slice or mask,
+// which need a grid, is refused). No option is taken and left unused.
+void validateFor(const Source& s, app::RenderOptions& o) {
+  if (s.tensorsRef) {
+    if (const std::string flag = io::inapplicableArrayOption(o.field.read); !flag.empty())
+      throw app::UsageError(flag + " does not apply to tensors given as arrays");
+    if (o.mesh.fromInput)
+      throw app::UsageError("--mesh-from-input does not apply to tensors given as arrays: they come with no FEM mesh");
+    if (s.positionsRef) {
+      [[maybe_unused]] const io::Selector points(o.field.read.selection, "<array>", nullptr);
+    }
+  } else {
+    app::checkOptionsApply(s.path, o.field.read);
+  }
+  o.input = s.path;
+  app::validateRenderOptions(o, false);
+}
+
 app::Scene loadSource(const Source& s, const app::RenderOptions& o) {
   if (!s.tensorsRef) {
     io::ReadOptions read = o.field.read;
@@ -112,7 +135,7 @@ app::Scene loadSource(const Source& s, const app::RenderOptions& o) {
   app::Scene scene;
   const io::ArrayRef& t = *s.tensorsRef;
   if (s.positionsRef) {
-    scene.field = io::fieldFromPoints(t, s.layout, *s.positionsRef);
+    scene.field = io::fieldFromPoints(t, s.layout, *s.positionsRef, o.field.read.selection);
   } else {
     if (!s.affine) throw std::invalid_argument("affine: a volume needs its 4x4 voxel-to-world affine");
     scene.field = io::fieldFromVolume(t, s.layout, s.affine->data(), s.frame,
@@ -165,7 +188,7 @@ class Renderer {
     app::OptionTable table;
     app::addRenderOptions(table, o);
     applyOptions(table, options, "render");
-    app::validateRenderOptions(o, false);
+    validateFor(source_, o);
     if (!session_ || reloadKeys(table, options) != reloadKeys_) {
       {
         py::gil_scoped_release release;
@@ -198,6 +221,15 @@ class Renderer {
     return out;
   }
 
+  // set()'s check: what render() would refuse of `options`, before any load.
+  void check(const OptionList& options) const {
+    app::RenderOptions o;
+    app::OptionTable table;
+    app::addRenderOptions(table, o);
+    applyOptions(table, options, "set");
+    validateFor(source_, o);
+  }
+
   std::uint64_t uploads() const { return previousUploads_ + (session_ ? session_->renderer().uploadCount() : 0); }
   std::size_t glyphCount() const { return session_ ? session_->glyphCount() : 0; }
 
@@ -216,7 +248,7 @@ class Renderer {
     app::OptionTable table;
     app::addRenderOptions(table, o);
     applyOptions(table, options, "Renderer");
-    app::validateRenderOptions(o, false);
+    validateFor(source_, o);
     {
       py::gil_scoped_release release;
       build(o, options, table);
@@ -362,6 +394,7 @@ PYBIND11_MODULE(_core, m) {
            py::arg("tensors"), py::arg("positions"), py::arg("affine"), py::arg("layout"), py::arg("frame"),
            py::arg("path"), py::arg("options"), py::arg("progress"))
       .def("render", &Renderer::render, py::arg("options"), py::arg("channels"))
+      .def("check", &Renderer::check, py::arg("options"))
       .def_property_readonly("uploads", &Renderer::uploads)
       .def_property_readonly("glyph_count", &Renderer::glyphCount);
   // The option table, for keyword checks, docstrings and the type stubs:
@@ -376,15 +409,5 @@ PYBIND11_MODULE(_core, m) {
         out.append(py::make_tuple(opt.keyword(), opt.flag, opt.metavars, opt.helpText, opt.reload));
     return out;
   });
-  m.def(
-      "check",
-      [](const OptionList& options) {
-        app::RenderOptions o;
-        app::OptionTable table;
-        app::addRenderOptions(table, o);
-        applyOptions(table, options, "set");
-        app::validateRenderOptions(o, false);
-      },
-      py::arg("options"));
   m.def("save", &saveFrame, py::arg("frame"), py::arg("path"));
 }

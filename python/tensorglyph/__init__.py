@@ -288,14 +288,17 @@ class Renderer:
         self._callback_threads = set()
         if callable(progress):
             progress = _guarded(progress, self._callback_threads)
-        self._array_source = False
-        self.set(**options)
         t, p, a, lay, fr, path = _source(tensors, positions, affine, layout, frame)
         if path:
             # A file's order and frame are its reader's options, --layout and --frame.
-            self.set(**{k: v for k, v in (("layout", lay), ("frame", fr)) if v})
+            options.update({k: v for k, v in (("layout", lay), ("frame", fr)) if v})
             lay = fr = ""
+        for kw, value in options.items():
+            _occurrences(kw, value)  # TypeError before anything is made
+        self._options = {kw: value for kw, value in options.items() if value is not None}
         self._array_source = t is not None
+        # The core checks every option against this source (as set() does)
+        # before it loads anything.
         with _process.call("Renderer"):
             self._core = _core.Renderer(t, p, a, lay, fr, path, _option_list(self._options), progress)
 
@@ -316,7 +319,7 @@ class Renderer:
                 changed.pop(kw, None)
             else:
                 changed[kw] = value
-        _core.check(_option_list(changed))
+        self._core.check(_option_list(changed))
         self._options = changed
         return self
 
