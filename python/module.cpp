@@ -18,6 +18,7 @@
 #include "app/cli_values.h"
 #include "app/field_flags.h"
 #include "app/option_table.h"
+#include "app/output_check.h"
 #include "app/render_options.h"
 #include "app/render_session.h"
 #include "app/scene.h"
@@ -35,6 +36,8 @@ namespace {
 
 // (keyword, [values]) per occurrence, in the order given.
 using OptionList = std::vector<std::pair<std::string, std::vector<std::string>>>;
+// (keyword, path) of each file a frame was drawn from.
+using InputList = std::vector<std::pair<std::string, std::string>>;
 
 // Usage errors become ValueError, unknown keywords TypeError, as Python's own
 // calls report them; bad data (io::InputError) is ValueError too.
@@ -45,6 +48,18 @@ void applyOptions(const app::OptionTable& table, const OptionList& given, const 
       throw py::type_error(std::string(fn) + "() got an unexpected keyword argument '" + kw + "'");
     app::OptionTable::apply(*opt, values);
   }
+}
+
+// The files a frame was drawn from, named by keyword ("tensors" for the
+// input): what save() must not write over.
+InputList inputsOf(const app::OptionTable& table, const std::vector<app::NamedPath>& paths) {
+  InputList out;
+  for (const app::NamedPath& p : paths) {
+    if (p.path.empty()) continue;
+    const app::OptionTable::Option* opt = p.flag == "INPUT" ? nullptr : table.find(p.flag);
+    out.emplace_back(opt ? opt->keyword() : std::string("tensors"), p.path);
+  }
+  return out;
 }
 
 // With the GIL held: the view is read later without it.
@@ -218,6 +233,7 @@ class Renderer {
       out["id"] = id;
     }
     out["glyphs"] = session_->glyphCount();
+    out["inputs"] = inputsOf(table, app::sceneInputs(source_.path, o));
     return out;
   }
 
@@ -308,8 +324,13 @@ py::array_t<T, py::array::c_style | py::array::forcecast> channel(const py::dict
 
 // Writes what render() returned through the CLI's writers: .exr takes the
 // float and geometry channels (render(..., channels=True)), every other
-// format the 8-bit image.
-void saveFrame(const py::dict& frame, const std::string& path) {
+// format the 8-bit image. First the CLI's output checks: no directory, FIFO,
+// socket or device, no missing directory, none of the files the frame was
+// drawn from (`inputs`).
+void saveFrame(const py::dict& frame, const std::string& path, const InputList& inputs) {
+  std::vector<app::NamedPath> read;
+  for (const auto& [name, file] : inputs) read.push_back({name, file});
+  app::refuseOutputsOverInputs({{"path", path}}, read);
   // A cast would write a float image in 0..1 as black: refused instead.
   const py::array given = py::array::ensure(frame["rgba"]);
   if (!given || !given.dtype().is(py::dtype::of<std::uint8_t>()))
@@ -409,5 +430,5 @@ PYBIND11_MODULE(_core, m) {
         out.append(py::make_tuple(opt.keyword(), opt.flag, opt.metavars, opt.helpText, opt.reload));
     return out;
   });
-  m.def("save", &saveFrame, py::arg("frame"), py::arg("path"));
+  m.def("save", &saveFrame, py::arg("frame"), py::arg("path"), py::arg("inputs"));
 }

@@ -161,11 +161,13 @@ class Figure(np.ndarray):
         fig = np.asarray(frame["rgba"]).view(cls)
         fig.channels = {k: frame[k] for k in ("color", "depth", "normal", "id") if k in frame}
         fig.glyphs = frame["glyphs"]
+        fig.inputs = tuple(frame.get("inputs", ()))
         return fig
 
     def __array_finalize__(self, obj):
         self.channels = getattr(obj, "channels", {})
         self.glyphs = getattr(obj, "glyphs", 0)
+        self.inputs = getattr(obj, "inputs", ())
 
     @property
     def image(self):
@@ -173,7 +175,9 @@ class Figure(np.ndarray):
         return self.view(np.ndarray)
 
     def save(self, path):
-        """Writes the image in any format the CLI writes (by extension)."""
+        """Writes the image in any format the CLI writes (by extension),
+        refusing what the CLI's -o refuses: a directory, a FIFO, socket or
+        device, or one of the files it was drawn from (``inputs``)."""
         save(self, path)
 
     def _repr_png_(self):
@@ -189,13 +193,15 @@ class Figure(np.ndarray):
 
 def save(image, path):
     """Writes a Figure (or an (H, W, 4) uint8 array) to `path`; .exr needs a
-    Figure rendered with channels=True."""
+    Figure rendered with channels=True. A Figure is not written over a file
+    it was drawn from."""
     frame = {"rgba": np.ascontiguousarray(np.asarray(image).view(np.ndarray) if isinstance(image, Figure)
                                           else np.asarray(image))}
+    inputs = list(image.inputs) if isinstance(image, Figure) else []
     if isinstance(image, Figure):
         frame.update(image.channels)
     with _process.call("save", gl=False):
-        _core.save(frame, os.fspath(path))
+        _core.save(frame, os.fspath(path), inputs)
 
 
 class _Process:
