@@ -371,6 +371,10 @@ Source makeSource(std::optional<py::array> tensors, std::optional<py::array> pos
   s.progress = std::make_shared<ProgressCallback>(std::move(progress));
   if (tensors && !path.empty()) throw std::invalid_argument("tensors: give tensors or a path, not both");
   if (positions && !tensors) throw std::invalid_argument("positions: given without tensors");
+  // A file places its own voxels, and the built-in scene has its own place.
+  if (affine && !tensors)
+    throw std::invalid_argument("affine: applies to tensors given as arrays, not to " +
+                                (path.empty() ? std::string("the built-in scene") : "the file " + path));
   if (affine && affine->size() != 16) throw std::invalid_argument("affine: must be 4x4");
   if (positions && affine) throw std::invalid_argument("affine: applies to a volume, not to points with positions");
   if (positions && !frame.empty())

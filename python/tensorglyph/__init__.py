@@ -295,8 +295,9 @@ class Renderer:
         if callable(progress):
             progress = _guarded(progress, self._callback_threads)
         t, p, a, lay, fr, path = _source(tensors, positions, affine, layout, frame)
-        if path:
-            # A file's order and frame are its reader's options, --layout and --frame.
+        if t is None:
+            # A file's order and frame are its reader's options, --layout and
+            # --frame; the built-in scene refuses them as the CLI does.
             options.update({k: v for k, v in (("layout", lay), ("frame", fr)) if v})
             lay = fr = ""
         for kw, value in options.items():

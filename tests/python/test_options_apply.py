@@ -258,5 +258,26 @@ class OptionsApply(unittest.TestCase):
                     elif kw not in NO_VISIBLE_CHANGE:
                         self.assertFalse(np.array_equal(got[1], base[1]), f"{kw}={value!r} changed nothing")
 
+    def test_source_arguments_apply_or_are_refused(self):
+        """layout=, frame= and affine= beside a file or the built-in scene:
+        once taken and dropped without a word. The file's reader takes layout
+        and frame (its --layout and --frame); the built-in scene refuses them,
+        as the CLI does; no file or scene takes an affine."""
+        d = self.data
+        cases = [
+            ("--layout", lambda: tg.render(layout="mrtrix", size=(32, 24))),
+            ("--frame", lambda: tg.render(frame="world", size=(32, 24))),
+            ("affine", lambda: tg.render(affine=np.eye(4), size=(32, 24))),
+            ("affine", lambda: tg.render(d.nifti, affine=np.eye(4), size=(32, 24))),
+            ("--layout", lambda: tg.render(d.vtu, layout="mrtrix", size=(32, 24))),
+            ("positions", lambda: tg.render(d.nifti, positions=d.positions, size=(32, 24))),
+        ]
+        for word, call in cases:
+            with self.subTest(word=word):
+                with self.assertRaises(ValueError) as cm:
+                    call()
+                self.assertIn(word, str(cm.exception))
+
+
 if __name__ == "__main__":
     unittest.main()
