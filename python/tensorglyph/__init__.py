@@ -155,7 +155,9 @@ class Figure(np.ndarray):
     Jupyter shows as a picture. With channels=True, ``channels`` holds
     ``color`` (linear float RGBA), ``depth`` (view-axis distance, inf where
     empty), ``normal`` (world-space) and ``id`` (input index, 0xFFFFFFFF
-    where empty); ``glyphs`` is the number of glyphs uploaded."""
+    where empty); ``glyphs`` is the number of glyphs uploaded; ``inputs``
+    the (keyword, path) of each file it was drawn from, which ``save``
+    refuses to write over."""
 
     def __new__(cls, frame):
         fig = np.asarray(frame["rgba"]).view(cls)
