@@ -2,8 +2,10 @@
 #include <algorithm>
 #include <cstdint>
 #include <cstdio>
+#include <filesystem>
 #include <limits>
 #include <optional>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
@@ -96,6 +98,21 @@ long long checkSynthSize(const KindSize& s, std::optional<long long> n, bool see
     throw UsageError("--n " + std::to_string(*n) + ": " + kind + "'s --n is " + s.meaning + ", within " +
                      std::to_string(s.lo) + ".." + std::to_string(s.hi));
   const long long size = n.value_or(s.byDefault);
+  // The streamed .nhdr is bounded by its disk, not by memory: 24 B a tensor.
+  // A full disk is the disk's state, not the command line's: exit 1, the
+  // file named, as when a write meets the end of the disk.
+  if (endsWith(out, ".nhdr")) {
+    const std::filesystem::path dir = std::filesystem::path(out).has_parent_path()
+                                          ? std::filesystem::path(out).parent_path()
+                                          : std::filesystem::path(".");
+    std::error_code ec;
+    const std::filesystem::space_info space = std::filesystem::space(dir, ec);
+    const std::uint64_t bytes = tensorsOf(s, size) * 24;
+    if (!ec && bytes > space.available)
+      throw std::runtime_error(out + ": " + kind + " --n " + std::to_string(size) + " needs about " +
+                               std::to_string(bytes >> 20) + " MiB on disk, more than the " +
+                               std::to_string(space.available >> 20) + " MiB free there");
+  }
   const long double need = (long double)tensorsOf(s, size) * bytesPerTensorWriting(out);
   const std::uint64_t budget = io::defaultMemoryBudget();
   if (need > (long double)budget)

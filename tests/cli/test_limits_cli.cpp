@@ -74,6 +74,19 @@ TEST(SynthLimits, MemoryIsCheckedPerFormatBeforeGenerating) {
     EXPECT_LT(s, 10.0);
     EXPECT_FALSE(fs::exists(out));
   }
+  // The streamed .nhdr needs 24 B a tensor on disk: refused at once when its
+  // directory has less free, exit 1 as a full disk (run only there, or it
+  // would write 96 GB).
+  const fs::path nhdr = dir() / "big.nhdr";
+  if (fs::space(dir()).available < 4000000000ULL * 24) {
+    CmdResult r;
+    EXPECT_LT(secondsOf("synth random --n 4000000000 -o " + nhdr.string(), r), 10.0);
+    EXPECT_EQ(r.code, 1);
+    EXPECT_NE(r.err.find(nhdr.string() + ": random --n 4000000000 needs about 91552 MiB on disk, more than the"),
+              std::string::npos)
+        << r.err;
+    EXPECT_FALSE(fs::exists(nhdr));
+  }
   // Within range and memory, the sizes asked for are the sizes written.
   const fs::path h = dir() / "h.nrrd", r = dir() / "r.nhdr";
   ASSERT_EQ(run("synth helix --n 6 -o " + h.string()).code, 0);
@@ -102,4 +115,5 @@ TEST(SynthLimits, AMillionListedDataFilesAreRefusedFast) {
     EXPECT_LT(s, 30.0) << cmd;
   }
   EXPECT_FALSE(fs::exists(out));
+  fs::remove(header);  // 13 MB
 }
