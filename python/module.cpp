@@ -212,12 +212,21 @@ class Renderer {
       warnLoaded();
     }
     render::FrameImage img;
+    bool marches = true;
     {
       py::gil_scoped_release release;
       const CurrentFor current(session_->context());
       const app::RenderSession::Frame f = session_->frame(o);
+      marches = f.params.glyph == render::GlyphKind::Superquadric;
       session_->draw(f);
       img = session_->readback(f, channels ? render::Channels::All : render::Channels::Rgba8);
+    }
+    // `render` refuses a march option for glyphs that do not march; a
+    // Renderer keeps it for a later glyph="superquadric", and says so.
+    if (!o.marchFlag.empty() && !marches) {
+      const std::string kw = table.find(o.marchFlag)->keyword();
+      const std::string w = kw + " applies to glyph=\"superquadric\" only; this frame draws " + o.glyph + " glyphs";
+      if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) < 0) throw py::error_already_set();
     }
     py::dict out;
     py::array_t<std::uint8_t> rgba({img.height, img.width, 4});

@@ -267,6 +267,22 @@ class OptionsApply(unittest.TestCase):
         # here applies to one input at least (confidence values: NRRD only).
         self.assertEqual(sorted(set(CASES) - applied), ["confidence_min"])
 
+    def test_march_options_on_glyphs_that_do_not_march_are_named(self):
+        """gamma, iterations and epsilon on ellipsoids: `render` refuses them;
+        a Renderer keeps them for a later glyph="superquadric" and drew
+        without a word. Each now warns, naming the keyword; superquadrics
+        take them without one."""
+        import warnings
+        d = self.data
+        for kw, value in (("gamma", 2.0), ("iterations", 3), ("epsilon", 0.01)):
+            with self.subTest(keyword=kw):
+                with self.assertWarnsRegex(UserWarning, f'{kw} applies to glyph="superquadric" only; this frame draws '
+                                                        "ellipsoid glyphs"):
+                    tg.render(d.nifti, size=(32, 24), **{kw: value})
+                with warnings.catch_warnings():
+                    warnings.simplefilter("error")
+                    tg.render(d.nifti, size=(32, 24), glyph="superquadric", **{kw: value})
+
     def test_source_arguments_apply_or_are_refused(self):
         """layout=, frame= and affine= beside a file or the built-in scene:
         once taken and dropped without a word. The file's reader takes layout
