@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -54,6 +55,14 @@ Helix helixPhantom(int nx, int ny, int nz) {
   const double radius = 0.3 * std::min(nx, ny), tube = 0.07 * std::min(nx, ny);
   const double height = 1.5 * (nz - 1), turns = 2.0;
   const int samples = 720;
+  // The curve's samples and tangents, computed once (not per voxel).
+  std::vector<glm::dvec3> curve, tangents;
+  for (int s = 0; s <= samples; ++s) {
+    const double th = 2.0 * std::numbers::pi * turns * s / samples;
+    curve.emplace_back(radius * std::cos(th), radius * std::sin(th), -0.45 * height + 0.9 * height * s / samples);
+    tangents.push_back(glm::normalize(glm::dvec3(-radius * std::sin(th), radius * std::cos(th),
+                                                 0.9 * height / (2.0 * std::numbers::pi * turns))));
+  }
   std::uint32_t id = 0;
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
@@ -62,14 +71,11 @@ Helix helixPhantom(int nx, int ny, int nz) {
         // The helix lives in grid coordinates, so it follows the rotated grid.
         double best = INFINITY;
         glm::dvec3 tangent(0, 0, 1);
-        for (int s = 0; s <= samples; ++s) {
-          const double th = 2.0 * std::numbers::pi * turns * s / samples;
-          const glm::dvec3 c(radius * std::cos(th), radius * std::sin(th), -0.45 * height + 0.9 * height * s / samples);
-          const double d = glm::length(pGrid - c);
+        for (std::size_t s = 0; s < curve.size(); ++s) {
+          const double d = glm::length(pGrid - curve[s]);
           if (d < best) {
             best = d;
-            tangent = glm::normalize(glm::dvec3(-radius * std::sin(th), radius * std::cos(th),
-                                                0.9 * height / (2.0 * std::numbers::pi * turns)));
+            tangent = tangents[s];
           }
         }
         glm::dmat3 d(0.0);

@@ -101,7 +101,8 @@ class LayoutSample {
 
 }  // namespace
 
-TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, const ArrayRef& positions) {
+TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, const ArrayRef& positions,
+                            const Selection& selection) {
   checkView("tensors", tensors);
   checkView("positions", positions);
   const bool full = tensors.shape.size() == 3 && tensors.shape[1] == 3 && tensors.shape[2] == 3;
@@ -118,7 +119,8 @@ TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, co
   f.description = "points from arrays, " + std::to_string(n) + " tensors";
   f.layout = six ? std::string(l->name) + ": " + l->order : "3x3";
   f.frame = "world: the tensors are given in WC";
-  f.reserve(std::size_t(n));
+  const Selector sel(selection, f.path, nullptr);
+  f.reserve(std::size_t(sel.keptBound(std::uint64_t(n))));
   LayoutSample sample{std::uint64_t(n)};
   for (std::int64_t i = 0; i < n; ++i) {
     const auto where = [i] { return "index " + std::to_string(i); };
@@ -130,6 +132,7 @@ TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, co
     // A tensor with a NaN/Inf component, or beyond single precision, is
     // skipped and counted by addSym, as the file readers skip it: the same
     // data as an array or a file draws alike.
+    if (!sel.admit(std::uint64_t(i), p, f)) continue;
     const bool finite = readElement(tensors, i * tensors.strides[0], 1, v);
     if (full) {
       if (finite && !symmetric(v)) fail("tensors", "the 3x3 tensor at " + where() + " is not symmetric");
@@ -221,6 +224,12 @@ TensorField fieldFromVolume(const ArrayRef& tensors, std::string_view layout, co
   sink.finish();
   if (six) sample.warnInto(f, *l);
   return f;
+}
+
+std::string inapplicableArrayOption(const ReadOptions& opt) {
+  if (!opt.arrayName.empty()) return "--array";
+  if (opt.confidenceGiven) return "--confidence-min";
+  return "";
 }
 
 }  // namespace tg::io

@@ -8,10 +8,12 @@
 // ("tensors: shape (4, 5) is ...").
 #include <cstdint>
 #include <optional>
+#include <string>
 #include <string_view>
 #include <vector>
 
 #include "io/nifti_layouts.h"
+#include "io/readers.h"
 #include "io/selection.h"
 #include "io/tensor_field.h"
 
@@ -26,8 +28,11 @@ struct ArrayRef {
 
 // Points in WC: `tensors` (N, 3, 3), or (N, 6) in `layout` ("fsl", "nifti",
 // "mrtrix" or "vtk": the orders of nifti_layouts.h); `positions` (N, 3).
-// The tensors are in WC: a point set has no voxel axes to be in.
-TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, const ArrayRef& positions);
+// The tensors are in WC: a point set has no voxel axes to be in. The
+// selection is a point set's, as a VTK file's points get it: stride and ROI
+// apply, a slice or a mask is refused (io::Selector).
+TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, const ArrayRef& positions,
+                            const Selection& selection = {});
 
 // A volume: `tensors` (X, Y, Z, 6) in `layout`, or (X, Y, Z, 3, 3);
 // `affine` a row-major 4x4 from voxel index (i, j, k) to WC, as nibabel's
@@ -37,5 +42,11 @@ TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, co
 // i + X (j + Y k).
 TensorField fieldFromVolume(const ArrayRef& tensors, std::string_view layout, const double affine[16],
                             std::string_view frame, const Selection& selection = {});
+
+// The reading option that tensors from arrays have no use for, as
+// inapplicableOption (io/readers.h) names a file format's: "--array" (only a
+// VTK file names its arrays), "--confidence-min" (no confidence values); ""
+// when every one applies. Layout and frame come with the arrays.
+std::string inapplicableArrayOption(const ReadOptions& opt);
 
 }  // namespace tg::io

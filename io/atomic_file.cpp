@@ -81,9 +81,18 @@ void AtomicFile::create(const std::string& dir, const std::string& prefix, const
   ino_ = st.st_ino;
 }
 
+std::string unwritableTarget(const std::string& target) {
+  struct stat st {};
+  if (stat(target.c_str(), &st) != 0 || S_ISREG(st.st_mode)) return "";
+  if (S_ISDIR(st.st_mode)) return "is a directory";
+  return std::string("is ") + (S_ISFIFO(st.st_mode) ? "a FIFO" : S_ISSOCK(st.st_mode) ? "a socket" : "a device") +
+         ", not a file; outputs are written to a file and renamed into place";
+}
+
 AtomicFile::AtomicFile(const std::string& target) : target_(target) {
   const std::filesystem::path p(target);
   if (!p.has_filename()) fail("not a file name");
+  if (const std::string why = unwritableTarget(target); !why.empty()) fail(why);
   // Appended piece by piece: GCC 12's -Wrestrict misfires on "." + string.
   std::string prefix(1, '.'), suffix = ".tmp";
   prefix.append(p.stem().string()).append("-");
@@ -135,6 +144,8 @@ void AtomicFile::syncAndClose(std::int64_t expectedSize) {
 
 void AtomicFile::commit(std::int64_t expectedSize) {
   syncAndClose(expectedSize);
+  // A FIFO or device made at the target while this file was written.
+  if (const std::string why = unwritableTarget(target_); !why.empty()) fail(why);
   if (std::rename(temp_.c_str(), target_.c_str()) != 0) fail(std::string("rename failed: ") + std::strerror(errno));
   done_ = true;
   releaseTemp(slot_);

@@ -15,7 +15,8 @@ class AtomicFile {
  public:
   // Creates the temporary file "DIR/.NAME-RANDOM.tmp.EXT" for `target`
   // "DIR/NAME.EXT" (the extension kept, for writers that choose a format by
-  // it). Throws std::runtime_error "AtomicFile: TARGET: problem".
+  // it). Throws std::runtime_error "AtomicFile: TARGET: problem", also for a
+  // target that unwritableTarget refuses (checked again at commit).
   explicit AtomicFile(const std::string& target);
   // A file that keeps its unique name "DIR/STEM.RANDOM.EXT": the data file of
   // a pair, committed by the header that names it (keep()).
@@ -55,6 +56,13 @@ class AtomicFile {
   std::uint64_t written_ = 0, dev_ = 0, ino_ = 0;
   bool done_ = false;
 };
+
+// Why `target` cannot be written as an AtomicFile writes it, or "" when it
+// can: an existing directory, FIFO, socket or device (links followed) would
+// be replaced by a regular file. "is a FIFO, not a file; ...", for
+// messages that name the target before it. The one rule: AtomicFile checks
+// it, and the CLI's and Python's output checks ask it before any work.
+std::string unwritableTarget(const std::string& target);
 
 // fsync of the directory holding `path`, so that a rename there survives a
 // crash. Throws std::runtime_error.

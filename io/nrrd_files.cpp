@@ -71,15 +71,64 @@ std::string resolved(const std::string& dir, const std::string& name) {
   return name.front() == '/' ? name : (std::filesystem::path(dir) / name).string();
 }
 
+[[noreturn]] void tooManyDataFiles(const std::string& header, unsigned long long n) {
+  throw impl::NrrdDataFilesRefused("nrrdDataFiles: " + header + ": " + std::to_string(n) + " data files; at most " +
+                                   std::to_string(kMaxDataFiles) + " are accepted");
+}
+
 // How many files MIN..MAX by STEP names, refused beyond kMaxDataFiles.
 unsigned long long rangeCount(const std::string& header, long long lo, long long hi, long long step) {
   if (step == 0 || (hi - lo) / step < 0)
     throw impl::NrrdDataFilesRefused("nrrdDataFiles: " + header + ": data file range is empty or its step is 0");
   const unsigned long long n = static_cast<unsigned long long>((hi - lo) / step) + 1;
-  if (n > kMaxDataFiles)
-    throw impl::NrrdDataFilesRefused("nrrdDataFiles: " + header + ": " + std::to_string(n) +
-                                     " data files; at most 100000 are accepted");
+  if (n > kMaxDataFiles) tooManyDataFiles(header, n);
   return n;
+}
+
+bool isList(const char* value) { return std::strncmp(value, "LIST", 4) == 0; }
+
+// Bounds on what a LIST may hold after its line, as on a header (below).
+constexpr std::size_t kMaxListLine = 1 << 20, kMaxListBytes = 16 << 20;
+
+// "data file: LIST [SUBDIM]": every later line names one data file, as
+// Teem reads them (an empty line too, which names none), lines ending as
+// airOneLine ends them. Not through Teem's parser, which grows its array of
+// names by a fixed step, copying it each time: a header of a million names
+// took minutes before any limit could say no. Here each line is counted as
+// it is read and kept only while within kMaxDataFiles; past it the rest are
+// only counted, and the whole is refused with their number. Lines and their
+// sum are bounded, as the header before them is.
+std::vector<std::string> listedDataFiles(const std::string& header, const std::string& dir, FILE* in) {
+  std::vector<std::string> files;
+  unsigned long long count = 0;
+  std::size_t total = 0;
+  std::string name;
+  bool any = false;  // a line begun since the last end of line
+  auto endLine = [&] {
+    if (++count <= kMaxDataFiles && !name.empty() && name != "-") files.push_back(resolved(dir, name));
+    name.clear();
+    any = false;
+  };
+  for (int c; (c = std::fgetc(in)) != EOF;) {
+    if (++total > kMaxListBytes) fail(header, "its LIST of data files is longer than 16 MiB");
+    if (c == '\r') {
+      const int next = std::fgetc(in);
+      if (next != '\n' && next != EOF) std::ungetc(next, in);
+      c = '\n';
+    }
+    if (c == '\n') {
+      endLine();
+      continue;
+    }
+    any = true;
+    if (count < kMaxDataFiles) {
+      if (name.size() >= kMaxListLine) fail(header, "a name in its LIST of data files is longer than 1 MiB");
+      name.push_back(char(c));
+    }
+  }
+  if (any) endLine();
+  if (count > kMaxDataFiles) tooManyDataFiles(header, count);
+  return files;
 }
 
 // A "%d"-style "data file: FORMAT MIN MAX STEP" line's count, before Teem's
@@ -200,8 +249,9 @@ std::vector<std::string> impl::nrrdDataFiles(const std::string& header) {
   // Teem's header loop (_nrrdFormatNRRD_read) up to its "data file" field,
   // without the step that opens the data files. Comments and key:=value
   // lines are skipped (nothing here needs them, and Teem's key/value list
-  // grows quadratically); every other field goes through Teem's own parser,
-  // as the LIST form checks the header is complete.
+  // grows quadratically); every other field goes through Teem's own parser.
+  // A LIST is read here (listedDataFiles); the reader's nrrdLoad checks the
+  // header that comes before it.
   for (;;) {
     h.nio->pos = 0;
     if (_nrrdOneLine(&len, h.nio, h.file)) fail(header, teemNrrdError());
@@ -213,10 +263,11 @@ std::vector<std::string> impl::nrrdDataFiles(const std::string& header) {
     if (field == nrrdField_unknown || field == nrrdField_comment || field == nrrdField_keyvalue) continue;
     if (h.nio->seen[field]) fail(header, std::string("field \"") + airEnumStr(nrrdField, field) + "\" given twice");
     h.nio->pos = int(colon + 2 - line + std::strspn(colon + 2, " \t"));
+    if (field == nrrdField_data_file && isList(line + h.nio->pos)) return listedDataFiles(header, dir, h.file);
     if (field == nrrdField_data_file) checkDataFileRange(header, line + h.nio->pos);
     if (nrrdFieldInfoParse[field](h.file, h.nrrd, h.nio, AIR_TRUE)) fail(header, teemNrrdError());
     h.nio->seen[field] = AIR_TRUE;
-    if (field == nrrdField_data_file) break;  // a LIST has read the rest of the file
+    if (field == nrrdField_data_file) break;
   }
   std::vector<std::string> files;
   if (h.nio->dataFNFormat) {

@@ -18,12 +18,14 @@
 #include "app/cli_values.h"
 #include "app/field_flags.h"
 #include "app/option_table.h"
+#include "app/output_check.h"
 #include "app/render_options.h"
 #include "app/render_session.h"
 #include "app/scene.h"
 #include "gl/context.h"
 #include "io/array_field.h"
 #include "io/image_writer.h"
+#include "io/selection.h"
 #include "io/tensor_field.h"
 #include "util/progress.h"
 
@@ -34,6 +36,8 @@ namespace {
 
 // (keyword, [values]) per occurrence, in the order given.
 using OptionList = std::vector<std::pair<std::string, std::vector<std::string>>>;
+// (keyword, path) of each file a frame was drawn from.
+using InputList = std::vector<std::pair<std::string, std::string>>;
 
 // Usage errors become ValueError, unknown keywords TypeError, as Python's own
 // calls report them; bad data (io::InputError) is ValueError too.
@@ -44,6 +48,18 @@ void applyOptions(const app::OptionTable& table, const OptionList& given, const 
       throw py::type_error(std::string(fn) + "() got an unexpected keyword argument '" + kw + "'");
     app::OptionTable::apply(*opt, values);
   }
+}
+
+// The files a frame was drawn from, named by keyword ("tensors" for the
+// input): what save() must not write over.
+InputList inputsOf(const app::OptionTable& table, const std::vector<app::NamedPath>& paths) {
+  InputList out;
+  for (const app::NamedPath& p : paths) {
+    if (p.path.empty()) continue;
+    const app::OptionTable::Option* opt = p.flag == "INPUT" ? nullptr : table.find(p.flag);
+    out.emplace_back(opt ? opt->keyword() : std::string("tensors"), p.path);
+  }
+  return out;
 }
 
 // With the GIL held: the view is read later without it.
@@ -103,6 +119,28 @@ class ProgressCallback {
   std::exception_ptr error_;
 };
 
+// Every option checked as the CLI checks it before loading, against this
+// source: a file's (or the built-in scene's) through app::checkOptionsApply,
+// with the path as the CLI's INPUT (--mesh-from-input reads its mesh);
+// arrays' through io::inapplicableArrayOption, and points' selection by the
+// Selector a VTK file's points get (stride and ROI apply; a slice or mask,
+// which need a grid, is refused). No option is taken and left unused.
+void validateFor(const Source& s, app::RenderOptions& o) {
+  if (s.tensorsRef) {
+    if (const std::string flag = io::inapplicableArrayOption(o.field.read); !flag.empty())
+      throw app::UsageError(flag + " does not apply to tensors given as arrays");
+    if (o.mesh.fromInput)
+      throw app::UsageError("--mesh-from-input does not apply to tensors given as arrays: they come with no FEM mesh");
+    if (s.positionsRef) {
+      [[maybe_unused]] const io::Selector points(o.field.read.selection, "<array>", nullptr);
+    }
+  } else {
+    app::checkOptionsApply(s.path, o.field.read);
+  }
+  o.input = s.path;
+  app::validateRenderOptions(o, false);
+}
+
 app::Scene loadSource(const Source& s, const app::RenderOptions& o) {
   if (!s.tensorsRef) {
     io::ReadOptions read = o.field.read;
@@ -112,7 +150,7 @@ app::Scene loadSource(const Source& s, const app::RenderOptions& o) {
   app::Scene scene;
   const io::ArrayRef& t = *s.tensorsRef;
   if (s.positionsRef) {
-    scene.field = io::fieldFromPoints(t, s.layout, *s.positionsRef);
+    scene.field = io::fieldFromPoints(t, s.layout, *s.positionsRef, o.field.read.selection);
   } else {
     if (!s.affine) throw std::invalid_argument("affine: a volume needs its 4x4 voxel-to-world affine");
     scene.field = io::fieldFromVolume(t, s.layout, s.affine->data(), s.frame,
@@ -165,7 +203,7 @@ class Renderer {
     app::OptionTable table;
     app::addRenderOptions(table, o);
     applyOptions(table, options, "render");
-    app::validateRenderOptions(o, false);
+    validateFor(source_, o);
     if (!session_ || reloadKeys(table, options) != reloadKeys_) {
       {
         py::gil_scoped_release release;
@@ -174,12 +212,21 @@ class Renderer {
       warnLoaded();
     }
     render::FrameImage img;
+    bool marches = true;
     {
       py::gil_scoped_release release;
       const CurrentFor current(session_->context());
       const app::RenderSession::Frame f = session_->frame(o);
+      marches = f.params.glyph == render::GlyphKind::Superquadric;
       session_->draw(f);
       img = session_->readback(f, channels ? render::Channels::All : render::Channels::Rgba8);
+    }
+    // `render` refuses a march option for glyphs that do not march; a
+    // Renderer keeps it for a later glyph="superquadric", and says so.
+    if (!o.marchFlag.empty() && !marches) {
+      const std::string kw = table.find(o.marchFlag)->keyword();
+      const std::string w = kw + " applies to glyph=\"superquadric\" only; this frame draws " + o.glyph + " glyphs";
+      if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) < 0) throw py::error_already_set();
     }
     py::dict out;
     py::array_t<std::uint8_t> rgba({img.height, img.width, 4});
@@ -195,7 +242,17 @@ class Renderer {
       out["id"] = id;
     }
     out["glyphs"] = session_->glyphCount();
+    out["inputs"] = inputsOf(table, app::sceneInputs(source_.path, o));
     return out;
+  }
+
+  // set()'s check: what render() would refuse of `options`, before any load.
+  void check(const OptionList& options) const {
+    app::RenderOptions o;
+    app::OptionTable table;
+    app::addRenderOptions(table, o);
+    applyOptions(table, options, "set");
+    validateFor(source_, o);
   }
 
   std::uint64_t uploads() const { return previousUploads_ + (session_ ? session_->renderer().uploadCount() : 0); }
@@ -216,7 +273,7 @@ class Renderer {
     app::OptionTable table;
     app::addRenderOptions(table, o);
     applyOptions(table, options, "Renderer");
-    app::validateRenderOptions(o, false);
+    validateFor(source_, o);
     {
       py::gil_scoped_release release;
       build(o, options, table);
@@ -276,8 +333,13 @@ py::array_t<T, py::array::c_style | py::array::forcecast> channel(const py::dict
 
 // Writes what render() returned through the CLI's writers: .exr takes the
 // float and geometry channels (render(..., channels=True)), every other
-// format the 8-bit image.
-void saveFrame(const py::dict& frame, const std::string& path) {
+// format the 8-bit image. First the CLI's output checks: no directory, FIFO,
+// socket or device, no missing directory, none of the files the frame was
+// drawn from (`inputs`).
+void saveFrame(const py::dict& frame, const std::string& path, const InputList& inputs) {
+  std::vector<app::NamedPath> read;
+  for (const auto& [name, file] : inputs) read.push_back({name, file});
+  app::refuseOutputsOverInputs({{"path", path}}, read);
   // A cast would write a float image in 0..1 as black: refused instead.
   const py::array given = py::array::ensure(frame["rgba"]);
   if (!given || !given.dtype().is(py::dtype::of<std::uint8_t>()))
@@ -318,6 +380,10 @@ Source makeSource(std::optional<py::array> tensors, std::optional<py::array> pos
   s.progress = std::make_shared<ProgressCallback>(std::move(progress));
   if (tensors && !path.empty()) throw std::invalid_argument("tensors: give tensors or a path, not both");
   if (positions && !tensors) throw std::invalid_argument("positions: given without tensors");
+  // A file places its own voxels, and the built-in scene has its own place.
+  if (affine && !tensors)
+    throw std::invalid_argument("affine: applies to tensors given as arrays, not to " +
+                                (path.empty() ? std::string("the built-in scene") : "the file " + path));
   if (affine && affine->size() != 16) throw std::invalid_argument("affine: must be 4x4");
   if (positions && affine) throw std::invalid_argument("affine: applies to a volume, not to points with positions");
   if (positions && !frame.empty())
@@ -362,6 +428,7 @@ PYBIND11_MODULE(_core, m) {
            py::arg("tensors"), py::arg("positions"), py::arg("affine"), py::arg("layout"), py::arg("frame"),
            py::arg("path"), py::arg("options"), py::arg("progress"))
       .def("render", &Renderer::render, py::arg("options"), py::arg("channels"))
+      .def("check", &Renderer::check, py::arg("options"))
       .def_property_readonly("uploads", &Renderer::uploads)
       .def_property_readonly("glyph_count", &Renderer::glyphCount);
   // The option table, for keyword checks, docstrings and the type stubs:
@@ -376,15 +443,5 @@ PYBIND11_MODULE(_core, m) {
         out.append(py::make_tuple(opt.keyword(), opt.flag, opt.metavars, opt.helpText, opt.reload));
     return out;
   });
-  m.def(
-      "check",
-      [](const OptionList& options) {
-        app::RenderOptions o;
-        app::OptionTable table;
-        app::addRenderOptions(table, o);
-        applyOptions(table, options, "set");
-        app::validateRenderOptions(o, false);
-      },
-      py::arg("options"));
-  m.def("save", &saveFrame, py::arg("frame"), py::arg("path"));
+  m.def("save", &saveFrame, py::arg("frame"), py::arg("path"), py::arg("inputs"));
 }

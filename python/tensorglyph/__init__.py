@@ -155,17 +155,21 @@ class Figure(np.ndarray):
     Jupyter shows as a picture. With channels=True, ``channels`` holds
     ``color`` (linear float RGBA), ``depth`` (view-axis distance, inf where
     empty), ``normal`` (world-space) and ``id`` (input index, 0xFFFFFFFF
-    where empty); ``glyphs`` is the number of glyphs uploaded."""
+    where empty); ``glyphs`` is the number of glyphs uploaded; ``inputs``
+    the (keyword, path) of each file it was drawn from, which ``save``
+    refuses to write over."""
 
     def __new__(cls, frame):
         fig = np.asarray(frame["rgba"]).view(cls)
         fig.channels = {k: frame[k] for k in ("color", "depth", "normal", "id") if k in frame}
         fig.glyphs = frame["glyphs"]
+        fig.inputs = tuple(frame.get("inputs", ()))
         return fig
 
     def __array_finalize__(self, obj):
         self.channels = getattr(obj, "channels", {})
         self.glyphs = getattr(obj, "glyphs", 0)
+        self.inputs = getattr(obj, "inputs", ())
 
     @property
     def image(self):
@@ -173,7 +177,9 @@ class Figure(np.ndarray):
         return self.view(np.ndarray)
 
     def save(self, path):
-        """Writes the image in any format the CLI writes (by extension)."""
+        """Writes the image in any format the CLI writes (by extension),
+        refusing what the CLI's -o refuses: a directory, a FIFO, socket or
+        device, or one of the files it was drawn from (``inputs``)."""
         save(self, path)
 
     def _repr_png_(self):
@@ -189,13 +195,15 @@ class Figure(np.ndarray):
 
 def save(image, path):
     """Writes a Figure (or an (H, W, 4) uint8 array) to `path`; .exr needs a
-    Figure rendered with channels=True."""
+    Figure rendered with channels=True. A Figure is not written over a file
+    it was drawn from."""
     frame = {"rgba": np.ascontiguousarray(np.asarray(image).view(np.ndarray) if isinstance(image, Figure)
                                           else np.asarray(image))}
+    inputs = list(image.inputs) if isinstance(image, Figure) else []
     if isinstance(image, Figure):
         frame.update(image.channels)
     with _process.call("save", gl=False):
-        _core.save(frame, os.fspath(path))
+        _core.save(frame, os.fspath(path), inputs)
 
 
 class _Process:
@@ -288,14 +296,18 @@ class Renderer:
         self._callback_threads = set()
         if callable(progress):
             progress = _guarded(progress, self._callback_threads)
-        self._array_source = False
-        self.set(**options)
         t, p, a, lay, fr, path = _source(tensors, positions, affine, layout, frame)
-        if path:
-            # A file's order and frame are its reader's options, --layout and --frame.
-            self.set(**{k: v for k, v in (("layout", lay), ("frame", fr)) if v})
+        if t is None:
+            # A file's order and frame are its reader's options, --layout and
+            # --frame; the built-in scene refuses them as the CLI does.
+            options.update({k: v for k, v in (("layout", lay), ("frame", fr)) if v})
             lay = fr = ""
+        for kw, value in options.items():
+            _occurrences(kw, value)  # TypeError before anything is made
+        self._options = {kw: value for kw, value in options.items() if value is not None}
         self._array_source = t is not None
+        # The core checks every option against this source (as set() does)
+        # before it loads anything.
         with _process.call("Renderer"):
             self._core = _core.Renderer(t, p, a, lay, fr, path, _option_list(self._options), progress)
 
@@ -316,7 +328,7 @@ class Renderer:
                 changed.pop(kw, None)
             else:
                 changed[kw] = value
-        _core.check(_option_list(changed))
+        self._core.check(_option_list(changed))
         self._options = changed
         return self
 

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <filesystem>
 
+#include "io/atomic_file.h"
 #include "util/number_text.h"
 
 namespace tg::app {
@@ -51,14 +52,8 @@ long long parseInt(std::string_view flag, std::string_view text, long long lo, l
 void checkOutputPath(std::string_view flag, const std::string& path) {
   namespace fs = std::filesystem;
   std::error_code ec;
-  const fs::file_status st = fs::status(path, ec);
-  if (fs::is_directory(st)) throw UsageError(std::string(flag) + ": \"" + path + "\" is a directory");
-  // Outputs are written whole beside the target and renamed over it
-  // (io/atomic_file.h), which would replace a FIFO or a device with a file.
-  if (fs::exists(st) && !fs::is_regular_file(st))
-    throw UsageError(std::string(flag) + ": \"" + path + "\" is " +
-                     (fs::is_fifo(st) ? "a FIFO" : fs::is_socket(st) ? "a socket" : "a device") +
-                     ", not a file; outputs are written to a file and renamed into place");
+  if (const std::string why = io::unwritableTarget(path); !why.empty())
+    throw UsageError(std::string(flag) + ": \"" + path + "\" " + why);
   const fs::path dir = fs::path(path).parent_path();
   if (!dir.empty() && !fs::is_directory(dir, ec))
     throw UsageError(std::string(flag) + ": \"" + path + "\": no directory \"" + dir.string() + "\"");

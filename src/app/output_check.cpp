@@ -1,9 +1,17 @@
 #include "app/output_check.h"
 
 #include "app/cli_values.h"
+#include "app/scene_flags.h"
 #include "io/input_files.h"
 
 namespace tg::app {
+
+std::vector<NamedPath> sceneInputs(const std::string& input, const SceneFlags& flags) {
+  std::vector<NamedPath> inputs = {{"INPUT", input}, {"--mask", flags.field.read.selection.maskPath},
+                                   {"--underlay", flags.slices.fromField() ? "" : flags.slices.underlay}};
+  for (const NamedPath& m : flags.mesh.inputs()) inputs.push_back(m);
+  return inputs;
+}
 
 void refuseOutputsOverInputs(const std::vector<NamedPath>& outputs, const std::vector<NamedPath>& inputs) {
   for (std::size_t k = 0; k < outputs.size(); ++k) {

@@ -12,6 +12,12 @@ struct NamedPath {
   std::string path;  // empty: not given, skipped
 };
 
+struct SceneFlags;
+
+// The files a render of `input` (empty: arrays or the built-in scene) with
+// `flags` reads: INPUT, --mask, an --underlay file and every --mesh.
+std::vector<NamedPath> sceneInputs(const std::string& input, const SceneFlags& flags);
+
 // Throws UsageError when an output is a directory, lies in a missing
 // directory, names the same file as another output, or names a file that
 // reading an input opens (by device and inode, so links count too).

@@ -108,10 +108,7 @@ void validateRenderOptions(const RenderOptions& o, bool toFile) {
   checkBackend(o.backend);
   if (toFile && !io::canWriteImage(o.output))
     throw UsageError("-o: no image format for \"" + o.output + "\"");
-  std::vector<NamedPath> inputs = {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath},
-                                   {"--underlay", o.slices.fromField() ? "" : o.slices.underlay}};
-  for (const NamedPath& m : o.mesh.inputs()) inputs.push_back(m);
-  if (toFile) refuseOutputsOverInputs({{"-o", o.output}}, inputs);
+  if (toFile) refuseOutputsOverInputs({{"-o", o.output}}, sceneInputs(o.input, o));
 }
 
 render::FrameParams frameParams(const RenderOptions& o, const Scene& s, const tensor::ResolvedScale& sized) {

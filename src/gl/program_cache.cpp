@@ -152,6 +152,9 @@ void ProgramCache::store(GLuint program, const std::string& key) const {
     std::error_code ec;
     std::filesystem::create_directories(dir_, ec);
     if (ec) return;
+    // The cache's own directory: a FIFO or device planted at an entry is
+    // removed (the link, not its target), which AtomicFile would refuse.
+    if (!io::unwritableTarget(entryPath(key)).empty()) std::filesystem::remove(entryPath(key), ec);
     io::AtomicFile out(entryPath(key));
     out.write(entry.data(), entry.size());
     out.commit(std::int64_t(entry.size()));

@@ -3,6 +3,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <set>
@@ -204,5 +205,76 @@ TEST(InputFiles, SameFileSeesLinks) {
   EXPECT_FALSE(tg::io::sameFile((d / "a").string(), (d / "missing").string()));
   std::ofstream(d / "b") << "x";
   EXPECT_FALSE(tg::io::sameFile((d / "a").string(), (d / "b").string()));
+  fs::remove_all(d);
+}
+
+// A FIFO, a device or a directory at the target would be replaced by the
+// rename (as root, /dev/null too): refused when the file is made, and again
+// at commit for one made at the target while writing; nothing stays behind.
+TEST(AtomicFile, NonRegularTargetsAreRefusedAndKept) {
+  const fs::path d = freshDir("fifo");
+  const fs::path fifo = d / "out.png";
+  ASSERT_EQ(mkfifo(fifo.c_str(), 0600), 0);
+  fs::create_directories(d / "dir.png");
+  for (const auto& [target, said] : {std::pair{fifo, "is a FIFO"}, std::pair{d / "dir.png", "is a directory"}}) {
+    try {
+      AtomicFile f(target.string());
+      ADD_FAILURE() << target << " was accepted";
+    } catch (const std::runtime_error& e) {
+      EXPECT_NE(std::string(e.what()).find(said), std::string::npos) << e.what();
+    }
+  }
+  EXPECT_EQ(tg::io::unwritableTarget("/dev/null").rfind("is a device", 0), 0u);
+  EXPECT_EQ(tg::io::unwritableTarget((d / "missing.png").string()), "");
+  const fs::path late = d / "late.png";
+  {
+    AtomicFile f(late.string());
+    f.write("x", 1);
+    ASSERT_EQ(mkfifo(late.c_str(), 0600), 0);
+    EXPECT_THROW(f.commit(1), std::runtime_error);
+  }
+  struct stat st {};
+  ASSERT_EQ(stat(fifo.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISFIFO(st.st_mode));
+  ASSERT_EQ(stat(late.c_str(), &st), 0);
+  EXPECT_TRUE(S_ISFIFO(st.st_mode));
+  EXPECT_EQ(namesIn(d), (std::set<std::string>{"out.png", "dir.png", "late.png"}));
+  fs::remove_all(d);
+}
+
+// "data file: LIST" with a million names: Teem's parser (quadratic in the
+// names) took minutes, in the parent that protects inputs from -o; the
+// listing is linear and refuses past 100000 with the count. The bounds are
+// a hundred times what the linear listing takes here.
+TEST(InputFiles, AListOfAMillionNamesIsRefusedInLinearTime) {
+  const fs::path d = freshDir("list");
+  const std::string head = "NRRD0004\ntype: float\ndimension: 4\nsizes: 6 4 4 4\nencoding: raw\ndata file: LIST 3\n";
+  auto write = [&](const fs::path& p, int names, const char* end) {
+    std::ofstream out(p);
+    out << head;
+    for (int k = 0; k < names; ++k) out << "d" << k << ".raw" << end;
+  };
+  write(d / "million.nhdr", 1000000, "\n");
+  write(d / "limit.nhdr", 100000, "\r\n");
+  using Clock = std::chrono::steady_clock;
+  auto t0 = Clock::now();
+  try {
+    tg::io::nrrdDataFiles((d / "million.nhdr").string());
+    ADD_FAILURE() << "a million data files were listed";
+  } catch (const tg::io::InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("1000000 data files; at most 100000 are accepted"), std::string::npos)
+        << e.what();
+  }
+  EXPECT_LT(std::chrono::duration<double>(Clock::now() - t0).count(), 20.0);
+  t0 = Clock::now();
+  const auto listed = tg::io::nrrdDataFiles((d / "limit.nhdr").string());
+  EXPECT_LT(std::chrono::duration<double>(Clock::now() - t0).count(), 5.0);
+  ASSERT_EQ(listed.size(), 100000u);
+  EXPECT_EQ(listed.back(), (d / "d99999.raw").string());  // "\r\n" ends a name as Teem ends it
+  // Teem's own forms of a LIST: an empty line names nothing, the last line
+  // needs no newline, "-" is no file.
+  std::ofstream(d / "forms.nhdr") << head << "a.raw\n\n-\nb.raw";
+  EXPECT_EQ(tg::io::nrrdDataFiles((d / "forms.nhdr").string()),
+            (std::vector<std::string>{(d / "a.raw").string(), (d / "b.raw").string()}));
   fs::remove_all(d);
 }
