@@ -56,12 +56,24 @@ int cmdRender(int argc, const char** argv) {
   // A blank image needs its reason: --scale alone is absolute (world units
   // per eigenvalue unit), and a DTI field's eigenvalues are about 1e-3.
   const double typicalPx = 2.0 * fr.sized.typicalRadiusWC * render::pixelsPerWorldUnit(cam);
+  // The camera's options can be the reason too: an --eye far away, a wide
+  // --ortho or --fov.
+  const std::string cameraFlags = std::string(o.eye ? ", a nearer --eye" : "") + (o.ortho ? ", a smaller --ortho" : "") +
+                                  (o.fov ? ", a smaller --fov" : "");
   if (typicalPx < 0.25) {
     if (sink) sink({}, 0, 0, {});
     std::fprintf(stderr,
                  "tensorglyph render: the typical glyph is %.2g pixels across, so the image shows almost nothing; a "
-                 "larger --scale draws them (given alone, --scale is world units per eigenvalue unit)\n",
-                 typicalPx);
+                 "larger --scale%s draws them (given alone, --scale is world units per eigenvalue unit)\n",
+                 typicalPx, cameraFlags.c_str());
+  }
+  // Glyphs around the camera are not seen: each is drawn from outside.
+  if (typicalPx > 100.0 * std::max(o.width, o.height)) {
+    if (sink) sink({}, 0, 0, {});
+    std::fprintf(stderr,
+                 "tensorglyph render: the typical glyph is %.2g pixels across, far larger than the %d x %d image, so "
+                 "the camera may be inside the glyphs and see none; a smaller --scale draws them\n",
+                 typicalPx, o.width, o.height);
   }
   const double frames = 1.0 + o.repeat;
   if (sink) sink("rendering", 0, frames, "frames");
@@ -145,7 +157,7 @@ int cmdRender(int argc, const char** argv) {
       std::fprintf(stderr, "  outlines: width %.3g px, crease %.3g deg\n", params.outline.width, params.outline.creaseDeg);
     for (const auto& item : renderer.context())
       if (const auto* m = dynamic_cast<const render::MeshItem*>(item.get()))
-        std::fprintf(stderr, "  %s: %zu triangles, %s, %.1f MiB of GPU memory\n", m->label().c_str(), m->triangleCount(),
+        std::fprintf(stderr, "  %s: %zu triangles, %s, %.1f MiB of GPU memory\n", printable(m->label()).c_str(), m->triangleCount(),
                      render::meshModeName(m->params().mode), double(m->gpuBytes()) / (1024.0 * 1024.0));
     if (params.shadow.enabled)
       std::fprintf(stderr, "  shadows: map %d x %d texels, penumbra %.3g, %.1f MiB of GPU memory in all\n",

@@ -21,6 +21,11 @@ constexpr const char* kUsage =
     "  bench scale             frame time against glyph count, ray casting vs a tessellated mesh\n"
     "Run 'tensorglyph <command> --help' for a command's options.\n";
 
+// One line on stderr, whatever the message quotes (tg::app::printable).
+void report(const std::string& cmd, const std::exception& e) {
+  std::fprintf(stderr, "tensorglyph %s: %s\n", cmd.c_str(), tg::app::printable(e.what()).c_str());
+}
+
 }  // namespace
 
 int main(int argc, const char** argv) {
@@ -38,18 +43,18 @@ int main(int argc, const char** argv) {
     if (cmd == "info") return tg::app::cmdInfo(argc - 1, argv + 1);
     if (cmd == "synth") return tg::app::cmdSynth(argc - 1, argv + 1);
     if (cmd == "bench") return tg::app::cmdBench(argc - 1, argv + 1);
-    std::fprintf(stderr, "tensorglyph: unknown command \"%s\"; run 'tensorglyph --help'\n", cmd.c_str());
+    std::fprintf(stderr, "tensorglyph: unknown command \"%s\"; run 'tensorglyph --help'\n", tg::app::printable(cmd).c_str());
     return 2;
   } catch (const tg::app::HelpShown&) {
     return 0;
   } catch (const tg::app::UsageError& e) {
-    std::fprintf(stderr, "tensorglyph %s: %s\n", cmd.c_str(), e.what());
+    report(cmd, e);
     return 2;
   } catch (const tg::io::InputError& e) {
-    std::fprintf(stderr, "tensorglyph %s: %s\n", cmd.c_str(), e.what());
+    report(cmd, e);
     return 1;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "tensorglyph %s: %s\n", cmd.c_str(), e.what());
+    report(cmd, e);
     return 1;
   }
 }
