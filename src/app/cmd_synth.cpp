@@ -70,7 +70,7 @@ int cmdSynth(int argc, const char** argv) {
     n = parseInt("--n", a[1], 0, 4000000000LL);
   });
   ap.arg("--seed S").help("random seed").action([&](Args a) { seed = parseInt("--seed", a[1], 0, std::numeric_limits<long long>::max()); });
-  ap.arg("--quiet").help("no progress line on a terminal's stderr").action([&](Args) { quiet = true; });
+  ap.arg("-q,--quiet").help("no progress line on a terminal's stderr").action([&](Args) { quiet = true; });
   parseCommandLine(ap, argc, argv);
   if (kind.empty() || out.empty()) throw UsageError(std::string("KIND and -o OUT are required; KIND is one of ") + kKinds);
   if (!isKind(kind)) throw UsageError("unknown KIND \"" + kind + "\"; choose " + kKinds);

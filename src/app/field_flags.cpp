@@ -136,11 +136,17 @@ void checkLoaded(const io::TensorField& f, const io::ReadOptions& opt) {
   if (opt.confidenceGiven && !f.hasConfidence)
     throw UsageError("--confidence-min does not apply to " + f.path + ": its tensors have no confidence value (" +
                      f.layout + ")");
+  // The options that left nothing, named: the data alone is not to blame.
+  const io::Selection& sel = opt.selection;
+  const std::string maskBy = " (--mask, --mask-min " + formatNumber(sel.maskMin) + ")";
+  std::string selectedBy = std::string(sel.slice ? " --slice" : "") + (sel.stride > 1 ? " --stride" : "") +
+                           (sel.roiWC ? " --roi" : "");
+  if (!selectedBy.empty()) selectedBy = " (" + selectedBy.substr(1) + ")";
   if (f.size() == 0)
     throw io::InputError("checkLoaded: " + f.path + ": no tensor to draw: of " + std::to_string(f.totalPoints) + ", " +
                          std::to_string(f.skippedNonFinite) + " skipped (NaN/Inf), " + std::to_string(f.skippedOverflow) +
-                         " skipped (overflow), " + std::to_string(f.masked) +
-                         " masked, " + std::to_string(f.unselected) + " outside the selection");
+                         " skipped (overflow), " + std::to_string(f.masked) + " masked" + (f.masked ? maskBy : "") + ", " +
+                         std::to_string(f.unselected) + " outside the selection" + (f.unselected ? selectedBy : ""));
 }
 
 void checkDrawable(const tensor::GlyphSet& g, const std::string& path) {
