@@ -43,12 +43,6 @@ class HelpFormatter : public CLI::Formatter {
   std::string usage_;
 };
 
-// The help text with the option's range, which the table declares once.
-std::string describe(const OptionTable::Option& o) {
-  if (!o.numbers) return o.helpText;
-  const std::string range = (o.list ? "each " : "") + o.numbers->text();
-  return o.helpText.empty() ? "(" + range + ")" : o.helpText + " [" + range + "]";
-}
 
 // The options in --help order: the positional, then the task groups in
 // kOptionGroups' order, then the command's own; within each, as declared.
@@ -152,7 +146,7 @@ void parseCommandLine(const OptionTable& table, int argc, const char** argv) {
       c->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
       c->trigger_on_parse();
     }
-    c->description(describe(*o));
+    c->description(o->description());
     if (o->isHidden) c->group("");
     else if (o->positional) c->group("Input");
     else c->group(o->group.empty() ? std::string("Options") : o->group);
@@ -183,7 +177,7 @@ std::string groupHelp(const OptionTable& table, const std::string& group) {
     for (const std::string& m : o->metavars) opts += " " + m;
     char line[64];
     std::snprintf(line, sizeof line, "  %-30s ", opts.c_str());
-    text += (opts.size() > 30 ? "  " + opts + "\n" + std::string(33, ' ') : std::string(line)) + describe(*o) + "\n";
+    text += (opts.size() > 30 ? "  " + opts + "\n" + std::string(33, ' ') : std::string(line)) + o->description() + "\n";
   }
   if (text.empty()) return text;
   const OptionGroup* g = groupNamed(group);

@@ -24,6 +24,12 @@ std::string OptionTable::Option::keyword() const {
   return k;
 }
 
+std::string OptionTable::Option::description() const {
+  if (!numbers) return helpText;
+  const std::string range = (list ? "each " : "") + numbers->text();
+  return helpText.empty() ? "(" + range + ")" : helpText + " [" + range + "]";
+}
+
 OptionTable::Option& OptionTable::arg(std::string_view spec) {
   Option o;
   std::size_t at = 0;

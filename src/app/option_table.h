@@ -82,6 +82,9 @@ class OptionTable {
     std::size_t arity() const { return metavars.size(); }
     // "fa_min" for "--fa-min": the Python keyword.
     std::string keyword() const;
+    // The help text with the range the option declares, as --help, docs/cli.md
+    // and the Python docstrings show it: "superquadric sharpness [0..10000]".
+    std::string description() const;
   };
 
   explicit OptionTable(std::string usage = {}) : usage_(std::move(usage)) {}
