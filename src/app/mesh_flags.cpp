@@ -47,6 +47,7 @@ void MeshFlags::addTo(OptionTable& ap) {
             formatNumber(d.opacity) + ")")
       .range(ranges::kUnit).action([this, given](Args a) {
         given("--mesh-opacity");
+        opacityGiven = true;
         params.opacity = float(parseDouble(a[0], a[1]));
       });
   ap.arg("--mesh-feature-angle DEG")
@@ -54,6 +55,7 @@ void MeshFlags::addTo(OptionTable& ap) {
             formatNumber(d.featureAngleDeg) + ")")
       .range(ranges::kFeatureAngleDeg).action([this, given](Args a) {
         given("--mesh-feature-angle");
+        featureAngleGiven = true;
         params.featureAngleDeg = float(parseDouble(a[0], a[1]));
       });
   ap.setGroup(group);
@@ -71,6 +73,15 @@ void MeshFlags::validate(const std::string& input) const {
   for (const std::string& f : files)
     if (const std::string p = io::meshExtensionProblem(f, io::MeshSource::Surface); !p.empty())
       throw UsageError("--mesh: " + f + ": " + p);
+}
+
+void MeshFlags::checkModeParameters() const {
+  if (opacityGiven && params.mode != render::MeshMode::SeeThrough)
+    throw UsageError("--mesh-opacity applies to --mesh-mode see-through; the meshes are drawn " +
+                     std::string(render::meshModeName(params.mode)));
+  if (featureAngleGiven && params.mode != render::MeshMode::Edges)
+    throw UsageError("--mesh-feature-angle applies to --mesh-mode edges; the meshes are drawn " +
+                     std::string(render::meshModeName(params.mode)));
 }
 
 std::vector<NamedPath> MeshFlags::inputs() const {

@@ -60,7 +60,10 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
         o.epsilon = parseDouble("--epsilon", a[1]);
         if (o.marchFlag.empty()) o.marchFlag = "--epsilon";
       });
-  ap.arg("--stats").help("report Newton iteration statistics on stderr").action([&](Args) { o.stats = true; });
+  ap.arg("--stats").help("report Newton iteration statistics on stderr").action([&](Args) {
+    o.stats = true;
+    if (o.marchFlag.empty()) o.marchFlag = "--stats";
+  });
   ap.arg("--gamma G").help("superquadric sharpness (Kindlmann 2004; default " + formatNumber(o.gamma) + ")")
       .range(ranges::kGamma).action([&](Args a) {
     o.gamma = parseDouble("--gamma", a[1]);
@@ -109,6 +112,7 @@ void validateRenderOptions(const RenderOptions& o, bool toFile) {
   if (toFile && !o.marchFlag.empty() && !marches)
     throw UsageError(o.marchFlag + " applies to --glyph superquadric only; this render draws " + o.glyph + " glyphs");
   o.validateSceneFlags(o.input);
+  if (toFile) o.mesh.checkModeParameters();
   if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
   if ((o.lookAt || o.up) && !o.eye) throw UsageError("--look-at and --up need --eye");
   if (!colorModeNamed(o.color))

@@ -78,7 +78,7 @@ void check(const ScriptStep& s) {
   if (!countOk)
     throw UsageError(s.verb + ": wrong number of arguments");
   const std::string& v = s.verb;
-  if (v == "orbit" || v == "pan") number(s, 0), number(s, 1);
+  if (v == "orbit" || v == "pan") ranged(s, 0, ranges::kAnyFloat), ranged(s, 1, ranges::kAnyFloat);
   if (v == "zoom" || v == "scale") ranged(s, 0, ranges::kPositiveFloat);
   if (v == "gamma") ranged(s, 0, ranges::kGamma);
   if (v == "fa-min") ranged(s, 0, ranges::kUnit);

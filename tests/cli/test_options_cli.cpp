@@ -200,6 +200,7 @@ TEST(Options, ASingleValuedOptionGivenTwiceIsRefused) {
 
 TEST(Options, DependentFlagsWithoutTheirMasterAreRefused) {
   const fs::path out = dir() / "dependent.png";
+  std::ofstream(dir() / "tri.obj") << "v 0 0 0\nv 2 0 0\nv 0 2 0\nf 1 2 3\n";
   for (const auto& [args, what] : std::vector<std::pair<std::string, std::string>>{
            {"--mask-min 0.3", "--mask-min needs --mask"},
            {"--look-at 0 0 0", "--look-at and --up need --eye"},
@@ -209,9 +210,15 @@ TEST(Options, DependentFlagsWithoutTheirMasterAreRefused) {
            {"--legend-corner top-left", "need --legend"},
            {"--plane-offset 1", "--plane-offset needs --underlay or --plane"},
            {"--mesh-opacity 0.5", "--mesh-opacity needs --mesh"},
-           {"--lambda0 1", "--lambda0 applies to --magnitude log or shape only"}}) {
-    tg::test::expectFailsCleanly("render " + field().string() + " -o " + out.string() + " " + args, what, out, dir(), 1);
-    EXPECT_EQ(run("render " + field().string() + " -o " + out.string() + " " + args).code, 2) << args;
+           {"--lambda0 1", "--lambda0 applies to --magnitude log or shape only"},
+           {"--stats", "--stats applies to --glyph superquadric only"},
+           {"--mesh MESH --mesh-opacity 0.5", "--mesh-opacity applies to --mesh-mode see-through"},
+           {"--mesh MESH --mesh-mode see-through --mesh-feature-angle 30",
+            "--mesh-feature-angle applies to --mesh-mode edges"}}) {
+    const std::string cmd = "render " + field().string() + " -o " + out.string() + " " +
+                            replaced(args, "MESH", (dir() / "tri.obj").string());
+    tg::test::expectFailsCleanly(cmd, what, out, dir(), 1);
+    EXPECT_EQ(run(cmd).code, 2) << args;
   }
 }
 
