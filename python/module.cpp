@@ -432,7 +432,7 @@ PYBIND11_MODULE(_core, m) {
       .def_property_readonly("uploads", &Renderer::uploads)
       .def_property_readonly("glyph_count", &Renderer::glyphCount);
   // The option table, for keyword checks, docstrings and the type stubs:
-  // (keyword, flag, value names, help, reloads).
+  // (keyword, flag, value names, help with the option's range, reloads).
   m.def("options", [] {
     app::RenderOptions o;
     app::OptionTable table;
@@ -440,7 +440,7 @@ PYBIND11_MODULE(_core, m) {
     py::list out;
     for (const auto& opt : table.options())
       if (!opt.positional && !opt.cliOnly && !opt.isHidden)
-        out.append(py::make_tuple(opt.keyword(), opt.flag, opt.metavars, opt.helpText, opt.reload));
+        out.append(py::make_tuple(opt.keyword(), opt.flag, opt.metavars, opt.description(), opt.reload));
     return out;
   });
   m.def("save", &saveFrame, py::arg("frame"), py::arg("path"), py::arg("inputs"));

@@ -10,11 +10,7 @@
 namespace tg::app {
 
 int benchScale(int argc, const char** argv) {
-  const ScaleOptions o = parseScaleOptions(argc, argv, ScaleOptions{});
-  if (o.help) {
-    std::fputs(scaleUsage("tensorglyph bench scale").c_str(), stdout);
-    return 0;
-  }
+  const ScaleOptions o = parseScaleOptions(argc, argv, ScaleOptions{}, "tensorglyph bench scale");
   checkScaleOptions(o);
   checkBackend(o.backend);
   auto ctx = o.requireGpu ? gl::createEglContext({false}) : createContext(o.backend, o.width, o.height);

@@ -3,6 +3,7 @@
 #include <charconv>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 #include <sstream>
 #include <filesystem>
 
@@ -65,5 +66,24 @@ glm::dvec3 parseVec3(std::string_view flag, std::span<const char* const> a) {
 }
 
 std::string formatNumber(double v) { return util::numberText(v); }
+
+std::string printable(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (const char ch : text) {
+    const auto c = static_cast<unsigned char>(ch);
+    if (c >= 0x20 && c != 0x7f) {
+      out += ch;
+      continue;
+    }
+    char esc[8];
+    if (c == '\n') std::snprintf(esc, sizeof esc, "\\n");
+    else if (c == '\t') std::snprintf(esc, sizeof esc, "\\t");
+    else if (c == '\r') std::snprintf(esc, sizeof esc, "\\r");
+    else std::snprintf(esc, sizeof esc, "\\x%02x", unsigned(c));
+    out += esc;
+  }
+  return out;
+}
 
 }  // namespace tg::app

@@ -69,4 +69,11 @@ inline double processCpuMs() {
 // A value as the help texts quote defaults ("%g").
 std::string formatNumber(double v);
 
+// Text as a one-line message may show it: control characters (a newline in
+// a file's name, a terminal's escape sequences) and DEL become \n, \t, \r
+// or \xHH, and a backslash stays one. Every message that reaches the
+// terminal passes through it (main, and the load warnings), so that a name
+// can neither split the line nor drive the terminal.
+std::string printable(std::string_view text);
+
 }  // namespace tg::app

@@ -23,7 +23,7 @@ int cmdInfo(int argc, const char** argv) {
   OptionTable ap("tensorglyph info INPUT [selection flags]");
   addInputArg(ap, input);
   flags.addTo(ap, true);  // the size flags change what info reports as the default render's size
-  ap.arg("--quiet").help("no progress line on a terminal's stderr").action([&](OptionArgs) { quiet = true; });
+  ap.arg("-q,--quiet").help("no progress line on a terminal's stderr").action([&](OptionArgs) { quiet = true; });
   parseCommandLine(ap, argc, argv);
   if (input.empty()) throw UsageError("INPUT is required");
   flags.validate();
@@ -40,7 +40,7 @@ int cmdInfo(int argc, const char** argv) {
   }();
   checkLoaded(f, flags.read);
   if (flags.read.progress) flags.read.progress({}, 0, 0, {});
-  for (const std::string& w : f.warnings) std::fprintf(stderr, "tensorglyph info: %s: %s\n", f.path.c_str(), w.c_str());
+  reportLoad(f, "info");
   const tensor::GlyphSet g = tensor::buildGlyphs(f.positions, f.tensors, f.ids, 0, flags.glyph, flags.read.progress);
   progress.finish();
   std::size_t negDef = 0, indefinite = 0, zero = 0;
@@ -58,7 +58,7 @@ int cmdInfo(int argc, const char** argv) {
     faMin = std::min(faMin, double(r.fa));
     faMax = std::max(faMax, double(r.fa));
   }
-  std::printf("file: %s\n", f.path.c_str());
+  std::printf("file: %s\n", printable(f.path).c_str());
   std::printf("dataset: %s\n", f.description.c_str());
   if (!f.arrayName.empty()) std::printf("tensor array: %s\n", f.arrayName.c_str());
   if (!f.layout.empty()) std::printf("components: %s\n", f.layout.c_str());

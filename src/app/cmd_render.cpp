@@ -8,6 +8,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/field_flags.h"
@@ -25,7 +27,7 @@ namespace tg::app {
 
 int cmdRender(int argc, const char** argv) {
   RenderOptions o;
-  OptionTable table("tensorglyph render [INPUT] -o OUT [options]");
+  OptionTable table(kRenderUsage);
   addRenderOptions(table, o);
   parseCommandLine(table, argc, argv);
   validateRenderOptions(o, true);
@@ -55,13 +57,33 @@ int cmdRender(int argc, const char** argv) {
   const std::size_t glyphCount = session.glyphCount();
   // A blank image needs its reason: --scale alone is absolute (world units
   // per eigenvalue unit), and a DTI field's eigenvalues are about 1e-3.
-  const double typicalPx = 2.0 * fr.sized.typicalRadiusWC * render::pixelsPerWorldUnit(cam);
+  // Measured at the depth of the glyphs' box centre, not of the look-at
+  // point: an --eye or --look-at far from the glyphs makes the two differ.
+  const glm::dvec3 centre = 0.5 * (fr.framing.lo + fr.framing.hi);
+  const double depth = glm::dot(centre - cam.desc.eyeWC, cam.viewDirectionWC());
+  const double lookDepth = glm::length(cam.desc.lookAtWC - cam.desc.eyeWC);
+  const double perWorldUnit = cam.desc.projection == render::Projection::Orthographic || !(depth > 0.0)
+                                  ? render::pixelsPerWorldUnit(cam)
+                                  : render::pixelsPerWorldUnit(cam) * lookDepth / depth;
+  const double typicalPx = depth > 0.0 ? 2.0 * fr.sized.typicalRadiusWC * perWorldUnit : 1.0;
+  // The camera's options can be the reason too: an --eye far away, a wide
+  // --ortho or --fov.
+  const std::string cameraFlags = std::string(o.eye ? ", a nearer --eye" : "") + (o.ortho ? ", a smaller --ortho" : "") +
+                                  (o.fov ? ", a smaller --fov" : "");
   if (typicalPx < 0.25) {
     if (sink) sink({}, 0, 0, {});
     std::fprintf(stderr,
                  "tensorglyph render: the typical glyph is %.2g pixels across, so the image shows almost nothing; a "
-                 "larger --scale draws them (given alone, --scale is world units per eigenvalue unit)\n",
-                 typicalPx);
+                 "larger --scale%s draws them (given alone, --scale is world units per eigenvalue unit)\n",
+                 typicalPx, cameraFlags.c_str());
+  }
+  // Glyphs around the camera are not seen: each is drawn from outside.
+  if (typicalPx > 100.0 * std::max(o.width, o.height)) {
+    if (sink) sink({}, 0, 0, {});
+    std::fprintf(stderr,
+                 "tensorglyph render: the typical glyph is %.2g pixels across, far larger than the %d x %d image, so "
+                 "the camera may be inside the glyphs and see none; a smaller --scale draws them\n",
+                 typicalPx, o.width, o.height);
   }
   const double frames = 1.0 + o.repeat;
   if (sink) sink("rendering", 0, frames, "frames");
@@ -106,7 +128,10 @@ int cmdRender(int argc, const char** argv) {
   if (drawn == 0 && glyphCount > 0 && !(typicalPx < 0.25)) {
     if (sink) sink({}, 0, 0, {});
     const std::string why = params.faMin > 0 ? "below --fa-min " + formatNumber(params.faMin) + " or outside" : "outside";
-    std::fprintf(stderr, "tensorglyph render: no glyph is drawn: all %zu are %s the view\n", glyphCount, why.c_str());
+    const std::string flags = std::string(o.eye ? " --eye" : "") + (o.lookAt ? " --look-at" : "") + (o.up ? " --up" : "") +
+                              (o.fov ? " --fov" : "") + (o.ortho ? " --ortho" : "");
+    std::fprintf(stderr, "tensorglyph render: no glyph is drawn: all %zu are %s the view%s\n", glyphCount, why.c_str(),
+                 flags.empty() ? "" : (" that" + flags + " set").c_str());
   }
   // The first frame's freed heap (llvmpipe's compile and scene memory)
   // goes back to the system before the readback allocates: a lower peak.
@@ -145,7 +170,7 @@ int cmdRender(int argc, const char** argv) {
       std::fprintf(stderr, "  outlines: width %.3g px, crease %.3g deg\n", params.outline.width, params.outline.creaseDeg);
     for (const auto& item : renderer.context())
       if (const auto* m = dynamic_cast<const render::MeshItem*>(item.get()))
-        std::fprintf(stderr, "  %s: %zu triangles, %s, %.1f MiB of GPU memory\n", m->label().c_str(), m->triangleCount(),
+        std::fprintf(stderr, "  %s: %zu triangles, %s, %.1f MiB of GPU memory\n", printable(m->label()).c_str(), m->triangleCount(),
                      render::meshModeName(m->params().mode), double(m->gpuBytes()) / (1024.0 * 1024.0));
     if (params.shadow.enabled)
       std::fprintf(stderr, "  shadows: map %d x %d texels, penumbra %.3g, %.1f MiB of GPU memory in all\n",

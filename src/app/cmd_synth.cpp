@@ -157,7 +157,7 @@ int cmdSynth(int argc, const char** argv) {
     seed = parseInt("--seed", a[1], 0, std::numeric_limits<long long>::max());
     seedGiven = true;
   });
-  ap.arg("--quiet").help("no progress line on a terminal's stderr").action([&](Args) { quiet = true; });
+  ap.arg("-q,--quiet").help("no progress line on a terminal's stderr").action([&](Args) { quiet = true; });
   parseCommandLine(ap, argc, argv);
   if (kind.empty() || out.empty()) throw UsageError(std::string("KIND and -o OUT are required; KIND is one of ") + kKinds);
   const KindSize* sized = kindNamed(kind);

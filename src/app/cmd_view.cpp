@@ -88,7 +88,7 @@ void saveScreenshot(render::GlyphRenderer& r, const render::Camera& cam, const r
                     const std::string& path) {
   // Screenshots are PNG: the 8-bit colour alone, read back in bands as render's.
   io::writeImage(r.readback(cam, t, render::Channels::Rgba8), path);
-  std::fprintf(stderr, "tensorglyph view: saved %s\n", path.c_str());
+  std::fprintf(stderr, "tensorglyph view: saved %s\n", printable(path).c_str());
 }
 
 }  // namespace
@@ -138,7 +138,7 @@ int cmdView(int argc, const char** argv) {
   if (underlay) {
     checkPlanes(o.slices, *underlay, "view");
     for (const std::string& w : underlayWarnings(o.slices, *underlay, glyphs.boundsMinWC, glyphs.boundsMaxWC))
-      std::fprintf(stderr, "tensorglyph view: --underlay %s: %s\n", underlay->name.c_str(), w.c_str());
+      std::fprintf(stderr, "tensorglyph view: --underlay %s: %s\n", printable(underlay->name).c_str(), printable(w).c_str());
     for (const render::PlaneSpec& spec : o.slices.planesFor(*underlay))
       v.planes.push_back({spec, true, spec.axis >= 0 ? underlay->dims[spec.axis] : 0});
     underlayBox = underlay->boundsWC();

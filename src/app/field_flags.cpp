@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "app/cli_common.h"
+#include "app/option_ranges.h"
 #include "io/nifti_layouts.h"
 
 namespace tg::app {
@@ -12,6 +13,8 @@ namespace tg::app {
 void FieldFlags::addTo(OptionTable& ap, bool scaling) {
   using Args = OptionArgs;
   io::Selection& sel = read.selection;
+  const std::string group = ap.groupDefault();
+  ap.setGroup("input and selection");
   ap.arg("--array NAME").help("VTK: the point array holding the tensors (9, 6, 4 or 3 components)")
       .action([&](Args a) { read.arrayName = a[1]; });
   ap.arg("--layout L").help("NIfTI component order: fsl (xx xy xz yy yz zz), nifti (SYMMATRIX: xx xy yy xz yz zz), "
@@ -23,10 +26,12 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
   ap.arg("--mask FILE").help("scalar volume on the same grid (.nrrd .nhdr .nii .nii.gz .mif .mih .vti)").action([&](Args a) {
     sel.maskPath = a[1];
   });
-  ap.arg("--mask-min V").help("keep voxels whose mask value is >= V (default 0.5)").action([&](Args a) {
-    sel.maskMin = parseDouble("--mask-min", a[1]);
-  });
-  ap.arg("--confidence-min C").help("masked NRRD tensors: keep confidence >= C (default 0.5)")
+  ap.arg("--mask-min V").help("keep voxels whose mask value is >= V (default 0.5; needs --mask)").range(ranges::kAnyFloat)
+      .action([&](Args a) {
+        sel.maskMin = parseDouble("--mask-min", a[1]);
+        maskMinGiven = true;
+      });
+  ap.arg("--confidence-min C").help("masked NRRD tensors: keep confidence >= C (default 0.5)").range(ranges::kAnyFloat)
       .action([&](Args a) {
         sel.confidenceMin = parseDouble("--confidence-min", a[1]);
         read.confidenceGiven = true;
@@ -40,27 +45,33 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
         }
       });
   ap.arg("--stride N").help("every N-th voxel along each axis (every N-th point of a point set)")
-      .action([&](Args a) { sel.stride = parseInt("--stride", a[1]); });
-  ap.arg("--roi X0 Y0 Z0 X1 Y1 Z1").help("keep samples inside this box (WC)").action([&](Args a) {
+      .range(ranges::kStride).action([&](Args a) { sel.stride = parseInt("--stride", a[1]); });
+  ap.arg("--roi X0 Y0 Z0 X1 Y1 Z1").help("keep samples inside this box (WC)").range(ranges::kAnyFloat).action([&](Args a) {
     std::array<double, 6> b;
     for (int k = 0; k < 6; ++k) b[k] = parseDouble("--roi", a[1 + k]);
     sel.roiWC = b;
   });
-  ap.arg("--cl-min V").help("hide glyphs with Westin's linear measure cl below V").action([&](Args a) {
+  ap.arg("--cl-min V").help("hide glyphs with Westin's linear measure cl below V").range(ranges::kUnit).action([&](Args a) {
     glyph.clMin = parseDouble("--cl-min", a[1]);
   });
-  ap.arg("--cp-min V").help("hide glyphs with Westin's planar measure cp below V").action([&](Args a) {
+  ap.arg("--cp-min V").help("hide glyphs with Westin's planar measure cp below V").range(ranges::kUnit).action([&](Args a) {
     glyph.cpMin = parseDouble("--cp-min", a[1]);
   });
+  // Single precision: the glyph records hold float eigenvalues, and their
+  // sum (the trace) must stay below 3.4e38 too.
+  ap.setGroup("glyphs");
   ap.arg("--min-eigenvalue E").help("raise eigenvalues below E to E (shape only; FA is from the data)")
-      .action([&](Args a) { glyph.minEigenvalue = parseDouble("--min-eigenvalue", a[1]); });
-  if (!scaling) return;
+      .range({-1e37, 1e37}).action([&](Args a) { glyph.minEigenvalue = parseDouble("--min-eigenvalue", a[1]); });
+  if (!scaling) {
+    ap.setGroup(group);
+    return;
+  }
   // Sizing is a frame parameter: the glyph records hold eigenvalues, not sizes.
   const bool reloads = ap.reloadsDefault();
   ap.setReloadsDefault(false);
   ap.arg("--scale S").help("with --scale-mode absolute (the default when given alone): world units per eigenvalue "
                            "unit; else a factor on the mode's size")
-      .action([&](Args a) { scale = parseDouble("--scale", a[1]); });
+      .range(ranges::kPositiveFloat).action([&](Args a) { scale = parseDouble("--scale", a[1]); });
   ap.arg("--scale-mode M").help("absolute, max (largest eigenvalue -> S sample spacings across) or spacing (default: " +
                                 std::to_string(std::lround(100 * tensor::ScaleParams{}.percentile)) + "th" +
                                 " percentile of the non-zero tensors -> S sample spacings)")
@@ -81,24 +92,21 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
       });
   ap.arg("--lambda0 L").help("--magnitude log: the knee; shape: the size every glyph gets (default: the median "
                              "|eigenvalue|)")
-      .action([&](Args a) { sizing.lambda0 = parseDouble("--lambda0", a[1]); });
+      .range(ranges::kPositiveFloat).action([&](Args a) { sizing.lambda0 = parseDouble("--lambda0", a[1]); });
   ap.arg("--clamp N").help("no glyph wider than N sample spacings, its shape kept (vtkTensorGlyph's ClampScaling); "
                            "0: off (default 2 with --scale-mode spacing or max, off with absolute)")
-      .action([&](Args a) { sizing.clampSpacings = parseDoubleIn("--clamp", a[1], 0.0, 1e6); });
+      .range(ranges::kClampSpacings).action([&](Args a) { sizing.clampSpacings = parseDouble("--clamp", a[1]); });
   ap.setReloadsDefault(reloads);
+  ap.setGroup(group);
 }
 
 void FieldFlags::validate() const {
   const io::Selection& sel = read.selection;
-  if (sel.stride < 1 || sel.stride > 1000000) throw UsageError("--stride must be within 1..1000000");
+  if (maskMinGiven && sel.maskPath.empty()) throw UsageError("--mask-min needs --mask");
   if (!read.layout.empty() && !io::isNiftiLayout(read.layout))
     throw UsageError("--layout: unknown layout \"" + read.layout + "\"; choose " + io::kNiftiLayoutChoices);
   if (!read.frame.empty() && !io::tensorFrameNamed(read.frame))
     throw UsageError("--frame: unknown frame \"" + read.frame + "\"; choose " + io::kTensorFrameChoices);
-  if (!(glyph.clMin >= 0 && glyph.clMin <= 1)) throw UsageError("--cl-min must be within 0..1");
-  if (!(glyph.cpMin >= 0 && glyph.cpMin <= 1)) throw UsageError("--cp-min must be within 0..1");
-  if (scale && !(*scale > 0.0)) throw UsageError("--scale must be positive");
-  if (sizing.lambda0 && !(*sizing.lambda0 > 0.0)) throw UsageError("--lambda0 must be positive");
   if (sizing.lambda0 && sizing.magnitude == tensor::Magnitude::Linear)
     throw UsageError("--lambda0 applies to --magnitude log or shape only");
 }
@@ -128,11 +136,17 @@ void checkLoaded(const io::TensorField& f, const io::ReadOptions& opt) {
   if (opt.confidenceGiven && !f.hasConfidence)
     throw UsageError("--confidence-min does not apply to " + f.path + ": its tensors have no confidence value (" +
                      f.layout + ")");
+  // The options that left nothing, named: the data alone is not to blame.
+  const io::Selection& sel = opt.selection;
+  const std::string maskBy = " (--mask, --mask-min " + formatNumber(sel.maskMin) + ")";
+  std::string selectedBy = std::string(sel.slice ? " --slice" : "") + (sel.stride > 1 ? " --stride" : "") +
+                           (sel.roiWC ? " --roi" : "");
+  if (!selectedBy.empty()) selectedBy = " (" + selectedBy.substr(1) + ")";
   if (f.size() == 0)
     throw io::InputError("checkLoaded: " + f.path + ": no tensor to draw: of " + std::to_string(f.totalPoints) + ", " +
                          std::to_string(f.skippedNonFinite) + " skipped (NaN/Inf), " + std::to_string(f.skippedOverflow) +
-                         " skipped (overflow), " + std::to_string(f.masked) +
-                         " masked, " + std::to_string(f.unselected) + " outside the selection");
+                         " skipped (overflow), " + std::to_string(f.masked) + " masked" + (f.masked ? maskBy : "") + ", " +
+                         std::to_string(f.unselected) + " outside the selection" + (f.unselected ? selectedBy : ""));
 }
 
 void checkDrawable(const tensor::GlyphSet& g, const std::string& path) {
@@ -150,14 +164,16 @@ void checkDrawable(const tensor::GlyphSet& g, const std::string& path) {
 }
 
 void reportLoad(const io::TensorField& f, const char* command) {
-  for (const std::string& w : f.warnings) std::fprintf(stderr, "tensorglyph %s: %s: %s\n", command, f.path.c_str(), w.c_str());
+  const std::string path = printable(f.path);
+  for (const std::string& w : f.warnings)
+    std::fprintf(stderr, "tensorglyph %s: %s: %s\n", command, path.c_str(), printable(w).c_str());
   if (f.skippedNonFinite)
-    std::fprintf(stderr, "tensorglyph %s: %s: skipped %zu tensors with NaN/Inf components\n", command, f.path.c_str(),
+    std::fprintf(stderr, "tensorglyph %s: %s: skipped %zu tensors with NaN/Inf components\n", command, path.c_str(),
                  f.skippedNonFinite);
   if (f.skippedOverflow)
     std::fprintf(stderr,
                  "tensorglyph %s: %s: skipped %zu tensors whose values overflow single precision (beyond 3.4e38)\n",
-                 command, f.path.c_str(), f.skippedOverflow);
+                 command, path.c_str(), f.skippedOverflow);
 }
 
 }  // namespace tg::app

@@ -18,6 +18,7 @@ struct FieldFlags {
   std::optional<double> scale;
   std::optional<tensor::ScaleMode> scaleMode;
   tensor::ScaleParams sizing;  // --magnitude, --lambda0, --clamp; mode and factor from the two above
+  bool maskMinGiven = false;   // --mask-min needs --mask
 
   // --array --layout --frame --mask --mask-min --confidence-min --slice --stride
   // --roi --cl-min --cp-min --min-eigenvalue, and with `scaling` also

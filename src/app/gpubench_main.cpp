@@ -14,15 +14,13 @@ int main(int argc, const char** argv) {
   try {
     ScaleOptions defaults;
     defaults.backend = "egl";
-    const ScaleOptions o = parseScaleOptions(argc, argv, defaults);
-    if (o.help) {
-      std::fputs(scaleUsage("tensorglyph-gpubench").c_str(), stdout);
-      return 0;
-    }
+    const ScaleOptions o = parseScaleOptions(argc, argv, defaults, "tensorglyph-gpubench");
     checkScaleOptions(o);
     if (o.backend != "egl") throw UsageError("--backend: this executable has only egl");
     auto ctx = tg::gl::createEglContext({!o.requireGpu});
     runScaleSweep(*ctx, o);
+    return 0;
+  } catch (const HelpShown&) {
     return 0;
   } catch (const UsageError& e) {
     std::fprintf(stderr, "tensorglyph-gpubench: %s\n", e.what());

@@ -1,6 +1,7 @@
 #include "app/legend_flags.h"
 
 #include "app/cli_values.h"
+#include "app/option_ranges.h"
 
 namespace tg::app {
 
@@ -27,6 +28,8 @@ void checkLegendText(std::string_view flag, std::string_view text) {
 
 void LegendFlags::addTo(OptionTable& ap) {
   using Args = OptionArgs;
+  const std::string group = ap.groupDefault();
+  ap.setGroup("colour");
   ap.arg("--legend").help("draw a legend: the colour key (a bar, or for dec a sphere of directions) and a scale bar")
       .action([this](Args) { params.enabled = true; });
   ap.arg("--legend-corner C").help(std::string("the legend's corner: ") + kLegendCornerNames + " (default " +
@@ -48,11 +51,12 @@ void LegendFlags::addTo(OptionTable& ap) {
         params.lengthUnits = a[1];
         detailGiven = true;
       });
-  ap.arg("--legend-text-scale K").help("legend text height, K x 13 pixels, 1..8 (default: 1 per 700 image rows)")
-      .action([this](Args a) {
-        params.textScale = parseIntIn("--legend-text-scale", a[1], 1, render::kMaxLegendTextScale);
+  ap.arg("--legend-text-scale K").help("legend text height, K x 13 pixels (default: 1 per 700 image rows)")
+      .range(ranges::kLegendTextScale).action([this](Args a) {
+        params.textScale = int(parseInt(a[0], a[1]));
         detailGiven = true;
       });
+  ap.setGroup(group);
 }
 
 void LegendFlags::validate() const {

@@ -8,6 +8,8 @@ namespace tg::app {
 
 void LookFlags::addTo(OptionTable& ap) {
   using Args = OptionArgs;
+  const std::string group = ap.groupDefault();
+  ap.setGroup("depth cues");
   ap.arg("--no-shadows").help("the built-in scene without its shadows").action([this](Args) { noShadows = true; });
   ap.arg("--no-ao").help("... without its ambient occlusion").action([this](Args) { noAo = true; });
   ap.arg("--no-legend").help("... without its legend").action([this](Args) { noLegend = true; });
@@ -16,6 +18,7 @@ void LookFlags::addTo(OptionTable& ap) {
   ap.arg("--no-outlines")
       .help("no outlines: the default for every input, the built-in scene included (refused with --outlines)")
       .action([this](Args) { noOutlines = true; });
+  ap.setGroup(group);
 }
 
 void LookFlags::validate(bool shadows, bool ao, bool outlines, bool legend) const {

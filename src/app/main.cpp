@@ -19,7 +19,25 @@ constexpr const char* kUsage =
     "  synth KIND -o OUT       write a synthetic field (helix, boussinesq, extremes, random, ...)\n"
     "  bench accuracy [INPUT]  superquadric march: error against the reference vs frame time\n"
     "  bench scale             frame time against glyph count, ray casting vs a tessellated mesh\n"
-    "Run 'tensorglyph <command> --help' for a command's options.\n";
+    "  help [TOPIC]            one task's options (input, glyphs, colour, camera, context, depth, output)\n"
+    "Run 'tensorglyph <command> --help' for a command's options; docs/cli.md has them all.\n";
+
+// The subcommand `cmd`, or -1 where there is none.
+int command(const std::string& cmd, int argc, const char** argv) {
+  using namespace tg::app;
+  if (cmd == "render") return cmdRender(argc, argv);
+  if (cmd == "view") return cmdView(argc, argv);
+  if (cmd == "info") return cmdInfo(argc, argv);
+  if (cmd == "synth") return cmdSynth(argc, argv);
+  if (cmd == "bench") return cmdBench(argc, argv);
+  if (cmd == "help") return cmdHelp(argc, argv, command);
+  return -1;
+}
+
+// One line on stderr, whatever the message quotes (tg::app::printable).
+void report(const std::string& cmd, const std::exception& e) {
+  std::fprintf(stderr, "tensorglyph %s: %s\n", cmd.c_str(), tg::app::printable(e.what()).c_str());
+}
 
 }  // namespace
 
@@ -33,23 +51,19 @@ int main(int argc, const char** argv) {
   }
   const std::string cmd = argv[1];
   try {
-    if (cmd == "render") return tg::app::cmdRender(argc - 1, argv + 1);
-    if (cmd == "view") return tg::app::cmdView(argc - 1, argv + 1);
-    if (cmd == "info") return tg::app::cmdInfo(argc - 1, argv + 1);
-    if (cmd == "synth") return tg::app::cmdSynth(argc - 1, argv + 1);
-    if (cmd == "bench") return tg::app::cmdBench(argc - 1, argv + 1);
-    std::fprintf(stderr, "tensorglyph: unknown command \"%s\"; run 'tensorglyph --help'\n", cmd.c_str());
+    if (const int code = command(cmd, argc - 1, argv + 1); code >= 0) return code;
+    std::fprintf(stderr, "tensorglyph: unknown command \"%s\"; run 'tensorglyph --help'\n", tg::app::printable(cmd).c_str());
     return 2;
   } catch (const tg::app::HelpShown&) {
     return 0;
   } catch (const tg::app::UsageError& e) {
-    std::fprintf(stderr, "tensorglyph %s: %s\n", cmd.c_str(), e.what());
+    report(cmd, e);
     return 2;
   } catch (const tg::io::InputError& e) {
-    std::fprintf(stderr, "tensorglyph %s: %s\n", cmd.c_str(), e.what());
+    report(cmd, e);
     return 1;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "tensorglyph %s: %s\n", cmd.c_str(), e.what());
+    report(cmd, e);
     return 1;
   }
 }

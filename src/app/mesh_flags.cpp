@@ -4,6 +4,7 @@
 
 #include "app/option_table.h"
 #include "app/cli_values.h"
+#include "app/option_ranges.h"
 
 namespace tg::app {
 std::optional<render::MeshMode> meshModeNamed(std::string_view name) {
@@ -18,10 +19,12 @@ void MeshFlags::addTo(OptionTable& ap) {
   auto given = [this](const char* flag) {
     if (firstParameterFlag.empty()) firstParameterFlag = flag;
   };
+  const std::string group = ap.groupDefault();
+  ap.setGroup("context");
   ap.arg("--mesh FILE")
-      .help("draw a surface with the glyphs (repeatable): .vtp .vtk .stl .obj .ply, or the outer surface of a "
+      .help("draw a surface with the glyphs: .vtp .vtk .stl .obj .ply, or the outer surface of a "
             ".vtu/.vts volume mesh")
-      .action([this](Args a) { files.emplace_back(a[1]); });
+      .repeats().action([this](Args a) { files.emplace_back(a[1]); });
   ap.arg("--mesh-from-input").help("draw the boundary of the FEM mesh the tensors came from (a .vtu/.vtk input)")
       .action([this](Args) { fromInput = true; });
   ap.arg("--mesh-mode MODE")
@@ -34,25 +37,28 @@ void MeshFlags::addTo(OptionTable& ap) {
         params.mode = *m;
       });
   ap.arg("--mesh-color R G B")
-      .help("mesh colour, 0..1 (default " + formatNumber(d.color.r) + " " + formatNumber(d.color.g) + " " + formatNumber(d.color.b) + ")")
-      .action([this, given](Args a) {
+      .help("mesh colour (default " + formatNumber(d.color.r) + " " + formatNumber(d.color.g) + " " + formatNumber(d.color.b) + ")")
+      .range(ranges::kUnit).action([this, given](Args a) {
         given("--mesh-color");
-        for (int k = 0; k < 3; ++k) params.color[k] = float(parseDoubleIn("--mesh-color", a[1 + std::size_t(k)], 0.0, 1.0));
+        for (int k = 0; k < 3; ++k) params.color[k] = float(parseDouble(a[0], a[1 + std::size_t(k)]));
       });
   ap.arg("--mesh-opacity A")
-      .help("see-through: opacity of a face seen head-on, rising towards the outline (0..1, default " +
+      .help("see-through: opacity of a face seen head-on, rising towards the outline (default " +
             formatNumber(d.opacity) + ")")
-      .action([this, given](Args a) {
+      .range(ranges::kUnit).action([this, given](Args a) {
         given("--mesh-opacity");
-        params.opacity = float(parseDoubleIn("--mesh-opacity", a[1], 0.0, 1.0));
+        opacityGiven = true;
+        params.opacity = float(parseDouble(a[0], a[1]));
       });
   ap.arg("--mesh-feature-angle DEG")
-      .help("edges: draw creases sharper than this, and every boundary edge (0..180, default " +
+      .help("edges: draw creases sharper than this, and every boundary edge (default " +
             formatNumber(d.featureAngleDeg) + ")")
-      .action([this, given](Args a) {
+      .range(ranges::kFeatureAngleDeg).action([this, given](Args a) {
         given("--mesh-feature-angle");
-        params.featureAngleDeg = float(parseDoubleIn("--mesh-feature-angle", a[1], 0.0, 180.0));
+        featureAngleGiven = true;
+        params.featureAngleDeg = float(parseDouble(a[0], a[1]));
       });
+  ap.setGroup(group);
 }
 
 void MeshFlags::validate(const std::string& input) const {
@@ -69,6 +75,15 @@ void MeshFlags::validate(const std::string& input) const {
       throw UsageError("--mesh: " + f + ": " + p);
 }
 
+void MeshFlags::checkModeParameters() const {
+  if (opacityGiven && params.mode != render::MeshMode::SeeThrough)
+    throw UsageError("--mesh-opacity applies to --mesh-mode see-through; the meshes are drawn " +
+                     std::string(render::meshModeName(params.mode)));
+  if (featureAngleGiven && params.mode != render::MeshMode::Edges)
+    throw UsageError("--mesh-feature-angle applies to --mesh-mode edges; the meshes are drawn " +
+                     std::string(render::meshModeName(params.mode)));
+}
+
 std::vector<NamedPath> MeshFlags::inputs() const {
   std::vector<NamedPath> v;
   for (const std::string& f : files) v.push_back({"--mesh", f});
@@ -82,7 +97,7 @@ std::vector<io::MeshData> MeshFlags::read(const std::string& input, const char* 
   for (const io::MeshData& m : meshes)
     if (m.skippedNonFinite)
       std::fprintf(stderr, "tensorglyph %s: %s: %zu cells skipped: a vertex is NaN/Inf or beyond single precision\n",
-                   command, m.path.c_str(), m.skippedNonFinite);
+                   command, printable(m.path).c_str(), m.skippedNonFinite);
   return meshes;
 }
 

@@ -23,12 +23,17 @@ struct MeshFlags {
   bool fromInput = false;
   render::MeshParams params;
   std::string firstParameterFlag;  // a --mesh-* parameter flag given, for validate()
+  bool opacityGiven = false, featureAngleGiven = false;  // for modeApplies()
 
   void addTo(OptionTable& ap);
   // UsageError for a parameter flag without a mesh, and for --mesh-from-input
   // without an input file (the built-in scene has no FEM mesh).
   void validate(const std::string& input) const;
   bool any() const { return fromInput || !files.empty(); }
+  // UsageError for a parameter of another mode than the one drawn: --mesh-opacity
+  // without see-through, --mesh-feature-angle without edges. Only where the
+  // mode stays as given (render); the viewer's panel switches modes.
+  void checkModeParameters() const;
   // The mesh files, for refuseOutputsOverInputs.
   std::vector<NamedPath> inputs() const;
   // Reads every mesh (io::readMesh, in the guarded child), warning on stderr

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 #include <climits>
+#include <iterator>
 #include <cstdio>
 #include <string>
 #include <string_view>
@@ -17,8 +18,14 @@
 namespace tg::app {
 namespace {
 
+const OptionGroup* groupNamed(std::string_view name) {
+  for (const OptionGroup& g : kOptionGroups)
+    if (name == g.name) return &g;
+  return nullptr;
+}
+
 // "--size W H" in --help, not CLI11's "--size TEXT x 2"; the usage line is
-// the command's own.
+// the command's own; each task's group ends with its example.
 class HelpFormatter : public CLI::Formatter {
  public:
   explicit HelpFormatter(std::string usage) : usage_(std::move(usage)) {}
@@ -26,10 +33,31 @@ class HelpFormatter : public CLI::Formatter {
     return opt->get_type_name().empty() ? std::string() : " " + opt->get_type_name();
   }
   std::string make_usage(const CLI::App*, std::string) const override { return "usage: " + usage_ + "\n"; }
+  std::string make_group(std::string group, bool positional, std::vector<const CLI::Option*> opts) const override {
+    std::string text = CLI::Formatter::make_group(group, positional, opts);
+    if (const OptionGroup* g = groupNamed(group)) text += "  e.g. " + std::string(g->example) + "\n";
+    return text;
+  }
 
  private:
   std::string usage_;
 };
+
+
+// The options in --help order: the positional, then the task groups in
+// kOptionGroups' order, then the command's own; within each, as declared.
+std::vector<const OptionTable::Option*> helpOrder(const OptionTable& table) {
+  auto rank = [](const OptionTable::Option& o) -> std::size_t {
+    if (o.positional) return 0;
+    for (std::size_t k = 0; k < std::size(kOptionGroups); ++k)
+      if (o.group == kOptionGroups[k].name) return k + 1;
+    return std::size(kOptionGroups) + 1;
+  };
+  std::vector<const OptionTable::Option*> v;
+  for (const OptionTable::Option& o : table.options()) v.push_back(&o);
+  std::stable_sort(v.begin(), v.end(), [&](auto* a, auto* b) { return rank(*a) < rank(*b); });
+  return v;
+}
 
 std::string joined(const std::vector<std::string>& words) {
   std::string s;
@@ -84,9 +112,14 @@ void parseCommandLine(const OptionTable& table, int argc, const char** argv) {
   app.name(argc > 0 ? argv[0] : "tensorglyph");
   app.formatter(std::make_shared<HelpFormatter>(table.usage()));
   app.set_help_flag("-h,--help", "show this help and exit");
+  bool markdown = false;
+  app.add_flag("--help-markdown", markdown)->group("");
   app.get_formatter()->column_width(32);
-  for (const OptionTable::Option& opt : table.options()) {
-    const OptionTable::Option* o = &opt;
+  // Occurrences so far, by option: each trigger of a callback is one.
+  std::vector<int> seen(table.options().size(), 0);
+  std::size_t index = 0;
+  for (const OptionTable::Option* o : helpOrder(table)) {
+    int* count = &seen[index++];
     CLI::Option* c = nullptr;
     if (o->positional) {
       // Every extra positional reaches the action, which names the clash.
@@ -96,10 +129,15 @@ void parseCommandLine(const OptionTable& table, int argc, const char** argv) {
       });
       c->expected(1, INT_MAX);
     } else {
-      c = app.add_option(o->flag, [o](const CLI::results_t& r) {
+      const std::string names = o->shortFlag.empty() ? o->flag : o->shortFlag + "," + o->flag;
+      c = app.add_option(names, [o, count](const CLI::results_t& r) {
         // A switch given "--stats=3", or too few values before the end.
         if (o->arity() == 0 && !(r.size() == 1 && r[0] == "true") && !r.empty())
           throw UsageError(o->flag + " takes no value");
+        // "-o a.png -o b.png" wrote b.png alone; a switch twice means the same.
+        if (++*count > 1 && o->arity() > 0 && !o->repeatable)
+          throw UsageError(o->flag + " is given more than once; it takes one " +
+                           (o->arity() == 1 ? o->metavars[0] : "set of values") + " (give it once)");
         OptionTable::apply(*o, o->arity() == 0 ? std::span<const std::string>() : std::span<const std::string>(r));
         return true;
       });
@@ -108,11 +146,17 @@ void parseCommandLine(const OptionTable& table, int argc, const char** argv) {
       c->multi_option_policy(CLI::MultiOptionPolicy::TakeAll);
       c->trigger_on_parse();
     }
-    c->description(o->helpText);
+    c->description(o->description());
     if (o->isHidden) c->group("");
+    else if (o->positional) c->group("Input");
+    else c->group(o->group.empty() ? std::string("Options") : o->group);
   }
   try {
     app.parse(argc, const_cast<char**>(argv));
+    if (markdown) {
+      std::fputs(markdownReference(table, table.usage().substr(0, table.usage().find('\n'))).c_str(), stdout);
+      throw HelpShown{};
+    }
   } catch (const CLI::CallForHelp&) {
     std::fputs(app.help().c_str(), stdout);
     throw HelpShown{};
@@ -123,6 +167,43 @@ void parseCommandLine(const OptionTable& table, int argc, const char** argv) {
   } catch (const CLI::ParseError& e) {
     throw UsageError(e.what());
   }
+}
+
+std::string groupHelp(const OptionTable& table, const std::string& group) {
+  std::string text;
+  for (const OptionTable::Option* o : helpOrder(table)) {
+    if (o->group != group || o->isHidden || o->positional) continue;
+    std::string opts = o->shortFlag.empty() ? o->flag : o->shortFlag + ", " + o->flag;
+    for (const std::string& m : o->metavars) opts += " " + m;
+    char line[64];
+    std::snprintf(line, sizeof line, "  %-30s ", opts.c_str());
+    text += (opts.size() > 30 ? "  " + opts + "\n" + std::string(33, ' ') : std::string(line)) + o->description() + "\n";
+  }
+  if (text.empty()) return text;
+  const OptionGroup* g = groupNamed(group);
+  return group + ":\n" + text + (g ? "  e.g. " + std::string(g->example) + "\n" : std::string());
+}
+
+std::string markdownReference(const OptionTable& table, const std::string& title) {
+  std::string md = "## " + title + "\n";
+  std::string current = "\x01";
+  for (const OptionTable::Option* o : helpOrder(table)) {
+    if (o->isHidden) continue;
+    const std::string group = o->positional ? "Input" : o->group.empty() ? "Options" : o->group;
+    if (group != current) {
+      current = group;
+      md += "\n### " + group + "\n\n";
+      if (const OptionGroup* g = groupNamed(group)) md += "Example: `" + std::string(g->example) + "`\n\n";
+      md += "| option | values | range | what it does |\n|---|---|---|---|\n";
+    }
+    std::string help = o->helpText;
+    for (std::size_t at = 0; (at = help.find('|', at)) != std::string::npos; at += 2) help.replace(at, 1, "\\|");
+    const std::string flag = o->shortFlag.empty() ? o->flag : o->shortFlag + ", " + o->flag;
+    const std::string range = o->numbers ? (o->list ? "each " : "") + o->numbers->text() : "";
+    md += "| `" + flag + "` | " + (o->metavars.empty() ? "" : "`" + joined(o->metavars) + "`") + " | " + range +
+          " | " + help + (o->repeatable ? " (repeatable)" : "") + " |\n";
+  }
+  return md;
 }
 
 }  // namespace tg::app

@@ -7,6 +7,7 @@
 #include "app/field_flags.h"
 #include "app/frame_size.h"
 #include "app/names.h"
+#include "app/option_ranges.h"
 #include "app/output_check.h"
 #include "io/image_writer.h"
 #include "io/readers.h"
@@ -15,66 +16,86 @@ namespace tg::app {
 
 void addRenderOptions(OptionTable& ap, RenderOptions& o) {
   using Args = OptionArgs;
+  ap.setGroup("output");
   ap.arg("-o OUT").commandLineOnly().help("output image: .png (8-bit RGBA), .exr (float RGBA Z N id), other OIIO formats")
       .action([&](Args a) { o.output = a[1]; });
   addViewOptions(ap, o);
+  ap.setGroup("glyphs");
   ap.arg("--tessellate R").help("draw the tessellated baseline instead: an R x R superquadric mesh per glyph, "
-                                 "as VTK's vtkTensorGlyph (4..64; needs --glyph superquadric)")
-      .action([&](Args a) { o.tessellate = parseIntIn("--tessellate", a[1], 0, render::TessellatedGlyphs::kMaxResolution); });
+                                 "as VTK's vtkTensorGlyph (needs --glyph superquadric)")
+      .range(ranges::kTessellation).action([&](Args a) { o.tessellate = int(parseInt(a[0], a[1])); });
+  ap.setGroup("output");
   ap.arg("--backend NAME").reloads().help("osmesa (default), egl, glfw or auto").action([&](Args a) { o.backend = a[1]; });
   o.pick.addTo(ap);
-  ap.arg("--repeat N").commandLineOnly().help("render N more frames and report the median frame time").action([&](Args a) {
-    o.repeat = parseIntIn("--repeat", a[1], 0, 10000);
-  });
-  ap.arg("--quiet").commandLineOnly().help("no progress line on a terminal's stderr").action([&](Args) { o.quiet = true; });
+  ap.arg("--repeat N").commandLineOnly().help("render N more frames and report the median frame time")
+      .range(ranges::kRepeat).action([&](Args a) { o.repeat = int(parseInt(a[0], a[1])); });
+  ap.arg("-q,--quiet").commandLineOnly().help("no progress line on a terminal's stderr").action([&](Args) { o.quiet = true; });
   ap.arg("--verbose").commandLineOnly().help("report timings and memory on stderr").action([&](Args) { o.verbose = true; });
 }
 
 void addViewOptions(OptionTable& ap, RenderOptions& o) {
   using Args = OptionArgs;
   auto rest = [](Args a) { return std::span<const char* const>(a.data() + 1, a.size() - 1); };
+  const std::string group = ap.groupDefault();
   addInputArg(ap, o.input);
+  ap.setGroup("output");
   const std::string size = "image size in pixels (default " + std::to_string(o.width) + " " + std::to_string(o.height) + ")";
-  ap.arg("--size W H").reloads().help(size).action([&](Args a) {
-    o.width = parseIntIn("--size", a[1], 1, kMaxFrameSide);
-    o.height = parseIntIn("--size", a[2], 1, kMaxFrameSide);
+  ap.arg("--size W H").reloads().help(size).range({1, kMaxFrameSide, true}).action([&](Args a) {
+    o.width = int(parseInt(a[0], a[1]));
+    o.height = int(parseInt(a[0], a[2]));
   });
+  ap.setGroup("glyphs");
   ap.arg("--glyph KIND").help("ellipsoid (default; the built-in scene: superquadric), superquadric, "
                                   "or Teem's cylinder or box").action([&](Args a) {
     o.glyph = a[1];
     o.look.glyphGiven = true;
   });
-  ap.arg("--iterations N").help("superquadric Newton iterations at most (default 10)").action([&](Args a) {
-    o.maxIterations = parseIntIn("--iterations", a[1], 1, 1000);
+  ap.arg("--iterations N").help("superquadric Newton iterations at most (default 10)").range(ranges::kIterations)
+      .action([&](Args a) {
+    o.maxIterations = int(parseInt(a[0], a[1]));
     if (o.marchFlag.empty()) o.marchFlag = "--iterations";
   });
   ap.arg("--epsilon E").help("superquadric hit tolerance, relative to glyph size (default 1e-4)")
-      .action([&](Args a) {
+      .range(ranges::kEpsilon).action([&](Args a) {
         o.epsilon = parseDouble("--epsilon", a[1]);
         if (o.marchFlag.empty()) o.marchFlag = "--epsilon";
       });
-  ap.arg("--stats").help("report Newton iteration statistics on stderr").action([&](Args) { o.stats = true; });
-  ap.arg("--gamma G").help("superquadric sharpness (Kindlmann 2004), 0..10000 (default " + formatNumber(o.gamma) + ")").action([&](Args a) {
+  ap.arg("--stats").help("report Newton iteration statistics on stderr").action([&](Args) {
+    o.stats = true;
+    if (o.marchFlag.empty()) o.marchFlag = "--stats";
+  });
+  ap.arg("--gamma G").help("superquadric sharpness (Kindlmann 2004; default " + formatNumber(o.gamma) + ")")
+      .range(ranges::kGamma).action([&](Args a) {
     o.gamma = parseDouble("--gamma", a[1]);
     if (o.marchFlag.empty()) o.marchFlag = "--gamma";
   });
-  ap.arg("--fa-min F").help("hide glyphs with FA below F").action([&](Args a) { o.faMin = parseDoubleIn("--fa-min", a[1], 0.0, 1.0); });
-  ap.arg("--eye X Y Z").help("camera position (WC)").action([&](Args a) { o.eye = parseVec3("--eye", rest(a)); });
-  ap.arg("--look-at X Y Z").help("point the camera looks at (WC)").action([&](Args a) {
+  ap.setGroup("input and selection");
+  ap.arg("--fa-min F").help("hide glyphs with FA below F").range(ranges::kUnit).action([&](Args a) {
+    o.faMin = parseDouble(a[0], a[1]);
+  });
+  ap.setGroup("camera and views");
+  ap.arg("--eye X Y Z").help("camera position (WC)").range(ranges::kAnyFloat).action([&](Args a) {
+    o.eye = parseVec3("--eye", rest(a));
+  });
+  ap.arg("--look-at X Y Z").help("point the camera looks at (WC)").range(ranges::kAnyFloat).action([&](Args a) {
     o.lookAt = parseVec3("--look-at", rest(a));
   });
-  ap.arg("--up X Y Z").help("camera up vector (WC)").action([&](Args a) { o.up = parseVec3("--up", rest(a)); });
-  ap.arg("--fov DEG").help("perspective, vertical field of view (default 30)").action([&](Args a) {
+  ap.arg("--up X Y Z").help("camera up vector (WC)").range(ranges::kAnyFloat).action([&](Args a) {
+    o.up = parseVec3("--up", rest(a));
+  });
+  ap.arg("--fov DEG").help("perspective, vertical field of view (default 30)").range(ranges::kFovDeg).action([&](Args a) {
     o.fov = parseDouble("--fov", a[1]);
   });
-  ap.arg("--ortho HEIGHT").help("orthographic, view height in world units").action([&](Args a) {
-    o.ortho = parseDouble("--ortho", a[1]);
-  });
+  ap.arg("--ortho HEIGHT").help("orthographic, view height in world units").range(ranges::kPositiveFloat)
+      .action([&](Args a) { o.ortho = parseDouble("--ortho", a[1]); });
+  ap.setGroup("colour");
   ap.arg("--color MODE").help("dec, fa, md, cl, cp or sign (normal stress: orange tension, blue compression)").action([&](Args a) { o.color = a[1]; });
-  ap.arg("--background R G B A").help("background colour, 0..1 (default 0.08 0.08 0.1 1)").action([&](Args a) {
-    for (int k = 0; k < 4; ++k) o.background[k] = float(parseDoubleIn("--background", a[1 + k], 0.0, 1.0));
-  });
+  ap.arg("--background R G B A").help("background colour (default 0.08 0.08 0.1 1)").range(ranges::kUnit)
+      .action([&](Args a) {
+        for (int k = 0; k < 4; ++k) o.background[k] = float(parseDouble(a[0], a[1 + k]));
+      });
   o.addSceneFlags(ap);
+  ap.setGroup(group);
 }
 
 // Every parameter is checked before anything is loaded or created.
@@ -84,27 +105,18 @@ void validateRenderOptions(const RenderOptions& o, bool toFile) {
   o.pick.validate(o.width, o.height);
   if (!glyphKindNamed(o.glyph))
     throw UsageError("--glyph: unknown kind \"" + o.glyph + "\"; choose " + kGlyphKindNames);
-  if (!(o.gamma >= 0.0 && o.gamma <= 1e4)) throw UsageError("--gamma must be within 0..10000");
-  if (o.tessellate != 0 && (o.tessellate < render::TessellatedGlyphs::kMinResolution ||
-                            o.tessellate > render::TessellatedGlyphs::kMaxResolution))
-    throw UsageError("--tessellate must be within 4..64");
   if (o.tessellate != 0 && o.glyph != "superquadric") throw UsageError("--tessellate needs --glyph superquadric");
   if (o.tessellate != 0 && o.stats) throw UsageError("--stats counts the ray march; --tessellate has none");
   const bool marches = o.look.glyphGiven || !o.input.empty() ? o.glyph == "superquadric"
                                                              : SceneLook{}.glyph == render::GlyphKind::Superquadric;
   if (toFile && !o.marchFlag.empty() && !marches)
     throw UsageError(o.marchFlag + " applies to --glyph superquadric only; this render draws " + o.glyph + " glyphs");
-  if (o.maxIterations < 1 || o.maxIterations > 1000) throw UsageError("--iterations must be within 1..1000");
-  if (!(o.epsilon >= 1e-9 && o.epsilon <= 0.5)) throw UsageError("--epsilon must be within 1e-9..0.5");
   o.validateSceneFlags(o.input);
+  if (toFile) o.mesh.checkModeParameters();
   if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
-  // Checked here, not only by validateCamera: a framed camera's distance
-  // divides by tan(fov / 2), so --fov 0 failed as "camera vectors must be finite".
-  if (o.fov && !(*o.fov > 0.0 && *o.fov < 180.0)) throw UsageError("--fov must be in (0, 180) degrees");
   if ((o.lookAt || o.up) && !o.eye) throw UsageError("--look-at and --up need --eye");
   if (!colorModeNamed(o.color))
     throw UsageError("--color: unknown mode \"" + o.color + "\"; choose " + kColorModeNames);
-  if (o.repeat < 0 || o.repeat > 10000) throw UsageError("--repeat must be within 0..10000");
   checkBackend(o.backend);
   if (toFile && !io::canWriteImage(o.output))
     throw UsageError("-o: no image format for \"" + o.output + "\"");
@@ -112,6 +124,23 @@ void validateRenderOptions(const RenderOptions& o, bool toFile) {
 }
 
 render::FrameParams frameParams(const RenderOptions& o, const Scene& s, const tensor::ResolvedScale& sized) {
+  // The glyphs vanished without a word beyond about 1e10 world units
+  // (--scale 1e14 on a DTI field): the shaders' single-precision ray
+  // casting. The bound keeps a margin below what was seen to draw (7e8).
+  constexpr double kMaxRadiusWC = 1e9;
+  if (o.field.scale && !(sized.typicalRadiusWC <= kMaxRadiusWC))
+    throw UsageError("--scale " + formatNumber(*o.field.scale) + ": the typical glyph would be " +
+                     formatNumber(2 * sized.typicalRadiusWC) + " world units across, beyond what single precision " +
+                     "draws (" + formatNumber(2 * kMaxRadiusWC) + "); give a smaller --scale");
+  // log: lambda0 ln(1 + m / lambda0) in single precision is 0 where m / lambda0
+  // is below its step (about 1e-7); the typical glyph's m / lambda0 is about
+  // its radius over scale x lambda0.
+  const tensor::SizeMapping& m = sized.mapping;
+  if (o.field.sizing.lambda0 && m.magnitude == tensor::Magnitude::Log &&
+      !(sized.typicalRadiusWC >= 1e-6 * sized.scale * m.lambda0))
+    throw UsageError("--lambda0 " + formatNumber(m.lambda0) + ": the typical glyph's |eigenvalue| is below a millionth " +
+                     "of it, which the logarithm in single precision draws as 0; give --lambda0 " +
+                     formatNumber(1e6 * sized.typicalRadiusWC / sized.scale) + " or less");
   render::FrameParams p;
   p.scale = sized.scale;
   p.sizing = sized.mapping;
@@ -147,6 +176,16 @@ render::CameraDesc chooseCamera(const RenderOptions& o, const Scene& s, const te
     // A camera framed from the data alone fails only on the data's extent.
     if (o.eye || o.ortho || o.fov) throw UsageError(err);
     throw io::InputError("render: " + s.field.path + ": the field cannot be framed (" + err + ")");
+  }
+  // Only a view the options chose is refused here; the range alone cannot
+  // say it, as the bound depends on the image and the eye.
+  const double smallest = render::smallestResolvedView(d, o.height);
+  const bool tooSmall = o.ortho ? d.orthoHeight < smallest : o.fov && d.fovYDeg < smallest;
+  if (tooSmall) {
+    const std::string flag = o.ortho ? "--ortho" : "--fov";
+    throw UsageError(flag + " " + formatNumber(o.ortho ? *o.ortho : *o.fov) + ": a pixel of this " +
+                     std::to_string(o.height) + "-pixel-high image would be finer than single precision resolves " +
+                     "at this camera; give " + flag + " " + formatNumber(smallest * 1.00001) + " or more");
   }
   return d;
 }

@@ -36,6 +36,8 @@ struct RenderOptions : SceneFlags {
 };
 
 
+inline constexpr const char* kRenderUsage = "tensorglyph render [INPUT] -o OUT [options]";
+
 // Registers every option of `render` on `table`, each writing into `o`.
 void addRenderOptions(OptionTable& table, RenderOptions& o);
 // The part `view` shares: the input, the size, the glyph and its march, the

@@ -50,7 +50,7 @@ RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io
     underlay = loadUnderlay(o.slices, scene_.field, command_);
     checkPlanes(o.slices, *underlay, command_);
     for (const std::string& w : underlayWarnings(o.slices, *underlay, first.glyphsWC.lo, first.glyphsWC.hi))
-      std::fprintf(stderr, "tensorglyph %s: --underlay %s: %s\n", command_, underlay->name.c_str(), w.c_str());
+      std::fprintf(stderr, "tensorglyph %s: --underlay %s: %s\n", command_, printable(underlay->name).c_str(), printable(w).c_str());
     std::tie(underlayLoWC_, underlayHiWC_) = underlay->boundsWC();
   }
   growByMeshes(meshes, meshLoWC_, meshHiWC_);

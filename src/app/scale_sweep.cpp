@@ -1,7 +1,5 @@
 #include "app/scale_sweep.h"
 
-#include <getopt.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -10,6 +8,7 @@
 #include <limits>
 
 #include "app/cli_values.h"
+#include "app/option_table.h"
 #include "app/frame_size.h"
 #include "data-synthetic/generators.h"
 #include "gl/shader_library.h"
@@ -20,84 +19,49 @@
 
 namespace tg::app {
 
-ScaleOptions parseScaleOptions(int argc, const char** argv, ScaleOptions o) {
-  enum Opt { kN = 256, kResolutions, kSize, kFrames, kBudget, kGamma, kBackend, kRequireGpu, kHelp, kQuiet };
-  const option longOpts[] = {{"n", required_argument, nullptr, kN},
-                             {"resolutions", required_argument, nullptr, kResolutions},
-                             {"size", required_argument, nullptr, kSize},
-                             {"frames", required_argument, nullptr, kFrames},
-                             {"budget", required_argument, nullptr, kBudget},
-                             {"gamma", required_argument, nullptr, kGamma},
-                             {"backend", required_argument, nullptr, kBackend},
-                             {"require-gpu", no_argument, nullptr, kRequireGpu},
-                             {"help", no_argument, nullptr, kHelp},
-                             {"quiet", no_argument, nullptr, kQuiet},
-                             {nullptr, 0, nullptr, 0}};
-  // getopt keeps its cursor in libc's globals: reset it (0 re-initialises
-  // GNU getopt) and report errors ourselves, in one line.
-  optind = 0;
-  opterr = 0;
-  // "+": stop at the first non-option and never permute argv, so the cast
-  // away from const is never written through.
-  char** av = const_cast<char**>(argv);
-  for (int c; (c = getopt_long(argc, av, "+:o:", longOpts, nullptr)) != -1;) {
-    const std::string arg = optarg ? optarg : "";
-    switch (c) {
-      case 'o': o.csv = arg; break;
-      case kN: o.counts = parseList<double>("--n", arg, parseDouble); break;
-      case kResolutions: o.resolutions = parseList<int>("--resolutions", arg, [](auto f, auto t) {
-          return parseIntIn(f, t, render::TessellatedGlyphs::kMinResolution, render::TessellatedGlyphs::kMaxResolution);
-        }); break;
-      case kSize:
-        if (optind >= argc) throw UsageError("--size needs W H");
-        o.width = parseIntIn("--size", arg, 16, 8192);
-        o.height = parseIntIn("--size", argv[optind++], 16, 8192);
-        break;
-      case kFrames: o.frames = parseIntIn("--frames", arg, 1, 1000); break;
-      case kBudget: o.budgetS = parseDouble("--budget", arg); break;
-      case kGamma: o.gamma = parseDouble("--gamma", arg); break;
-      case kBackend: o.backend = arg; break;
-      case kRequireGpu: o.requireGpu = true; break;
-      case kHelp: o.help = true; break;
-      case kQuiet: o.quiet = true; break;
-      case ':': throw UsageError(std::string(argv[optind - 1]) + " needs a value");
-      default: throw UsageError("unknown option " + std::string(argv[optind - 1]));
-    }
-  }
-  if (optind < argc) throw UsageError("unexpected argument \"" + std::string(argv[optind]) + "\"");
+ScaleOptions parseScaleOptions(int argc, const char** argv, ScaleOptions o, const std::string& command) {
+  OptionTable ap(command +
+                 " -o CSV [options]\n"
+                 "Frame time against glyph count (random tensors on a cubic grid, all in view): ray-cast ellipsoids\n"
+                 "and superquadrics, sub-pixel sprites (the per-glyph cost without fragment work), both again without\n"
+                 "the occlusion pre-pass, and a tessellated superquadric mesh per glyph as VTK's vtkTensorGlyph draws it.");
+  using Args = OptionArgs;
+  ap.arg("-o CSV").help("results, one row per method and count").action([&](Args a) { o.csv = a[1]; });
+  ap.arg("--n LIST").help("glyph counts, comma-separated, whole numbers (default 1e4,1e5,1e6)")
+      .rangeList({1, 2e8}).action([&](Args a) { o.counts = parseList<double>("--n", a[1], parseDouble); });
+  ap.arg("--resolutions LIST").help("tessellation resolutions (default 8,16,32,64)")
+      .rangeList({render::TessellatedGlyphs::kMinResolution, render::TessellatedGlyphs::kMaxResolution, true})
+      .action([&](Args a) { o.resolutions = parseList<int>("--resolutions", a[1], [](auto f, auto t) { return parseInt(f, t); }); });
+  ap.arg("--size W H").help("image size (default " + std::to_string(o.width) + " " + std::to_string(o.height) + ")")
+      .range(ranges::kBenchFrameSide).action([&](Args a) {
+        o.width = int(parseInt(a[0], a[1]));
+        o.height = int(parseInt(a[0], a[2]));
+      });
+  ap.arg("--frames N").help("timed frames per row after one warm-up; medians are reported (default 3)")
+      .range(ranges::kFrames).action([&](Args a) { o.frames = int(parseInt(a[0], a[1])); });
+  ap.arg("--budget S").help("a method whose warm-up frame took over S seconds skips larger counts (default 20)")
+      .range({1e-3, 1e6}).action([&](Args a) { o.budgetS = parseDouble(a[0], a[1]); });
+  ap.arg("--gamma G").help("superquadric sharpness (default 3)").range(ranges::kGamma).action([&](Args a) {
+    o.gamma = parseDouble(a[0], a[1]);
+  });
+  ap.arg("--backend NAME").help("osmesa, egl, glfw or auto (default " + o.backend + ")").action([&](Args a) {
+    o.backend = a[1];
+  });
+  ap.arg("--require-gpu").help("with egl: fail rather than fall back to Mesa's software renderer").action([&](Args) {
+    o.requireGpu = true;
+  });
+  ap.arg("-q,--quiet").help("no progress line on a terminal's stderr").action([&](Args) { o.quiet = true; });
+  parseCommandLine(ap, argc, argv);
   return o;
 }
 
 void checkScaleOptions(const ScaleOptions& o) {
   if (o.csv.empty()) throw UsageError("-o CSV is required");
   for (double n : o.counts)
-    if (!(n >= 1 && n <= 2e8 && n == double(std::size_t(n)))) throw UsageError("--n: each must be a whole number within 1..2e8");
-  for (int r : o.resolutions)
-    if (r < render::TessellatedGlyphs::kMinResolution || r > render::TessellatedGlyphs::kMaxResolution)
-      throw UsageError("--resolutions: each must be within 4..64");
+    if (n != double(std::size_t(n))) throw UsageError("--n: each must be a whole number");
   checkFrameSize("--size", o.width, o.height);
-  if (!(o.budgetS > 0.0)) throw UsageError("--budget must be positive");
-  if (!(o.gamma >= 0.0 && o.gamma <= 100.0)) throw UsageError("--gamma must be within 0..100");
   if (o.requireGpu && o.backend != "egl") throw UsageError("--require-gpu needs --backend egl");
   checkOutputPath("-o", o.csv);
-}
-
-std::string scaleUsage(const std::string& command) {
-  return command +
-         " -o CSV [options]\n"
-         "Frame time against glyph count (random tensors on a cubic grid, all in view): ray-cast ellipsoids\n"
-         "and superquadrics, sub-pixel sprites (the per-glyph cost without fragment work), both again without\n"
-         "the occlusion pre-pass, and a tessellated superquadric mesh per glyph as VTK's vtkTensorGlyph draws it.\n"
-         "  -o CSV              results, one row per method and count\n"
-         "  --n LIST            glyph counts, comma-separated (default 1e4,1e5,1e6; at most 2e8)\n"
-         "  --resolutions LIST  tessellation resolutions, 4..64 (default 8,16,32,64)\n"
-         "  --size W H          image size (default 1920 1080)\n"
-         "  --frames N          timed frames per row after one warm-up; medians are reported (default 3)\n"
-         "  --budget S          a method whose warm-up frame took over S seconds skips larger counts (default 20)\n"
-         "  --gamma G           superquadric sharpness (default 3)\n"
-         "  --backend NAME      osmesa, egl, glfw or auto\n"
-         "  --require-gpu       with egl: fail rather than fall back to Mesa's software renderer\n"
-         "  --quiet             no progress line on a terminal's stderr\n";
 }
 
 namespace {

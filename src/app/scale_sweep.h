@@ -17,7 +17,7 @@ struct ScaleOptions {
   std::string csv;
   std::string backend = "osmesa";
   bool requireGpu = false;  // refuse a software renderer (a GPU run must not time llvmpipe)
-  bool help = false, quiet = false;
+  bool quiet = false;
   std::vector<double> counts{1e4, 1e5, 1e6};
   std::vector<int> resolutions{8, 16, 32, 64};
   int width = 1920, height = 1080, frames = 3;
@@ -26,12 +26,12 @@ struct ScaleOptions {
 };
 
 // Parses the options after the command name (argv[0] is the command), over
-// `defaults`; getopt_long, as the executable may not link OpenImageIO.
-// Throws UsageError. Checks nothing beyond syntax: see checkScaleOptions.
-ScaleOptions parseScaleOptions(int argc, const char** argv, ScaleOptions defaults);
+// `defaults`, through the option table as every command (ranges included);
+// `command` begins the usage line. Throws UsageError, or HelpShown after
+// --help. What needs more than one option: checkScaleOptions.
+ScaleOptions parseScaleOptions(int argc, const char** argv, ScaleOptions defaults, const std::string& command);
 // Teem's habit: every parameter checked before anything is generated.
 void checkScaleOptions(const ScaleOptions& o);
-std::string scaleUsage(const std::string& command);
 
 // Runs the sweep on `ctx` (current) and writes the CSV through a temporary
 // file, renamed into place only when every row is written.

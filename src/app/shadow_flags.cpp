@@ -3,6 +3,7 @@
 #include <cstdio>
 
 #include "app/cli_values.h"
+#include "app/option_ranges.h"
 
 namespace tg::app {
 void ShadowFlags::addTo(OptionTable& ap) {
@@ -12,37 +13,38 @@ void ShadowFlags::addTo(OptionTable& ap) {
   auto given = [this](const char* flag) {
     if (firstParameterFlag.empty()) firstParameterFlag = flag;
   };
+  const std::string group = ap.groupDefault();
+  ap.setGroup("depth cues");
   ap.arg("--shadows").help("soft shadows from the key light (percentage-closer filtered shadow map)")
       .action([&p](Args) { p.enabled = true; });
   ap.arg("--shadow-penumbra F")
-      .help("width of the shadows' soft edge, as a fraction of the shadowed region's width (0.." +
-            formatNumber(render::kMaxShadowPenumbra) + ", default " + formatNumber(d.penumbra) + ")")
-      .action([&p, given](Args a) {
+      .help("width of the shadows' soft edge, as a fraction of the shadowed region's width (default " +
+            formatNumber(d.penumbra) + ")")
+      .range(ranges::kShadowPenumbra).action([&p, given](Args a) {
         given("--shadow-penumbra");
-        p.penumbra = float(parseDoubleIn("--shadow-penumbra", a[1], 0.0, render::kMaxShadowPenumbra));
+        p.penumbra = float(parseDouble(a[0], a[1]));
       });
   ap.arg("--shadow-map-size N")
-      .help("shadow map texels per side, fixed (" + formatNumber(render::kMinShadowMapSize) + ".." +
-            formatNumber(render::kMaxShadowMapSize) + "; default: about " + formatNumber(d.mapDensity) +
+      .help("shadow map texels per side, fixed (default: about " + formatNumber(d.mapDensity) +
             " per image pixel at the glyphs, at most " + formatNumber(d.mapSize) + ")")
-      .action([&p, given](Args a) {
+      .range(ranges::kShadowMapSize).action([&p, given](Args a) {
         given("--shadow-map-size");
-        p.mapSize = parseIntIn("--shadow-map-size", a[1], render::kMinShadowMapSize, render::kMaxShadowMapSize);
+        p.mapSize = int(parseInt(a[0], a[1]));
         p.mapDensity = 0.0f;
       });
   ap.arg("--shadow-strength S")
-      .help("share of the key light a full shadow removes (0..1, default " + formatNumber(d.strength) + ")")
-      .action([&p, given](Args a) {
+      .help("share of the key light a full shadow removes (default " + formatNumber(d.strength) + ")")
+      .range(ranges::kUnit).action([&p, given](Args a) {
         given("--shadow-strength");
-        p.strength = float(parseDoubleIn("--shadow-strength", a[1], 0.0, 1.0));
+        p.strength = float(parseDouble(a[0], a[1]));
       });
   ap.arg("--shadow-bias B")
-      .help("depth bias along the light, in shadow map texels (0.." + formatNumber(render::kMaxShadowBias) + ", default " +
-            formatNumber(d.bias) + ")")
-      .action([&p, given](Args a) {
+      .help("depth bias along the light, in shadow map texels (default " + formatNumber(d.bias) + ")")
+      .range(ranges::kShadowBias).action([&p, given](Args a) {
         given("--shadow-bias");
-        p.bias = float(parseDoubleIn("--shadow-bias", a[1], 0.0, render::kMaxShadowBias));
+        p.bias = float(parseDouble(a[0], a[1]));
       });
+  ap.setGroup(group);
 }
 
 void ShadowFlags::validate() const {

@@ -12,6 +12,7 @@
 #include <glm/matrix.hpp>
 
 #include "app/cli_values.h"
+#include "app/option_ranges.h"
 #include "io/readers.h"
 #include "render/slice_plane.h"
 #include "tensor/anisotropy.h"
@@ -44,6 +45,8 @@ void SliceFlags::addTo(OptionTable& ap) {
   auto param = [this](const char* flag) {
     if (firstParameterFlag.empty()) firstParameterFlag = flag;
   };
+  const std::string group = ap.groupDefault();
+  ap.setGroup("context");
   ap.arg("--underlay SOURCE")
       .help("scalar volume under the glyphs: .nrrd .nhdr .nii .nii.gz .mif .mih .vti on any grid, placed by its "
             "own index-to-world map; or fa, md, cl, cp of the field itself (default fa when only --plane is given)")
@@ -52,11 +55,11 @@ void SliceFlags::addTo(OptionTable& ap) {
         underlay = a[1];
       });
   ap.arg("--plane SLICE")
-      .help("a slice plane of the underlay's grid, SLICE = x|y|z:INDEX (repeatable; default with --underlay: the middle z slice)")
-      .action([this](Args a) { planes.push_back(parsePlane(a[1])); });
+      .help("a slice plane of the underlay's grid, SLICE = x|y|z:INDEX (default with --underlay: the middle z slice)")
+      .repeats().action([this](Args a) { planes.push_back(parsePlane(a[1])); });
   ap.arg("--plane-at PX PY PZ NX NY NZ")
-      .help("an oblique slice plane through point P with normal N, in world coordinates (repeatable)")
-      .action([this](Args a) {
+      .help("an oblique slice plane through point P with normal N, in world coordinates")
+      .repeats().range(ranges::kAnyFloat).action([this](Args a) {
         render::PlaneSpec p;
         p.axis = -1;
         p.pointWC = parseVec3("--plane-at", std::span<const char* const>(a.data() + 1, 3));
@@ -76,7 +79,7 @@ void SliceFlags::addTo(OptionTable& ap) {
   ap.arg("--underlay-window LO HI")
       .help("values mapped onto the colormap's ends (default: percentiles " + formatNumber(d.percentileLo) + " and " +
             formatNumber(d.percentileHi) + " of the volume's finite values)")
-      .action([this, param](Args a) {
+      .range(ranges::kAnyFloat).action([this, param](Args a) {
         param("--underlay-window");
         const double lo = parseDouble("--underlay-window", a[1]), hi = parseDouble("--underlay-window", a[2]);
         if (!(lo < hi)) throw UsageError("--underlay-window: LO must be below HI");
@@ -89,12 +92,12 @@ void SliceFlags::addTo(OptionTable& ap) {
         params.window = std::pair(lo, hi);
       });
   ap.arg("--underlay-percentiles LO HI")
-      .help("without --underlay-window: the percentiles (0..100) of the volume's finite values mapped onto the "
+      .help("without --underlay-window: the percentiles of the volume's finite values mapped onto the "
             "colormap's ends (default " + formatNumber(d.percentileLo) + " " + formatNumber(d.percentileHi) + ")")
-      .action([this, param](Args a) {
+      .range(ranges::kPercent).action([this, param](Args a) {
         param("--underlay-percentiles");
-        const double lo = parseDoubleIn("--underlay-percentiles", a[1], 0.0, 100.0);
-        const double hi = parseDoubleIn("--underlay-percentiles", a[2], 0.0, 100.0);
+        const double lo = parseDouble(a[0], a[1]);
+        const double hi = parseDouble(a[0], a[2]);
         if (!(lo < hi)) throw UsageError("--underlay-percentiles: LO must be below HI");
         params.percentileLo = lo;
         params.percentileHi = hi;
@@ -109,10 +112,11 @@ void SliceFlags::addTo(OptionTable& ap) {
   ap.arg("--plane-offset R")
       .help("draw planes R largest glyph radii behind themselves, away from the viewer, so glyphs centred on "
             "them are not cut; 0: true depth (default " + formatNumber(d.depthOffsetRadii) + ")")
-      .action([this, param](Args a) {
+      .range(ranges::kPlaneOffsetRadii).action([this, param](Args a) {
         param("--plane-offset");
-        params.depthOffsetRadii = parseDoubleIn("--plane-offset", a[1], 0.0, 100.0);
+        params.depthOffsetRadii = parseDouble(a[0], a[1]);
       });
+  ap.setGroup(group);
 }
 
 void SliceFlags::validate() const {

@@ -8,8 +8,16 @@
 #include <cmath>
 #include <string>
 
+#include "app/option_ranges.h"
+
 namespace tg::app {
 namespace {
+
+// A slider over the range the option declares (app/option_ranges.h).
+bool slider(const char* label, float* v, const NumberRange& r, const char* format = "%.3g", bool logarithmic = false) {
+  return ImGui::SliderFloat(label, v, float(r.lo), float(r.hi), format,
+                            logarithmic ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);
+}
 
 // Magnitude mapping and clamp: resolved again from the kept magnitudes, so
 // a change is uniforms only (resize()).
@@ -46,17 +54,17 @@ void depthCues(render::FrameParams& p, const PanelStatus& s) {
         radius > 0.0f)
       p.ao.radius = radius;
     auto strength = float(p.ao.strength);
-    if (ImGui::SliderFloat("AO strength", &strength, 0.0f, float(render::AoParams::kMaxStrength), "%.2f"))
+    if (slider("AO strength", &strength, ranges::kAoStrength, "%.2f"))
       p.ao.strength = strength;
-    ImGui::SliderInt("AO samples", &p.ao.samples, render::AoParams::kMinSamples, render::AoParams::kMaxSamples);
+    ImGui::SliderInt("AO samples", &p.ao.samples, int(ranges::kAoSamples.lo), int(ranges::kAoSamples.hi));
   }
   ImGui::Checkbox("outlines", &p.outline.enabled);
   if (p.outline.enabled) {
     auto width = float(p.outline.width);
-    if (ImGui::SliderFloat("line width", &width, 0.25f, float(render::OutlineParams::kMaxWidth), "%.2f px"))
+    if (slider("line width", &width, ranges::kOutlineWidth, "%.2f px"))
       p.outline.width = width;
     auto crease = float(p.outline.creaseDeg);
-    if (ImGui::SliderFloat("crease angle", &crease, 1.0f, 179.0f, "%.0f deg")) p.outline.creaseDeg = crease;
+    if (slider("crease angle", &crease, ranges::kCreaseDeg, "%.0f deg")) p.outline.creaseDeg = crease;
     ImGui::ColorEdit4("line colour", &p.outline.color[0]);
   }
 }
@@ -66,9 +74,9 @@ void controls(ViewState& v, const tensor::GlyphSet& meta) {
   int kind = int(p.glyph);
   if (ImGui::Combo("glyph", &kind, "ellipsoid\0superquadric\0cylinder\0box\0")) p.glyph = render::GlyphKind(kind);
   auto gamma = float(p.gamma);
-  if (ImGui::SliderFloat("gamma", &gamma, 0.0f, 10.0f, "%.2f")) p.gamma = gamma;
+  if (slider("gamma", &gamma, ranges::kGamma, "%.2f", true)) p.gamma = gamma;
   auto fa = float(p.faMin);
-  if (ImGui::SliderFloat("FA min", &fa, 0.0f, 1.0f, "%.3f")) p.faMin = fa;
+  if (slider("FA min", &fa, ranges::kUnit, "%.3f")) p.faMin = fa;
   auto factor = float(v.scaleFactor);
   if (ImGui::SliderFloat("scale", &factor, 0.05f, 20.0f, "x %.2f", ImGuiSliderFlags_Logarithmic)) {
     v.scaleFactor = factor;
@@ -108,17 +116,17 @@ void controls(ViewState& v, const tensor::GlyphSet& meta) {
     ImGui::Checkbox("scale bar", &p.legend.scaleBar);
   }
   if (ImGui::CollapsingHeader("lighting")) {
-    ImGui::SliderFloat("ambient", &p.light.ambient, 0.0f, 1.0f);
-    ImGui::SliderFloat("headlight", &p.light.head, 0.0f, 1.0f);
-    ImGui::SliderFloat("key light", &p.light.key, 0.0f, 1.0f);
-    ImGui::SliderFloat("specular", &p.light.specular, 0.0f, 1.0f);
-    ImGui::SliderFloat("shininess", &p.light.shininess, 1.0f, 200.0f, "%.0f", ImGuiSliderFlags_Logarithmic);
+    slider("ambient", &p.light.ambient, ranges::kLight);
+    slider("headlight", &p.light.head, ranges::kLight);
+    slider("key light", &p.light.key, ranges::kLight);
+    slider("specular", &p.light.specular, ranges::kLight);
+    slider("shininess", &p.light.shininess, ranges::kShininess, "%.0f", true);
   }
   ImGui::Checkbox("shadows", &p.shadow.enabled);
   if (p.shadow.enabled && ImGui::CollapsingHeader("shadow parameters")) {
-    ImGui::SliderFloat("penumbra", &p.shadow.penumbra, 0.0f, 0.05f, "%.4f", ImGuiSliderFlags_Logarithmic);
-    ImGui::SliderFloat("shadow strength", &p.shadow.strength, 0.0f, 1.0f);
-    ImGui::SliderFloat("shadow bias", &p.shadow.bias, 0.0f, 4.0f, "%.2f texels");
+    slider("penumbra", &p.shadow.penumbra, ranges::kShadowPenumbra, "%.4f", true);
+    slider("shadow strength", &p.shadow.strength, ranges::kUnit);
+    slider("shadow bias", &p.shadow.bias, ranges::kShadowBias, "%.2f texels", true);
     // 0: follow the view (ShadowParams::mapDensity); then fixed sizes; 5: another, from a script.
     const int sizes[5] = {0, 512, 1024, 2048, 4096};
     int k = p.shadow.mapDensity > 0.0f ? 0 : int(std::find(sizes + 1, sizes + 5, p.shadow.mapSize) - sizes);
@@ -135,16 +143,17 @@ void controls(ViewState& v, const tensor::GlyphSet& meta) {
       ImGui::Checkbox(m.label.c_str(), &m.visible);
       int mode = int(m.params.mode);
       if (ImGui::Combo("drawn", &mode, "opaque\0see-through\0edges\0")) m.params.mode = render::MeshMode(mode);
-      if (m.params.mode == render::MeshMode::SeeThrough) ImGui::SliderFloat("opacity", &m.params.opacity, 0.0f, 1.0f);
+      if (m.params.mode == render::MeshMode::SeeThrough) slider("opacity", &m.params.opacity, ranges::kUnit);
       if (m.params.mode == render::MeshMode::Edges)
-        ImGui::SliderFloat("feature angle", &m.params.featureAngleDeg, 0.0f, 180.0f, "%.0f deg");
+        slider("feature angle", &m.params.featureAngleDeg, ranges::kFeatureAngleDeg, "%.0f deg");
       ImGui::PopID();
     }
   }
   if (ImGui::CollapsingHeader("superquadric march")) {
-    ImGui::SliderInt("iterations", &p.march.maxIterations, 1, 50);
+    ImGui::SliderInt("iterations", &p.march.maxIterations, int(ranges::kIterations.lo), int(ranges::kIterations.hi), "%d",
+                     ImGuiSliderFlags_Logarithmic);
     auto eps = float(p.march.epsilon);
-    if (ImGui::SliderFloat("epsilon", &eps, 1e-7f, 1e-2f, "%.1e", ImGuiSliderFlags_Logarithmic)) p.march.epsilon = eps;
+    if (slider("epsilon", &eps, ranges::kEpsilon, "%.1e", true)) p.march.epsilon = eps;
     ImGui::Checkbox("Newton statistics", &p.iterationStats);
   }
 }

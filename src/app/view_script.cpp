@@ -13,6 +13,7 @@
 #include "app/frame_size.h"
 #include "app/mesh_flags.h"
 #include "app/names.h"
+#include "app/option_ranges.h"
 #include "io/image_writer.h"
 #include "io/tensor_field.h"
 
@@ -30,6 +31,12 @@ const std::map<std::string, int, std::less<>> kArity = {
     {"shadows", 1}, {"shadow", 2}, {"pick", 2}, {"plane", -3}, {"mesh", 2}, {"mesh-opacity", 2}};
 
 double number(const ScriptStep& s, std::size_t k) { return parseDouble(s.verb, s.args[k]); }
+
+// A value against the range its option declares (app/option_ranges.h), in
+// the words render's flags use, naming the script's command.
+double ranged(const ScriptStep& s, std::size_t k, const NumberRange& r, const std::string& name = {}) {
+  return checkedNumber(name.empty() ? s.verb : name, s.args[k], r);
+}
 
 // `plane N on|off` or `plane N index I`: N counts from 1; the plane's own
 // range is checked once the underlay is known (checkPlaneSteps).
@@ -52,11 +59,10 @@ int axisNamed(const std::string& a) { return a == "x" ? 0 : a == "y" ? 1 : a == 
 // `shadow TERM V`, range-checked as render's --shadow-* flags are.
 double shadowValue(const ScriptStep& s) {
   const std::string& t = s.args[0];
-  if (t == "penumbra") return parseDoubleIn("shadow penumbra", s.args[1], 0.0, render::kMaxShadowPenumbra);
-  if (t == "strength") return parseDoubleIn("shadow strength", s.args[1], 0.0, 1.0);
-  if (t == "bias") return parseDoubleIn("shadow bias", s.args[1], 0.0, render::kMaxShadowBias);
-  if (t == "map-size")
-    return parseIntIn("shadow map-size", s.args[1], render::kMinShadowMapSize, render::kMaxShadowMapSize);
+  if (t == "penumbra") return ranged(s, 1, ranges::kShadowPenumbra, "shadow penumbra");
+  if (t == "strength") return ranged(s, 1, ranges::kUnit, "shadow strength");
+  if (t == "bias") return ranged(s, 1, ranges::kShadowBias, "shadow bias");
+  if (t == "map-size") return ranged(s, 1, ranges::kShadowMapSize, "shadow map-size");
   throw UsageError("shadow: unknown parameter \"" + t + "\"; choose penumbra, strength, bias or map-size");
 }
 
@@ -72,13 +78,10 @@ void check(const ScriptStep& s) {
   if (!countOk)
     throw UsageError(s.verb + ": wrong number of arguments");
   const std::string& v = s.verb;
-  auto positive = [&](std::size_t k) {
-    if (!(number(s, k) > 0.0)) throw UsageError(v + ": must be positive");
-  };
-  if (v == "orbit" || v == "pan") number(s, 0), number(s, 1);
-  if (v == "zoom" || v == "scale") positive(0);
-  if (v == "gamma" && !(number(s, 0) >= 0.0 && number(s, 0) <= 1e4)) throw UsageError("gamma: must be within 0..10000");
-  if (v == "fa-min") number(s, 0);
+  if (v == "orbit" || v == "pan") ranged(s, 0, ranges::kAnyFloat), ranged(s, 1, ranges::kAnyFloat);
+  if (v == "zoom" || v == "scale") ranged(s, 0, ranges::kPositiveFloat);
+  if (v == "gamma") ranged(s, 0, ranges::kGamma);
+  if (v == "fa-min") ranged(s, 0, ranges::kUnit);
   if (v == "glyph" && !glyphKindNamed(s.args[0]))
     throw UsageError("glyph: unknown kind \"" + s.args[0] + "\"; choose " + kGlyphKindNames);
   if (v == "color" && !colorModeNamed(s.args[0]))
@@ -86,17 +89,17 @@ void check(const ScriptStep& s) {
   if (v == "slab") {
     if (n == 1 && s.args[0] != "off") throw UsageError("slab: give x|y|z LO HI, or off");
     if (n == 3 && axisNamed(s.args[0]) < 0) throw UsageError("slab: axis must be x, y or z");
+    if (n == 3) ranged(s, 1, ranges::kAnyFloat), ranged(s, 2, ranges::kAnyFloat);
     if (n == 3 && !(number(s, 1) <= number(s, 2))) throw UsageError("slab: LO must not exceed HI");
   }
   if (v == "light") {
     const std::string& w = s.args[0];
     if (w != "ambient" && w != "head" && w != "key" && w != "specular" && w != "shininess")
       throw UsageError("light: unknown term \"" + w + "\"; choose ambient, head, key, specular or shininess");
-    if (!(number(s, 1) >= 0.0)) throw UsageError("light: must be >= 0");
+    ranged(s, 1, w == "shininess" ? ranges::kShininess : ranges::kLight, "light " + w);
   }
-  if (v == "iterations") parseIntIn(v, s.args[0], 1, 1000);
-  if (v == "epsilon" && !(number(s, 0) >= 1e-9 && number(s, 0) <= 0.5))
-    throw UsageError("epsilon: must be within 1e-9..0.5");
+  if (v == "iterations") ranged(s, 0, ranges::kIterations);
+  if (v == "epsilon") ranged(s, 0, ranges::kEpsilon);
   if (v == "stats" && s.args[0] != "on" && s.args[0] != "off") throw UsageError("stats: on or off");
   if (v == "frames") parseIntIn(v, s.args[0], 1, 100000);
   if (v == "pick") parseIntIn(v, s.args[0], 0, kMaxFrameSide - 1), parseIntIn(v, s.args[1], 0, kMaxFrameSide - 1);
@@ -107,24 +110,24 @@ void check(const ScriptStep& s) {
     if (!tensor::magnitudeNamed(s.args[0]))
       throw UsageError("magnitude: unknown mapping \"" + s.args[0] + "\"; choose " + tensor::kMagnitudeNames);
     if (n == 2 && s.args[0] == "linear") throw UsageError("magnitude: LAMBDA0 applies to log or shape only");
-    if (n == 2) positive(1);
+    if (n == 2) ranged(s, 1, ranges::kPositiveFloat, "magnitude LAMBDA0");
   }
-  if (v == "clamp") parseDoubleIn(v, s.args[0], 0.0, 1e6);
+  if (v == "clamp") ranged(s, 0, ranges::kClampSpacings);
   if (v == "legend" && s.args[0] != "on" && s.args[0] != "off") throw UsageError("legend: on or off");
   if (v == "legend-corner" && !legendCornerNamed(s.args[0]))
     throw UsageError("legend-corner: unknown corner \"" + s.args[0] + "\"; choose " + kLegendCornerNames);
   if (v == "units" || v == "length-units") checkLegendText(v, s.args[0]);
   if ((v == "ao" || v == "outlines") && s.args[0] != "on" && s.args[0] != "off") throw UsageError(v + ": on or off");
-  if (v == "ao-radius") parseAoRadius(v, s.args[0]);
-  if (v == "ao-strength") parseAoStrength(v, s.args[0]);
-  if (v == "outline-width") parseOutlineWidth(v, s.args[0]);
+  if (v == "ao-radius") ranged(s, 0, ranges::kPositiveFloat);
+  if (v == "ao-strength") ranged(s, 0, ranges::kAoStrength);
+  if (v == "outline-width") ranged(s, 0, ranges::kOutlineWidth);
   if (v == "shadows" && s.args[0] != "on" && s.args[0] != "off") throw UsageError("shadows: on or off");
   if (v == "shadow") shadowValue(s);
   if (v == "plane") checkPlaneSyntax(s);
   if (v == "mesh" || v == "mesh-opacity") parseIntIn(v, s.args[0], 1, int(render::kMaxContextItems));
   if (v == "mesh" && s.args[1] != "on" && s.args[1] != "off" && !meshModeNamed(s.args[1]))
     throw UsageError("mesh: give on, off or a mode (" + std::string(kMeshModeNames) + ")");
-  if (v == "mesh-opacity") parseDoubleIn(v, s.args[1], 0.0, 1.0);
+  if (v == "mesh-opacity") ranged(s, 1, ranges::kUnit);
 }
 
 }  // namespace

@@ -1,6 +1,7 @@
 #include "render/camera.h"
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -29,6 +30,15 @@ const char* validateCamera(const CameraDesc& d) {
   if (d.projection == Projection::Orthographic && !(d.orthoHeight > 0.0 && std::isfinite(d.orthoHeight)))
     return "--ortho height must be positive and finite";
   return "";
+}
+
+double smallestResolvedView(const CameraDesc& d, int height) {
+  const glm::dvec3 e = glm::abs(d.eyeWC), l = glm::abs(d.lookAtWC);
+  const double distance = glm::length(d.lookAtWC - d.eyeWC);
+  const double reach = std::max({e.x, e.y, e.z, l.x, l.y, l.z, distance});
+  const double pixel = 2.0 * double(FLT_EPSILON) * reach;  // the smallest pixel, in world units
+  if (d.projection == Projection::Orthographic) return pixel * height;
+  return 2.0 * glm::degrees(std::atan(0.5 * pixel * height / distance));
 }
 
 Camera makeCamera(const CameraDesc& d, int width, int height, const glm::dvec3& lo, const glm::dvec3& hi) {

@@ -43,6 +43,14 @@ struct Camera {
 // the view axis, fov in (0, 180), ortho height > 0. Returns "" when valid.
 const char* validateCamera(const CameraDesc& d);
 
+// Single precision: the GPU casts rays and keeps depth in floats, so a pixel
+// at the look-at point must span at least two float steps of the camera's
+// coordinates (the eye's, the look-at point's, their distance), or the image
+// cannot show what lies there. Returns the smallest view height (orthographic,
+// world units) or vertical field of view (perspective, degrees) an image
+// `height` pixels high can use with `d`'s eye and look-at point.
+double smallestResolvedView(const CameraDesc& d, int height);
+
 // Binds a valid description to an image and a scene box (WC, glyph extents
 // included), choosing near/far so that the whole box is in range.
 Camera makeCamera(const CameraDesc& d, int width, int height, const glm::dvec3& sceneLoWC,

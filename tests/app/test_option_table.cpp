@@ -39,7 +39,7 @@ TEST(OptionTable, CommandLineRunsActionsInOrderAndRefusesWhatItDoesNotKnow) {
   std::string input;
   OptionTable t("test [INPUT]");
   addInputArg(t, input);
-  t.arg("--plane SPEC").action([&](OptionArgs a) { order.push_back(a[1]); });
+  t.arg("--plane SPEC").repeats().action([&](OptionArgs a) { order.push_back(a[1]); });
   t.arg("--stats").action([&](OptionArgs) { order.push_back("stats"); });
   const char* argv[] = {"test", "in.vtk", "--plane", "z:1", "--stats", "--plane", "x:-2"};
   parseCommandLine(t, 7, argv);
@@ -90,6 +90,104 @@ TEST(RenderOptions, KeywordsReachTheSameFieldsAsFlags) {
   EXPECT_EQ(fromFlags.faMin, fromKeywords.faMin);
   EXPECT_THROW(validateRenderOptions(fromKeywords, true), UsageError);  // no -o
   EXPECT_NO_THROW(validateRenderOptions(fromKeywords, false));
+}
+
+// Every option with values that takes a number declares its range, so that
+// each surface (the command line, Python's keywords, the script) refuses
+// what single precision cannot draw in the table's words; the options that
+// take words are these.
+TEST(RenderOptions, EveryNumericOptionDeclaresARange) {
+  RenderOptions o;
+  OptionTable t;
+  addRenderOptions(t, o);
+  const std::set<std::string> words = {"INPUT", "-o", "--glyph", "--color", "--array", "--layout", "--frame",
+                                       "--mask", "--slice", "--scale-mode", "--magnitude", "--legend-corner",
+                                       "--units", "--length-units", "--underlay", "--plane", "--underlay-colormap",
+                                       "--mesh", "--mesh-mode", "--backend"};
+  for (const OptionTable::Option& opt : t.options()) {
+    if (opt.arity() == 0 && !opt.positional) continue;
+    if (words.count(opt.flag)) {
+      EXPECT_FALSE(opt.numbers) << opt.flag;
+      continue;
+    }
+    ASSERT_TRUE(opt.numbers) << opt.flag << " takes numbers but declares no range";
+    for (const char* bad : {"nan", "inf", "1e300", "-1e300", "1e-40x"}) {
+      const std::vector<std::string> values(opt.arity(), bad);
+      EXPECT_THROW(OptionTable::apply(opt, values), UsageError) << opt.flag << " " << bad;
+    }
+    EXPECT_LE(opt.numbers->hi, kFloatMax) << opt.flag;
+    EXPECT_GE(opt.numbers->lo, -kFloatMax) << opt.flag;
+  }
+}
+
+TEST(OptionTable, ARepeatedSingleValuedOptionIsRefusedAndRepeatableOnesAdd) {
+  RenderOptions o;
+  OptionTable t;
+  addRenderOptions(t, o);
+  for (std::vector<const char*> argv :
+       {std::vector<const char*>{"render", "-o", "a.png", "-o", "b.png"},
+        std::vector<const char*>{"render", "--size", "8", "8", "--size", "9", "9"},
+        std::vector<const char*>{"render", "--glyph", "box", "--glyph", "ellipsoid"},
+        std::vector<const char*>{"render", "--color", "fa", "--color", "dec"}}) {
+    RenderOptions fresh;
+    OptionTable again;
+    addRenderOptions(again, fresh);
+    try {
+      parseCommandLine(again, int(argv.size()), argv.data());
+      ADD_FAILURE() << argv[1] << " twice was accepted";
+    } catch (const UsageError& e) {
+      EXPECT_EQ(std::string(e.what()).find(std::string(argv[1]) + " is given more than once"), 0u) << e.what();
+    }
+  }
+  const char* argv[] = {"render", "--plane", "z:1", "--plane", "x:2", "--mesh", "a.stl", "--mesh", "b.stl",
+                        "--pick", "1", "2", "--pick", "3", "4", "--ao", "--ao", "-q"};
+  parseCommandLine(t, int(std::size(argv)), argv);
+  EXPECT_EQ(o.slices.planes.size(), 2u);
+  EXPECT_EQ(o.mesh.files.size(), 2u);
+  EXPECT_EQ(o.pick.pixels.size(), 2u);
+  EXPECT_TRUE(o.quiet);
+  for (const char* repeats : {"--plane", "--plane-at", "--mesh", "--pick"}) EXPECT_TRUE(t.find(repeats)->repeatable);
+}
+
+TEST(OptionTable, EveryRenderOptionBelongsToAHelpGroup) {
+  RenderOptions o;
+  OptionTable t;
+  addRenderOptions(t, o);
+  std::set<std::string> groups;
+  for (const OptionGroup& g : kOptionGroups) groups.insert(g.name);
+  std::set<std::string> used;
+  for (const OptionTable::Option& opt : t.options()) {
+    if (opt.positional) continue;
+    EXPECT_TRUE(groups.count(opt.group)) << opt.flag << " is in no group (\"" << opt.group << "\")";
+    used.insert(opt.group);
+  }
+  EXPECT_EQ(used, groups);  // and no group is empty
+  for (const OptionGroup& g : kOptionGroups) {
+    const std::string text = groupHelp(t, g.name);
+    EXPECT_EQ(text.find(std::string(g.name) + ":\n"), 0u) << text;
+    EXPECT_NE(text.find(g.example), std::string::npos) << text;
+  }
+}
+
+TEST(NumberRange, TextAndChecksAgree) {
+  EXPECT_EQ(ranges::kGamma.text(), "0..10000");
+  EXPECT_EQ(ranges::kClampSpacings.text(), "0 (off) or 0.01..1e+06");
+  EXPECT_EQ(rangeMessage("--gamma", ranges::kGamma), "--gamma must be within 0..10000");
+  EXPECT_EQ(checkedNumber("--clamp", "0", ranges::kClampSpacings), 0.0);
+  EXPECT_THROW(checkedNumber("--clamp", "0.001", ranges::kClampSpacings), UsageError);
+  EXPECT_EQ(checkedNumber("--stride", "7", ranges::kStride), 7.0);
+  EXPECT_THROW(checkedNumber("--stride", "2.5", ranges::kStride), UsageError);
+  try {
+    checkedNumber("--stride", "1e300", ranges::kStride);
+    ADD_FAILURE();
+  } catch (const UsageError& e) {
+    EXPECT_STREQ(e.what(), "--stride must be within 1..1e+06");
+  }
+}
+
+TEST(Printable, ControlCharactersAreEscapedAndTheRestKept) {
+  EXPECT_EQ(printable("a\nb\x1b[31m\t\r\x7f.nrrd"), "a\\nb\\x1b[31m\\t\\r\\x7f.nrrd");
+  EXPECT_EQ(printable("caf\xc3\xa9 dir/x.vtk"), "caf\xc3\xa9 dir/x.vtk");  // UTF-8 stays
 }
 
 }  // namespace

@@ -10,6 +10,8 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "app/cli_values.h"
+#include "app/render_options.h"
 #include "app/view_script.h"
 #include "io/tensor_field.h"
 
@@ -147,7 +149,7 @@ TEST_F(ViewScript, MagnitudeAndClampResolveTheSizeAgainWithoutTheRecords) {
 
   for (const auto& [line, what] : {std::pair{"magnitude cubic\n", "unknown mapping"},
                                    std::pair{"magnitude linear 2\n", "LAMBDA0 applies to log or shape only"},
-                                   std::pair{"magnitude log 0\n", "must be positive"},
+                                   std::pair{"magnitude log 0\n", "magnitude LAMBDA0 must be within"},
                                    std::pair{"clamp -1\n", "clamp must be within"}}) {
     EXPECT_PRED_FORMAT2(testing::IsSubstring, what, scriptError(line));
   }
@@ -192,7 +194,7 @@ TEST_F(ViewScript, DepthCueCommandsSetTheirParametersWithinRange) {
   EXPECT_DOUBLE_EQ(v.params.ao.radius, 0.25) << "switching off keeps the tuning";
 
   const std::pair<const char*, const char*> bad[] = {{"ao maybe\n", ":1: ao: on or off"},
-                                                     {"ao-radius 0\n", ":1: ao-radius must be positive (world units)"},
+                                                     {"ao-radius 0\n", ":1: ao-radius must be within 1.2e-38..3.4e+38"},
                                                      {"ao-strength 9\n", ":1: ao-strength must be within 0..4"},
                                                      {"outline-width 20\n", ":1: outline-width must be within 0.25..8"},
                                                      {"outlines\n", ":1: outlines: wrong number of arguments"}};
@@ -220,7 +222,7 @@ TEST_F(ViewScript, ShadowCommandsSetTheShadowParamsWithRenderRanges) {
   const std::pair<const char*, const char*> bad[] = {
       {"shadows maybe\n", ":1: shadows: on or off"},
       {"shadow strength 1.5\n", ":1: shadow strength must be within 0..1"},
-      {"shadow map-size 100000\n", ":1: shadow map-size: \"100000\" is not an integer within 64..8192"},
+      {"shadow map-size 100000\n", ":1: shadow map-size must be within 64..8192"},
       {"shadow softness 1\n", ":1: shadow: unknown parameter \"softness\""},
       {"shadow penumbra\n", ":1: shadow: wrong number of arguments"}};
   for (const auto& [text, what] : bad)
@@ -307,3 +309,43 @@ TEST_F(ViewScript, MeshCommandsToggleAndSetTheModeOfOneMesh) {
   for (const auto& [text, what] : bad)
     EXPECT_PRED_FORMAT2(testing::IsSubstring, what, scriptError(text));
 }
+
+namespace tg::app {
+namespace {
+
+// A script's value outside the range render's flag declares drew a blank or
+// NaN-black screenshot with exit 0 (`fa-min 2`, `light key 1e300`): each
+// value is held to the flag's range, in the flag's words, naming the command.
+TEST_F(ViewScript, ValuesAreHeldToTheRangesRenderDeclares) {
+  RenderOptions o;
+  OptionTable render;
+  addRenderOptions(render, o);
+  for (const auto& [line, flag] : std::vector<std::pair<std::string, std::string>>{
+           {"fa-min 2", "--fa-min"}, {"gamma -1", "--gamma"}, {"gamma 1e300", "--gamma"},
+           {"iterations 5000", "--iterations"}, {"epsilon 1", "--epsilon"}, {"clamp 1e-40", "--clamp"},
+           {"ao-strength 9", "--ao-strength"}, {"outline-width 20", "--outline-width"},
+           {"shadow strength 1.5", "--shadow-strength"}, {"shadow bias 100", "--shadow-bias"},
+           {"mesh-opacity 1 1.5", "--mesh-opacity"}}) {
+    const OptionTable::Option* opt = render.find(flag);
+    ASSERT_TRUE(opt && opt->numbers) << flag;
+    const std::string err = scriptError(line + "\n");
+    EXPECT_PRED_FORMAT2(testing::IsSubstring, " must be within " + opt->numbers->text(), err) << line;
+    // The same words as the flag's own refusal.
+    const std::string value = line.substr(line.rfind(' ') + 1);
+    try {
+      std::vector<std::string> values(opt->arity(), value);
+      OptionTable::apply(*opt, values);
+      ADD_FAILURE() << flag << " " << value << " was accepted";
+    } catch (const UsageError& e) {
+      EXPECT_EQ(std::string(e.what()), flag + " must be within " + opt->numbers->text());
+    }
+  }
+  for (const std::string line : {"light key 1e300", "light ambient -1", "light specular 2", "light shininess 0",
+                                 "zoom 1e-40", "scale 1e300", "slab z 1e300 2e300"})
+    EXPECT_PRED_FORMAT2(testing::IsSubstring, "must be within", scriptError(line + "\n")) << line;
+  std::ofstream(path) << "fa-min 1\nlight key 1\nlight shininess 200\n";
+  EXPECT_EQ(app::parseScript(path).size(), 3u);
+}
+
+}  // namespace
+}  // namespace tg::app

@@ -130,7 +130,7 @@ TEST(Cli, BadInputFailsWithOneLineAndNoOutput) {
       // Found by an attacker run: the next flag taken as the value, a length
       // that overflows named as a parallel up vector, a colour out of range.
       {"render -o " + out.string() + " --ortho --fov 30", "--ortho: a number is missing (found the option --fov)"},
-      {"render -o " + out.string() + " --eye 1e300 1e300 1e300", "lengths overflow"},
+      {"render -o " + out.string() + " --eye 1e300 1e300 1e300", "--eye must be within -3.4e+38..3.4e+38"},
       {"render -o " + out.string() + " --background 2 0 0 1", "--background must be within 0..1"},
       {"render -o " + (d / "x.notanimage").string(), "no image format"},
       {"render -o " + out.string() + " --backend vulkan", "backend"},
@@ -257,7 +257,7 @@ TEST(Cli, ViewRejectsABadScriptBeforeOpeningAWindow) {
   const auto shot = dir / "never.png";
   const std::pair<const char*, const char*> cases[] = {
       {"zoom 2\nspin 30\n", ":2: unknown command \"spin\""},
-      {"gamma -1\n", ":1: gamma: must be within 0..10000"},
+      {"gamma -1\n", ":1: gamma must be within 0..10000"},
       {"orbit 10\n", ":1: orbit: wrong number of arguments"},
       {"slab w 1 2\n", ":1: slab: axis must be x, y or z"},
       {"color rainbow\n", ":1: color: unknown mode"},
@@ -335,8 +335,8 @@ TEST(Cli, ShadowsChangeThePictureAndTheirFlagsAreChecked) {
   const fs::path out = dir() / "bad-shadow.png";
   const std::pair<std::string, std::string> cases[] = {
       {"--shadow-penumbra 0.01", "--shadow-penumbra needs --shadows"},
-      {"--shadows --shadow-map-size 32", "is not an integer within 64..8192"},
-      {"--shadows --shadow-map-size 4294967360", "is not an integer within 64..8192"},
+      {"--shadows --shadow-map-size 32", "--shadow-map-size must be within 64..8192"},
+      {"--shadows --shadow-map-size 4294967360", "--shadow-map-size must be within 64..8192"},
       {"--shadows --shadow-penumbra -0.1", "--shadow-penumbra must be within 0..0.1"},
       {"--shadows --shadow-strength 2", "--shadow-strength must be within 0..1"},
       {"--shadows --shadow-bias nan", "--shadow-bias"}};

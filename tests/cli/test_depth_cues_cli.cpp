@@ -99,7 +99,7 @@ TEST(DepthCuesCli, BadEffectFlagsFailCleanly) {
   const std::pair<std::string, std::string> cases[] = {
       {"--ao-radius 0.1", "need --ao"},
       {"--outline-width 2", "need --outlines"},
-      {"--ao --ao-radius 0", "--ao-radius must be positive"},
+      {"--ao --ao-radius 0", "--ao-radius must be within"},
       {"--ao --ao-radius nan", "--ao-radius"},
       {"--ao --ao-strength 5", "--ao-strength must be within 0..4"},
       {"--ao --ao-samples 1000", "--ao-samples"},

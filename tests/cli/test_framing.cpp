@@ -103,7 +103,7 @@ TEST(Framing, BadSizeFlagsAreUsageErrors) {
   const fs::path out = dir() / "never.png";
   const std::pair<std::string, std::string> cases[] = {
       {"--magnitude cubic", "--magnitude: unknown mapping \"cubic\""},
-      {"--magnitude log --lambda0 0", "--lambda0 must be positive"},
+      {"--magnitude log --lambda0 0", "--lambda0 must be within"},
       {"--lambda0 2", "--lambda0 applies to --magnitude log or shape only"},
       {"--clamp -1", "--clamp"}};
   for (const auto& [flags, what] : cases) {
