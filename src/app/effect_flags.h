@@ -9,7 +9,7 @@
 #include "app/option_table.h"
 #include <glm/vec4.hpp>
 
-#include "render/renderer.h"
+#include "render/frame_params.h"
 
 namespace tg::app {
 

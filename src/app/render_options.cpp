@@ -90,8 +90,9 @@ void validateRenderOptions(const RenderOptions& o, bool toFile) {
     throw UsageError("--tessellate must be within 4..64");
   if (o.tessellate != 0 && o.glyph != "superquadric") throw UsageError("--tessellate needs --glyph superquadric");
   if (o.tessellate != 0 && o.stats) throw UsageError("--stats counts the ray march; --tessellate has none");
-  const bool marches = o.look.glyphGiven || !o.input.empty() ? o.glyph == "superquadric"
-                                                             : SceneLook{}.glyph == render::GlyphKind::Superquadric;
+  // The kind table says which kinds the march's options (gamma among them) apply to.
+  const bool marches = render::glyphKind(o.look.glyphGiven || !o.input.empty() ? *glyphKindNamed(o.glyph)
+                                                                               : SceneLook{}.glyph).gamma;
   if (toFile && !o.marchFlag.empty() && !marches)
     throw UsageError(o.marchFlag + " applies to --glyph superquadric only; this render draws " + o.glyph + " glyphs");
   if (o.maxIterations < 1 || o.maxIterations > 1000) throw UsageError("--iterations must be within 1..1000");

@@ -19,25 +19,12 @@
 #include <cstddef>
 
 #include "gl/program.h"
+#include "render/frame_params.h"
 #include "render/camera.h"
 #include "render/gbuffer.h"
 
 namespace tg::render {
 
-struct AoParams {
-  bool enabled = false;
-  // Sample radius in world units; 0 picks kAutoRadius typical glyph
-  // diameters (GlyphRenderer::aoRadiusWC), which follows the glyph scale.
-  double radius = 0.0;
-  // Occlusion weight: 0 leaves the light alone, 1 takes all ambient and
-  // head light from a fully occluded point.
-  double strength = 1.0;
-  int samples = 16;  // hemisphere points per pixel
-  static constexpr double kAutoRadius = 1.0;
-  static constexpr int kMinSamples = 4, kMaxSamples = 64;
-  static constexpr double kMaxStrength = 4.0;
-  bool operator==(const AoParams&) const = default;
-};
 
 class AoPass {
  public:

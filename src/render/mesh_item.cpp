@@ -10,7 +10,7 @@
 #include <glm/trigonometric.hpp>
 
 #include "render/camera_uniforms.h"
-#include "render/renderer.h"
+#include "render/frame_params.h"
 
 namespace tg::render {
 namespace {

@@ -18,18 +18,11 @@
 #include <glm/vec4.hpp>
 
 #include "gl/program.h"
+#include "render/frame_params.h"
 #include "render/gbuffer.h"
 
 namespace tg::render {
 
-struct OutlineParams {
-  bool enabled = false;
-  double width = 1.5;                       // pixels
-  glm::vec4 color{0.0f, 0.0f, 0.0f, 1.0f};  // RGBA, alpha blends the line over the glyph
-  double creaseDeg = 45.0;                  // normals turning more than this make a crease
-  static constexpr double kMaxWidth = 8.0;
-  bool operator==(const OutlineParams&) const = default;
-};
 
 class OutlinePass {
  public:

@@ -26,14 +26,16 @@ std::string_view rendererName(const gl::Api& gl) {
 GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib, OverlayFactory legend)
     : gl_(gl),
       lib_(lib),
-      ellipsoid_(gl, lib, {{GL_VERTEX_SHADER, "ellipsoid.vert"}, {GL_FRAGMENT_SHADER, "ellipsoid.frag"}}),
+      ellipsoid_(gl, lib,
+                 {{GL_VERTEX_SHADER, glyphKind(GlyphKind::Ellipsoid).vertex},
+                  {GL_FRAGMENT_SHADER, glyphKind(GlyphKind::Ellipsoid).fragment}}),
       lighting_(gl, lib, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "lighting.frag"}}),
       profile_(RendererProfile::of(rendererName(gl))),
       sprites_(gl, profile_.glyphsPerSubmit),
       culling_(gl, lib),
       pyramid_(gl, lib),
       tessellated_(gl, lib),
-      prisms_(gl, lib),
+      kinds_(gl, lib),
       makeLegend_(legend) {
   // The lighting pass's core-profile draw needs a vertex array object even
   // with no attributes.
@@ -69,7 +71,7 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   typicalDiameter_ = 1.0 / tensor::defaultScale(set, 1.0);
   for (const gl::Program* prog : glyphPrograms())
     if (prog) prog->set("uMdRange", glm::vec2(mdMin_, mdMax_));
-  prisms_.setMdRange(glm::vec2(mdMin_, mdMax_));
+  kinds_.setMdRange(glm::vec2(mdMin_, mdMax_));
   if (count_ > 0) {
     gl_.CreateBuffers(1, &buffer_);
     gl_.NamedBufferStorage(buffer_, GLsizeiptr(set.glyphs.size() * sizeof(tensor::GlyphRecord)),
@@ -109,8 +111,8 @@ void GlyphRenderer::setShapeUniforms(const gl::Program& prog, const FrameParams&
 const gl::Program& GlyphRenderer::marchProgram(bool stats, MarchVariant v, const FrameParams& p) {
   auto& slot = march_[std::size_t(2 * int(v) + (stats ? 1 : 0))];
   if (!slot) {
-    const auto stages = {gl::StageSource{GL_VERTEX_SHADER, "superquadric.vert"},
-                         gl::StageSource{GL_FRAGMENT_SHADER, "superquadric.frag"}};
+    const GlyphKindInfo& sq = glyphKind(GlyphKind::Superquadric);
+    const auto stages = {gl::StageSource{GL_VERTEX_SHADER, sq.vertex}, gl::StageSource{GL_FRAGMENT_SHADER, sq.fragment}};
     // Program throws for an option no stage declares: a variant that is
     // missing fails here, loudly.
     std::vector<std::string_view> on;
@@ -155,7 +157,7 @@ void GlyphRenderer::setParams(const FrameParams& p) {
   auto changed = [&](auto member) { return !old || !(old->*member == p.*member); };
   for (const gl::Program* prog : glyphPrograms())
     if (prog) setGlyphUniforms(*prog, p, old);
-  prisms_.setParams(p, old);
+  kinds_.setParams(p, old);
   for (const gl::Program* prog : shapePrograms())
     if (prog) setShapeUniforms(*prog, p, old);
   if (changed(&FrameParams::background)) {
@@ -286,8 +288,8 @@ bool GlyphRenderer::pointSprites(const Camera& cam, const FrameParams& p) const 
       !pointSpritesFit(cam, centresLoWC_, centresHiWC_, tensor::kGlyphReach * maxRadiusWC, maxPointPx_))
     return false;
   // Wide ray-cast glyphs pay for quads' three more vertex runs with the
-  // fragments that their own axes save (prisms keep axis-aligned quads).
-  return !(p.orientedSprites && !isPrismKind(p.glyph) && typicalPx(cam, p) >= profile_.orientedQuadMinPx);
+  // fragments that their own axes save (closed-form kinds keep axis-aligned quads).
+  return !(p.orientedSprites && glyphKind(p.glyph).draw != KindDraw::ClosedForm && typicalPx(cam, p) >= profile_.orientedQuadMinPx);
 }
 
 double GlyphRenderer::typicalPx(const Camera& cam, const FrameParams& p) const {
@@ -321,9 +323,9 @@ void GlyphRenderer::drawGlyphs(const Camera& cam, const FrameParams& p, int spli
     tessellated_.draw(p.tessellation, std::size_t(count_));
     return;
   }
-  if (isPrismKind(p.glyph)) {
+  if (glyphKind(p.glyph).draw == KindDraw::ClosedForm) {
     // Every group by the kind's own program: no ellipsoid, no march.
-    useGlyphProgram(prisms_.program(p.glyph, p), cam);
+    useGlyphProgram(kinds_.program(p.glyph, p), cam);
     culling_.draw(sprites_, 0, 3);
     return;
   }
@@ -358,8 +360,8 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   if (!params_ || !(*params_ == p)) setParams(p);
   gl_.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   const bool tessellated = p.tessellation > 0;
-  const bool sq = p.glyph == GlyphKind::Superquadric;
-  // split 3: nothing marches (ellipsoids, and the prism kinds: no pre-pass).
+  const bool sq = glyphKind(p.glyph).draw == KindDraw::Superquadric;
+  // split 3: nothing marches (ellipsoids, and the closed-form kinds: no pre-pass).
   const int split = !sq ? 3 : p.gamma > 0.0 ? 1 : 2;
   // The shadow map first, so that culling is left prepared for the view.
   std::optional<Camera> light;

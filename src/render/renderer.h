@@ -16,13 +16,14 @@
 #include "render/ao_pass.h"
 #include "render/camera.h"
 #include "render/context_item.h"
+#include "render/frame_params.h"
 #include "render/frame_image.h"
 #include "render/gbuffer.h"
 #include "render/legend_params.h"
 #include "render/occluder_pyramid.h"
 #include "render/glyph_culling.h"
 #include "render/outline_pass.h"
-#include "render/prism_kinds.h"
+#include "render/kind_programs.h"
 #include "render/quad_sprites.h"
 #include "render/renderer_profile.h"
 #include "render/shadow_pass.h"
@@ -37,26 +38,6 @@ namespace tg::render {
 // never holds the float image on the CPU.
 enum class Channels { Color, All, Rgba8 };
 
-enum class ColorMode { DEC = 0, FA = 1, MD = 2, CL = 3, CP = 4, Sign = 5 };
-
-struct Lighting {
-  glm::vec3 keyDirVC{-0.45f, 0.55f, 0.70f};  // upper left, in front
-  float ambient = 0.22f, head = 0.55f, key = 0.40f, specular = 0.25f, shininess = 40.0f;
-  bool operator==(const Lighting&) const = default;
-};
-
-// Cylinder and box: Teem's glyphs of those names, exact closed-form ray
-// casts of their own (render/prism_kinds.h); gamma does not apply to them.
-enum class GlyphKind { Ellipsoid, Superquadric, Cylinder, Box };
-
-// Newton march settings; the defaults come from `tensorglyph bench accuracy`
-// (README, "Speed against accuracy of the superquadric march").
-struct MarchParams {
-  int maxIterations = 10;
-  double epsilon = 1e-4;  // in units of the glyph's size
-  bool operator==(const MarchParams&) const = default;
-};
-
 struct IterationStats {
   double mean = 0;
   unsigned max = 0;
@@ -64,49 +45,6 @@ struct IterationStats {
   // Passes of the march's loop (one gauge call each) over every fragment,
   // Newton or not: what the grid search and early rejections change.
   std::uint64_t gaugeCalls = 0;
-};
-
-// The march's programs (shaders/lib/superquadric_march.glsl): the general
-// one, one for definite glyphs' convex shapes and one for mixed-sign
-// glyphs' Schultz-Kindlmann shapes, each exact for its group.
-enum class MarchVariant { General = 0, Convex = 1, Mixed = 2 };
-
-struct FrameParams {
-  double scale = 1.0;  // world units per eigenvalue unit
-  tensor::SizeMapping sizing;  // magnitude mapping and clamp (tensor/glyph_scale.h); default: none
-  double faMin = 0.0;
-  Slab slab;
-  GlyphKind glyph = GlyphKind::Ellipsoid;
-  double gamma = 3.0;  // superquadric sharpness; 0 makes definite tensors ellipsoids
-  MarchParams march;
-  bool iterationStats = false;  // count Newton iterations (a shader variant; off costs nothing)
-  bool frustumCulling = true;  // off only to measure what it saves
-  // Superquadrics: an exact ellipsoid depth pass first, so that fragments of
-  // glyphs hidden behind it skip the march (off only to measure what it saves).
-  bool occlusionPrepass = true;
-  // Superquadrics: definite and mixed-sign glyphs by their march variants,
-  // else by the general march (off only to compare).
-  bool marchVariants = true;
-  // One point sprite per glyph where every glyph's rectangle fits a point,
-  // else two triangles (render/sprite_primitive.h; off only to measure).
-  bool pointSprites = true;
-  // Quads along a glyph's projected axes where smaller than its axis-aligned
-  // rectangle (shaders/lib/sprite.glsl; off only to measure).
-  bool orientedSprites = true;
-  // On llvmpipe with small glyphs, a per-frame pass keeps only glyphs that a
-  // pixel centre can see (render/glyph_culling.h; off only to measure).
-  bool pixelCull = true;
-  // > 0: draw the tessellated baseline at this resolution instead of ray
-  // casting (superquadrics at `gamma`; render/tessellated.h).
-  int tessellation = 0;
-  ColorMode color = ColorMode::DEC;
-  glm::vec4 background{0.08f, 0.08f, 0.10f, 1.0f};
-  Lighting light;
-  LegendParams legend;
-  AoParams ao;            // deferred depth cues: off by default, and then
-  OutlineParams outline;  // no pass of theirs is built, run or allocated
-  ShadowParams shadow;    // soft shadows from the key light (render/shadow_pass.h)
-  bool operator==(const FrameParams&) const = default;
 };
 
 // What an overlay shows of the uploaded glyphs: the ranges they are coloured by.
@@ -161,7 +99,7 @@ class GlyphRenderer {
   // Frames that ran the superquadric occlusion pre-pass since construction.
   std::uint64_t occlusionPrepasses() const { return occlusionPrepasses_; }
   // Whether kind k's program exists (cylinder and box: built on first use).
-  bool kindBuilt(GlyphKind k) const { return prisms_.built(k); }
+  bool kindBuilt(GlyphKind k) const { return kinds_.built(k); }
   // Frames that drew the shadow map since construction, and whether the
   // shadow pass (its program and map) exists now: only while frames ask for it.
   std::uint64_t shadowMapPasses() const { return shadowMapPasses_; }
@@ -250,7 +188,7 @@ class GlyphRenderer {
   GlyphCulling culling_;
   OccluderPyramid pyramid_;
   TessellatedGlyphs tessellated_;
-  PrismKinds prisms_;
+  KindPrograms kinds_;  // closed-form kinds' programs
   std::unique_ptr<ShadowPass> shadow_;  // built on first use
   GLuint vao_ = 0, buffer_ = 0, stats_ = 0;
   GLsizei count_ = 0;

@@ -23,38 +23,13 @@
 #include <glm/vec3.hpp>
 
 #include "gl/program.h"
+#include "render/frame_params.h"
 #include "render/camera.h"
 #include "render/gbuffer.h"
 #include "render/occluder_pyramid.h"
 
 namespace tg::render {
 
-// One home for the shadow options: the CLI, the viewer and scripts read these
-// defaults. Lengths in map texels are of the light-space map, so that they
-// keep their meaning when the map is fitted to another region.
-struct ShadowParams {
-  bool enabled = false;
-  int mapSize = 2048;  // texels per side of the square map, at most (see mapDensity)
-  // Map texels per view pixel at the glyph box's centre: the map's side is
-  // that, in multiples of 64, up to mapSize. A map finer than the view
-  // resolves nothing more and costs as a second geometry pass at its size.
-  // 0: always mapSize.
-  float mapDensity = 1.0f;
-  // Width of the soft edge (the PCF kernel) as a fraction of the map's side
-  // in world units: independent of mapSize, which sets only its sharpness.
-  float penumbra = 0.004f;
-  float strength = 1.0f;  // share of the key light removed in full shadow
-  // Depth of each PCF texel compared against the receiver's tangent plane
-  // there (exact G-buffer normals): a plane has no acne at any slope, and a
-  // convex glyph curves away from the light, never into its own shadow.
-  bool receiverPlane = true;
-  float bias = 0.5f;          // constant, along the light, in map texels
-  float normalOffset = 0.0f;  // lookup moved along the normal, in map texels (the classic remedy)
-  bool operator==(const ShadowParams&) const = default;
-};
-
-inline constexpr int kMinShadowMapSize = 64, kMaxShadowMapSize = 8192;
-inline constexpr float kMaxShadowPenumbra = 0.1f, kMaxShadowBias = 64.0f;
 
 // The key light's orthographic camera for a view: looking along -keyDirWC;
 // its window covers the part of the caster box `lo..hi` (WC) that the view

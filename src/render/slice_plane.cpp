@@ -6,7 +6,7 @@
 #include <glm/matrix.hpp>
 
 #include "render/camera_uniforms.h"
-#include "render/renderer.h"
+#include "render/frame_params.h"
 #include "tensor/glyph_scale.h"
 
 namespace tg::render {
