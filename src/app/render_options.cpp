@@ -10,6 +10,7 @@
 #include "app/output_check.h"
 #include "io/image_writer.h"
 #include "io/readers.h"
+#include "render/tessellated.h"
 
 namespace tg::app {
 

@@ -26,14 +26,8 @@
 
 namespace tg::render {
 
-
 class GlyphCulling {
  public:
-  // Binding points, mirrored by shaders/lib/glyph_ranges.glsl,
-  // lib/sprite.glsl and cull_ranges.comp (0 and 1: records and statistics).
-  static constexpr GLuint kKeptIndexBinding = 2, kRangesBinding = 3, kKeptCountBinding = 4,
-                          kCommandsBinding = 5, kVisibleBinding = 6;
-
   GlyphCulling(const gl::Api& gl, const gl::ShaderLibrary& lib);
   ~GlyphCulling();
   GlyphCulling(const GlyphCulling&) = delete;

@@ -18,21 +18,24 @@
 #include <glm/vec4.hpp>
 
 #include "gl/program.h"
-#include "render/frame_params.h"
+#include "render/frame_pass.h"
 #include "render/gbuffer.h"
 
 namespace tg::render {
 
-
-class OutlinePass {
+class OutlinePass final : public FramePass {
  public:
   OutlinePass(const gl::Api& gl, const gl::ShaderLibrary& lib);
-  ~OutlinePass();
+  ~OutlinePass() override;
   OutlinePass(const OutlinePass&) = delete;
   OutlinePass& operator=(const OutlinePass&) = delete;
 
   // Needs the camera uniforms already set on program() (setCameraUniforms).
   void run(const GBuffer& target, const OutlineParams& p) const;
+  void run(const PassFrame& f) override;
+  std::span<const Attachment> reads() const override;
+  std::span<const Attachment> writes() const override;
+  std::size_t gpuBytes() const override { return 0; }
   const gl::Program& program() const { return program_; }
 
  private:
