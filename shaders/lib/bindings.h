@@ -21,6 +21,7 @@
 #define TG_UNIT_SHADOW_MAP 8
 #define TG_UNIT_LEGEND_ATLAS 0
 #define TG_UNIT_SLICE 0              // a slice plane's underlay
+#define TG_UNIT_RESOLVE_DEPTH 0      // depth_resolve.frag: a path's float window depth
 
 // Image units: the occluder pyramid's reduction.
 #define TG_IMAGE_PYRAMID_FINER 0
