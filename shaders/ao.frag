@@ -2,12 +2,13 @@
 // Screen-space ambient occlusion (render/ao_pass.h): the fraction of a
 // normal-oriented hemisphere of radius uRadiusVC that the depth buffer
 // leaves open, before the blur.
+#include "lib/bindings.h"
 #include "lib/camera.glsl"
 #include "lib/view_position.glsl"
 
-layout(binding = 0) uniform sampler2D uDepth;  // reversed window depth
-layout(binding = 1) uniform sampler2D uNormalWC;
-layout(binding = 2) uniform usampler2D uId;
+layout(binding = TG_UNIT_EFFECT_DEPTH) uniform sampler2D uDepth;  // reversed window depth
+layout(binding = TG_UNIT_NORMAL) uniform sampler2D uNormalWC;
+layout(binding = TG_UNIT_ID) uniform usampler2D uId;
 
 uniform float uRadiusVC;
 uniform float uStrength;

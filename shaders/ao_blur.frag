@@ -3,10 +3,11 @@
 // window, the size of the kernel rotation tile, over pixels of the same
 // surface (depth within a fraction of the radius) only, so that occlusion
 // does not bleed across silhouettes onto the glyph in front.
+#include "lib/bindings.h"
 #include "lib/camera.glsl"
 
-layout(binding = 0) uniform sampler2D uDepth;
-layout(binding = 6) uniform sampler2D uRawAo;
+layout(binding = TG_UNIT_EFFECT_DEPTH) uniform sampler2D uDepth;
+layout(binding = TG_UNIT_AO_RAW) uniform sampler2D uRawAo;
 
 uniform float uRadiusVC;
 

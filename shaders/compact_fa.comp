@@ -5,11 +5,12 @@
 // written from the range's own first slot. No global scan is needed, and
 // every range keeps its glyphs in input order, so draw order and the image
 // are those of the unculled frame.
+#include "lib/bindings.h"
 #include "lib/glyph_record.glsl"
 #include "lib/glyph_ranges.glsl"
 
 layout(local_size_x = 256) in;
-layout(std430, binding = 2) writeonly buffer KeptIndex { uint keptIndex[]; };
+layout(std430, binding = TG_SSBO_KEPT_INDEX) writeonly buffer KeptIndex { uint keptIndex[]; };
 
 uniform float uFaMin;
 uniform int uRangeCount;

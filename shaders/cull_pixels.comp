@@ -8,6 +8,7 @@
 // other seven; this pass runs on every thread and lets the vertex stage see
 // only the kept ones. One invocation walks a whole range: no barriers, which
 // llvmpipe's compute threads pay dearly for.
+#include "lib/bindings.h"
 #include "lib/camera.glsl"
 #include "lib/glyph_record.glsl"
 #include "lib/glyph_ranges.glsl"
@@ -17,7 +18,7 @@
 #include "lib/pixel_centres.glsl"
 
 layout(local_size_x = 8) in;
-layout(std430, binding = 2) writeonly buffer KeptIndex { uint keptIndex[]; };
+layout(std430, binding = TG_SSBO_KEPT_INDEX) writeonly buffer KeptIndex { uint keptIndex[]; };
 
 uniform int uRangeCount;
 

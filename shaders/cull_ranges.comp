@@ -3,6 +3,7 @@
 // empty when the range's box (grown by its glyphs' extent) is outside the
 // view frustum or the slab, else drawing the range's glyphs (all, or the compacted ones).
 // The box test mirrors tg::render::boxOutside.
+#include "lib/bindings.h"
 #include "lib/glyph_ranges.glsl"
 #include "lib/camera.glsl"
 #include "lib/ellipsoid.glsl"
@@ -20,8 +21,8 @@ struct DrawCommand {
   int baseVertex;
   uint baseInstance;
 };
-layout(std430, binding = 5) writeonly buffer Commands { DrawCommand commands[]; };
-layout(std430, binding = 6) buffer Visible { uint visibleGlyphs; };
+layout(std430, binding = TG_SSBO_COMMANDS) writeonly buffer Commands { DrawCommand commands[]; };
+layout(std430, binding = TG_SSBO_VISIBLE) buffer Visible { uint visibleGlyphs; };
 
 uniform vec4 uFrustumWC[8];  // six frustum planes, then two slab planes
 uniform int uCompacted;

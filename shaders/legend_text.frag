@@ -1,6 +1,7 @@
 #version 450 core
 // Coverage from the font atlas (its white texel for lines and fills).
-layout(binding = 0) uniform sampler2D uAtlas;
+#include "lib/bindings.h"
+layout(binding = TG_UNIT_LEGEND_ATLAS) uniform sampler2D uAtlas;
 
 in vec2 vUV;
 in vec4 vColor;

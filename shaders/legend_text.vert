@@ -1,11 +1,12 @@
 #version 450 core
 // The legend's text and lines: triangles from Dear ImGui's draw list
 // (render::LegendVertex), in DC pixels with y down from the image's top.
+#include "lib/bindings.h"
 struct LegendVertex {
   vec4 posUV;  // x, y in pixels; u, v in the font atlas
   vec4 color;  // straight alpha
 };
-layout(std430, binding = 7) readonly buffer LegendVertices { LegendVertex vtx[]; };
+layout(std430, binding = TG_SSBO_LEGEND_VERTICES) readonly buffer LegendVertices { LegendVertex vtx[]; };
 
 uniform vec2 uViewportDC;
 

@@ -1,12 +1,13 @@
 #version 450 core
 // Deferred Blinn-Phong: ambient, a head light at the eye and one key light,
 // shadowed when compiled with TG_SHADOWS (lib/shadow.glsl).
+#include "lib/bindings.h"
 #include "lib/camera.glsl"
 #include "lib/shadow.glsl"
 
-layout(binding = 0) uniform sampler2D uAlbedo;
-layout(binding = 1) uniform sampler2D uNormalWC;
-layout(binding = 2) uniform usampler2D uId;
+layout(binding = TG_UNIT_ALBEDO) uniform sampler2D uAlbedo;
+layout(binding = TG_UNIT_NORMAL) uniform sampler2D uNormalWC;
+layout(binding = TG_UNIT_ID) uniform usampler2D uId;
 
 uniform vec4 uBackground;
 uniform vec3 uKeyDirVC;    // towards the key light
@@ -15,7 +16,7 @@ uniform float uShininess;
 
 #pragma tg option TG_AO
 #ifdef TG_AO
-layout(binding = 6) uniform sampler2D uAo;  // render/ao_pass.h, AoPass::kAoUnit
+layout(binding = TG_UNIT_AO) uniform sampler2D uAo;
 #endif
 
 out vec4 oColor;

@@ -2,6 +2,7 @@
 // Context meshes into the G-buffer (flat normals, the item's colour and id),
 // or with TG_MESH_FORWARD lit here and blended over the lit image: the
 // see-through mode's front layer (render/mesh_item.h).
+#include "lib/bindings.h"
 #include "lib/camera.glsl"
 
 in MeshFS {
@@ -24,7 +25,7 @@ vec3 facingNormalVC() {
 
 #pragma tg option TG_MESH_FORWARD
 #ifdef TG_MESH_FORWARD
-layout(binding = 2) uniform sampler2D uSceneDepth;  // the opaque scene, reversed
+layout(binding = TG_UNIT_MESH_SCENE_DEPTH) uniform sampler2D uSceneDepth;  // the opaque scene, reversed
 uniform vec3 uKeyDirVC;
 uniform vec4 uLightMix;  // ambient, head, key, specular
 uniform float uShininess;

@@ -1,10 +1,11 @@
 #version 450 core
 // Context meshes (render/mesh_item.h): triangles or edges in WC, depth from
 // the rasteriser through the same reversed-Z projection as the glyphs.
+#include "lib/bindings.h"
 #include "lib/camera.glsl"
 
 // Vertices by index (gl_VertexID of an indexed draw): no vertex format to set up.
-layout(std430, binding = 9) readonly buffer MeshVertices { float meshPosWC[]; };
+layout(std430, binding = TG_SSBO_MESH_VERTICES) readonly buffer MeshVertices { float meshPosWC[]; };
 
 out MeshFS {
   vec3 posVC;

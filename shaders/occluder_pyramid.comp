@@ -7,12 +7,13 @@
 // TG_FROM_DEPTH: level 0, from the occluder depth texture; otherwise from the
 // level below. Two programs rather than a uniform: llvmpipe would run both
 // fetches for every texel.
+#include "lib/bindings.h"
 #pragma tg option TG_FROM_DEPTH
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = 3) uniform sampler2D uOccluderDepth;  // the source of level 1
-layout(r32f, binding = 0) uniform readonly image2D uFiner;
-layout(r32f, binding = 1) uniform writeonly image2D uCoarser;
+layout(binding = TG_UNIT_OCCLUDER_DEPTH) uniform sampler2D uOccluderDepth;  // the source of level 1
+layout(r32f, binding = TG_IMAGE_PYRAMID_FINER) uniform readonly image2D uFiner;
+layout(r32f, binding = TG_IMAGE_PYRAMID_COARSER) uniform writeonly image2D uCoarser;
 
 float finer(ivec2 q) {
 #ifdef TG_FROM_DEPTH

@@ -1,12 +1,13 @@
 #version 450 core
 // Silhouette and crease lines (render/outline_pass.h): the coverage of the
 // line at this pixel, blended over the lit colour.
+#include "lib/bindings.h"
 #include "lib/camera.glsl"
 #include "lib/view_position.glsl"
 
-layout(binding = 0) uniform sampler2D uDepth;  // reversed window depth
-layout(binding = 1) uniform sampler2D uNormalWC;
-layout(binding = 2) uniform usampler2D uId;
+layout(binding = TG_UNIT_EFFECT_DEPTH) uniform sampler2D uDepth;  // reversed window depth
+layout(binding = TG_UNIT_NORMAL) uniform sampler2D uNormalWC;
+layout(binding = TG_UNIT_ID) uniform usampler2D uId;
 
 uniform float uWidth;      // pixels
 uniform vec4 uColor;

@@ -2,10 +2,11 @@
 // A slice plane into the G-buffer: the underlay sampled at the fragment's
 // world point through its own index-to-world map, its depth that of the
 // plane moved behind the glyph layer (render/slice_plane.h).
+#include "lib/bindings.h"
 #include "lib/camera.glsl"
 #include "lib/color.glsl"
 
-uniform sampler3D uVolume;
+layout(binding = TG_UNIT_SLICE) uniform sampler3D uVolume;
 uniform mat4 uTexFromWC;
 uniform vec4 uPlaneVC;  // the offset plane: dot(xyz, pVC) = w, xyz facing the camera
 uniform vec3 uNormalWC;

@@ -2,6 +2,7 @@
 // Ray-superquadric intersection per pixel into the same G-buffer as the
 // ellipsoids: the ray in GC, seeded at the unit cube, Newton with a kept
 // bracket (lib/superquadric.glsl).
+#include "lib/bindings.h"
 #pragma tg option TG_ITERATION_STATS
 #include "lib/camera.glsl"
 #include "lib/ellipsoid.glsl"
@@ -25,7 +26,7 @@ in SuperquadricFS {
 #ifdef TG_ITERATION_STATS
 // Compiled in only when statistics are asked for: Newton iterations' [0]
 // sum, [1] max and [2] pixels; [3] the march's gauge calls over all fragments.
-layout(std430, binding = 1) buffer IterationStats { uint iterStats[4]; };
+layout(std430, binding = TG_SSBO_ITERATION_STATS) buffer IterationStats { uint iterStats[4]; };
 #endif
 
 layout(depth_less) out float gl_FragDepth;

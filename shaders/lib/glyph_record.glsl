@@ -1,11 +1,12 @@
 // The one-glyph record, mirroring tg::tensor::GlyphRecord (std430, 48 bytes).
+#include "lib/bindings.h"
 struct GlyphRecord {
   vec4 posWC_fa;        // xyz: centre in WC, w: FA
   vec4 eigenvalues_id;  // xyz: signed eigenvalues, descending; w: input index (uint bits)
   vec4 frameWC;         // unit quaternion (x, y, z, w): GC axes -> eigenvectors in WC
 };
 
-layout(std430, binding = 0) readonly buffer Glyphs { GlyphRecord glyphs[]; };
+layout(std430, binding = TG_SSBO_GLYPHS) readonly buffer Glyphs { GlyphRecord glyphs[]; };
 
 mat3 quatToMat3(vec4 q) {
   float x = q.x, y = q.y, z = q.z, w = q.w;

@@ -4,10 +4,11 @@
 // behind their depth, so a superquadric whose nearest possible point is
 // behind it can be skipped: a whole glyph in the vertex stage (the pyramid),
 // one pixel's march in the fragment stage. Requires lib/camera.glsl.
+#include "lib/bindings.h"
 
 uniform int uOccluders;  // 0: no pre-pass ran
-layout(binding = 3) uniform sampler2D uOccluderDepth;    // window depth, reversed; 0: none
-layout(binding = 4) uniform sampler2D uOccluderPyramid;  // mip k: the farthest over 2^(k+1) pixels
+layout(binding = TG_UNIT_OCCLUDER_DEPTH) uniform sampler2D uOccluderDepth;    // window depth, reversed; 0: none
+layout(binding = TG_UNIT_OCCLUDER_PYRAMID) uniform sampler2D uOccluderPyramid;  // mip k: the farthest over 2^(k+1) pixels
 
 // True when depthVC lies behind the occluder at window depth occluderWin. The
 // margin covers float rounding and the march's tolerance (toleranceVC) on the

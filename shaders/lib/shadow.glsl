@@ -4,10 +4,11 @@
 // corner taps go first, and where they agree the pixel is wholly lit or
 // wholly shadowed and the other 12 are skipped (Sigg et al. test 8 samples
 // before their 64). Requires lib/camera.glsl.
+#include "lib/bindings.h"
 #pragma tg option TG_SHADOWS
 #ifdef TG_SHADOWS
-layout(binding = 7) uniform sampler2D uSceneDepth;  // the G-buffer's window depth (ShadowPass::kSceneDepthUnit)
-layout(binding = 8) uniform sampler2D uShadowMap;   // window depth along the light, reversed; 0: empty
+layout(binding = TG_UNIT_SHADOW_SCENE_DEPTH) uniform sampler2D uSceneDepth;  // the G-buffer's window depth
+layout(binding = TG_UNIT_SHADOW_MAP) uniform sampler2D uShadowMap;   // window depth along the light, reversed; 0: empty
 uniform mat4 uLightFromVC;       // camera VC -> the light camera's VC (rigid)
 uniform float uLightHalfExtent;  // half the map's side, world units
 uniform vec2 uLightNearFar;      // the light camera's depth range

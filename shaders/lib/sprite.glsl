@@ -17,12 +17,13 @@
 // GL_POINT_SIZE_RANGE), and a glyph near the camera needs up to the whole
 // viewport; a geometry shader expanding one point per glyph made llvmpipe
 // buffer every output vertex of the draw (about 0.7 kB per glyph, measured).
+#include "lib/bindings.h"
 
 #include "lib/pixel_centres.glsl"
 
 // Under an FA threshold the draw walks the compacted list instead
 // (compact_fa.comp): slot -> record. Off, the slot is the record.
-layout(std430, binding = 2) readonly buffer KeptIndex { uint keptIndex[]; };
+layout(std430, binding = TG_SSBO_KEPT_INDEX) readonly buffer KeptIndex { uint keptIndex[]; };
 uniform int uCompacted;
 uniform int uPointSprites;  // 1: GL_POINTS, one vertex per glyph
 uniform int uOrientedSprites;  // 1: quads may turn to the glyph's own axes

@@ -11,6 +11,7 @@
 #include "app/progress.h"
 #include "app/scene.h"
 #include "io/readers.h"
+#include "render/glyph_kind.h"
 #include "tensor/glyph.h"
 #include "tensor/glyph_scale.h"
 
@@ -105,6 +106,8 @@ int cmdInfo(int argc, const char** argv) {
     const tensor::FramingBox frame = tensor::framingBox(g, !f.grid, sized.typicalRadiusWC);
     std::printf("size: %s\nframing: %s\n", sized.why.c_str(), frame.why.c_str());
   }
+  // Every kind of the table reads the eigen-decomposed record these tensors made.
+  std::printf("glyph kinds: %s\n", render::glyphKindNames().c_str());
   // Load and eigen-decomposition both done, both buffers alive: the
   // streaming loader's peak (see README, "Memory").
   std::printf("peak memory: %.1f MiB\n", double(peakRssBytes()) / (1024.0 * 1024.0));

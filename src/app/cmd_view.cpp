@@ -1,6 +1,7 @@
 // tensorglyph view: a GLFW window with a Dear ImGui panel over the same
-// renderer as `render`. Every control is a uniform (GlyphRenderer::setParams);
-// nothing is re-uploaded or recomputed on the CPU after the first frame.
+// scene and renderer as `render` (app/render_session.h). Every control is a
+// uniform (GlyphRenderer::setParams); nothing is re-uploaded or recomputed on
+// the CPU after the first frame.
 #define GLFW_INCLUDE_NONE
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -13,6 +14,7 @@
 #include <cstdio>
 #include <memory>
 #include <optional>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -38,9 +40,7 @@
 #include "app/view_script.h"
 #include "app/mesh_flags.h"
 #include "gl/context_glfw.h"
-#include "gl/shader_library.h"
 #include "io/image_writer.h"
-#include "render/legend_pass.h"
 #include "render/slice_plane.h"
 
 namespace tg::app {
@@ -48,12 +48,9 @@ namespace {
 
 // `render`'s options where a window has use for them (render_options.h), and
 // the viewer's own.
+// The window's size is render's default image size.
 struct ViewOptions : RenderOptions {
   std::string script, shotPrefix = "tensorglyph-view-";
-  ViewOptions() {
-    width = 1280;
-    height = 800;
-  }
 };
 
 ViewOptions parse(int argc, const char** argv) {
@@ -114,76 +111,59 @@ int cmdView(int argc, const char** argv) {
   reportLoad(scene.field, "view");
   std::vector<io::MeshData> meshes = o.mesh.read(o.input, "view");
   checkScriptMeshes(script, meshes.size(), o.script);
-  glm::dvec3 meshLo(INFINITY), meshHi(-INFINITY);
-  growByMeshes(meshes, meshLo, meshHi);
-  tensor::GlyphSet glyphs =
-      tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids, 0, o.field.glyph);
-  checkDrawable(glyphs, scene.field.path);
-  // The field's own scalar underlay reads the samples, so it comes before
-  // the pick table takes them.
-  std::optional<render::UnderlayVolume> underlay;
-  if (o.slices.any()) underlay = loadUnderlay(o.slices, scene.field, "view");
-  // Clicks pick at any time: the samples stay (app/pick.h), 40 bytes a tensor.
-  const PickTable pickTable(scene.field, o.field.glyph);
-  scene.field.releaseSamples();
-
-  ViewState v{render::FrameParams{}, OrbitCamera(render::CameraDesc{}), 1.0, 1.0, o.field.scaleParams(),
-              tensor::sampleMagnitudes(glyphs, scene.field.sampleSpacing)};
-  const tensor::ResolvedScale sized = tensor::resolveScale(v.sizing, v.magnitudes);
-  v.params = frameParams(o, scene, sized);
+  const std::size_t meshCount = meshes.size();
+  // The scene as `render` builds it (app/render_session.h): glyphs, underlay
+  // and its warnings, meshes; only the window, its events and the panel are
+  // the viewer's. Clicks pick at any time: the samples stay (app/pick.h), 40
+  // bytes a tensor, taken after the field's own scalar underlay read them.
+  std::optional<PickTable> pickTable;
+  ViewState v{render::FrameParams{}, OrbitCamera(render::CameraDesc{}), 1.0, 1.0, o.field.scaleParams(), {}};
+  SessionHooks hooks;
+  hooks.underlayLoaded = [&](const render::UnderlayVolume& underlay) {
+    for (const render::PlaneSpec& spec : o.slices.planesFor(underlay))
+      v.planes.push_back({spec, true, spec.axis >= 0 ? underlay.dims[spec.axis] : 0});
+  };
+  hooks.makeContext = [&](const RenderOptions&) {
+    // The script's plane steps are checked before the window opens.
+    checkPlaneSteps(script, v.planes, o.script);
+    try {
+      return gl::createGlfwContext({o.width, o.height, true, "tensorglyph"});
+    } catch (const std::runtime_error& e) {
+      // Most often no display at all: a server, a container, CI.
+      throw std::runtime_error(std::string(e.what()) +
+                               "; without a display use `xvfb-run -a tensorglyph view ...`, or `tensorglyph render` "
+                               "for headless images");
+    }
+  };
+  RenderSession session(o, std::move(scene), std::move(meshes), false, "view", [&](io::TensorField& f) {
+    pickTable.emplace(f, o.field.glyph);
+    f.releaseSamples();
+  }, {}, hooks);
+  const tensor::GlyphSet& glyphs = session.glyphs();  // counts and box: the records are dropped
+  v.magnitudes = session.magnitudes();
+  // As render frames it: the sample positions (tensor::framingBox) or the
+  // camera the flags give, with room for a legend shown from the start.
+  const RenderSession::Frame first = session.frame(o);
+  v.params = first.params;
   resize(v);
   render::FrameParams& p = v.params;
-  // The planes and the script's plane steps are checked before the window opens.
-  std::optional<std::pair<glm::dvec3, glm::dvec3>> underlayBox;
-  if (underlay) {
-    checkPlanes(o.slices, *underlay, "view");
-    for (const std::string& w : underlayWarnings(o.slices, *underlay, glyphs.boundsMinWC, glyphs.boundsMaxWC))
-      std::fprintf(stderr, "tensorglyph view: --underlay %s: %s\n", printable(underlay->name).c_str(), printable(w).c_str());
-    for (const render::PlaneSpec& spec : o.slices.planesFor(*underlay))
-      v.planes.push_back({spec, true, spec.axis >= 0 ? underlay->dims[spec.axis] : 0});
-    underlayBox = underlay->boundsWC();
-  }
-  checkPlaneSteps(script, v.planes, o.script);
-  // As render frames it: the sample positions (tensor::framingBox), or the
-  // camera the flags give.
-  v.camera = OrbitCamera(chooseCamera(o, scene, tensor::framingBox(glyphs, !scene.field.grid, sized.typicalRadiusWC)));
+  v.camera = OrbitCamera(first.camera.desc);
 
-  std::unique_ptr<gl::Context> ctx;
-  try {
-    ctx = gl::createGlfwContext({o.width, o.height, true, "tensorglyph"});
-  } catch (const std::runtime_error& e) {
-    // Most often no display at all: a server, a container, CI.
-    throw std::runtime_error(std::string(e.what()) +
-                             "; without a display use `xvfb-run -a tensorglyph view ...`, or `tensorglyph render` "
-                             "for headless images");
-  }
-  GLFWwindow* window = gl::glfwWindowOf(*ctx);
+  GLFWwindow* window = gl::glfwWindowOf(session.context());
   glfwSwapInterval(script.empty() ? 1 : 0);  // a script runs as fast as it can
-  const gl::Api& api = ctx->api();
-  const gl::ShaderLibrary lib;
-  render::GlyphRenderer renderer(api, lib, render::makeLegendPass);
-  renderer.upload(glyphs);
+  const gl::Api& api = session.context().api();
+  render::GlyphRenderer& renderer = session.renderer();
   // Moving or hiding a plane later changes its quad only: the volume stays on the GPU.
-  std::vector<render::SlicePlane*> planes;
-  if (underlay) planes = addSlicePlanes(renderer, api, lib, o.slices, std::move(*underlay), glyphs.maxAbsEigenvalue);
-  // As render: a legend shown from the start gets room (the underlays' keys included).
-  if (leavesLegendRoom(o, p)) {
-    const auto [lo, hi] = tensor::glyphBoxWC(glyphs, p.scale, p.sizing);
-    v.camera = OrbitCamera(withLegendRoom(o, p, v.camera.desc(), render::glyphCells(glyphs), glyphs, renderer, lo, hi));
-  }
+  const std::span<render::SlicePlane* const> planes = session.slicePlanes();
   std::vector<PlaneView> appliedPlanes = v.planes;
-  const std::size_t firstMesh = renderer.context().size();
-  addMeshes(renderer, api, lib, meshes, o.mesh.params);
-  meshes.clear();
   // Context items in the order added: the planes, then the meshes.
   std::vector<render::MeshItem*> meshItems;
-  for (std::size_t k = firstMesh; k < renderer.context().size(); ++k) {
+  for (std::size_t k = renderer.context().size() - meshCount; k < renderer.context().size(); ++k) {
     const auto& item = renderer.context()[k];
     meshItems.push_back(static_cast<render::MeshItem*>(item.get()));
     v.meshes.push_back({item->label(), true, o.mesh.params});
   }
-  const std::size_t glyphCount = glyphs.glyphs.size();
-  glyphs.glyphs = {};  // the box and counts stay for the camera
+  const std::size_t glyphCount = session.glyphCount();
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -192,7 +172,6 @@ int cmdView(int argc, const char** argv) {
   ImGui_ImplGlfw_InitForOpenGL(window, true);
   ImGui_ImplOpenGL3_Init("#version 450");
 
-  std::unique_ptr<render::GBuffer> target;
   std::optional<render::FrameParams> applied;
   std::vector<double> changeUs, frameMs;
   PanelStatus status;
@@ -231,8 +210,7 @@ int cmdView(int argc, const char** argv) {
     int w = 0, h = 0;
     glfwGetFramebufferSize(window, &w, &h);
     if (w > 0 && h > 0) {
-      if (!target || target->width() != w || target->height() != h)
-        target = std::make_unique<render::GBuffer>(api, w, h);
+      const render::GBuffer& target = session.target(w, h);
       if (!applied || !(*applied == p)) {
         // The whole CPU cost of a parameter change: uniform updates.
         const auto t = Clock::now();
@@ -252,16 +230,14 @@ int cmdView(int argc, const char** argv) {
         status.lastChangeUs = us;
         appliedPlanes[k] = v.planes[k];
       }
-      auto [lo, hi] = tensor::glyphBoxWC(glyphs, p.scale, p.sizing);
       // The camera's depth range holds the planes and meshes too, as render's.
-      if (underlayBox) growDepthRange(lo, hi, underlayBox->first, underlayBox->second);
-      growDepthRange(lo, hi, meshLo, meshHi);
+      const auto [lo, hi] = session.depthBoxWC(p);
       for (std::size_t k = 0; k < meshItems.size(); ++k) {
         meshItems[k]->setVisible(v.meshes[k].visible);
         if (!(meshItems[k]->params() == v.meshes[k].params)) meshItems[k]->setParams(v.meshes[k].params);
       }
       const render::Camera cam = render::makeCamera(v.camera.desc(), w, h, lo, hi);
-      renderer.render(cam, p, *target);
+      renderer.render(cam, p, target);
       // Never waits for the GPU: the status trails the frame by one or two.
       renderer.requestDrawnCount();
       status.drawn = renderer.latestDrawnCount().value_or(status.drawn);
@@ -269,19 +245,19 @@ int cmdView(int argc, const char** argv) {
       if (p.iterationStats) status.newton = renderer.iterationStats();
       status.aoRadiusWC = renderer.aoRadiusWC(p);
       status.fps = ImGui::GetIO().Framerate;
-      if (shot) saveScreenshot(renderer, cam, *target, *shot);
+      if (shot) saveScreenshot(renderer, cam, target, *shot);
       if (act.pick && act.pick->i < w && act.pick->j < h)
-        status.picked = describePick(pickPixel(api, renderer, cam, *target, pickTable, *act.pick));
+        status.picked = describePick(pickPixel(api, renderer, cam, target, *pickTable, *act.pick));
       if (scriptPick) {
         if (scriptPick->i >= w || scriptPick->j >= h)
           throw io::InputError(o.script + ": pick: pixel (" + std::to_string(scriptPick->i) + ", " +
                                std::to_string(scriptPick->j) + ") is outside the " + std::to_string(w) + " x " +
                                std::to_string(h) + " framebuffer");
-        const Pick picked = pickPixel(api, renderer, cam, *target, pickTable, *scriptPick);
+        const Pick picked = pickPixel(api, renderer, cam, target, *pickTable, *scriptPick);
         std::printf("%s\n", pickJson(picked).c_str());
         status.picked = describePick(picked);
       }
-      api.BlitNamedFramebuffer(target->colorFramebuffer(), 0, 0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT,
+      api.BlitNamedFramebuffer(target.colorFramebuffer(), 0, 0, 0, w, h, 0, 0, w, h, GL_COLOR_BUFFER_BIT,
                                GL_NEAREST);
       api.BindFramebuffer(GL_FRAMEBUFFER, 0);
       api.Viewport(0, 0, w, h);

@@ -5,7 +5,7 @@
 // render::OutlineParams).
 #include "app/option_table.h"
 
-#include "render/renderer.h"
+#include "render/frame_params.h"
 
 namespace tg::app {
 

@@ -7,7 +7,7 @@
 // asked for (README, "Depth cues and legends", says why).
 #include "app/option_table.h"
 
-#include "render/renderer.h"
+#include "render/frame_params.h"
 
 namespace tg::app {
 

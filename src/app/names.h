@@ -1,9 +1,10 @@
 #pragma once
 // Names of render choices shared by the command line and viewer scripts.
 #include <optional>
+#include <string>
 #include <string_view>
 
-#include "render/renderer.h"
+#include "render/frame_params.h"
 
 namespace tg::app {
 
@@ -19,14 +20,8 @@ inline std::optional<render::ColorMode> colorModeNamed(std::string_view c) {
   return std::nullopt;
 }
 
-inline constexpr const char* kGlyphKindNames = "ellipsoid, superquadric, cylinder or box";
-
-inline std::optional<render::GlyphKind> glyphKindNamed(std::string_view k) {
-  if (k == "ellipsoid") return render::GlyphKind::Ellipsoid;
-  if (k == "superquadric") return render::GlyphKind::Superquadric;
-  if (k == "cylinder") return render::GlyphKind::Cylinder;
-  if (k == "box") return render::GlyphKind::Box;
-  return std::nullopt;
-}
+// From the kind table (render/glyph_kind.h).
+inline const std::string kGlyphKindNames = render::glyphKindNames();
+using render::glyphKindNamed;
 
 }  // namespace tg::app

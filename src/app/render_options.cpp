@@ -11,6 +11,7 @@
 #include "app/output_check.h"
 #include "io/image_writer.h"
 #include "io/readers.h"
+#include "render/tessellated.h"
 
 namespace tg::app {
 
@@ -107,8 +108,9 @@ void validateRenderOptions(const RenderOptions& o, bool toFile) {
     throw UsageError("--glyph: unknown kind \"" + o.glyph + "\"; choose " + kGlyphKindNames);
   if (o.tessellate != 0 && o.glyph != "superquadric") throw UsageError("--tessellate needs --glyph superquadric");
   if (o.tessellate != 0 && o.stats) throw UsageError("--stats counts the ray march; --tessellate has none");
-  const bool marches = o.look.glyphGiven || !o.input.empty() ? o.glyph == "superquadric"
-                                                             : SceneLook{}.glyph == render::GlyphKind::Superquadric;
+  // The kind table says which kinds the march's options (gamma among them) apply to.
+  const bool marches = render::glyphKind(o.look.glyphGiven || !o.input.empty() ? *glyphKindNamed(o.glyph)
+                                                                               : SceneLook{}.glyph).gamma;
   if (toFile && !o.marchFlag.empty() && !marches)
     throw UsageError(o.marchFlag + " applies to --glyph superquadric only; this render draws " + o.glyph + " glyphs");
   o.validateSceneFlags(o.input);

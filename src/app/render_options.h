@@ -13,7 +13,7 @@
 #include "app/scene.h"
 #include "app/scene_flags.h"
 #include "render/camera.h"
-#include "render/renderer.h"
+#include "render/frame_params.h"
 #include "tensor/glyph_scale.h"
 
 namespace tg::app {

@@ -33,7 +33,7 @@ render::CameraDesc withLegendRoom(const RenderOptions& o, const render::FramePar
 
 RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io::MeshData> meshes, bool keepGlyphs,
                              const char* command, const std::function<void(io::TensorField&)>& beforeUpload,
-                             const util::ProgressSink& progress)
+                             const util::ProgressSink& progress, const SessionHooks& hooks)
     : scene_(std::move(scene)), command_(command) {
   const auto t0 = Clock::now();
   glyphs_ = tensor::buildGlyphs(scene_.field.positions, scene_.field.tensors, scene_.field.ids, 0, o.field.glyph, progress);
@@ -52,17 +52,19 @@ RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io
     for (const std::string& w : underlayWarnings(o.slices, *underlay, first.glyphsWC.lo, first.glyphsWC.hi))
       std::fprintf(stderr, "tensorglyph %s: --underlay %s: %s\n", command_, printable(underlay->name).c_str(), printable(w).c_str());
     std::tie(underlayLoWC_, underlayHiWC_) = underlay->boundsWC();
+    if (hooks.underlayLoaded) hooks.underlayLoaded(*underlay);
   }
   growByMeshes(meshes, meshLoWC_, meshHiWC_);
   // Each stage frees what the next no longer needs, so that peak memory
   // holds at most two copies of the glyphs (the records and the GL buffer).
   if (beforeUpload) beforeUpload(scene_.field);
 
-  ctx_ = createContext(o.backend, o.width, o.height);
+  ctx_ = hooks.makeContext ? hooks.makeContext(o) : createContext(o.backend, o.width, o.height);
   lib_ = std::make_unique<gl::ShaderLibrary>();
   renderer_ = std::make_unique<render::GlyphRenderer>(ctx_->api(), *lib_, render::makeLegendPass);
   target_ = std::make_unique<render::GBuffer>(ctx_->api(), o.width, o.height);
-  if (underlay) addSlicePlanes(*renderer_, ctx_->api(), *lib_, o.slices, std::move(*underlay), glyphs_.maxAbsEigenvalue);
+  if (underlay)
+    planes_ = addSlicePlanes(*renderer_, ctx_->api(), *lib_, o.slices, std::move(*underlay), glyphs_.maxAbsEigenvalue);
   const auto t1 = Clock::now();
   renderer_->upload(glyphs_);
   addMeshes(*renderer_, ctx_->api(), *lib_, meshes, o.mesh.params);
@@ -112,6 +114,19 @@ const std::vector<render::GlyphCell>& RenderSession::cells() const {
     cells_ = render::glyphCells(glyphs_);
   }
   return *cells_;
+}
+
+render::GBuffer& RenderSession::target(int width, int height) {
+  if (target_->width() != width || target_->height() != height)
+    target_ = std::make_unique<render::GBuffer>(ctx_->api(), width, height);
+  return *target_;
+}
+
+std::pair<glm::dvec3, glm::dvec3> RenderSession::depthBoxWC(const render::FrameParams& p) const {
+  auto [lo, hi] = tensor::glyphBoxWC(glyphs_, p.scale, p.sizing);
+  growDepthRange(lo, hi, underlayLoWC_, underlayHiWC_);
+  growDepthRange(lo, hi, meshLoWC_, meshHiWC_);
+  return {lo, hi};
 }
 
 RenderSession::Frame RenderSession::frame(const RenderOptions& o) const {

@@ -8,7 +8,9 @@
 #include <functional>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "app/render_options.h"
@@ -20,6 +22,7 @@
 #include "render/gbuffer.h"
 #include "render/legend_room.h"
 #include "render/renderer.h"
+#include "render/slice_plane.h"
 #include "tensor/glyph.h"
 #include "util/progress.h"
 
@@ -36,6 +39,16 @@ render::CameraDesc withLegendRoom(const RenderOptions& o, const render::FramePar
                                   const std::vector<render::GlyphCell>& cells, const tensor::GlyphSet& set,
                                   const render::GlyphRenderer& r, const glm::dvec3& lo, const glm::dvec3& hi);
 
+// What `view` changes in a session: the context it draws in (its window),
+// and a look at the underlay before that context exists, so that whatever
+// the window's script asks of the planes is checked before a window opens.
+struct SessionHooks {
+  // Called once the underlay is loaded and checked (not without one).
+  std::function<void(const render::UnderlayVolume&)> underlayLoaded;
+  // Default: an offscreen context of o.backend at o.width x o.height.
+  std::function<std::unique_ptr<gl::Context>(const RenderOptions&)> makeContext;
+};
+
 class RenderSession {
  public:
   // Builds the glyphs from `scene` (checkDrawable), reads the underlay and
@@ -46,7 +59,7 @@ class RenderSession {
   // `command` prefixes warnings on stderr; `progress` hears the eigen stage.
   RenderSession(const RenderOptions& o, Scene scene, std::vector<io::MeshData> meshes, bool keepGlyphs,
                 const char* command, const std::function<void(io::TensorField&)>& beforeUpload = {},
-                const util::ProgressSink& progress = {});
+                const util::ProgressSink& progress = {}, const SessionHooks& hooks = {});
   ~RenderSession();
   RenderSession(const RenderSession&) = delete;
   RenderSession& operator=(const RenderSession&) = delete;
@@ -68,6 +81,16 @@ class RenderSession {
   Scene& scene() { return scene_; }
   render::GlyphRenderer& renderer() { return *renderer_; }
   render::GBuffer& target() { return *target_; }
+  // The target at width x height, made again when the size changes (a window's framebuffer).
+  render::GBuffer& target(int width, int height);
+  // The records' set: its counts, ranges and box always, the records only with keepGlyphs.
+  const tensor::GlyphSet& glyphs() const { return glyphs_; }
+  const tensor::MagnitudeSample& magnitudes() const { return magnitudes_; }
+  // The underlay's planes, in the order of the flags (none without one).
+  std::span<render::SlicePlane* const> slicePlanes() const { return planes_; }
+  // The camera's depth range for p's scale and sizing: the glyphs' box grown
+  // by the underlay's and the meshes' (growDepthRange), as frame() makes it.
+  std::pair<glm::dvec3, glm::dvec3> depthBoxWC(const render::FrameParams& p) const;
   gl::Context& context() { return *ctx_; }
   std::size_t glyphCount() const { return glyphCount_; }
   double buildMs() const { return buildMs_; }
@@ -106,6 +129,7 @@ class RenderSession {
   std::unique_ptr<gl::ShaderLibrary> lib_;
   std::unique_ptr<render::GlyphRenderer> renderer_;
   std::unique_ptr<render::GBuffer> target_;
+  std::vector<render::SlicePlane*> planes_;
   double buildMs_ = 0.0, uploadMs_ = 0.0;
   const char* command_;
 };

@@ -15,6 +15,7 @@
 #include "io/atomic_file.h"
 #include "ref/image_diff.h"
 #include "ref/superquadric_ref.h"
+#include "render/raster_glyphs.h"
 #include "render/renderer.h"
 
 namespace tg::app {
@@ -228,9 +229,9 @@ void runScaleSweep(gl::Context& ctx, const ScaleOptions& o, const util::Progress
       const render::FrameParams p = paramsFor(m, scale, o.gamma);
       // A tessellated frame of a million glyphs or more is long; one timed frame says enough.
       const int frames = m.tessellation > 0 && n >= 1000000 ? 1 : o.frames;
-      const std::uint64_t prepassesBefore = r.occlusionPrepasses();
+      const std::uint64_t prepassesBefore = render::asRaster(r.glyphPath()).occlusionPrepasses();
       const FrameTime ft = timeFrames(gl, r, cam, p, target, frames);
-      const bool prepassRan = r.occlusionPrepasses() > prepassesBefore;
+      const bool prepassRan = render::asRaster(r.glyphPath()).occlusionPrepasses() > prepassesBefore;
       m.skipped = ft.warmMs > 1000.0 * o.budgetS;
       const double covered = coveredPct(r.readback(cam, target));
       double newton = nan;

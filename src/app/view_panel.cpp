@@ -72,7 +72,13 @@ void depthCues(render::FrameParams& p, const PanelStatus& s) {
 void controls(ViewState& v, const tensor::GlyphSet& meta) {
   render::FrameParams& p = v.params;
   int kind = int(p.glyph);
-  if (ImGui::Combo("glyph", &kind, "ellipsoid\0superquadric\0cylinder\0box\0")) p.glyph = render::GlyphKind(kind);
+  // The kind table's names (literals, so NUL-terminated).
+  auto kindName = [](void*, int k, const char** out) {
+    *out = render::glyphKinds()[std::size_t(k)].name.data();
+    return true;
+  };
+  if (ImGui::Combo("glyph", &kind, kindName, nullptr, int(render::glyphKinds().size())))
+    p.glyph = render::GlyphKind(kind);
   auto gamma = float(p.gamma);
   if (slider("gamma", &gamma, ranges::kGamma, "%.2f", true)) p.gamma = gamma;
   auto fa = float(p.faMin);

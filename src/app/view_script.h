@@ -45,7 +45,7 @@
 
 #include "app/orbit_camera.h"
 #include "render/mesh_item.h"
-#include "render/renderer.h"
+#include "render/frame_params.h"
 #include "render/underlay.h"
 
 namespace tg::app {

@@ -3,8 +3,14 @@
 #include <stdexcept>
 
 #include "render/camera_uniforms.h"
+#include "shaders/lib/bindings.h"
 
 namespace tg::render {
+
+std::span<const Attachment> AoPass::reads() const {
+  static constexpr Attachment kReads[] = {Attachment::Depth, Attachment::NormalWC, Attachment::Id};
+  return kReads;
+}
 
 AoPass::AoPass(const gl::Api& gl, const gl::ShaderLibrary& lib)
     : gl_(gl),
@@ -49,9 +55,9 @@ void AoPass::run(const Camera& cam, const GBuffer& target, const AoParams& p, do
   gl_.Disable(GL_DEPTH_TEST);
   gl_.Viewport(0, 0, width_, height_);
   gl_.BindVertexArray(vao_);
-  gl_.BindTextureUnit(0, target.depth());
-  gl_.BindTextureUnit(1, target.normalWC());
-  gl_.BindTextureUnit(2, target.id());
+  gl_.BindTextureUnit(TG_UNIT_EFFECT_DEPTH, target.depth());
+  gl_.BindTextureUnit(TG_UNIT_NORMAL, target.normalWC());
+  gl_.BindTextureUnit(TG_UNIT_ID, target.id());
 
   setCameraUniforms(occlusion_, cam);
   occlusion_.set("uRadiusVC", float(radiusWC));  // a rigid view: world and view units agree
@@ -63,11 +69,11 @@ void AoPass::run(const Camera& cam, const GBuffer& target, const AoParams& p, do
 
   setCameraUniforms(blur_, cam);
   blur_.set("uRadiusVC", float(radiusWC));
-  gl_.BindTextureUnit(kAoUnit, tex_[0]);  // the raw occlusion, for the blur
+  gl_.BindTextureUnit(TG_UNIT_AO_RAW, tex_[0]);  // the raw occlusion, for the blur
   gl_.BindFramebuffer(GL_FRAMEBUFFER, fbo_[1]);
   gl_.UseProgram(blur_.id());
   gl_.DrawArrays(GL_TRIANGLES, 0, 3);
-  gl_.BindTextureUnit(kAoUnit, tex_[1]);
+  gl_.BindTextureUnit(TG_UNIT_AO, tex_[1]);
   gl::checkError(gl_, "AoPass::run");
 }
 

@@ -6,7 +6,7 @@
 //          rotations per pixel of a 4 x 4 tile) and the depth-aware blur of
 //          it, ao(): the fraction of ambient and head light each pixel keeps,
 //          1 on the background. shaders/lighting.frag (option TG_AO) reads
-//          ao() at texture unit kAoUnit and multiplies its ambient and head
+//          ao() at texture unit TG_UNIT_AO and multiplies its ambient and head
 //          terms by it.
 //
 // Method: a normal-oriented hemisphere of `samples` points within `radius`
@@ -20,41 +20,27 @@
 
 #include "gl/program.h"
 #include "render/camera.h"
+#include "render/frame_pass.h"
 #include "render/gbuffer.h"
 
 namespace tg::render {
 
-struct AoParams {
-  bool enabled = false;
-  // Sample radius in world units; 0 picks kAutoRadius typical glyph
-  // diameters (GlyphRenderer::aoRadiusWC), which follows the glyph scale.
-  double radius = 0.0;
-  // Occlusion weight: 0 leaves the light alone, 1 takes all ambient and
-  // head light from a fully occluded point.
-  double strength = 1.0;
-  int samples = 16;  // hemisphere points per pixel
-  static constexpr double kAutoRadius = 1.0;
-  static constexpr int kMinSamples = 4, kMaxSamples = 64;
-  static constexpr double kMaxStrength = 4.0;
-  bool operator==(const AoParams&) const = default;
-};
-
-class AoPass {
+class AoPass final : public FramePass {
  public:
-  // Mirrored by shaders/lighting.frag.
-  static constexpr GLuint kAoUnit = 6;
-
   AoPass(const gl::Api& gl, const gl::ShaderLibrary& lib);
-  ~AoPass();
+  ~AoPass() override;
   AoPass(const AoPass&) = delete;
   AoPass& operator=(const AoPass&) = delete;
 
   // Computes and blurs the occlusion of target's G-buffer; (re)allocates its
-  // textures when the target's size changes. Leaves ao() bound to kAoUnit.
+  // textures when the target's size changes. Leaves ao() bound to TG_UNIT_AO.
   void run(const Camera& cam, const GBuffer& target, const AoParams& p, double radiusWC);
+  void run(const PassFrame& f) override { run(f.cam, f.target, f.p.ao, f.aoRadiusWC); }
+  std::span<const Attachment> reads() const override;
+  std::span<const Attachment> writes() const override { return {}; }  // its own textures
   GLuint ao() const { return tex_[1]; }
   // Bytes of its textures (0 before the first run).
-  std::size_t gpuBytes() const { return std::size_t(width_) * std::size_t(height_) * 2 * kBytesPerTexel; }
+  std::size_t gpuBytes() const override { return std::size_t(width_) * std::size_t(height_) * 2 * kBytesPerTexel; }
 
  private:
   static constexpr std::size_t kBytesPerTexel = 2;  // R16F

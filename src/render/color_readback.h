@@ -1,5 +1,5 @@
 #pragma once
-// The lit colour as 8-bit RGBA on the CPU, for PNG and the other 8-bit
+// Readback of a rendered frame (readFrame), and the lit colour as 8-bit RGBA on the CPU, for PNG and the other 8-bit
 // outputs. Inputs: the G-buffer's lit colour (RGBA32F). Output: 4 bytes per
 // pixel, rows top first, each channel render::toUnorm8 of the float.
 //
@@ -10,9 +10,20 @@
 #include <vector>
 
 #include "gl/loader.h"
+#include "render/camera.h"
+#include "render/frame_image.h"
 #include "render/gbuffer.h"
 
 namespace tg::render {
+
+// What readback fetches: the float colour, every channel (EXR), or only the
+// colour as 8-bit RGBA (PNG and the like), which never holds the float image
+// on the CPU.
+enum class Channels { Color, All, Rgba8 };
+
+// target's channels, rows top first; depth along the view axis (+inf and a
+// zero normal where nothing was drawn).
+FrameImage readFrame(const gl::Api& gl, const Camera& cam, const GBuffer& target, Channels channels);
 
 std::vector<std::uint8_t> readColorRgba8(const gl::Api& gl, const GBuffer& target);
 

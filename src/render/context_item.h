@@ -5,7 +5,9 @@
 // the z-buffer, and lighting, the depth cues and picking read them alike.
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <utility>
 
@@ -66,5 +68,10 @@ class ContextItem {
  private:
   bool visible_ = true;
 };
+
+// The visible items' opaque surfaces into the bound target, under the
+// reversed-Z depth test with depth writes; nothing (no GL call) with none.
+void drawContextOpaque(const gl::Api& gl, std::span<const std::unique_ptr<ContextItem>> items, const Camera& cam,
+                       const FrameParams& p, ContextTarget target);
 
 }  // namespace tg::render

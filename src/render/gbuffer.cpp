@@ -4,6 +4,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "shaders/lib/bindings.h"
+
 namespace tg::render {
 namespace {
 
@@ -11,7 +13,7 @@ struct Format {
   GLenum format;
   int bytes;  // per texel
 };
-// albedo, normal, id, depth, lit colour, occluder depth; then the pyramid.
+// By Attachment: albedo, normal, id, depth, lit colour, occluder depth; then the pyramid.
 constexpr Format kTargets[6] = {{GL_RGBA8, 4}, {GL_RGBA16F, 8}, {GL_R32UI, 4}, {GL_DEPTH_COMPONENT32F, 4},
                                 {GL_RGBA32F, 16}, {GL_DEPTH_COMPONENT32F, 4}};
 constexpr Format kPyramid = {GL_R32F, 4};
@@ -48,20 +50,20 @@ GBuffer::GBuffer(const gl::Api& gl, int width, int height) : gl_(gl), width_(wid
     gl.TextureParameteri(tex_[k], GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     gl.TextureParameteri(tex_[k], GL_TEXTURE_MAG_FILTER, GL_NEAREST);
   }
-  gl.CreateTextures(GL_TEXTURE_2D, 1, &tex_[6]);
-  gl.TextureStorage2D(tex_[6], pyramidLevels(), kPyramid.format, pyramidWidth(), pyramidHeight());
+  gl.CreateTextures(GL_TEXTURE_2D, 1, &tex_[int(Attachment::OccluderPyramid)]);
+  gl.TextureStorage2D(occluderPyramid(), pyramidLevels(), kPyramid.format, pyramidWidth(), pyramidHeight());
   gl.CreateFramebuffers(4, fbo_);
-  for (int k = 0; k < 3; ++k) gl.NamedFramebufferTexture(fbo_[0], GL_COLOR_ATTACHMENT0 + k, tex_[k], 0);
-  gl.NamedFramebufferTexture(fbo_[0], GL_DEPTH_ATTACHMENT, tex_[3], 0);
+  for (int k = 0; k < 3; ++k) gl.NamedFramebufferTexture(fbo_[0], GL_COLOR_ATTACHMENT0 + k, tex_[k], 0);  // albedo, normal, id
+  gl.NamedFramebufferTexture(fbo_[0], GL_DEPTH_ATTACHMENT, depth(), 0);
   const GLenum draw[3] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1, GL_COLOR_ATTACHMENT2};
   gl.NamedFramebufferDrawBuffers(fbo_[0], 3, draw);
-  gl.NamedFramebufferTexture(fbo_[1], GL_COLOR_ATTACHMENT0, tex_[4], 0);
+  gl.NamedFramebufferTexture(fbo_[1], GL_COLOR_ATTACHMENT0, color(), 0);
   gl.NamedFramebufferDrawBuffers(fbo_[1], 1, draw);
   const GLenum none = GL_NONE;
-  gl.NamedFramebufferTexture(fbo_[2], GL_DEPTH_ATTACHMENT, tex_[5], 0);
+  gl.NamedFramebufferTexture(fbo_[2], GL_DEPTH_ATTACHMENT, occluderDepth(), 0);
   gl.NamedFramebufferDrawBuffers(fbo_[2], 1, &none);
-  gl.NamedFramebufferTexture(fbo_[3], GL_COLOR_ATTACHMENT0, tex_[4], 0);
-  gl.NamedFramebufferTexture(fbo_[3], GL_DEPTH_ATTACHMENT, tex_[3], 0);
+  gl.NamedFramebufferTexture(fbo_[3], GL_COLOR_ATTACHMENT0, color(), 0);
+  gl.NamedFramebufferTexture(fbo_[3], GL_DEPTH_ATTACHMENT, depth(), 0);
   gl.NamedFramebufferDrawBuffers(fbo_[3], 1, draw);
   for (GLuint f : fbo_)
     if (gl.CheckNamedFramebufferStatus(f, GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE)
@@ -71,7 +73,7 @@ GBuffer::GBuffer(const gl::Api& gl, int width, int height) : gl_(gl), width_(wid
 
 GBuffer::~GBuffer() {
   gl_.DeleteFramebuffers(4, fbo_);
-  gl_.DeleteTextures(7, tex_);
+  gl_.DeleteTextures(kAttachmentCount, tex_);
 }
 
 void GBuffer::beginGeometry() const {
@@ -95,16 +97,22 @@ void GBuffer::beginOccluders() const {
   gl_.ClearNamedFramebufferfv(fbo_[2], GL_DEPTH, 0, &farDepth);
 }
 
+void GBuffer::bindLightingInputs() const {
+  gl_.BindTextureUnit(TG_UNIT_ALBEDO, albedo());
+  gl_.BindTextureUnit(TG_UNIT_NORMAL, normalWC());
+  gl_.BindTextureUnit(TG_UNIT_ID, id());
+}
+
 void GBuffer::beginLighting() const {
   gl_.BindFramebuffer(GL_FRAMEBUFFER, fbo_[1]);
   gl_.Viewport(0, 0, width_, height_);
-  for (int k = 0; k < 3; ++k) gl_.BindTextureUnit(GLuint(k), tex_[k]);
+  bindLightingInputs();
 }
 
 void GBuffer::beginLightingCovered(const float background[4]) const {
   gl_.BindFramebuffer(GL_FRAMEBUFFER, fbo_[3]);
   gl_.Viewport(0, 0, width_, height_);
-  for (int k = 0; k < 3; ++k) gl_.BindTextureUnit(GLuint(k), tex_[k]);
+  bindLightingInputs();
   gl_.ClearNamedFramebufferfv(fbo_[3], GL_COLOR, 0, background);
   // fullscreen.vert draws at window depth 0, the far value (reversed Z):
   // it passes GL_LESS wherever a glyph or context item wrote depth, as

@@ -6,6 +6,13 @@
 
 namespace tg::render {
 
+// The G-buffer's channels as named attachments: what passes declare they
+// read and write (render/frame_pass.h), and what a glyph path fills
+// (render/glyph_path.h). Albedo, NormalWC, Id and Depth are the geometry
+// pass's; Color the lit image; the occluder channels the pre-pass's.
+enum class Attachment { Albedo, NormalWC, Id, Depth, Color, OccluderDepth, OccluderPyramid };
+inline constexpr int kAttachmentCount = 7;
+
 class GBuffer {
  public:
   GBuffer(const gl::Api& gl, int width, int height);
@@ -38,23 +45,26 @@ class GBuffer {
   // Restores what beginLightingCovered changed: no depth test, depth writes on.
   void endLighting() const;
 
-  GLuint albedo() const { return tex_[0]; }    // RGBA8
-  GLuint normalWC() const { return tex_[1]; }  // RGBA16F: 11-bit mantissa, < 0.03 deg
-  GLuint id() const { return tex_[2]; }        // R32UI
-  GLuint depth() const { return tex_[3]; }     // DEPTH32F, reversed
-  GLuint color() const { return tex_[4]; }     // RGBA32F, lit
-  GLuint occluderDepth() const { return tex_[5]; }  // DEPTH32F, reversed
+  GLuint texture(Attachment a) const { return tex_[int(a)]; }
+  GLuint albedo() const { return texture(Attachment::Albedo); }      // RGBA8
+  GLuint normalWC() const { return texture(Attachment::NormalWC); }  // RGBA16F: 11-bit mantissa, < 0.03 deg
+  GLuint id() const { return texture(Attachment::Id); }              // R32UI
+  GLuint depth() const { return texture(Attachment::Depth); }        // DEPTH32F, reversed
+  GLuint color() const { return texture(Attachment::Color); }        // RGBA32F, lit
+  GLuint occluderDepth() const { return texture(Attachment::OccluderDepth); }  // DEPTH32F, reversed
   // R32F, mip 0 at half size (render/occluder_pyramid.h).
-  GLuint occluderPyramid() const { return tex_[6]; }
+  GLuint occluderPyramid() const { return texture(Attachment::OccluderPyramid); }
   int pyramidWidth() const { return (width_ + 1) / 2; }
   int pyramidHeight() const { return (height_ + 1) / 2; }
   int pyramidLevels() const;
   GLuint colorFramebuffer() const { return fbo_[1]; }
 
  private:
+  // The lighting pass's inputs at their units (shaders/lib/bindings.h).
+  void bindLightingInputs() const;
   const gl::Api& gl_;
   int width_, height_;
-  GLuint tex_[7] = {};
+  GLuint tex_[kAttachmentCount] = {};  // by Attachment
   GLuint fbo_[4] = {};  // geometry, colour, occluders, colour + depth
 };
 

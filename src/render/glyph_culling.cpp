@@ -7,6 +7,7 @@
 
 #include "render/camera_uniforms.h"
 #include "render/frustum.h"
+#include "shaders/lib/bindings.h"
 
 namespace tg::render {
 namespace {
@@ -82,10 +83,10 @@ void GlyphCulling::prepare(const Camera& cam, double scale, const tensor::SizeMa
     compacted_ = true;
     if (!(passes_.compactions > 0 && faMinF == compactedFor_)) {
       allocateKeptIndex();
-      gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, glyphs_);
-      gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kRangesBinding, ranges_);
-      gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeptCountBinding, keptCount_);
-      gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeptIndexBinding, keptIndex_);
+      gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_GLYPHS, glyphs_);
+      gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_RANGES, ranges_);
+      gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_KEPT_COUNT, keptCount_);
+      gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_KEPT_INDEX, keptIndex_);
       compact_.set("uFaMin", faMinF);
       compact_.set("uRangeCount", int(n));
       dispatch(compact_, n);
@@ -119,10 +120,10 @@ void GlyphCulling::prepare(const Camera& cam, double scale, const tensor::SizeMa
   }
   const GLuint zero = 0;
   gl_.NamedBufferSubData(visible_, 0, sizeof(zero), &zero);
-  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kRangesBinding, ranges_);
-  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeptCountBinding, keptCount_);
-  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kCommandsBinding, commands_);
-  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kVisibleBinding, visible_);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_RANGES, ranges_);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_KEPT_COUNT, keptCount_);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_COMMANDS, commands_);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_VISIBLE, visible_);
   cull_.set("uFrustumWC", planes);
   cull_.set("uScale", float(scale));
   cull_.set("uMagnitude", int(sizing.magnitude));
@@ -159,10 +160,10 @@ void GlyphCulling::cullPixels(const Camera& cam, double scale, const tensor::Siz
   prog.set("uSlabWC", glm::vec2(float(slab.lo), float(slab.hi)));
   const std::size_t n = table_.ranges.size();
   prog.set("uRangeCount", int(n));
-  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, 0, glyphs_);
-  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kRangesBinding, ranges_);
-  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeptCountBinding, keptCount_);
-  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeptIndexBinding, keptIndex_);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_GLYPHS, glyphs_);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_RANGES, ranges_);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_KEPT_COUNT, keptCount_);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_KEPT_INDEX, keptIndex_);
   dispatch(prog, (n + 7) / 8);
   gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
   ++passes_.pixelCulls;
@@ -174,7 +175,7 @@ void GlyphCulling::draw(const QuadSprites& sprites, int g0, int g1) const {
     sprites.draw(runs_[std::size_t(4 * g0 + g1)], points_);
     return;
   }
-  if (compacted_) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kKeptIndexBinding, keptIndex_);
+  if (compacted_) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_KEPT_INDEX, keptIndex_);
   const GLuint b = table_.groupStart[std::size_t(g0)], e = table_.groupStart[std::size_t(g1)];
   sprites.drawIndirect(commands_, GLsizei(b), std::span<const GlyphRange>(table_.ranges).subspan(b, e - b), points_);
 }

@@ -18,6 +18,7 @@
 
 #include "gl/async_counter.h"
 #include "gl/program.h"
+#include "render/frame_params.h"
 #include "render/camera.h"
 #include "render/glyph_ranges.h"
 #include "render/quad_sprites.h"
@@ -25,21 +26,8 @@
 
 namespace tg::render {
 
-// Glyphs whose centre lies in [lo, hi] along a WC axis (ParaView's and
-// Slicer's slice of a glyph volume, as thick as asked).
-struct Slab {
-  int axis = -1;  // 0, 1, 2; -1: off
-  double lo = 0, hi = 0;
-  bool operator==(const Slab&) const = default;
-};
-
 class GlyphCulling {
  public:
-  // Binding points, mirrored by shaders/lib/glyph_ranges.glsl,
-  // lib/sprite.glsl and cull_ranges.comp (0 and 1: records and statistics).
-  static constexpr GLuint kKeptIndexBinding = 2, kRangesBinding = 3, kKeptCountBinding = 4,
-                          kCommandsBinding = 5, kVisibleBinding = 6;
-
   GlyphCulling(const gl::Api& gl, const gl::ShaderLibrary& lib);
   ~GlyphCulling();
   GlyphCulling(const GlyphCulling&) = delete;

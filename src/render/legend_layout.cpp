@@ -12,7 +12,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "render/renderer.h"
+#include "render/frame_params.h"
 
 namespace tg::render {
 

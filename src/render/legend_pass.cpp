@@ -5,11 +5,10 @@
 
 #include <glm/mat3x3.hpp>
 
+#include "shaders/lib/bindings.h"
+
 namespace tg::render {
 namespace {
-
-// Not 0: the glyph records' binding stays as the geometry pass left it.
-constexpr GLuint kVertexBinding = 7;
 
 }  // namespace
 
@@ -76,9 +75,9 @@ void LegendPass::draw(const Camera& cam, const LegendParams& p, const LegendInpu
       gl_.NamedBufferStorage(vertices_, GLsizeiptr(vertexCapacity_), nullptr, GL_DYNAMIC_STORAGE_BIT);
     }
     gl_.NamedBufferSubData(vertices_, 0, GLsizeiptr(bytes), tri.data());
-    gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kVertexBinding, vertices_);
+    gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_LEGEND_VERTICES, vertices_);
     text_.set("uViewportDC", viewport);
-    gl_.BindTextureUnit(0, atlas_);
+    gl_.BindTextureUnit(TG_UNIT_LEGEND_ATLAS, atlas_);
     gl_.UseProgram(text_.id());
     gl_.DrawArrays(GL_TRIANGLES, 0, GLsizei(tri.size()));
   }
@@ -91,7 +90,12 @@ std::size_t LegendPass::gpuBytes() const {
   return atlas + vertexCapacity_;
 }
 
-std::unique_ptr<OverlayPass> makeLegendPass(const gl::Api& gl, const gl::ShaderLibrary& lib) {
+std::span<const Attachment> LegendPass::writes() const {
+  static constexpr Attachment kWrites[] = {Attachment::Color};
+  return kWrites;
+}
+
+std::unique_ptr<FramePass> makeLegendPass(const gl::Api& gl, const gl::ShaderLibrary& lib) {
   return std::make_unique<LegendPass>(gl, lib);
 }
 

@@ -16,22 +16,25 @@
 
 #include "gl/program.h"
 #include "render/legend_layout.h"
-#include "render/renderer.h"
+#include "render/frame_pass.h"
 
 namespace tg::render {
 
-class LegendPass final : public OverlayPass {
+class LegendPass final : public FramePass {
  public:
   LegendPass(const gl::Api& gl, const gl::ShaderLibrary& lib);
-  ~LegendPass();
+  ~LegendPass() override;
   LegendPass(const LegendPass&) = delete;
   LegendPass& operator=(const LegendPass&) = delete;
 
   // Draws into the framebuffer bound for lighting (GBuffer::beginLighting).
   void draw(const Camera& cam, const LegendParams& p, const LegendInputs& in);
-  void draw(const Camera& cam, const FrameParams& p, const UploadedRanges& r) override {
-    draw(cam, p.legend, {p.color, p.scale, r.mdMin, r.mdMax, r.eigenMin, r.eigenMax, p.sizing, r.underlays});
+  void run(const PassFrame& f) override {
+    const UploadedRanges& r = f.ranges;
+    draw(f.cam, f.p.legend, {f.p.color, f.p.scale, r.mdMin, r.mdMax, r.eigenMin, r.eigenMax, f.p.sizing, r.underlays});
   }
+  std::span<const Attachment> reads() const override { return {}; }
+  std::span<const Attachment> writes() const override;
   const LegendLayout& layout() const { return layout_; }  // of the last draw
   std::size_t gpuBytes() const override;
 
@@ -46,7 +49,7 @@ class LegendPass final : public OverlayPass {
   std::size_t vertexCapacity_ = 0;  // bytes
 };
 
-// The factory GlyphRenderer takes (render/renderer.h, OverlayFactory).
-std::unique_ptr<OverlayPass> makeLegendPass(const gl::Api& gl, const gl::ShaderLibrary& lib);
+// The factory GlyphRenderer takes (render/renderer.h).
+std::unique_ptr<FramePass> makeLegendPass(const gl::Api& gl, const gl::ShaderLibrary& lib);
 
 }  // namespace tg::render

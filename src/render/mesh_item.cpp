@@ -10,13 +10,11 @@
 #include <glm/trigonometric.hpp>
 
 #include "render/camera_uniforms.h"
-#include "render/renderer.h"
+#include "render/frame_params.h"
+#include "shaders/lib/bindings.h"
 
 namespace tg::render {
 namespace {
-
-constexpr GLuint kVertexBinding = 9;  // shaders/mesh.vert
-constexpr GLuint kSceneDepthUnit = 2;  // shaders/mesh.frag, TG_MESH_FORWARD
 
 // Edges as (lo, hi) vertex pairs with the triangle they came from; sorted,
 // equal pairs are the faces that share an edge.
@@ -153,7 +151,7 @@ void MeshItem::drawOpaque(const Camera& cam, const FrameParams& /*p*/, std::uint
   gbuffer_->set("uEdges", edges ? 1 : 0);
   gbuffer_->set("uId", std::bit_cast<int>(id));
   gl_.UseProgram(gbuffer_->id());
-  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kVertexBinding, vertices_);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_MESH_VERTICES, vertices_);
   gl_.VertexArrayElementBuffer(vao_, edges ? edges_ : triangles_);
   gl_.BindVertexArray(vao_);
   const std::size_t count = edges ? 2 * edgeCount_ : 3 * triangleCount_;
@@ -199,10 +197,10 @@ void MeshItem::drawTranslucent(const Camera& cam, const FrameParams& p, const GB
   prog.set("uLightMix", glm::vec4(p.light.ambient, p.light.head, p.light.key, p.light.specular));
   prog.set("uShininess", p.light.shininess);
   gl_.UseProgram(prog.id());
-  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, kVertexBinding, vertices_);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_MESH_VERTICES, vertices_);
   gl_.VertexArrayElementBuffer(vao_, triangles_);
   gl_.BindVertexArray(vao_);
-  gl_.BindTextureUnit(kSceneDepthUnit, target.depth());
+  gl_.BindTextureUnit(TG_UNIT_MESH_SCENE_DEPTH, target.depth());
   const auto n = GLsizei(3 * triangleCount_);
   // Pass 1: the mesh's nearest surface, depth only (the shader's colour goes nowhere).
   gl_.BindFramebuffer(GL_FRAMEBUFFER, peelFbo_);

@@ -13,7 +13,7 @@ class OccluderPyramid {
  public:
   OccluderPyramid(const gl::Api& gl, const gl::ShaderLibrary& lib);
   // From target's occluder depth, every level; leaves the pyramid bound to
-  // texture unit kPyramidUnit and the depth to kDepthUnit.
+  // texture unit TG_UNIT_OCCLUDER_PYRAMID and the depth to TG_UNIT_OCCLUDER_DEPTH (shaders/lib/bindings.h).
   void build(const GBuffer& target) const;
   // The same for any occluder depth texture (`width` x `height`) and a
   // pyramid of `levels` levels at half its size (the shadow pass's own).
@@ -21,7 +21,6 @@ class OccluderPyramid {
   static int levelsFor(int width, int height);
 
   // Mirrored by shaders/lib/occlusion.glsl.
-  static constexpr GLuint kDepthUnit = 3, kPyramidUnit = 4;
 
  private:
   const gl::Api& gl_;

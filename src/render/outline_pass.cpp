@@ -4,6 +4,9 @@
 
 #include <glm/trigonometric.hpp>
 
+#include "render/camera_uniforms.h"
+#include "shaders/lib/bindings.h"
+
 namespace tg::render {
 
 OutlinePass::OutlinePass(const gl::Api& gl, const gl::ShaderLibrary& lib)
@@ -13,6 +16,21 @@ OutlinePass::OutlinePass(const gl::Api& gl, const gl::ShaderLibrary& lib)
 
 OutlinePass::~OutlinePass() { gl_.DeleteVertexArrays(1, &vao_); }
 
+std::span<const Attachment> OutlinePass::reads() const {
+  static constexpr Attachment kReads[] = {Attachment::Depth, Attachment::NormalWC, Attachment::Id};
+  return kReads;
+}
+
+std::span<const Attachment> OutlinePass::writes() const {
+  static constexpr Attachment kWrites[] = {Attachment::Color};
+  return kWrites;
+}
+
+void OutlinePass::run(const PassFrame& f) {
+  setCameraUniforms(program_, f.cam);
+  run(f.target, f.p.outline);
+}
+
 void OutlinePass::run(const GBuffer& target, const OutlineParams& p) const {
   program_.set("uWidth", float(p.width));
   program_.set("uColor", p.color);
@@ -20,9 +38,9 @@ void OutlinePass::run(const GBuffer& target, const OutlineParams& p) const {
   gl_.BindFramebuffer(GL_FRAMEBUFFER, target.colorFramebuffer());
   gl_.Viewport(0, 0, target.width(), target.height());
   gl_.Disable(GL_DEPTH_TEST);
-  gl_.BindTextureUnit(0, target.depth());
-  gl_.BindTextureUnit(1, target.normalWC());
-  gl_.BindTextureUnit(2, target.id());
+  gl_.BindTextureUnit(TG_UNIT_EFFECT_DEPTH, target.depth());
+  gl_.BindTextureUnit(TG_UNIT_NORMAL, target.normalWC());
+  gl_.BindTextureUnit(TG_UNIT_ID, target.id());
   gl_.Enable(GL_BLEND);
   gl_.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
   gl_.UseProgram(program_.id());

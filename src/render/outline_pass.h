@@ -18,28 +18,24 @@
 #include <glm/vec4.hpp>
 
 #include "gl/program.h"
+#include "render/frame_pass.h"
 #include "render/gbuffer.h"
 
 namespace tg::render {
 
-struct OutlineParams {
-  bool enabled = false;
-  double width = 1.5;                       // pixels
-  glm::vec4 color{0.0f, 0.0f, 0.0f, 1.0f};  // RGBA, alpha blends the line over the glyph
-  double creaseDeg = 45.0;                  // normals turning more than this make a crease
-  static constexpr double kMaxWidth = 8.0;
-  bool operator==(const OutlineParams&) const = default;
-};
-
-class OutlinePass {
+class OutlinePass final : public FramePass {
  public:
   OutlinePass(const gl::Api& gl, const gl::ShaderLibrary& lib);
-  ~OutlinePass();
+  ~OutlinePass() override;
   OutlinePass(const OutlinePass&) = delete;
   OutlinePass& operator=(const OutlinePass&) = delete;
 
   // Needs the camera uniforms already set on program() (setCameraUniforms).
   void run(const GBuffer& target, const OutlineParams& p) const;
+  void run(const PassFrame& f) override;
+  std::span<const Attachment> reads() const override;
+  std::span<const Attachment> writes() const override;
+  std::size_t gpuBytes() const override { return 0; }
   const gl::Program& program() const { return program_; }
 
  private:

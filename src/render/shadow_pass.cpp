@@ -11,6 +11,9 @@
 #include <glm/matrix.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "render/glyph_path.h"
+#include "shaders/lib/bindings.h"
+
 namespace tg::render {
 namespace {
 
@@ -117,6 +120,21 @@ Camera lightCamera(const Camera& view, const glm::dvec3& keyDirWC, const glm::dv
 
 ShadowPass::ShadowPass(const gl::Api& gl) : gl_(gl) {}
 
+void ShadowPass::run(const PassFrame& f) {
+  auto [lo, hi] = f.glyphs.castersBoxWC(f.p);
+  // Context both casts and receives: the map covers it too.
+  for (const auto& item : f.context)
+    if (item->visible()) {
+      const auto [itemLo, itemHi] = item->boundsWC();
+      lo = glm::min(lo, itemLo);
+      hi = glm::max(hi, itemHi);
+    }
+  const glm::dvec3 keyWC = glm::transpose(glm::dmat3(f.cam.viewWCVC)) * glm::dvec3(f.p.light.keyDirVC);
+  light_ = lightCamera(f.cam, keyWC, lo, hi, f.p.shadow);
+  f.glyphs.drawShadowCasters(light_, f.p, *this);
+  drawContextOpaque(gl_, f.context, light_, f.p, ContextTarget::ShadowMap);
+}
+
 ShadowPass::~ShadowPass() {
   release();
   releaseOccluders();
@@ -175,8 +193,8 @@ void ShadowPass::beginMap(int mapSize) {
 
 void ShadowPass::bindForLighting(const gl::Program& prog, const Camera& view, const Camera& light,
                                  const ShadowParams& p, const GBuffer& target) const {
-  gl_.BindTextureUnit(kSceneDepthUnit, target.depth());
-  gl_.BindTextureUnit(kMapUnit, map_);
+  gl_.BindTextureUnit(TG_UNIT_SHADOW_SCENE_DEPTH, target.depth());
+  gl_.BindTextureUnit(TG_UNIT_SHADOW_MAP, map_);
   const double texel = light.desc.orthoHeight / double(size_);
   prog.set("uLightFromVC", glm::mat4(light.viewWCVC * glm::inverse(view.viewWCVC)));
   prog.set("uLightHalfExtent", float(0.5 * light.desc.orthoHeight));

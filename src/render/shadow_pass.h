@@ -10,8 +10,8 @@
 //                      light's orthographic camera), the occluders above
 //               WRITES its own DEPTH32F map (reversed, window depth along the
 //                      key light), mapSize x mapSize
-//   Lighting    READS  G-buffer depth (unit kSceneDepthUnit), the map (unit
-//                      kMapUnit), and the G-buffer normals the pass already reads
+//   Lighting    READS  G-buffer depth (unit TG_UNIT_SHADOW_SCENE_DEPTH), the map (unit
+//                      TG_UNIT_SHADOW_MAP), and the G-buffer normals the pass already reads
 //               WRITES nothing new: the key light's diffuse and specular terms
 //                      are scaled by the filtered visibility (shaders/lib/shadow.glsl)
 //
@@ -23,38 +23,12 @@
 #include <glm/vec3.hpp>
 
 #include "gl/program.h"
+#include "render/frame_pass.h"
 #include "render/camera.h"
 #include "render/gbuffer.h"
 #include "render/occluder_pyramid.h"
 
 namespace tg::render {
-
-// One home for the shadow options: the CLI, the viewer and scripts read these
-// defaults. Lengths in map texels are of the light-space map, so that they
-// keep their meaning when the map is fitted to another region.
-struct ShadowParams {
-  bool enabled = false;
-  int mapSize = 2048;  // texels per side of the square map, at most (see mapDensity)
-  // Map texels per view pixel at the glyph box's centre: the map's side is
-  // that, in multiples of 64, up to mapSize. A map finer than the view
-  // resolves nothing more and costs as a second geometry pass at its size.
-  // 0: always mapSize.
-  float mapDensity = 1.0f;
-  // Width of the soft edge (the PCF kernel) as a fraction of the map's side
-  // in world units: independent of mapSize, which sets only its sharpness.
-  float penumbra = 0.004f;
-  float strength = 1.0f;  // share of the key light removed in full shadow
-  // Depth of each PCF texel compared against the receiver's tangent plane
-  // there (exact G-buffer normals): a plane has no acne at any slope, and a
-  // convex glyph curves away from the light, never into its own shadow.
-  bool receiverPlane = true;
-  float bias = 0.5f;          // constant, along the light, in map texels
-  float normalOffset = 0.0f;  // lookup moved along the normal, in map texels (the classic remedy)
-  bool operator==(const ShadowParams&) const = default;
-};
-
-inline constexpr int kMinShadowMapSize = 64, kMaxShadowMapSize = 8192;
-inline constexpr float kMaxShadowPenumbra = 0.1f, kMaxShadowBias = 64.0f;
 
 // The key light's orthographic camera for a view: looking along -keyDirWC;
 // its window covers the part of the caster box `lo..hi` (WC) that the view
@@ -65,13 +39,10 @@ inline constexpr float kMaxShadowPenumbra = 0.1f, kMaxShadowBias = 64.0f;
 Camera lightCamera(const Camera& view, const glm::dvec3& keyDirWC, const glm::dvec3& lo, const glm::dvec3& hi,
                    const ShadowParams& p);
 
-class ShadowPass {
+class ShadowPass final : public FramePass {
  public:
-  // Mirrored by shaders/lib/shadow.glsl; above the occlusion pre-pass's 3 and 4 and AoPass::kAoUnit 6.
-  static constexpr GLuint kSceneDepthUnit = 7, kMapUnit = 8;
-
   explicit ShadowPass(const gl::Api& gl);
-  ~ShadowPass();
+  ~ShadowPass() override;
   ShadowPass(const ShadowPass&) = delete;
   ShadowPass& operator=(const ShadowPass&) = delete;
 
@@ -89,8 +60,14 @@ class ShadowPass {
   // camera and light mix).
   void bindForLighting(const gl::Program& lighting, const Camera& view, const Camera& light, const ShadowParams& p,
                        const GBuffer& target) const;
-  std::size_t gpuBytes() const;
+  std::span<const Attachment> reads() const override { return {}; }
+  std::span<const Attachment> writes() const override { return {}; }  // its own map
+  // The key light's map of the glyphs (GlyphPath::drawShadowCasters) and the
+  // visible context, which both cast and receive, from lightCamera over their box.
+  void run(const PassFrame& f) override;
+  std::size_t gpuBytes() const override;
   int mapSize() const { return size_; }  // of the last map drawn
+  const Camera& light() const { return light_; }  // of the last map drawn
 
  private:
   void release();
@@ -100,6 +77,7 @@ class ShadowPass {
   int size_ = 0;
   GLuint occluderDepth_ = 0, pyramid_ = 0, occluderFbo_ = 0;
   int occluderSize_ = 0;
+  Camera light_{};
 };
 
 }  // namespace tg::render

@@ -6,8 +6,9 @@
 #include <glm/matrix.hpp>
 
 #include "render/camera_uniforms.h"
-#include "render/renderer.h"
+#include "render/frame_params.h"
 #include "tensor/glyph_scale.h"
+#include "shaders/lib/bindings.h"
 
 namespace tg::render {
 
@@ -82,7 +83,7 @@ void SliceVolume::draw(const Camera& cam, const PlaneQuad& q, const SliceParams&
   const GLint filter = p.linear ? GL_LINEAR : GL_NEAREST;
   gl_.TextureParameteri(texture_, GL_TEXTURE_MIN_FILTER, filter);
   gl_.TextureParameteri(texture_, GL_TEXTURE_MAG_FILTER, filter);
-  gl_.BindTextureUnit(0, texture_);
+  gl_.BindTextureUnit(TG_UNIT_SLICE, texture_);
   gl_.UseProgram(program_.id());
   gl_.BindVertexArray(vao_);
   gl_.DrawArrays(GL_TRIANGLES, 0, 6);

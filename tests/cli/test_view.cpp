@@ -194,6 +194,44 @@ TEST(View, ScriptedSlicePlanesMatchTheHeadlessRenderer) {
   std::filesystem::remove_all(dir);
 }
 
+// The viewer builds its scene as render does (app/render_session.h): the
+// same default size, and the underlay's warnings measured against the same
+// box. The plane at x index 0 lies within the glyphs' box but beside their
+// centres, which the viewer used to measure against, warning where render
+// did not.
+TEST(View, BuildsTheSceneRenderBuilds) {
+  if (!haveDisplay()) GTEST_SKIP() << "no X display";
+  TG_REQUIRE_REAL_DATA();
+  const auto dir = tg::test::cliDir("view-scene");
+  {
+    std::ofstream s(dir / "script.txt");
+    s << "screenshot " << (dir / "v.png").string() << "\n";
+  }
+  const std::string field = tg::test::realData("kindlmann-dt-helix/dt-helix.nhdr");
+  const std::string flags = " " + field + " --underlay fa --plane x:0 --glyph ellipsoid --no-shadows --no-ao --no-legend";
+  const auto v = runBinary("view" + flags + " --script " + (dir / "script.txt").string(), dir);
+  ASSERT_EQ(v.code, 0) << v.err;
+  const auto r = runBinary("render" + flags + " -o " + (dir / "r.png").string(), dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const auto warnings = [](const std::string& err, const std::string& command) {
+    std::string lines;
+    std::size_t at = 0;
+    while ((at = err.find("tensorglyph " + command + ": --underlay", at)) != std::string::npos) {
+      const std::size_t end = err.find('\n', at);
+      lines += err.substr(at + command.size(), end - at - command.size()) + "\n";
+      at = end;
+    }
+    return lines;
+  };
+  EXPECT_EQ(warnings(v.err, "view"), warnings(r.err, "render"));
+  int vw = 0, vh = 0, rw = 0, rh = 0;
+  const auto vs = readRgba(dir / "v.png", vw, vh), rs = readRgba(dir / "r.png", rw, rh);
+  EXPECT_EQ(vw, rw);
+  EXPECT_EQ(vh, rh);
+  EXPECT_EQ(differing(vs, rs), 0u) << "the same scene, camera and defaults";
+  std::filesystem::remove_all(dir);
+}
+
 // A mesh toggled and switched by the script: each screenshot is the headless
 // render with the same mesh flags, pixel for pixel.
 TEST(View, ScriptTogglesAMeshAsRenderDrawsIt) {

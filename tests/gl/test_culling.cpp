@@ -1,6 +1,7 @@
 // Tier 3: culling (render/glyph_culling.h) changes what a frame costs, never
 // what it shows. Exact equality is the right bound here: culled and unculled
 // frames draw the same glyphs in the same order with the same shaders.
+#include "render/raster_glyphs.h"
 #include "render_fixture.h"
 
 #include <algorithm>
@@ -70,7 +71,7 @@ class Culling : public GlFixture {
     render::GBuffer target(ctx_->api(), cam.width, cam.height);
     r.upload(set);
     for (const auto& p : ps) r.render(cam, p, target);
-    return {r.readback(cam, target), r.drawnGlyphs(), r.culling().passes(), r.culling().indirect()};
+    return {r.readback(cam, target), r.drawnGlyphs(), render::asRaster(r.glyphPath()).culling().passes(), render::asRaster(r.glyphPath()).culling().indirect()};
   }
 };
 

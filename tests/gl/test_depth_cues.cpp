@@ -71,21 +71,21 @@ TEST_F(DepthCues, OffAllocatesNothingAndLeavesTheFrameBitIdentical) {
   r.render(cam, off, target);
   const auto before = r.readback(cam, target);
   const std::size_t bytes = r.gpuBytes();
-  EXPECT_EQ(r.aoPass(), nullptr);
-  EXPECT_EQ(r.outlinePass(), nullptr);
+  EXPECT_EQ(r.pass("ao"), nullptr);
+  EXPECT_EQ(r.pass("outline"), nullptr);
 
   render::FrameParams outlines = off;
   outlines.outline.enabled = true;
   r.render(cam, outlines, target);
-  EXPECT_EQ(r.aoPass(), nullptr) << "outlines alone build no occlusion pass";
-  EXPECT_NE(r.outlinePass(), nullptr);
+  EXPECT_EQ(r.pass("ao"), nullptr) << "outlines alone build no occlusion pass";
+  EXPECT_NE(r.pass("outline"), nullptr);
   EXPECT_EQ(r.gpuBytes(), bytes) << "the outline pass holds no texture";
   EXPECT_NE(r.readback(cam, target).rgba, before.rgba);
 
   render::FrameParams both = outlines;
   both.ao.enabled = true;
   r.render(cam, both, target);
-  ASSERT_NE(r.aoPass(), nullptr);
+  ASSERT_NE(r.pass("ao"), nullptr);
   // Two R16F textures at the frame's size: the raw and the blurred occlusion.
   EXPECT_EQ(r.gpuBytes(), bytes + std::size_t(2 * 2 * cam.width * cam.height));
   EXPECT_NE(r.readback(cam, target).rgba, before.rgba);

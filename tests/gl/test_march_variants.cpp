@@ -3,6 +3,7 @@
 // mixed one, which keeps rays that miss a mixed-sign glyph's double pyramid
 // out of the march, change what a frame costs, never what it shows: byte for
 // byte the general march's frame.
+#include "render/raster_glyphs.h"
 #include "render_fixture.h"
 
 #include "app/scene.h"
@@ -72,8 +73,8 @@ class MarchVariants : public GlFixture {
     p.iterationStats = true;
     r.render(cam, p, target);
     return {r.readback(cam, target), r.iterationStats(),
-            {r.marchDraws(render::MarchVariant::General), r.marchDraws(render::MarchVariant::Convex),
-             r.marchDraws(render::MarchVariant::Mixed)}};
+            {render::asRaster(r.glyphPath()).marchDraws(render::MarchVariant::General), render::asRaster(r.glyphPath()).marchDraws(render::MarchVariant::Convex),
+             render::asRaster(r.glyphPath()).marchDraws(render::MarchVariant::Mixed)}};
   }
 };
 

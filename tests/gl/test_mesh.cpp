@@ -149,12 +149,13 @@ TEST_F(Meshes, UnusedModesCostNothing) {
   render::GBuffer target(ctx_->api(), cam.width, cam.height);
   r.upload(set);
   r.render(cam, {}, target);
-  EXPECT_EQ(r.contextBytes(), 0u);
+  const std::size_t glyphsAlone = r.gpuBytes();
   auto& item = static_cast<render::MeshItem&>(
       r.addContext(std::make_unique<render::MeshItem>(ctx_->api(), *lib_, "box", mesh.positions, mesh.triangles)));
   r.render(cam, {}, target);
   const std::size_t buffers = 12 * 8 + 12 * 12;
   EXPECT_EQ(item.gpuBytes(), buffers);
+  EXPECT_EQ(r.gpuBytes(), glyphsAlone + buffers);
   EXPECT_FALSE(item.forwardProgramBuilt());
   render::MeshParams mp;
   mp.mode = render::MeshMode::SeeThrough;

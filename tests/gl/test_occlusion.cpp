@@ -3,6 +3,7 @@
 // Exact equality is the bound: a skipped fragment is one that would have lost
 // the depth test.
 #include "frame_compare.h"
+#include "render/raster_glyphs.h"
 #include "render_fixture.h"
 
 #include <algorithm>
@@ -56,7 +57,7 @@ class Occlusion : public GlFixture {
     r.upload(set);
     p.iterationStats = true;
     r.render(cam, p, target);
-    return {r.readback(cam, target), r.iterationStats(), r.occlusionPrepasses()};
+    return {r.readback(cam, target), r.iterationStats(), render::asRaster(r.glyphPath()).occlusionPrepasses()};
   }
   // A superquadric frame (gamma 3 unless given) whose pre-pass's occluder
   // depth is read back, rows bottom-up as GL's, with the image and the
@@ -75,7 +76,7 @@ class Occlusion : public GlFixture {
     r.render(cam, test::superquadricParams(scale, gamma), target);
     std::vector<float> depth(std::size_t(cam.width) * cam.height);
     gl.GetTextureImage(target.occluderDepth(), 0, GL_DEPTH_COMPONENT, GL_FLOAT, GLsizei(depth.size() * 4), depth.data());
-    return {r.readback(cam, target), std::move(depth), r.occlusionPrepasses()};
+    return {r.readback(cam, target), std::move(depth), render::asRaster(r.glyphPath()).occlusionPrepasses()};
   }
 };
 
@@ -249,7 +250,7 @@ TEST_F(Occlusion, HiddenSpheresSkipTheGeometryPass) {
     render::FrameParams p = test::superquadricParams(scale, 3.0);
     p.occlusionPrepass = prepass;
     const GLuint64 fragments = test::countedBy(gl, GL_FRAGMENT_SHADER_INVOCATIONS, [&] { r.render(cam, p, target); });
-    EXPECT_EQ(r.occlusionPrepasses(), prepass ? 1u : 0u);
+    EXPECT_EQ(render::asRaster(r.glyphPath()).occlusionPrepasses(), prepass ? 1u : 0u);
     img = r.readback(cam, target);
     return double(fragments);
   };

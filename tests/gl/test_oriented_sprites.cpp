@@ -3,6 +3,7 @@
 // bound, as for point sprites: every pixel that can hit lies in both the
 // axis-aligned rectangle and the oriented quad, with the same margin.
 #include "frame_compare.h"
+#include "render/raster_glyphs.h"
 #include "render_fixture.h"
 
 #include <random>
@@ -56,7 +57,7 @@ class OrientedSprites : public GlFixture {
     render::GBuffer target(gl, cam.width, cam.height);
     r.upload(set);
     const GLuint64 fragments = test::countedBy(gl, GL_FRAGMENT_SHADER_INVOCATIONS, [&] { r.render(cam, p, target); });
-    return {r.readback(cam, target), r.culling().pointSprites(), fragments};
+    return {r.readback(cam, target), render::asRaster(r.glyphPath()).culling().pointSprites(), fragments};
   }
   // The same frame drawn as quads along the glyphs' projected outlines and
   // as axis-aligned quads (point sprites off in both).

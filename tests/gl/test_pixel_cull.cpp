@@ -2,6 +2,7 @@
 // glyphs that no pixel centre can see before the draw: it changes which
 // glyphs reach the vertex stage, never the image.
 #include "frame_compare.h"
+#include "render/raster_glyphs.h"
 #include "render_fixture.h"
 
 #include <string_view>
@@ -31,7 +32,7 @@ class PixelCull : public GlFixture {
     render::GBuffer target(ctx_->api(), cam.width, cam.height);
     r.upload(set);
     r.render(cam, p, target);
-    return {r.readback(cam, target), r.drawnGlyphs(), r.culling().passes().pixelCulls};
+    return {r.readback(cam, target), r.drawnGlyphs(), render::asRaster(r.glyphPath()).culling().passes().pixelCulls};
   }
 };
 

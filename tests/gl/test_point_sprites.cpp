@@ -3,6 +3,7 @@
 // see the same pixels, since every pixel a point's square adds outside the
 // rectangle misses the glyph.
 #include "frame_compare.h"
+#include "render/raster_glyphs.h"
 #include "render_fixture.h"
 
 
@@ -24,7 +25,7 @@ class PointSprites : public GlFixture {
     render::GBuffer target(ctx_->api(), cam.width, cam.height);
     r.upload(set);
     r.render(cam, p, target);
-    return {r.readback(cam, target), r.culling().pointSprites(), r.culling().indirect()};
+    return {r.readback(cam, target), render::asRaster(r.glyphPath()).culling().pointSprites(), render::asRaster(r.glyphPath()).culling().indirect()};
   }
 };
 

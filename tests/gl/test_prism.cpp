@@ -6,6 +6,7 @@
 #include <glm/gtc/quaternion.hpp>
 
 #include "ref/prism_ref.h"
+#include "render/raster_glyphs.h"
 #include "render_fixture.h"
 
 using namespace tg;
@@ -172,21 +173,21 @@ TEST_F(GlFixture, PrismKindsRunOnlyTheirOwnProgram) {
   render::FrameParams p;
   p.scale = 0.6;
   r.render(cam, p, target);
-  EXPECT_FALSE(r.kindBuilt(render::GlyphKind::Box));
-  EXPECT_FALSE(r.kindBuilt(render::GlyphKind::Cylinder));
+  EXPECT_FALSE(render::asRaster(r.glyphPath()).kindBuilt(render::GlyphKind::Box));
+  EXPECT_FALSE(render::asRaster(r.glyphPath()).kindBuilt(render::GlyphKind::Cylinder));
   p.glyph = render::GlyphKind::Box;
   p.shadow.enabled = true;  // the shadow map draws glyphs too
   r.render(cam, p, target);
-  EXPECT_TRUE(r.kindBuilt(render::GlyphKind::Box));
-  EXPECT_FALSE(r.kindBuilt(render::GlyphKind::Cylinder));
-  EXPECT_EQ(r.occlusionPrepasses(), 0u);
-  EXPECT_EQ(r.shadowMapPasses(), 1u);
+  EXPECT_TRUE(render::asRaster(r.glyphPath()).kindBuilt(render::GlyphKind::Box));
+  EXPECT_FALSE(render::asRaster(r.glyphPath()).kindBuilt(render::GlyphKind::Cylinder));
+  EXPECT_EQ(render::asRaster(r.glyphPath()).occlusionPrepasses(), 0u);
+  EXPECT_EQ(r.passRuns("shadow"), 1u);
   const auto img = r.readback(cam, target);
   EXPECT_GT(std::count_if(img.id.begin(), img.id.end(), [](std::uint32_t id) { return id != ref::kNoGlyph; }), 500);
   // Neither the ellipsoid nor the box frames compiled the Newton march; the
   // first superquadric frame does, and draws with it.
-  EXPECT_FALSE(r.marchProgramBuilt());
+  EXPECT_FALSE(render::asRaster(r.glyphPath()).marchProgramBuilt());
   p.glyph = render::GlyphKind::Superquadric;
   r.render(cam, p, target);
-  EXPECT_TRUE(r.marchProgramBuilt());
+  EXPECT_TRUE(render::asRaster(r.glyphPath()).marchProgramBuilt());
 }

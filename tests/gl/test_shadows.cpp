@@ -3,6 +3,7 @@
 // lit/shadowed state agrees with exact shadow rays (ref/shadow_ref.h) outside
 // the penumbra, with no acne and no light leaking at contacts; and two small
 // golden images.
+#include "render/shadow_pass.h"
 #include "render_fixture.h"
 
 #include <OpenImageIO/imageio.h>
@@ -139,14 +140,14 @@ TEST_F(Shadows, OffIsTodaysFrameBitForBitAndBuildsNothing) {
     r.render(cam, p, target);
     const render::FrameImage before = r.readback(cam, target);
     const std::size_t bytes = r.gpuBytes();
-    EXPECT_FALSE(r.shadowPassBuilt());
-    EXPECT_EQ(r.shadowMapPasses(), 0u);
+    EXPECT_EQ(r.pass("shadow"), nullptr);
+    EXPECT_EQ(r.passRuns("shadow"), 0u);
 
     p.shadow.enabled = true;
     r.render(cam, p, target);
     const render::FrameImage shadowed = r.readback(cam, target);
-    EXPECT_TRUE(r.shadowPassBuilt());
-    EXPECT_EQ(r.shadowMapPasses(), 1u);
+    EXPECT_NE(r.pass("shadow"), nullptr);
+    EXPECT_EQ(r.passRuns("shadow"), 1u);
     // The map, and for superquadrics the pre-pass's occluder depth and pyramid.
     const std::size_t map = std::size_t(p.shadow.mapSize) * std::size_t(p.shadow.mapSize) * 4;
     if (glyph == render::GlyphKind::Ellipsoid) EXPECT_EQ(r.gpuBytes(), bytes + map);
@@ -157,9 +158,9 @@ TEST_F(Shadows, OffIsTodaysFrameBitForBitAndBuildsNothing) {
     p.shadow.enabled = false;
     r.render(cam, p, target);
     EXPECT_TRUE(sameBits(before, r.readback(cam, target)));
-    EXPECT_FALSE(r.shadowPassBuilt());
+    EXPECT_EQ(r.pass("shadow"), nullptr);
     EXPECT_EQ(r.gpuBytes(), bytes);
-    EXPECT_EQ(r.shadowMapPasses(), 1u);
+    EXPECT_EQ(r.passRuns("shadow"), 1u);
   }
 }
 
@@ -188,7 +189,7 @@ TEST_F(Shadows, ComposeWithAmbientOcclusion) {
   p.shadow.enabled = false;
   r.render(cam, p, target);
   EXPECT_TRUE(sameBits(aoOnly, r.readback(cam, target)));
-  EXPECT_FALSE(r.shadowPassBuilt());
+  EXPECT_EQ(r.pass("shadow"), nullptr);
 }
 
 // The map's side follows the view: about a texel per pixel at the glyphs, in

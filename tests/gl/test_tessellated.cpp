@@ -1,5 +1,6 @@
 // Tier 3: the tessellated baseline converges to the exact superquadric as its
 // resolution grows, so `bench scale` compares like with like.
+#include "render/raster_glyphs.h"
 #include "render_fixture.h"
 
 #include "data-synthetic/generators.h"
@@ -39,11 +40,11 @@ TEST_F(GlFixture, TessellatedProgramIsBuiltByTheFirstTessellatedFrame) {
   render::GBuffer target(ctx_->api(), cam.width, cam.height);
   r.upload(set);
   r.render(cam, p, target);
-  EXPECT_FALSE(r.tessellatedProgramBuilt());
+  EXPECT_FALSE(render::asRaster(r.glyphPath()).tessellatedProgramBuilt());
   p.gamma = 3.0;
   p.tessellation = 16;
   r.render(cam, p, target);
-  EXPECT_TRUE(r.tessellatedProgramBuilt());
+  EXPECT_TRUE(render::asRaster(r.glyphPath()).tessellatedProgramBuilt());
   const auto late = r.readback(cam, target);
   const auto fresh = draw(set, cam, p);
   ASSERT_EQ(late.id.size(), fresh.id.size());

@@ -1,8 +1,8 @@
-#include "render/prism_kinds.h"
+#include "render/kind_programs.h"
 
 #include <stdexcept>
-
-#include "render/renderer.h"
+#include <string>
+#include <vector>
 
 namespace tg::render {
 
@@ -24,33 +24,32 @@ void setGlyphUniforms(const gl::Program& prog, const FrameParams& p, const Frame
   if (changed(&FrameParams::color)) prog.set("uColorMode", int(p.color));
 }
 
-bool isPrismKind(GlyphKind k) { return k == GlyphKind::Cylinder || k == GlyphKind::Box; }
-
-const gl::Program& PrismKinds::program(GlyphKind k, const FrameParams& p) {
-  if (!isPrismKind(k)) throw std::invalid_argument("PrismKinds::program: not a cylinder or box kind");
-  auto& slot = k == GlyphKind::Cylinder ? cylinder_ : box_;
+const gl::Program& KindPrograms::program(GlyphKind k, const FrameParams& p) {
+  const GlyphKindInfo& kind = glyphKind(k);
+  if (kind.draw != KindDraw::ClosedForm)
+    throw std::invalid_argument("KindPrograms::program: " + std::string(kind.name) + " is no closed-form kind");
+  auto& slot = programs_[std::size_t(k)];
   if (!slot) {
-    const auto stages = {gl::StageSource{GL_VERTEX_SHADER, "prism.vert"},
-                         gl::StageSource{GL_FRAGMENT_SHADER, "prism.frag"}};
-    slot = k == GlyphKind::Cylinder ? std::make_unique<gl::Program>(gl_, lib_, stages, std::vector<std::string_view>{"TG_CYLINDER"})
-                                    : std::make_unique<gl::Program>(gl_, lib_, stages);
+    const auto stages = {gl::StageSource{GL_VERTEX_SHADER, kind.vertex},
+                         gl::StageSource{GL_FRAGMENT_SHADER, kind.fragment}};
+    std::vector<std::string_view> on;
+    if (!kind.option.empty()) on.push_back(kind.option);
+    slot = std::make_unique<gl::Program>(gl_, lib_, stages, std::move(on));
     setGlyphUniforms(*slot, p, nullptr);
     slot->set("uMdRange", mdRange_);
   }
   return *slot;
 }
 
-void PrismKinds::setParams(const FrameParams& p, const FrameParams* old) const {
-  for (const auto* prog : {cylinder_.get(), box_.get()})
+void KindPrograms::setParams(const FrameParams& p, const FrameParams* old) const {
+  for (const auto& prog : programs_)
     if (prog) setGlyphUniforms(*prog, p, old);
 }
 
-void PrismKinds::setMdRange(glm::vec2 mdRange) {
+void KindPrograms::setMdRange(glm::vec2 mdRange) {
   mdRange_ = mdRange;
-  for (const auto* prog : {cylinder_.get(), box_.get()})
+  for (const auto& prog : programs_)
     if (prog) prog->set("uMdRange", mdRange_);
 }
-
-bool PrismKinds::built(GlyphKind k) const { return (k == GlyphKind::Cylinder ? cylinder_ : box_) != nullptr; }
 
 }  // namespace tg::render

@@ -1,0 +1,41 @@
+// Every texture unit, image unit and storage-buffer binding the renderer's
+// passes use: one table that the GLSL (#include "lib/bindings.h", embedded
+// like the other shaders) and the C++ (#include "shaders/lib/bindings.h")
+// both read, so that a binding cannot be matched by comment only. Only
+// #define lines and comments: valid in both languages.
+#ifndef TG_BINDINGS_H
+#define TG_BINDINGS_H
+
+// Texture units. The lighting pass reads the G-buffer at 0..2; the deferred
+// effects (AO, outlines) read depth where lighting reads albedo.
+#define TG_UNIT_ALBEDO 0
+#define TG_UNIT_NORMAL 1
+#define TG_UNIT_ID 2
+#define TG_UNIT_EFFECT_DEPTH 0
+#define TG_UNIT_MESH_SCENE_DEPTH 2   // mesh.frag's forward (see-through) pass
+#define TG_UNIT_OCCLUDER_DEPTH 3     // lib/occlusion.glsl, occluder_pyramid.comp
+#define TG_UNIT_OCCLUDER_PYRAMID 4
+#define TG_UNIT_AO 6                 // the blurred occlusion, for lighting (TG_AO)
+#define TG_UNIT_AO_RAW 6             // the raw occlusion, for the blur
+#define TG_UNIT_SHADOW_SCENE_DEPTH 7 // lib/shadow.glsl
+#define TG_UNIT_SHADOW_MAP 8
+#define TG_UNIT_LEGEND_ATLAS 0
+#define TG_UNIT_SLICE 0              // a slice plane's underlay
+#define TG_UNIT_RESOLVE_DEPTH 0      // depth_resolve.frag: a path's float window depth
+
+// Image units: the occluder pyramid's reduction.
+#define TG_IMAGE_PYRAMID_FINER 0
+#define TG_IMAGE_PYRAMID_COARSER 1
+
+// Shader storage buffers.
+#define TG_SSBO_GLYPHS 0             // lib/glyph_record.glsl
+#define TG_SSBO_ITERATION_STATS 1
+#define TG_SSBO_KEPT_INDEX 2         // culling (render/glyph_culling.h)
+#define TG_SSBO_RANGES 3
+#define TG_SSBO_KEPT_COUNT 4
+#define TG_SSBO_COMMANDS 5
+#define TG_SSBO_VISIBLE 6
+#define TG_SSBO_LEGEND_VERTICES 7    // not 0: the records stay bound for the next frame
+#define TG_SSBO_MESH_VERTICES 9
+
+#endif

@@ -1,0 +1,132 @@
+#pragma once
+// What one frame is drawn with: every parameter the renderer, the CLI, the
+// viewer, its scripts, Python and ParaView set. GL-free, so that option
+// handling includes this rather than the renderer.
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "render/glyph_kind.h"
+#include "render/legend_params.h"
+#include "tensor/glyph_scale.h"
+
+namespace tg::render {
+
+enum class ColorMode { DEC = 0, FA = 1, MD = 2, CL = 3, CP = 4, Sign = 5 };
+
+struct Lighting {
+  glm::vec3 keyDirVC{-0.45f, 0.55f, 0.70f};  // upper left, in front
+  float ambient = 0.22f, head = 0.55f, key = 0.40f, specular = 0.25f, shininess = 40.0f;
+  bool operator==(const Lighting&) const = default;
+};
+
+// Newton march settings; the defaults come from `tensorglyph bench accuracy`
+// (README, "Speed against accuracy of the superquadric march").
+struct MarchParams {
+  int maxIterations = 10;
+  double epsilon = 1e-4;  // in units of the glyph's size
+  bool operator==(const MarchParams&) const = default;
+};
+
+// The march's programs (shaders/lib/superquadric_march.glsl): the general
+// one, one for definite glyphs' convex shapes and one for mixed-sign
+// glyphs' Schultz-Kindlmann shapes, each exact for its group.
+enum class MarchVariant { General = 0, Convex = 1, Mixed = 2 };
+
+struct AoParams {
+  bool enabled = false;
+  // Sample radius in world units; 0 picks kAutoRadius typical glyph
+  // diameters (GlyphRenderer::aoRadiusWC), which follows the glyph scale.
+  double radius = 0.0;
+  // Occlusion weight: 0 leaves the light alone, 1 takes all ambient and
+  // head light from a fully occluded point.
+  double strength = 1.0;
+  int samples = 16;  // hemisphere points per pixel
+  static constexpr double kAutoRadius = 1.0;
+  static constexpr int kMinSamples = 4, kMaxSamples = 64;
+  static constexpr double kMaxStrength = 4.0;
+  bool operator==(const AoParams&) const = default;
+};
+
+struct OutlineParams {
+  bool enabled = false;
+  double width = 1.5;                       // pixels
+  glm::vec4 color{0.0f, 0.0f, 0.0f, 1.0f};  // RGBA, alpha blends the line over the glyph
+  double creaseDeg = 45.0;                  // normals turning more than this make a crease
+  static constexpr double kMaxWidth = 8.0;
+  bool operator==(const OutlineParams&) const = default;
+};
+
+// One home for the shadow options: the CLI, the viewer and scripts read these
+// defaults. Lengths in map texels are of the light-space map, so that they
+// keep their meaning when the map is fitted to another region.
+struct ShadowParams {
+  bool enabled = false;
+  int mapSize = 2048;  // texels per side of the square map, at most (see mapDensity)
+  // Map texels per view pixel at the glyph box's centre: the map's side is
+  // that, in multiples of 64, up to mapSize. A map finer than the view
+  // resolves nothing more and costs as a second geometry pass at its size.
+  // 0: always mapSize.
+  float mapDensity = 1.0f;
+  // Width of the soft edge (the PCF kernel) as a fraction of the map's side
+  // in world units: independent of mapSize, which sets only its sharpness.
+  float penumbra = 0.004f;
+  float strength = 1.0f;  // share of the key light removed in full shadow
+  // Depth of each PCF texel compared against the receiver's tangent plane
+  // there (exact G-buffer normals): a plane has no acne at any slope, and a
+  // convex glyph curves away from the light, never into its own shadow.
+  bool receiverPlane = true;
+  float bias = 0.5f;          // constant, along the light, in map texels
+  float normalOffset = 0.0f;  // lookup moved along the normal, in map texels (the classic remedy)
+  bool operator==(const ShadowParams&) const = default;
+};
+
+inline constexpr int kMinShadowMapSize = 64, kMaxShadowMapSize = 8192;
+inline constexpr float kMaxShadowPenumbra = 0.1f, kMaxShadowBias = 64.0f;
+
+// Glyphs whose centre lies in [lo, hi] along a WC axis (ParaView's and
+// Slicer's slice of a glyph volume, as thick as asked).
+struct Slab {
+  int axis = -1;  // 0, 1, 2; -1: off
+  double lo = 0, hi = 0;
+  bool operator==(const Slab&) const = default;
+};
+
+struct FrameParams {
+  double scale = 1.0;  // world units per eigenvalue unit
+  tensor::SizeMapping sizing;  // magnitude mapping and clamp (tensor/glyph_scale.h); default: none
+  double faMin = 0.0;
+  Slab slab;
+  GlyphKind glyph = GlyphKind::Ellipsoid;
+  double gamma = 3.0;  // superquadric sharpness; 0 makes definite tensors ellipsoids
+  MarchParams march;
+  bool iterationStats = false;  // count Newton iterations (a shader variant; off costs nothing)
+  bool frustumCulling = true;  // off only to measure what it saves
+  // Superquadrics: an exact ellipsoid depth pass first, so that fragments of
+  // glyphs hidden behind it skip the march (off only to measure what it saves).
+  bool occlusionPrepass = true;
+  // Superquadrics: definite and mixed-sign glyphs by their march variants,
+  // else by the general march (off only to compare).
+  bool marchVariants = true;
+  // One point sprite per glyph where every glyph's rectangle fits a point,
+  // else two triangles (render/sprite_primitive.h; off only to measure).
+  bool pointSprites = true;
+  // Quads along a glyph's projected axes where smaller than its axis-aligned
+  // rectangle (shaders/lib/sprite.glsl; off only to measure).
+  bool orientedSprites = true;
+  // On llvmpipe with small glyphs, a per-frame pass keeps only glyphs that a
+  // pixel centre can see (render/glyph_culling.h; off only to measure).
+  bool pixelCull = true;
+  // > 0: draw the tessellated baseline at this resolution instead of ray
+  // casting (superquadrics at `gamma`; render/tessellated.h).
+  int tessellation = 0;
+  ColorMode color = ColorMode::DEC;
+  glm::vec4 background{0.08f, 0.08f, 0.10f, 1.0f};
+  Lighting light;
+  LegendParams legend;
+  AoParams ao;            // deferred depth cues: off by default, and then
+  OutlineParams outline;  // no pass of theirs is built, run or allocated
+  ShadowParams shadow;    // soft shadows from the key light (render/shadow_pass.h)
+  bool operator==(const FrameParams&) const = default;
+};
+
+}  // namespace tg::render

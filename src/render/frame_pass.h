@@ -1,0 +1,63 @@
+#pragma once
+// The frame as declared passes. Each pass names the G-buffer attachments it
+// reads and writes (render/gbuffer.h; its own textures are its own), and the
+// renderer (render/renderer.h) declares, in frame order, when each runs: a
+// pass is built on the first frame that enables it and released by the first
+// that does not, so a disabled pass is never built, run or allocated.
+// Bindings are those of shaders/lib/bindings.h, shared with the GLSL.
+#include <cstddef>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "gl/program.h"
+#include "render/camera.h"
+#include "render/context_item.h"
+#include "render/frame_params.h"
+#include "render/gbuffer.h"
+#include "render/legend_key.h"
+
+namespace tg::render {
+
+class GlyphPath;
+class ShadowPass;
+
+// What the overlays show of the uploaded glyphs: the ranges they are coloured by.
+struct UploadedRanges {
+  float mdMin = 0, mdMax = 0;         // the uMdRange uniform
+  double eigenMin = 0, eigenMax = 0;  // signed, over the glyphs
+  std::vector<UnderlayKey> underlays{};  // of the visible context items, each once
+};
+
+// What a pass is given: the frame's camera, parameters and target, and what
+// the renderer knows of the scene.
+struct PassFrame {
+  const Camera& cam;
+  const FrameParams& p;
+  const GBuffer& target;
+  double aoRadiusWC;  // GlyphRenderer::aoRadiusWC(p)
+  const UploadedRanges& ranges;
+  GlyphPath& glyphs;  // the shadow map draws its casters by it
+  std::span<const std::unique_ptr<ContextItem>> context;
+  const ShadowPass* shadow;  // the key light's map, when this frame drew one
+};
+
+class FramePass {
+ public:
+  virtual ~FramePass() = default;
+  virtual std::span<const Attachment> reads() const = 0;
+  virtual std::span<const Attachment> writes() const = 0;
+  virtual void run(const PassFrame& f) = 0;
+  virtual std::size_t gpuBytes() const = 0;
+};
+
+using PassFactory = std::unique_ptr<FramePass> (*)(const gl::Api&, const gl::ShaderLibrary&);
+
+// A declared pass: its name, the frames it runs in and how it is built.
+struct PassDecl {
+  const char* name;
+  bool (*enabled)(const FrameParams& p);
+  PassFactory make;
+};
+
+}  // namespace tg::render
