@@ -118,7 +118,8 @@ Count outOfPlane(const std::vector<double>& rows, const NiftiLayout& l, int norm
   return c;
 }
 
-// Why the reading in `l` fails a criterion, or "".
+// Why the reading in `l` is implausible (fails a criterion clearly: more than
+// half indefinite, more than a tenth with out-of-plane shear), or "".
 std::string failure(const std::vector<double>& rows, const NiftiLayout& l, const Plausibility& p) {
   const auto as = [&] { return std::string(" as ") + l.name + " (" + l.order + ")"; };
   if (p.diffusion) {
@@ -129,12 +130,27 @@ std::string failure(const std::vector<double>& rows, const NiftiLayout& l, const
   }
   if (p.planeNormal >= 0) {
     const Count c = outOfPlane(rows, l, p.planeNormal);
-    if (100 * c.failing > c.sampled)
+    if (10 * c.failing > c.sampled)
       return std::to_string(c.failing) + " of " + std::to_string(c.sampled) + " sampled tensors have out-of-plane shear (" +
              kShearNames[p.planeNormal] + ")" + as() + ", though the points lie in a plane of constant " +
              kAxisNames[p.planeNormal] + ", where a plate's or a 2-D model's is zero";
   }
   return "";
+}
+
+// Whether the reading in `l` is plausible: at most a fifth indefinite, at
+// most 1% with out-of-plane shear. Between the two bounds a reading is
+// neither offered nor refused.
+bool plausible(const std::vector<double>& rows, const NiftiLayout& l, const Plausibility& p) {
+  if (p.diffusion) {
+    const Count c = indefinite(rows, l);
+    if (5 * c.failing > c.sampled) return false;
+  }
+  if (p.planeNormal >= 0) {
+    const Count c = outOfPlane(rows, l, p.planeNormal);
+    if (100 * c.failing > c.sampled) return false;
+  }
+  return true;
 }
 
 }  // namespace
@@ -189,7 +205,7 @@ LayoutAdvice adviseLayout(const LayoutSample& sample, const NiftiLayout& chosen,
     return true;
   };
   for (const NiftiLayout& l : niftiLayouts()) {
-    if (!(l.inputs & input) || same(l, chosen) || !failure(rows, l, criteria).empty()) continue;
+    if (!(l.inputs & input) || same(l, chosen) || !plausible(rows, l, criteria)) continue;
     auto g = std::find_if(groups.begin(), groups.end(), [&](const auto& grp) { return same(*grp[0], l); });
     if (g == groups.end()) groups.push_back({&l});
     else g->push_back(&l);

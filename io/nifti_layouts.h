@@ -53,15 +53,19 @@ struct FrameMap {
 FrameMap tensorFrameMap(TensorFrame frame, const double axesWC[9], bool fromAffine);
 
 // Whether a reading of the six stored values is plausible. A reading is
-// the tensors one layout makes of them; it is plausible when it passes every
-// criterion that applies to the input:
-//  - diffusion (NIfTI, array volumes, points in the default order): at most
-//    half of the sampled tensors are indefinite beyond 1% of their largest
-//    component (positive semi-definite within noise);
+// the tensors one layout makes of them. Two criteria, each applying to some
+// inputs, with a gap between "plausible" and "implausible" where nothing is
+// offered or refused:
+//  - diffusion (NIfTI, array volumes, points in the default order): a
+//    tensor is indefinite when a principal minor is below -1% of its largest
+//    component (to the minor's power); a reading is plausible when at most a
+//    fifth of the sampled tensors are (positive semi-definite within noise;
+//    DIPY's small_64D fit: 0 of 1000), implausible when more than half are;
 //  - plane (points lying in a coordinate plane: a plate, a 2-D model, a free
-//    surface): at most 1% of the sampled tensors have an out-of-plane shear
-//    above 1e-3 of the field's largest component. Plane stress and plane
-//    strain both have none; a wrong order moves in-plane values there.
+//    surface): a tensor has out-of-plane shear when one is above 1e-3 of the
+//    sample's largest component; plausible when at most 1% have, implausible
+//    when more than 10% have. Plane stress and plane strain have none; a
+//    wrong order moves in-plane values there.
 // With no criterion nothing can tell: a stress field may be indefinite.
 struct Plausibility {
   bool diffusion = false;
