@@ -210,6 +210,11 @@ LayoutAdvice adviseLayout(const LayoutSample& sample, const NiftiLayout& chosen,
     if (g == groups.end()) groups.push_back({&l});
     else g->push_back(&l);
   }
+  // Judged as stress (no diffusion criterion), a group is named by its FEM
+  // orders first: a plate's S is abaqus's, whatever else reads it alike.
+  if (!criteria.diffusion)
+    for (auto& g : groups)
+      std::stable_partition(g.begin(), g.end(), [](const NiftiLayout* l) { return !(l->inputs & kNiftiInput); });
   const auto groupText = [&](const std::vector<const NiftiLayout*>& g) {
     std::string s = name(*g[0]);
     for (std::size_t k = 1; k < g.size(); ++k) s += std::string(k == 1 ? " (or " : ", ") + g[k]->name;
