@@ -16,7 +16,8 @@ std::string layoutHelp() {
   const auto& all = io::niftiLayouts();
   for (std::size_t k = 0; k < all.size(); ++k) {
     const io::NiftiLayout& l = all[k];
-    h += std::string(k ? ", " : "") + l.name + " (" + l.order +
+    const bool alias = k > 0 && all[k - 1].sym == l.sym && all[k - 1].inputs == l.inputs;
+    h += std::string(k ? ", " : "") + l.name + " (" + (alias ? std::string("as ") + all[k - 1].name : l.order) +
          (l.inputs & io::kNiftiInput ? "" : "; not NIfTI") + (l.inputs & io::kVtkInput ? "" : "; not VTK") + ")";
   }
   return h + "; default: the NIfTI header's, VTK's own";
