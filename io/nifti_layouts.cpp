@@ -46,6 +46,12 @@ std::string layoutChoices(unsigned input) {
 
 bool isLayoutName(const std::string& name) { return niftiLayoutNamed(name) != nullptr; }
 
+std::string unusableLayout(std::string_view name, unsigned input, const char* inputName) {
+  const std::string n(name);
+  return (niftiLayoutNamed(name) ? "--layout " + n + " does not apply to " + inputName : "unknown layout \"" + n + "\"") +
+         "; choose " + layoutChoices(input);
+}
+
 std::optional<TensorFrame> tensorFrameNamed(std::string_view name) {
   if (name == "voxel") return TensorFrame::Voxel;
   if (name == "fsl") return TensorFrame::Fsl;

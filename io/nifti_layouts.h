@@ -37,6 +37,9 @@ const NiftiLayout* niftiLayoutNamed(std::string_view name, unsigned input = kNif
 const std::vector<NiftiLayout>& niftiLayouts();
 // "fsl, nifti, mrtrix, vtk or paraview": the names for `input`, for messages.
 std::string layoutChoices(unsigned input);
+// Why `name` cannot be read for `input` (called `inputName` in the message):
+// unknown, or not for it; both list the names that are.
+std::string unusableLayout(std::string_view name, unsigned input, const char* inputName);
 std::optional<TensorFrame> tensorFrameNamed(std::string_view name);
 const char* tensorFrameName(TensorFrame f);
 inline constexpr const char* kTensorFrameChoices = "voxel, fsl or world";

@@ -374,7 +374,7 @@ Convention convention(const std::string& path, const nifti_image& nim, const Rea
   if (!opt.layout.empty()) {
     c.layout = niftiLayoutNamed(opt.layout, kNiftiInput);
     if (!c.layout)
-      fail(path, "--layout " + opt.layout + " does not apply to NIfTI; choose " + layoutChoices(kNiftiInput));
+      fail(path, unusableLayout(opt.layout, kNiftiInput, "NIfTI"));
   } else if (nim.intent_code == NIFTI_INTENT_SYMMATRIX) {
     c.layout = niftiLayoutNamed("nifti");
     c.layoutSource = "the SYMMATRIX intent; override with --layout";

@@ -274,7 +274,7 @@ const NiftiLayout& sixComponentOrder(vtkDataSet* ds, vtkDataArray* arr, const No
                                      const std::string& path, const ReadOptions& opt, TensorField& f) {
   const NiftiLayout* chosen = niftiLayoutNamed(opt.layout.empty() ? "vtk" : opt.layout, kVtkInput);
   if (!chosen)
-    fail(path, "--layout " + opt.layout + " does not apply to VTK; choose " + layoutChoices(kVtkInput));
+    fail(path, unusableLayout(opt.layout, kVtkInput, "VTK"));
   const vtkIdType n = arr->GetNumberOfTuples();
   LayoutSample sample{std::uint64_t(n)};
   const vtkIdType step = std::max<vtkIdType>(1, n / 16384);
