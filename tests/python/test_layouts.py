@@ -54,6 +54,24 @@ class Layouts(unittest.TestCase):
         with self.assertWarnsRegex(UserWarning, r'try layout="nifti"$'):
             tg.render(fit.lower_triangular(), affine=img.affine, layout="fsl", **OPTS)
 
+    def test_a_nibabel_image_is_refused_as_its_file_is(self):
+        """lower_triangular() saved as a plain 4-D NIfTI: the CLI refuses the
+        file, naming --layout nifti; the same image through nibabel once drew
+        it in FSL's order with a warning."""
+        import os
+        import tempfile
+        import nibabel as nib
+        img, fit = fit_small_64d()
+        saved = nib.Nifti1Image(fit.lower_triangular().astype(np.float32), img.affine)
+        with self.assertRaisesRegex(ValueError, r'only layout="nifti" reads them plausibly'):
+            tg.render(saved, **OPTS)
+        with tempfile.TemporaryDirectory() as d:
+            path = os.path.join(d, "lower.nii")
+            nib.save(saved, path)
+            with self.assertRaisesRegex(ValueError, r"only --layout nifti --frame voxel reads them plausibly"):
+                tg.render(path, **OPTS)
+        quiet(lambda: tg.render(saved, layout="nifti", **OPTS))
+
     def test_abaqus_vectors_need_their_order(self):
         """(N, 6) stress in Abaqus order with no layout: once read as FSL's
         order without a word. No order reads stress as diffusion tensors, and
