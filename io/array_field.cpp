@@ -70,34 +70,20 @@ bool symmetric(const double t[9]) {
 }
 
 const NiftiLayout& layoutNamed(std::string_view layout) {
-  const NiftiLayout* l = niftiLayoutNamed(layout);
-  if (!l) fail("layout", "unknown order \"" + std::string(layout) + "\"; choose fsl, nifti, mrtrix or vtk");
+  const NiftiLayout* l = niftiLayoutNamed(layout.empty() ? "fsl" : layout, kArrayInput);
+  if (!l) fail("layout", "unknown order \"" + std::string(layout) + "\"; choose " + layoutChoices(kArrayInput));
   return *l;
 }
 
-// Every step-th element's six stored values, for the order check that a
-// NIfTI file gets (implausibleLayoutWarning): a DIPY user's
-// fit.lower_triangular() is "nifti", not the default "fsl".
-class LayoutSample {
- public:
-  explicit LayoutSample(std::uint64_t count) : step_(std::max<std::uint64_t>(1, count / kElements)) {}
-  void offer(std::uint64_t index, const double v[6]) {
-    if (index % step_ == 0) rows_.insert(rows_.end(), v, v + 6);
-  }
-  void warnInto(TensorField& f, const NiftiLayout& chosen) const {
-    const std::size_t m = rows_.size() / 6;
-    std::vector<float> byComponent(rows_.size());
-    for (std::size_t e = 0; e < m; ++e)
-      for (std::size_t c = 0; c < 6; ++c) byComponent[c * m + e] = float(rows_[6 * e + c]);
-    if (std::string w = implausibleLayoutWarning(byComponent, m, chosen, true); !w.empty())
-      f.warnings.push_back(std::move(w));
-  }
-
- private:
-  static constexpr std::uint64_t kElements = 16384;
-  std::uint64_t step_;
-  std::vector<double> rows_;
-};
+// The order check a NIfTI file gets (adviseLayout), in Python's words: a
+// DIPY user's fit.lower_triangular() is "nifti", not the default "fsl".
+void adviseInto(TensorField& f, const LayoutSample& sample, const NiftiLayout& chosen, bool byDefault,
+                const Plausibility& criteria, bool refuseUnexplained) {
+  const LayoutAdvice a = adviseLayout(sample, chosen, byDefault, kArrayInput, criteria, pythonLayoutName,
+                                      refuseUnexplained);
+  if (!a.refusal.empty()) fail("layout", a.refusal);
+  if (!a.warning.empty()) f.warnings.push_back(a.warning);
+}
 
 }  // namespace
 
@@ -113,7 +99,7 @@ TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, co
     fail("positions", "shape " + shapeText(positions) + " is not (" + std::to_string(n) + ", 3)");
   if (std::uint64_t(n) > kMaxInputs) fail("tensors", "more than 2^32-256 tensors");
   if (full && !layout.empty()) fail("layout", "applies to (N, 6) tensors, not (N, 3, 3)");
-  const NiftiLayout* l = six ? &layoutNamed(layout.empty() ? "fsl" : layout) : nullptr;
+  const NiftiLayout* l = six ? &layoutNamed(layout) : nullptr;
   TensorField f;
   f.path = "<array>";
   f.description = "points from arrays, " + std::to_string(n) + " tensors";
@@ -122,6 +108,7 @@ TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, co
   const Selector sel(selection, f.path, nullptr);
   f.reserve(std::size_t(sel.keptBound(std::uint64_t(n))));
   LayoutSample sample{std::uint64_t(n)};
+  double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
   for (std::int64_t i = 0; i < n; ++i) {
     const auto where = [i] { return "index " + std::to_string(i); };
     double p[3], v[9], s6[6];
@@ -129,6 +116,7 @@ TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, co
     // addSym would count it as a tensor that overflows: it is the position.
     if (std::abs(p[0]) > FLT_MAX || std::abs(p[1]) > FLT_MAX || std::abs(p[2]) > FLT_MAX)
       fail("positions", "beyond single precision (3.4e38) at " + where());
+    for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
     // A tensor with a NaN/Inf component, or beyond single precision, is
     // skipped and counted by addSym, as the file readers skip it: the same
     // data as an array or a file draws alike.
@@ -143,7 +131,13 @@ TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, co
     }
     f.addSym(std::uint32_t(i), p, s6);
   }
-  if (six) sample.warnInto(f, *l);
+  // Points have no convention of their own: the default (FSL's, a
+  // diffusion order) must read them as diffusion tensors, or the one order
+  // that does is named, or the caller is asked for theirs. Points in a
+  // coordinate plane are also held to a 2-D field's zero out-of-plane shear.
+  if (six)
+    adviseInto(f, sample, *l, layout.empty(), Plausibility{layout.empty(), coordinatePlaneNormal(lo, hi)},
+               layout.empty());
   // As the VTK reader estimates it for points: spacing-mode sizing (the
   // default) needs it, and the same points must draw as their file does.
   f.sampleSpacing = estimateSampleSpacing(f.positions);
@@ -179,7 +173,7 @@ TensorField fieldFromVolume(const ArrayRef& tensors, std::string_view layout, co
   // A scale near 1e300 is not singular: its determinant overflows.
   if (!std::isfinite(det)) fail("affine", "too large: its determinant overflows double precision");
   if (!(std::abs(det) > 0)) fail("affine", "singular");
-  const NiftiLayout* l = six ? &layoutNamed(layout.empty() ? "fsl" : layout) : nullptr;
+  const NiftiLayout* l = six ? &layoutNamed(layout) : nullptr;
   std::optional<TensorFrame> named;
   if (!frame.empty()) {
     named = tensorFrameNamed(frame);
@@ -222,7 +216,9 @@ TensorField fieldFromVolume(const ArrayRef& tensors, std::string_view layout, co
         sink.push(v);
       }
   sink.finish();
-  if (six) sample.warnInto(f, *l);
+  // A volume's six values are a NIfTI file's: diffusion tensors, checked
+  // as readNifti checks them.
+  if (six) adviseInto(f, sample, *l, layout.empty(), Plausibility{true, -1}, false);
   return f;
 }
 

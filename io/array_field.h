@@ -26,15 +26,18 @@ struct ArrayRef {
   std::vector<std::int64_t> shape, strides;
 };
 
-// Points in WC: `tensors` (N, 3, 3), or (N, 6) in `layout` ("fsl", "nifti",
-// "mrtrix" or "vtk": the orders of nifti_layouts.h); `positions` (N, 3).
+// Points in WC: `tensors` (N, 3, 3), or (N, 6) in `layout` (a name of
+// nifti_layouts.h's table; "" is FSL's order, taken only where it reads them
+// as diffusion tensors: else the one order that does is named, or the
+// layout asked for, in a std::invalid_argument); `positions` (N, 3).
 // The tensors are in WC: a point set has no voxel axes to be in. The
 // selection is a point set's, as a VTK file's points get it: stride and ROI
 // apply, a slice or a mask is refused (io::Selector).
 TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, const ArrayRef& positions,
                             const Selection& selection = {});
 
-// A volume: `tensors` (X, Y, Z, 6) in `layout`, or (X, Y, Z, 3, 3);
+// A volume: `tensors` (X, Y, Z, 6) in `layout` ("" FSL's, refused as a
+// NIfTI file's default is: adviseLayout), or (X, Y, Z, 3, 3);
 // `affine` a row-major 4x4 from voxel index (i, j, k) to WC, as nibabel's
 // `img.affine`; `frame` the tensors' axes ("voxel", "fsl" or "world", as
 // --frame), by default the layout's (a (…, 3, 3) volume has none: it must be

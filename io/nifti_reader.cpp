@@ -372,8 +372,9 @@ Convention convention(const std::string& path, const nifti_image& nim, const Rea
     fail(path, o + " does not apply to NIfTI");
   Convention c{nullptr, TensorFrame::Fsl, "--layout", "--frame"};
   if (!opt.layout.empty()) {
-    c.layout = niftiLayoutNamed(opt.layout);
-    if (!c.layout) fail(path, "unknown layout \"" + opt.layout + "\"; choose " + kNiftiLayoutChoices);
+    c.layout = niftiLayoutNamed(opt.layout, kNiftiInput);
+    if (!c.layout)
+      fail(path, unusableLayout(opt.layout, kNiftiInput, "NIfTI"));
   } else if (nim.intent_code == NIFTI_INTENT_SYMMATRIX) {
     c.layout = niftiLayoutNamed("nifti");
     c.layoutSource = "the SYMMATRIX intent; override with --layout";
@@ -474,8 +475,13 @@ TensorField impl::readNifti(const std::string& path, const ReadOptions& opt) {
       nim->intent_code != NIFTI_INTENT_ESTIMATE)
     f.warnings.push_back(std::string("the header's intent is ") + nifti_intent_string(nim->intent_code) + " (" +
                          std::to_string(nim->intent_code) + "), not a symmetric matrix: its six values may be no tensor");
-  const std::string implausible = implausibleLayoutWarning(comps.floats(), std::size_t(keptCount), *conv.layout);
-  if (!implausible.empty()) f.warnings.push_back(implausible);
+  // Diffusion tensors are what NIfTI holds: a default order that reads them
+  // as indefinite, when one other order reads them right, is refused.
+  const LayoutAdvice advice =
+      adviseLayout(LayoutSample::ofComponents(comps.floats(), std::size_t(keptCount)), *conv.layout,
+                   opt.layout.empty(), kNiftiInput, Plausibility{true, -1}, cliNiftiLayoutName);
+  if (!advice.refusal.empty()) fail(path, advice.refusal);
+  if (!advice.warning.empty()) f.warnings.push_back(advice.warning);
   return f;
 }
 

@@ -29,10 +29,12 @@ const char* inputFormatName(InputFormat f) {
 }
 
 std::string inapplicableOption(InputFormat format, const ReadOptions& opt) {
-  // NRRD, VTK and MRtrix state their own component order and frame (kind and
-  // measurement frame; VTK's fixed order in world axes; MRtrix's in scanner
-  // space); only NIfTI leaves them to convention. Only VTK has named arrays; only NRRD has confidence.
-  if (format != InputFormat::Nifti && !opt.layout.empty()) return "--layout";
+  // NRRD and MRtrix state their own component order and frame (kind and
+  // measurement frame; MRtrix's in scanner space); NIfTI leaves both to
+  // convention, and a 6-component VTK array its order (VTK's own by default,
+  // but FEM codes write theirs), in world axes. Only VTK has named arrays;
+  // only NRRD has confidence.
+  if (format != InputFormat::Nifti && format != InputFormat::Vtk && !opt.layout.empty()) return "--layout";
   if (format != InputFormat::Nifti && !opt.frame.empty()) return "--frame";
   if (format != InputFormat::Vtk && !opt.arrayName.empty()) return "--array";
   if (format != InputFormat::Nrrd && opt.confidenceGiven) return "--confidence-min";

@@ -19,9 +19,10 @@ struct ReadOptions {
   // VTK: the point array holding the tensors; empty: the active tensors, else
   // the only tensor-like array (see readVtk).
   std::string arrayName;
-  // NIfTI component order: "" (from the header: the SYMMATRIX intent means
-  // "nifti", an MRtrix `descrip` "mrtrix", else "fsl"), "fsl", "nifti",
-  // "mrtrix" or "vtk". See nifti_layouts.h.
+  // Component order of six values (NIfTI, 6-component VTK arrays): "" (a
+  // NIfTI file's header: the SYMMATRIX intent means "nifti", an MRtrix
+  // `descrip` "mrtrix", else "fsl"; VTK's own order) or a name of
+  // nifti_layouts.h's table that applies to the input.
   std::string layout;
   // NIfTI tensor frame: "" (the layout's own), "voxel", "fsl" or "world".
   std::string frame;
@@ -56,7 +57,7 @@ void promiseData(const char* who, const std::string& path, const ReadOptions& op
                  std::uint64_t keptSamples, std::uint64_t libraryBytes = 0);
 
 // Legacy .vtk and XML .vti/.vtu/.vtp/.vts through VTK's readers. Point
-// tensors of 9 (row-major) or 6 (XX YY ZZ XY YZ XZ) components, or 2-D FEM
+// tensors of 9 (row-major) or 6 (XX YY ZZ XY YZ XZ, or --layout's) components, or 2-D FEM
 // tensors of 4 (XX YY ZZ XY, OpenGeoSys) or 3 (XX YY XY) with zero
 // out-of-plane shear. Without --array: the active tensors, else the one
 // array of 9 or 6 components or a 4-component OpenGeoSys `sigma`/`epsilon`;
@@ -79,12 +80,13 @@ TensorField readNrrd(const std::string& path, const ReadOptions& opt);
 // .nii/.nii.gz (NIfTI-1 and -2) through libnifti2: six volumes along the 4th
 // or 5th dimension. Placement from the sform, else the qform, else pixdim.
 // Component order by --layout, tensor frame by --frame, each defaulting as
-// nifti_layouts.h says. Warns when most tensors are indefinite under the
-// chosen order, naming the orders that read them as diffusion tensors.
+// nifti_layouts.h says. Refuses a default order that reads most tensors as
+// indefinite when exactly one other order reads them as diffusion tensors;
+// else warns, naming only orders that do (adviseLayout).
 TensorField readNifti(const std::string& path, const ReadOptions& opt);
-// The --layout names readNifti knows, for checking a command line early.
-bool isNiftiLayout(const std::string& name);
-inline constexpr const char* kNiftiLayoutChoices = "fsl, nifti, mrtrix or vtk";
+// Whether any input takes --layout `name` (io/nifti_layouts.h), for checking
+// a command line early; each reader refuses the names its input has no use for.
+bool isLayoutName(const std::string& name);
 
 // MRtrix .mif (header and data) and .mih (header naming a data file), read by
 // hand: a 4-D image whose last axis holds xx yy zz xy xz yz, tensors already

@@ -33,6 +33,7 @@
 #include <vtkXMLReader.h>
 
 #include "io/format_impl.h"
+#include "io/nifti_layouts.h"
 #include "io/read_guard.h"
 #include "io/readers.h"
 #include "io/selection.h"
@@ -236,29 +237,61 @@ vtkDataArray* pickTensorArray(vtkDataSet* ds, const std::string& path, const Rea
 }
 
 // The component order as read, for `info`.
-std::string layoutOf(vtkDataArray* arr) {
+std::string layoutOf(vtkDataArray* arr, const NiftiLayout& six, bool named) {
   if (!arr) return "Sxx Syy Szz Syz Szx Sxy";
   switch (arr->GetNumberOfComponents()) {
     case 9: return "9 values (row-major 3x3)";
-    case 6: return "6 values, VTK order (XX YY ZZ XY YZ XZ)";
+    case 6:
+      return std::string("6 values, ") + six.name + ": " + six.order +
+             (named ? " (--layout)" : " (VTK's own order; override with --layout)");
     case 4: return "4 values, 2-D (XX YY ZZ XY, as OpenGeoSys writes them); XZ = YZ = 0";
     default: return "3 values, 2-D (XX YY XY); ZZ = XZ = YZ = 0";
   }
 }
 
-// One tuple of `nc` components as a full row-major 3x3.
-void fullTensor(int nc, const double* t, double full[9]) {
+// One tuple of `nc` components as a full row-major 3x3; six in `six`'s order.
+void fullTensor(int nc, const double* t, const NiftiLayout& six, double full[9]) {
   const double zero[9] = {0, 0, 0, 0, 0, 0, 0, 0, 0};
   std::copy(zero, zero + 9, full);
   if (nc == 9) {
     std::copy(t, t + 9, full);
-  } else if (nc == 6) {  // XX YY ZZ XY YZ XZ
-    const double f[9] = {t[0], t[3], t[5], t[3], t[1], t[4], t[5], t[4], t[2]};
+  } else if (nc == 6) {
+    double s[6];  // xx xy xz yy yz zz
+    for (int k = 0; k < 6; ++k) s[k] = t[six.sym[std::size_t(k)]];
+    const double f[9] = {s[0], s[1], s[2], s[1], s[3], s[4], s[2], s[4], s[5]};
     std::copy(f, f + 9, full);
   } else {  // XX YY ZZ XY, or XX YY XY
     const double xy = nc == 4 ? t[3] : t[2];
     full[0] = t[0], full[1] = full[3] = xy, full[4] = t[1], full[8] = nc == 4 ? t[2] : 0.0;
   }
+}
+
+// The order of a 6-component array: --layout's, else VTK's own. Checked on
+// the whole array before anything is kept: no criterion tells a stress
+// field's order in general (it may be indefinite), but on points in a
+// coordinate plane the out-of-plane shears vanish (io/nifti_layouts.h).
+const NiftiLayout& sixComponentOrder(vtkDataSet* ds, vtkDataArray* arr, const NonFiniteText& nonFinite,
+                                     const std::string& path, const ReadOptions& opt, TensorField& f) {
+  const NiftiLayout* chosen = niftiLayoutNamed(opt.layout.empty() ? "vtk" : opt.layout, kVtkInput);
+  if (!chosen)
+    fail(path, unusableLayout(opt.layout, kVtkInput, "VTK"));
+  const vtkIdType n = arr->GetNumberOfTuples();
+  LayoutSample sample{std::uint64_t(n)};
+  const vtkIdType step = std::max<vtkIdType>(1, n / 16384);
+  double t[6];
+  for (vtkIdType i = 0; i < n; i += step) {
+    arr->GetTuple(i, t);
+    for (double& x : t) x = nonFinite.restore(x);
+    sample.offer(std::uint64_t(i), t);
+  }
+  double b[6];
+  ds->GetBounds(b);
+  const double lo[3] = {b[0], b[2], b[4]}, hi[3] = {b[1], b[3], b[5]};
+  const LayoutAdvice advice = adviseLayout(sample, *chosen, opt.layout.empty(), kVtkInput,
+                                           Plausibility{false, coordinatePlaneNormal(lo, hi)}, cliLayoutName);
+  if (!advice.refusal.empty()) fail(path, "array \"" + nameOf(arr) + "\": " + advice.refusal);
+  if (!advice.warning.empty()) f.warnings.push_back("array \"" + nameOf(arr) + "\": " + advice.warning);
+  return *chosen;
 }
 
 }  // namespace
@@ -386,7 +419,7 @@ ScalarVolume impl::readVtiScalar(const std::string& path, const int* dims) {
 
 TensorField impl::readVtk(const std::string& path, const ReadOptions& opt) {
   if (const std::string o = inapplicableOption(InputFormat::Vtk, opt); !o.empty())
-    fail(path, o + " does not apply to VTK, whose tensors have a fixed order in world axes");
+    fail(path, o + " does not apply to VTK, whose tensors are in the points' world axes");
   const ReadResult read = readDataSet(path, opt);
   checkPieceGaps(read, path, opt);
   vtkDataSet* ds = read.data;
@@ -404,15 +437,21 @@ TensorField impl::readVtk(const std::string& path, const ReadOptions& opt) {
   if (!read.vtkSaid.empty() && !(fromTrailer && read.vtkSaid.find("Unsupported point attribute type") != std::string::npos))
     fail(path, read.vtkSaid);
 
+  const int nc = arr ? arr->GetNumberOfComponents() : 9;
+  if (!opt.layout.empty() && nc != 6)
+    fail(path, "--layout applies to 6-component arrays; " +
+                   (arr ? "\"" + nameOf(arr) + "\" has " + std::to_string(nc) + " components"
+                        : std::string("the 3D-TSV stress trailer has 9")));
   TensorField f;
+  const NiftiLayout& six =
+      nc == 6 ? sixComponentOrder(ds, arr, read.nonFinite, path, opt, f) : *niftiLayoutNamed("vtk");
   f.path = path;
   f.arrayName = arr ? (arr->GetName() ? arr->GetName() : "") : "Cartesian Stress (3D-TSV trailer)";
   f.description = std::string(ds->GetClassName()) + ", " + std::to_string(n) + " points";
-  f.layout = layoutOf(arr);
+  f.layout = layoutOf(arr, six, !opt.layout.empty());
   auto* image = vtkImageData::SafeDownCast(ds);
   f.frame = std::string("world: the points' axes, not rotated, as VTK's filters take them") +
             (image && !image->GetDirectionMatrix()->IsIdentity() ? " (the Direction matrix places points only)" : "");
-  const int nc = arr ? arr->GetNumberOfComponents() : 9;
   if (nc <= 4) {
     double b[6];
     ds->GetBounds(b);
@@ -444,7 +483,7 @@ TensorField impl::readVtk(const std::string& path, const ReadOptions& opt) {
     } else {
       arr->GetTuple(i, t);
       for (int k = 0; k < nc; ++k) t[k] = read.nonFinite.restore(t[k]);
-      fullTensor(nc, t, full);
+      fullTensor(nc, t, six, full);
       if (nc == 9) maxAsym = std::max(maxAsym, asymmetry(full));
       f.addFull(std::uint32_t(i), p, full);
     }

@@ -83,7 +83,9 @@ def _nifti_layout(img):
     except Exception:  # an intent nibabel does not know: not SYMMATRIX
         pass
     descrip = bytes(np.asarray(hdr.get("descrip", b""))).decode("latin-1", "replace")
-    return "mrtrix" if descrip.startswith("MRtrix version") else "fsl"
+    # "": the core's default, FSL's, refused where it is implausible as the
+    # CLI refuses the same file (a layout named here would only warn).
+    return "mrtrix" if descrip.startswith("MRtrix version") else ""
 
 
 def _nifti_placement(img, frame):

@@ -9,6 +9,22 @@
 #include "io/nifti_layouts.h"
 
 namespace tg::app {
+namespace {
+
+// From the one table of layouts: each name, its order and where it applies.
+std::string layoutHelp() {
+  std::string h = "order of six components (NIfTI; 6-component VTK arrays): ";
+  const auto& all = io::niftiLayouts();
+  for (std::size_t k = 0; k < all.size(); ++k) {
+    const io::NiftiLayout& l = all[k];
+    const bool alias = k > 0 && all[k - 1].sym == l.sym && all[k - 1].inputs == l.inputs;
+    h += std::string(k ? ", " : "") + l.name + " (" + (alias ? std::string("as ") + all[k - 1].name : l.order) +
+         (l.inputs & io::kNiftiInput ? "" : "; not NIfTI") + (l.inputs & io::kVtkInput ? "" : "; not VTK") + ")";
+  }
+  return h + "; default: the NIfTI header's, VTK's own";
+}
+
+}  // namespace
 
 void FieldFlags::addTo(OptionTable& ap, bool scaling) {
   using Args = OptionArgs;
@@ -17,9 +33,7 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
   ap.setGroup("input and selection");
   ap.arg("--array NAME").help("VTK: the point array holding the tensors (9, 6, 4 or 3 components)")
       .action([&](Args a) { read.arrayName = a[1]; });
-  ap.arg("--layout L").help("NIfTI component order: fsl (xx xy xz yy yz zz), nifti (SYMMATRIX: xx xy yy xz yz zz), "
-                            "mrtrix (xx yy zz xy xz yz) or vtk (xx yy zz xy yz xz); default from the header")
-      .action([&](Args a) { read.layout = a[1]; });
+  ap.arg("--layout L").help(layoutHelp()).action([&](Args a) { read.layout = a[1]; });
   ap.arg("--frame F").help("NIfTI tensor axes: voxel, fsl (voxel, i reversed when det > 0) or world; default: the "
                            "layout's (fsl: fsl, mrtrix: world, else voxel)")
       .action([&](Args a) { read.frame = a[1]; });
@@ -103,8 +117,9 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
 void FieldFlags::validate() const {
   const io::Selection& sel = read.selection;
   if (maskMinGiven && sel.maskPath.empty()) throw UsageError("--mask-min needs --mask");
-  if (!read.layout.empty() && !io::isNiftiLayout(read.layout))
-    throw UsageError("--layout: unknown layout \"" + read.layout + "\"; choose " + io::kNiftiLayoutChoices);
+  if (!read.layout.empty() && !io::isLayoutName(read.layout))
+    throw UsageError("--layout: unknown layout \"" + read.layout + "\"; choose " +
+                     io::layoutChoices(io::kNiftiInput | io::kVtkInput | io::kArrayInput));
   if (!read.frame.empty() && !io::tensorFrameNamed(read.frame))
     throw UsageError("--frame: unknown frame \"" + read.frame + "\"; choose " + io::kTensorFrameChoices);
   if (sizing.lambda0 && sizing.magnitude == tensor::Magnitude::Linear)

@@ -153,7 +153,7 @@ TEST(CliFrames, InfoPrintsTheFrameItApplied) {
   EXPECT_NE(r.out.find("tensor frame: world: the points' axes, not rotated"), std::string::npos) << r.out;
 }
 
-TEST(CliFrames, AFourDimensionalDipyFileWarnsOnceNamingTheLayout) {
+TEST(CliFrames, AFourDimensionalDipyFileIsRefusedNamingTheLayout) {
   // DIPY's tenfit.lower_triangular() saved as a plain 4-D image: without the
   // intent, the default FSL order makes most of these tensors indefinite.
   tg::test::NiftiTensors fx;
@@ -171,11 +171,18 @@ TEST(CliFrames, AFourDimensionalDipyFileWarnsOnceNamingTheLayout) {
   const fs::path p = dir() / "dipy-4d.nii";
   tg::test::writeNifti(p, fx);
   const fs::path out = dir() / "dipy.png";
+  // Refused (exit 1, one line, no picture): "nifti" is the one order that
+  // reads them as diffusion tensors.
   CmdResult r = run("render " + p.string() + " -o " + out.string() + " --size 32 32");
-  EXPECT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.code, 1) << r.err;
   EXPECT_EQ(lines(r.err), 1) << r.err;
-  EXPECT_NE(r.err.find("tensorglyph render: " + p.string() + ": "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find(p.string() + ": "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("indefinite"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("only --layout nifti --frame voxel reads them plausibly"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(out));
+  // Named, FSL's order is drawn, with the advice as a warning.
+  r = run("render " + p.string() + " -o " + out.string() + " --size 32 32 --layout fsl");
+  EXPECT_EQ(r.code, 0) << r.err;
   EXPECT_NE(r.err.find("try --layout nifti --frame voxel"), std::string::npos) << r.err;
   r = run("render " + p.string() + " -o " + out.string() + " --size 32 32 --layout nifti");
   EXPECT_EQ(r.code, 0) << r.err;

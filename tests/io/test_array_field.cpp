@@ -59,10 +59,12 @@ TEST(ArrayField, PointsReadEachLayoutsOrder) {
 }
 
 // DIPY's lower_triangular() order (xx xy yy xz yz zz, "nifti") passed as the
-// default "fsl" swaps yy and xz: diffusion tensors become indefinite. The
-// arrays get the NIfTI reader's check, as a warning naming the order that
-// fits; tensors indefinite in every order (stress) get none.
-TEST(ArrayField, SixComponentsInAnImplausibleOrderWarn) {
+// default "fsl" swaps yy and xz: diffusion tensors become indefinite, and
+// "nifti" is the one order that reads them as diffusion tensors: refused,
+// naming it in Python's words. Named, "fsl" draws with a warning naming it.
+// Points that no order reads as diffusion tensors (stress) are refused
+// without a layout and drawn silently with one: no order is evidence.
+TEST(ArrayField, SixComponentsInAnImplausibleDefaultOrderAreRefused) {
   const int n = 64;
   std::vector<double> lower, stress, pos;
   for (int i = 0; i < n; ++i) {
@@ -71,17 +73,24 @@ TEST(ArrayField, SixComponentsInAnImplausibleOrderWarn) {
     const double xx = 3 * c * c + s * s, xy = 2 * c * s, yy = 3 * s * s + c * c;
     lower.insert(lower.end(), {xx, xy, yy, 0.0, 0.0, 0.5});
     stress.insert(stress.end(), {1.0 + i, -2.0, -3.0 - i, 0.5, 0.25, 0.1});
-    pos.insert(pos.end(), {double(i), 0.0, 0.0});
+    pos.insert(pos.end(), {double(i), 0.1 * i * i, std::sin(double(i))});
   }
+  const std::string refused = errorOf([&] { tg::io::fieldFromPoints(view(lower, {n, 6}), "", view(pos, {n, 3})); });
+  EXPECT_EQ(refused.rfind("layout: ", 0), 0u) << refused;
+  EXPECT_NE(refused.find("only layout=\"nifti\" reads them plausibly"), std::string::npos) << refused;
   const auto asFsl = tg::io::fieldFromPoints(view(lower, {n, 6}), "fsl", view(pos, {n, 3}));
-  ASSERT_EQ(asFsl.warnings.size(), 1u);
-  EXPECT_NE(asFsl.warnings[0].find("try --layout nifti --frame voxel"), std::string::npos) << asFsl.warnings[0];
+  EXPECT_TRUE(asFsl.warnings.empty()) << "named, and no criterion applies to points off a plane";
   EXPECT_TRUE(tg::io::fieldFromPoints(view(lower, {n, 6}), "nifti", view(pos, {n, 3})).warnings.empty());
-  EXPECT_TRUE(tg::io::fieldFromPoints(view(stress, {n, 6}), "fsl", view(pos, {n, 3})).warnings.empty());
+  const std::string unexplained =
+      errorOf([&] { tg::io::fieldFromPoints(view(stress, {n, 6}), "", view(pos, {n, 3})); });
+  EXPECT_NE(unexplained.find("no order reads them plausibly: name theirs"), std::string::npos) << unexplained;
+  EXPECT_TRUE(tg::io::fieldFromPoints(view(stress, {n, 6}), "abaqus", view(pos, {n, 3})).warnings.empty());
   const double affine[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
-  const auto volume = tg::io::fieldFromVolume(view(lower, {4, 4, 4, 6}), "fsl", affine, "");
-  ASSERT_EQ(volume.warnings.size(), 1u);
-  EXPECT_NE(volume.warnings[0].find("--layout nifti"), std::string::npos) << volume.warnings[0];
+  const std::string volume = errorOf([&] { tg::io::fieldFromVolume(view(lower, {4, 4, 4, 6}), "", affine, ""); });
+  EXPECT_NE(volume.find("only layout=\"nifti\""), std::string::npos) << volume;
+  const auto named = tg::io::fieldFromVolume(view(lower, {4, 4, 4, 6}), "fsl", affine, "");
+  ASSERT_EQ(named.warnings.size(), 1u);
+  EXPECT_NE(named.warnings[0].find("try layout=\"nifti\""), std::string::npos) << named.warnings[0];
   EXPECT_TRUE(tg::io::fieldFromVolume(view(lower, {4, 4, 4, 6}), "nifti", affine, "").warnings.empty());
 }
 

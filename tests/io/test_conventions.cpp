@@ -345,24 +345,46 @@ test::NiftiTensors randomField(const Order& order) {
 
 }  // namespace
 
-TEST(Conventions, MostlyIndefiniteTensorsWarnNamingTheLikelyLayout) {
+TEST(Conventions, AnImplausibleDefaultOrderIsRefusedNamingThePlausibleOne) {
   // DIPY's lower_triangular saved as a plain 4-D image, and MRtrix's order
-  // without its descrip: both read as FSL's order by default.
+  // without its descrip: both read as FSL's order by default, which makes
+  // most of them indefinite. Where one other order reads them as diffusion
+  // tensors the read is refused, naming it; where two do (MRtrix's and VTK's
+  // differ by xz and yz only), the picture is drawn with a warning naming
+  // both. Every order a message names reads them plausibly.
   struct Case {
     const Order& stored;
-    const char* suggests;
-  } cases[] = {{kOrders[1], "--layout nifti --frame voxel"}, {kOrders[2], "--layout mrtrix --frame world"}};
+    bool refused;
+    std::vector<std::string> named;
+  } cases[] = {{kOrders[1], true, {"--layout nifti --frame voxel"}},
+               {kOrders[2], false, {"--layout mrtrix --frame world", "--layout vtk --frame voxel (or paraview"}}};
   for (const Case& c : cases) {
     const fs::path p = dir() / (std::string("indefinite-") + c.stored.layout + ".nii");
     test::writeNifti(p, randomField(c.stored));
-    const io::TensorField f = io::readTensorField(p.string(), {});
-    ASSERT_EQ(f.warnings.size(), 1u) << c.stored.layout;
-    EXPECT_NE(f.warnings[0].find("indefinite"), std::string::npos) << f.warnings[0];
-    EXPECT_NE(f.warnings[0].find(c.suggests), std::string::npos) << f.warnings[0];
-    EXPECT_EQ(f.warnings[0].find('\n'), std::string::npos);
+    std::string said;
+    if (c.refused) {
+      said = test::readError(p);
+      EXPECT_NE(said.find("to draw this reading"), std::string::npos) << said;
+      // Named, the implausible order is drawn, with the same advice as a warning.
+      const io::TensorField asked = io::readTensorField(p.string(), readAs("fsl", ""));
+      ASSERT_EQ(asked.warnings.size(), 1u);
+      EXPECT_NE(asked.warnings[0].find("try " + c.named[0]), std::string::npos) << asked.warnings[0];
+    } else {
+      const io::TensorField f = io::readTensorField(p.string(), {});
+      ASSERT_EQ(f.warnings.size(), 1u) << c.stored.layout;
+      said = f.warnings[0];
+    }
+    EXPECT_NE(said.find("indefinite"), std::string::npos) << said;
+    for (const std::string& n : c.named) EXPECT_NE(said.find(n), std::string::npos) << said;
+    EXPECT_EQ(said.find("--layout fsl --frame fsl reads"), std::string::npos) << said;  // implausible: never offered
+    EXPECT_EQ(said.find('\n'), std::string::npos);
     // Read as written: no warning.
     EXPECT_TRUE(io::readTensorField(p.string(), readAs(c.stored.layout, "")).warnings.empty()) << c.stored.layout;
   }
+  // FEM orders are for VTK files and arrays, not NIfTI.
+  EXPECT_NE(test::readError(dir() / "indefinite-mrtrix.nii", readAs("abaqus", "")).find("--layout abaqus does not "
+                                                                                         "apply to NIfTI"),
+            std::string::npos);
 }
 
 TEST(Conventions, DefiniteTensorsInAnyFrameDoNotWarn) {
@@ -388,7 +410,9 @@ TEST(Conventions, OptionsForAnotherFormatAreRefused) {
   confidence.confidenceGiven = true;
   EXPECT_NE(test::readError(dir() / "opt.nii", array).find("--array does not apply to NIfTI"), std::string::npos);
   EXPECT_NE(test::readError(dir() / "opt.nii", confidence).find("--confidence-min"), std::string::npos);
-  EXPECT_NE(test::readError(dir() / "opt.vtp", layout).find("--layout does not apply to VTK"), std::string::npos);
+  // --layout orders six values: a 9-component array has none to order.
+  EXPECT_NE(test::readError(dir() / "opt.vtp", layout).find("--layout applies to 6-component arrays"),
+            std::string::npos);
   EXPECT_NE(test::readError(dir() / "opt.vtp", frame).find("--frame does not apply to VTK"), std::string::npos);
   EXPECT_NE(test::readError(dir() / "opt.nii", readAs("", "sideways")).find("unknown frame"), std::string::npos);
 }

@@ -90,23 +90,24 @@ class DipyPipeline(unittest.TestCase):
         self.assertGreaterEqual(passed, 0.9 * checked, f"{passed} of {checked} long axes follow DIPY's")
 
 
-    def test_lower_triangular_in_the_default_order_warns(self):
+    def test_lower_triangular_in_the_default_order_is_refused(self):
         """DIPY's fit.lower_triangular() is xx xy yy xz yz zz, the "nifti"
         order; arrays default to "fsl", so passing it bare swaps yy and xz.
-        The module warns as the NIfTI reader does, naming the order that fits;
-        in the right order, or as quadratic_form, it says nothing."""
+        "nifti" is the one order that reads it as diffusion tensors: refused,
+        naming it (test_layouts.py has the rest); in the right order, or as
+        quadratic_form, it says nothing."""
         import warnings
         img, fit = fit_small_64d()
         opts = dict(size=(96, 72))
-        with self.assertWarnsRegex(UserWarning, "indefinite .* as --layout fsl .*--layout nifti --frame voxel"):
+        with self.assertRaisesRegex(ValueError, 'indefinite .* as fsl .*only layout="nifti"'):
             tg.render(fit.lower_triangular(), affine=img.affine, **opts)
         with warnings.catch_warnings():
             warnings.simplefilter("error")
             right = tg.render(fit.lower_triangular(), affine=img.affine, layout="nifti", frame="voxel", **opts)
             self.assertTrue(np.array_equal(right, tg.render(fit, affine=img.affine, **opts)))
-            # Indefinite in any order (stress): no order is evidence, no warning.
+            # Indefinite in any order (stress), in a named order: no order is evidence, no warning.
             rng = np.random.default_rng(2)
-            tg.render(rng.normal(size=(50, 6)), positions=rng.uniform(0, 10, (50, 3)), **opts)
+            tg.render(rng.normal(size=(50, 6)), positions=rng.uniform(0, 10, (50, 3)), layout="vtk", **opts)
 
 
 @unittest.skipUnless(CLI, "TG_CLI names the tensorglyph binary")
