@@ -34,4 +34,10 @@ if(TG_PARAVIEW_PLUGIN)
     INSTALL_COMMAND ""
     BUILD_BYPRODUCTS ${TG_PARAVIEW_PLUGIN_FILE}
     DEPENDS tg_core tg_gl tg_field tg_util)
+  # The plugin and the .xml that names it to ParaView's plugin manager
+  # (PLUGINS_FILE_NAME, plugins/paraview/CMakeLists.txt), under the prefix's
+  # ParaView plugin directory: with the prefix /usr, ParaView's own.
+  include(GNUInstallDirs)
+  install(DIRECTORY ${CMAKE_BINARY_DIR}/paraview-plugin/lib/paraview-5.11/plugins/
+          DESTINATION ${CMAKE_INSTALL_LIBDIR}/paraview-5.11/plugins USE_SOURCE_PERMISSIONS)
 endif()
