@@ -9,7 +9,7 @@
 namespace tg::io {
 
 const std::vector<NiftiLayout>& niftiLayouts() {
-  // The writers of each order are in README, "Reading data". VTK's order is
+  // The writers of each order are in docs/formats.md, "Reading data". VTK's order is
   // vtkMath::TensorFromSymmetricTensor's (vtkMath.h: "XX, YY, ZZ, XY, YZ,
   // XZ"), which vtkTensorGlyph and ParaView's Tensor Glyph read 6-component
   // arrays with. Abaqus writes S11 S22 S33 S12 S13 S23 (its manual,

@@ -109,7 +109,7 @@ int cmdInfo(int argc, const char** argv) {
   // Every kind of the table reads the eigen-decomposed record these tensors made.
   std::printf("glyph kinds: %s\n", render::glyphKindNames().c_str());
   // Load and eigen-decomposition both done, both buffers alive: the
-  // streaming loader's peak (see README, "Memory").
+  // streaming loader's peak (see docs/design.md, "Memory").
   std::printf("peak memory: %.1f MiB\n", double(peakRssBytes()) / (1024.0 * 1024.0));
   return 0;
 }

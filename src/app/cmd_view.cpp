@@ -60,7 +60,7 @@ ViewOptions parse(int argc, const char** argv) {
            "  keys: R resets the view, S saves a screenshot, Q or Esc quits");
   using Args = OptionArgs;
   addViewOptions(ap, o);
-  ap.arg("--script FILE").help("run the commands in FILE (see README, \"Viewer\"), then exit")
+  ap.arg("--script FILE").help("run the commands in FILE (see docs/guide.md, \"Viewer\"), then exit")
       .action([&](Args a) { o.script = a[1]; });
   ap.arg("--screenshot-prefix P").help("key S saves P0000.png, P0001.png, ... (default tensorglyph-view-)")
       .action([&](Args a) { o.shotPrefix = a[1]; });

@@ -4,7 +4,7 @@
 // applies where the command line is silent; --glyph chooses the kind, and
 // --no-shadows, --no-ao, --no-outlines and --no-legend turn an effect off.
 // A field read from a file has no preferred look: every effect is off unless
-// asked for (README, "Depth cues and legends", says why).
+// asked for (docs/guide.md, "Depth cues and legends", says why).
 #include "app/option_table.h"
 
 #include "render/frame_params.h"

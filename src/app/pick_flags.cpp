@@ -11,7 +11,7 @@ void PickFlags::addTo(OptionTable& ap) {
   using Args = OptionArgs;
   ap.arg("--pick I J").commandLineOnly()
       .help("print what pixel (I, J) shows as one line of JSON on stdout: column I, row J from the top "
-            "(README, \"Picking\")")
+            "(docs/guide.md, \"Picking\")")
       .repeats().range({0, kMaxFrameSide - 1, true}).action([this](Args a) {
         pixels.push_back({int(parseInt(a[0], a[1])), int(parseInt(a[0], a[2]))});
       });

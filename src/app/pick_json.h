@@ -7,7 +7,7 @@
 
 namespace tg::app {
 
-// Keys (README, "Picking"): "pixel" [I, J]; "hit" "glyph", "context" or
+// Keys (docs/guide.md, "Picking"): "pixel" [I, J]; "hit" "glyph", "context" or
 // "background"; "id" (the id channel, absent for background); for a glyph
 // "index", "position" (WC), "tensor" (3x3 rows, WC), "eigenvalues"
 // (descending), "eigenvectors" (rows, unit, ↔ eigenvalues), "fa", "md",

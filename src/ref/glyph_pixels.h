@@ -1,7 +1,7 @@
 #pragma once
 // How readable a frame is: how much of it the glyphs cover and how many of
-// them are drawn large enough to see (README, "Scale and framing"). Shared by
-// the framing tests and the figures the README reports, so both count alike.
+// them are drawn large enough to see (docs/guide.md, "Scale and framing"). Shared by
+// the framing tests and the figures docs/guide.md reports, so both count alike.
 #include <cstddef>
 #include <cstdint>
 #include <span>

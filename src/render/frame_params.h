@@ -20,7 +20,7 @@ struct Lighting {
 };
 
 // Newton march settings; the defaults come from `tensorglyph bench accuracy`
-// (README, "Speed against accuracy of the superquadric march").
+// (docs/performance.md, "Speed against accuracy of the superquadric march").
 struct MarchParams {
   int maxIterations = 10;
   double epsilon = 1e-4;  // in units of the glyph's size

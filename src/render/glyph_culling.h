@@ -1,6 +1,6 @@
 #pragma once
 // Which glyphs a frame draws, decided on the GPU so that culled glyphs cost
-// nothing downstream (README, "Culling"):
+// nothing downstream (docs/design.md, "Culling"):
 //  - an FA threshold compacts each range's kept glyphs once per threshold
 //    change (shaders/compact_fa.comp), order preserved;
 //  - per frame, ranges whose box is outside the view frustum get empty

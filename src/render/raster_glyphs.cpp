@@ -222,7 +222,7 @@ void RasterGlyphs::useGlyphProgram(const gl::Program& prog, const Camera& cam) c
   gl_.UseProgram(prog.id());
 }
 
-// Dispatch (README, "How glyphs are dispatched") over the groups
+// Dispatch (docs/design.md, "How glyphs are dispatched") over the groups
 // (tensor::GlyphGroup) by the kind's row (render/glyph_kind.h): the
 // ellipsoid program draws groups [0, split), the marching program the rest.
 // At gamma 0 only mixed-sign glyphs are not ellipsoids; at gamma > 0 only

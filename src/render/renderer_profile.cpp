@@ -27,7 +27,7 @@ RendererProfile RendererProfile::of(std::string_view glRenderer) {
   // ms per frame with the pre-pass against without: typical 0.24 px 203-206
   // against 156-172, 0.9 px 456-537 against 363-371, 1.9 px 732-765 against
   // 534-610, 3.8 px 1166-1226 against 1108-1164, 7.6 px 1950-2219 against
-  // 2475-2653 (the helix, 8 px, and the point load, 16 px, keep it: README).
+  // 2475-2653 (the helix, 8 px, and the point load, 16 px, keep it: docs/performance.md).
   p.occlusionMinPx = 4.0;
   // llvmpipe bins a whole draw call (every glyph's interpolants: about 440
   // bytes a superquadric point sprite, 25 MB for the dt-helix) before it

@@ -1,7 +1,7 @@
 #pragma once
 // What the renderer chooses per GL implementation, each choice measured on
 // the implementation it applies to and keyed by its GL_RENDERER string;
-// implementations not measured keep the plain path (README, "Where a
+// implementations not measured keep the plain path (docs/performance.md, "Where a
 // llvmpipe frame goes"). GL-free, so that each choice is testable by name.
 #include <cstdint>
 #include <limits>
@@ -22,7 +22,7 @@ struct RendererProfile {
   // centre can see before the draw (GlyphCulling, shaders/cull_pixels.comp).
   double pixelCullMaxPx = 0.0;
   // The typical sprite width from which the superquadric occlusion pre-pass
-  // (README, "Occlusion of superquadrics") pays.
+  // (docs/design.md, "Occlusion of superquadrics") pays.
   double occlusionMinPx = 0.0;
   // Glyphs per draw submission (QuadSprites).
   std::uint32_t glyphsPerSubmit = kWholeDraw;

@@ -59,7 +59,7 @@ struct ScaleParams {
   double factor = 1.0;
   // 0.9, not the maximum nor 0.99: in a singular field (a point load) the top
   // percent are the load's neighbours, and sizing by them left every other
-  // glyph a dot (README, "Scale and framing"; measured there).
+  // glyph a dot (docs/guide.md, "Scale and framing"; measured there).
   double percentile = 0.9;
   Magnitude magnitude = Magnitude::Linear;
   std::optional<double> lambda0;  // default: the median non-zero glyph magnitude m
