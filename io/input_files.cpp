@@ -2,27 +2,17 @@
 
 #include <sys/stat.h>
 
-#include <algorithm>
 #include <filesystem>
 
-#include "io/readers.h"
+#include "io/format_table.h"
 
 namespace tg::io {
 
 std::vector<std::string> filesReadBy(const std::string& input) {
   std::vector<std::string> files{input};
-  std::string lower = input;
-  std::transform(lower.begin(), lower.end(), lower.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  if (lower.ends_with(".nrrd") || lower.ends_with(".nhdr")) {
-    const auto data = nrrdDataFiles(input);
+  if (const InputFormatRow* row = inputFormatRowOf(input); row && row->dataFiles) {
+    const auto data = row->dataFiles(input);
     files.insert(files.end(), data.begin(), data.end());
-  }
-  if (lower.ends_with(".mih")) {
-    try {
-      files.push_back(mifDataFile(input));
-    } catch (const InputError&) {
-      // A header the reader will refuse names no file to protect.
-    }
   }
   return files;
 }

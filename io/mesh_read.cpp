@@ -1,11 +1,10 @@
 // readMesh's guarded child and the checks it makes first; the reading itself
 // is the VTK module's (io/mesh_reader.cpp, io/format_modules.h).
-#include <sys/stat.h>
-
 #include <algorithm>
 #include <memory>
 
 #include "io/format_modules.h"
+#include "io/format_table.h"
 #include "io/guard_wire.h"
 #include "io/mesh_reader.h"
 #include "io/read_guard.h"
@@ -30,24 +29,22 @@ std::string meshExtension(const std::string& path) {
 }
 
 std::uint64_t checkMeshFile(const std::string& path, MeshSource source) {
-  struct stat st {};
-  if (stat(path.c_str(), &st) != 0) fail(path, "no such file");
-  if (S_ISDIR(st.st_mode)) fail(path, "is a directory");
-  if (!S_ISREG(st.st_mode)) fail(path, "not a regular file");
-  if (st.st_size == 0) fail(path, "file is empty");
+  const std::uint64_t size = checkInputFile("readMesh", path);
   if (const std::string problem = meshExtensionProblem(path, source); !problem.empty()) fail(path, problem);
-  return std::uint64_t(st.st_size);
+  return size;
 }
 
 std::string meshExtensionProblem(const std::string& path, MeshSource source) {
-  const std::string ext = meshExtension(path);
+  const InputFormatRow* row = inputFormatRowOf(path);
+  std::string ext = "\"";
+  ext.append(shownExtension(path)).append("\"");
   if (source == MeshSource::FemBoundary)
-    return ext == "vtu" || ext == "vtk" ? ""
-                                        : "--mesh-from-input needs an FEM mesh input (.vtu or a legacy .vtk "
-                                          "unstructured grid), not \"." + ext + "\"";
-  for (const char* e : {"vtp", "vtk", "stl", "obj", "ply", "vtu", "vts"})
-    if (ext == e) return "";
-  return "unknown mesh extension \"." + ext + "\"; supported: .vtp .vtk .stl .obj .ply, and .vtu .vts (outer surface)";
+    return row && row->uses & kFemUse ? ""
+                                      : "--mesh-from-input needs an FEM mesh input (an unstructured grid: " +
+                                            extensionList(kFemUse, " ", " or ") + "), not " + ext;
+  if (row && row->uses & (kSurfaceUse | kVolumeMeshUse)) return "";
+  return "unknown mesh extension " + ext + "; supported: " + extensionList(kSurfaceUse) + ", and " +
+         extensionList(kVolumeMeshUse) + " (outer surface)";
 }
 
 MeshData readMesh(const std::string& path, MeshSource source) {

@@ -1,10 +1,9 @@
-#include <sys/stat.h>
-
 #include <algorithm>
 #include <memory>
 #include <optional>
 #include <utility>
 
+#include "io/format_table.h"
 #include "io/guard_wire.h"
 #include "io/raw_samples.h"
 #include "io/read_guard.h"
@@ -13,32 +12,12 @@
 namespace tg::io {
 namespace {
 
-struct Format {
-  TensorField (*read)(const std::string&, const ReadOptions&);
-  const char* who;
-};
-
-Format formatOf(const std::string& path) {
-  switch (inputFormatOf(path)) {
-    case InputFormat::Vtk: return {readVtk, "readVtk"};
-    case InputFormat::Nrrd: return {readNrrd, "readNrrd"};
-    case InputFormat::Nifti: return {readNifti, "readNifti"};
-    case InputFormat::Mif: return {readMif, "readMif"};
-    case InputFormat::Unknown: break;
-  }
-  const auto dot = path.find_last_of('.');
-  const std::string ext = dot == std::string::npos || path.find('/', dot) != std::string::npos ? "" : path.substr(dot);
-  throw InputError("readTensorField: " + path + ": unknown extension \"" + ext +
-                   "\"; supported: .nrrd .nhdr .nii .nii.gz .mif .mih .vtk .vti .vtu .vtp .vts");
-}
-
-std::uint64_t checkedFileSize(const std::string& path) {
-  struct stat st {};
-  if (stat(path.c_str(), &st) != 0) throw InputError("readTensorField: " + path + ": no such file");
-  if (S_ISDIR(st.st_mode)) throw InputError("readTensorField: " + path + ": is a directory");
-  if (!S_ISREG(st.st_mode)) throw InputError("readTensorField: " + path + ": not a regular file");
-  if (st.st_size == 0) throw InputError("readTensorField: " + path + ": file is empty");
-  return std::uint64_t(st.st_size);
+// The row that reads `path`'s tensors, or the one-line refusal.
+const InputFormatRow& formatOf(const std::string& path) {
+  const InputFormatRow* row = inputFormatRowOf(path);
+  if (row && row->readTensors) return *row;
+  throw InputError("readTensorField: " + path + ": unknown extension \"" + shownExtension(path) +
+                   "\"; supported: " + extensionList(kTensorUse));
 }
 
 }  // namespace
@@ -56,13 +35,13 @@ void promiseData(const char* who, const std::string& path, const ReadOptions& op
 }
 
 TensorField readTensorFieldInProcess(const std::string& path, const ReadOptions& opt) {
-  checkedFileSize(path);
-  return formatOf(path).read(path, opt);
+  checkInputFile("readTensorField", path);
+  return formatOf(path).readTensors(path, opt);
 }
 
 TensorField readTensorField(const std::string& path, const ReadOptions& opt) {
-  const std::uint64_t size = checkedFileSize(path);
-  const Format format = formatOf(path);
+  const std::uint64_t size = checkInputFile("readTensorField", path);
+  const InputFormatRow& format = formatOf(path);
   ReadOptions guarded = opt;
   if (!guarded.memoryBudget) guarded.memoryBudget = defaultMemoryBudget();
   // Uncompressed volume data comes back described, not decoded: the child
@@ -71,12 +50,12 @@ TensorField readTensorField(const std::string& path, const ReadOptions& opt) {
   TensorField field;
   std::optional<RawSamples> raw;
   runInChild(
-      format.who, path, limitsFor(size, guarded.memoryBudget),
+      format.tensorReader, path, limitsFor(size, guarded.memoryBudget),
       [&](const PromiseFn& promise) -> SendFn {
         guarded.onPromise = promise;
         auto out = std::make_shared<std::pair<TensorField, std::optional<RawSamples>>>();
         guarded.deferRaw = &out->second;
-        out->first = format.read(path, guarded);
+        out->first = format.readTensors(path, guarded);
         return [out](WireOut& w) {
           sendField(w, out->first);
           sendRaw(w, out->second);
@@ -89,7 +68,7 @@ TensorField readTensorField(const std::string& path, const ReadOptions& opt) {
       opt.progress);
   if (raw) {
     guarded.onPromise = nullptr;
-    readRawSamples(format.who, path, *raw, guarded, field, raw->dataFd.get());
+    readRawSamples(format.tensorReader, path, *raw, guarded, field, raw->dataFd.get());
   }
   return field;
 }

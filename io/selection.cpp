@@ -8,8 +8,7 @@
 #include <sstream>
 #include <stdexcept>
 
-#include <sys/stat.h>
-
+#include "io/format_table.h"
 #include "io/read_guard.h"
 #include "io/readers.h"
 
@@ -62,20 +61,11 @@ std::string maskGridMismatch(const int got[3], const int* want) {
 }
 
 ScalarVolume readScalarVolume(const std::string& path, const int* dims) {
-  struct stat st {};
-  if (::stat(path.c_str(), &st) != 0) throw InputError("readScalarVolume: " + path + ": no such file");
-  if (!S_ISREG(st.st_mode)) throw InputError("readScalarVolume: " + path + ": not a regular file");
-  switch (inputFormatOf(path)) {
-    case InputFormat::Nrrd: return readNrrdScalar(path, dims);
-    case InputFormat::Nifti: return readNiftiScalar(path, dims);
-    case InputFormat::Mif: return readMifScalar(path, dims);
-    case InputFormat::Vtk:
-      if (path.size() > 4 && (path.ends_with(".vti") || path.ends_with(".VTI"))) return readVtiScalar(path, dims);
-      break;
-    case InputFormat::Unknown: break;
-  }
-  throw InputError("readScalarVolume: " + path +
-                   ": unknown mask format; use .nrrd, .nhdr, .nii, .nii.gz, .mif, .mih or .vti");
+  checkInputFile("readScalarVolume", path);
+  const InputFormatRow* row = inputFormatRowOf(path);
+  if (!row || !row->readScalars)
+    throw InputError("readScalarVolume: " + path + ": unknown mask format; use " + extensionList(kScalarUse, ", ", " or "));
+  return row->readScalars(path, dims);
 }
 
 namespace {

@@ -6,6 +6,7 @@
 
 #include "app/cli_common.h"
 #include "app/option_ranges.h"
+#include "io/format_table.h"
 #include "io/nifti_layouts.h"
 
 namespace tg::app {
@@ -37,7 +38,7 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
   ap.arg("--frame F").help("NIfTI tensor axes: voxel, fsl (voxel, i reversed when det > 0) or world; default: the "
                            "layout's (fsl: fsl, mrtrix: world, else voxel)")
       .action([&](Args a) { read.frame = a[1]; });
-  ap.arg("--mask FILE").help("scalar volume on the same grid (.nrrd .nhdr .nii .nii.gz .mif .mih .vti)").action([&](Args a) {
+  ap.arg("--mask FILE").help("scalar volume on the same grid (" + io::extensionList(io::kScalarUse) + ")").action([&](Args a) {
     sel.maskPath = a[1];
   });
   ap.arg("--mask-min V").help("keep voxels whose mask value is >= V (default 0.5; needs --mask)").range(ranges::kAnyFloat)

@@ -5,6 +5,7 @@
 #include "app/option_table.h"
 #include "app/cli_values.h"
 #include "app/option_ranges.h"
+#include "io/format_table.h"
 
 namespace tg::app {
 std::optional<render::MeshMode> meshModeNamed(std::string_view name) {
@@ -22,10 +23,10 @@ void MeshFlags::addTo(OptionTable& ap) {
   const std::string group = ap.groupDefault();
   ap.setGroup("context");
   ap.arg("--mesh FILE")
-      .help("draw a surface with the glyphs: .vtp .vtk .stl .obj .ply, or the outer surface of a "
-            ".vtu/.vts volume mesh")
+      .help("draw a surface with the glyphs: " + io::extensionList(io::kSurfaceUse) + ", or the outer surface of a " +
+            io::extensionList(io::kVolumeMeshUse, "/") + " volume mesh")
       .repeats().action([this](Args a) { files.emplace_back(a[1]); });
-  ap.arg("--mesh-from-input").help("draw the boundary of the FEM mesh the tensors came from (a .vtu/.vtk input)")
+  ap.arg("--mesh-from-input").help("draw the boundary of the FEM mesh the tensors came from (a " + io::extensionList(io::kFemUse, "/") + " input)")
       .action([this](Args) { fromInput = true; });
   ap.arg("--mesh-mode MODE")
       .help(std::string("how meshes are drawn: opaque, see-through (the front layer blended over the glyphs) or "

@@ -13,6 +13,7 @@
 
 #include "app/cli_values.h"
 #include "app/option_ranges.h"
+#include "io/format_table.h"
 #include "io/readers.h"
 #include "render/slice_plane.h"
 #include "tensor/anisotropy.h"
@@ -48,7 +49,7 @@ void SliceFlags::addTo(OptionTable& ap) {
   const std::string group = ap.groupDefault();
   ap.setGroup("context");
   ap.arg("--underlay SOURCE")
-      .help("scalar volume under the glyphs: .nrrd .nhdr .nii .nii.gz .mif .mih .vti on any grid, placed by its "
+      .help("scalar volume under the glyphs: " + io::extensionList(io::kScalarUse) + " on any grid, placed by its "
             "own index-to-world map; or fa, md, cl, cp of the field itself (default fa when only --plane is given)")
       .action([this](Args a) {
         if (!*a[1]) throw UsageError("--underlay needs a file or fa, md, cl or cp");

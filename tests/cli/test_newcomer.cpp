@@ -238,9 +238,9 @@ TEST(Newcomer, MeshNamesNoReaderTakesAreUsageErrors) {
     const char* said;
   } cases[] = {
       {"render " + field.string() + " --mesh " + (dir() / "box.off").string(),
-       ": unknown mesh extension \".off\"; supported: .vtp .vtk .stl .obj .ply"},
+       ": unknown mesh extension \".off\"; supported: .vtk .vtp .stl .obj .ply, and .vtu .vts (outer surface)"},
       {"render " + nrrd.string() + " --mesh-from-input",
-       "--mesh-from-input needs an FEM mesh input (.vtu or a legacy .vtk unstructured grid), not \".nrrd\""},
+       "--mesh-from-input needs an FEM mesh input (an unstructured grid: .vtk or .vtu), not \".nrrd\""},
   };
   for (const auto& c : cases) {
     const std::string args = c.args + " -o " + out.string() + " --size 64 48";
