@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "render/frame_image.h"
+#include "view/frame_image.h"
 
 namespace tg::io {
 

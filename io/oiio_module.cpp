@@ -113,11 +113,7 @@ std::int64_t write(const std::string& path, const std::string& tempPath, int fd,
 
 }  // namespace tg::io
 
-namespace tg::app {
-bool drawPlot(const std::vector<PlotPanel>& panels, int w, int h, std::vector<float>& rgb);  // plot_draw.cpp
-}
-
 extern "C" const tg::io::OiioModule* tg_oiio_module() {
-  static const tg::io::OiioModule m{tg::io::OiioModule::kVersion, tg::io::canWrite, tg::io::write, tg::app::drawPlot};
+  static const tg::io::OiioModule m{tg::io::OiioModule::kVersion, tg::io::canWrite, tg::io::write, tg::io::drawPlot};
   return &m;
 }

@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "app/plot.h"
+#include "io/plot_panels.h"
 
 namespace tg::io {
 
@@ -37,7 +37,7 @@ struct OiioModule {
   std::int64_t (*write)(const std::string& path, const std::string& tempPath, int fd, const OiioImage& img);
   // Draws benchmark plot panels into `rgb` (w * panels x h, 3 floats per
   // pixel, top row first); false when no font was found.
-  bool (*drawPlot)(const std::vector<app::PlotPanel>& panels, int w, int h, std::vector<float>& rgb);
+  bool (*drawPlot)(const std::vector<PlotPanel>& panels, int w, int h, std::vector<float>& rgb);
 };
 
 // Loads the module once and returns it, or throws std::runtime_error

@@ -1,7 +1,7 @@
 #pragma once
 // The viewer's camera: a turntable about the world up axis, as ParaView's and
 // Slicer's default interaction, GL-free so that scripts and tests share it.
-#include "render/camera.h"
+#include "view/camera.h"
 
 namespace tg::app {
 

@@ -10,7 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include "io/tensor_field.h"
-#include "render/camera.h"
+#include "view/camera.h"
 #include "render/gbuffer.h"
 #include "render/renderer.h"
 #include "tensor/anisotropy.h"

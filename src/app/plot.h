@@ -1,27 +1,15 @@
 #pragma once
 // Small line plots for benchmark reports, drawn with OpenImageIO's
 // ImageBufAlgo (lines, boxes, text) and written as PNG.
-#include <array>
 #include <string>
 #include <vector>
 
-#include <glm/vec2.hpp>
+#include "io/plot_panels.h"
 
 namespace tg::app {
 
-struct PlotSeries {
-  std::string label;
-  std::array<float, 3> rgb{};
-  std::vector<glm::dvec2> points;  // drawn in this order, joined by lines
-};
-
-struct PlotPanel {
-  std::string title, xLabel, yLabel;
-  // Log-scaled y; values <= 0 are drawn at the panel's floor, which the axis
-  // labels as "<= floor".
-  bool logY = true;
-  std::vector<PlotSeries> series;
-};
+using io::PlotPanel;
+using io::PlotSeries;
 
 // Panels side by side, each w x h pixels, written to `path` through a
 // temporary file. Throws std::runtime_error "writePlot: path: problem".

@@ -12,7 +12,7 @@
 #include "app/pick_flags.h"
 #include "app/scene.h"
 #include "app/scene_flags.h"
-#include "render/camera.h"
+#include "view/camera.h"
 #include "render/frame_params.h"
 #include "tensor/glyph_scale.h"
 

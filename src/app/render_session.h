@@ -18,7 +18,7 @@
 #include "gl/context.h"
 #include "gl/shader_library.h"
 #include "io/mesh_reader.h"
-#include "render/frame_image.h"
+#include "view/frame_image.h"
 #include "render/gbuffer.h"
 #include "render/legend_room.h"
 #include "render/renderer.h"

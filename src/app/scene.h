@@ -7,7 +7,7 @@
 #include "app/look_flags.h"
 #include "io/readers.h"
 #include "io/selection.h"
-#include "render/camera.h"
+#include "view/camera.h"
 
 namespace tg::app {
 

@@ -9,7 +9,7 @@
 
 #include "io/tensor_field.h"
 #include "render/renderer.h"
-#include "render/underlay.h"
+#include "view/underlay.h"
 
 namespace tg::render {
 class SlicePlane;

@@ -46,7 +46,7 @@
 #include "app/orbit_camera.h"
 #include "render/mesh_item.h"
 #include "render/frame_params.h"
-#include "render/underlay.h"
+#include "view/underlay.h"
 
 namespace tg::app {
 

@@ -9,7 +9,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "render/camera.h"
+#include "view/camera.h"
 #include "tensor/glyph.h"
 #include "tensor/glyph_scale.h"
 

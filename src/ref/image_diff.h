@@ -7,8 +7,8 @@
 #include <functional>
 
 #include "ref/ellipsoid_ref.h"
-#include "render/camera.h"
-#include "render/frame_image.h"
+#include "view/camera.h"
+#include "view/frame_image.h"
 
 namespace tg::ref {
 

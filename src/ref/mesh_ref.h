@@ -10,7 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include "ref/ellipsoid_ref.h"
-#include "render/camera.h"
+#include "view/camera.h"
 
 namespace tg::ref {
 

@@ -1,13 +1,13 @@
 #pragma once
 // The CPU reference for slice planes: each pixel's ray against a plane's quad
 // in double precision, merged into a reference image by depth. It shares the
-// quad (render/underlay.h) and the camera with the GPU path, never its
+// quad (view/underlay.h) and the camera with the GPU path, never its
 // arithmetic. Depth is that of the plane moved `offsetWC` away from the eye
 // along its normal, as the GPU's view-dependent offset puts it.
 #include <cstdint>
 
 #include "ref/ellipsoid_ref.h"
-#include "render/underlay.h"
+#include "view/underlay.h"
 
 namespace tg::ref {
 

@@ -19,7 +19,7 @@
 #include <cstddef>
 
 #include "gl/program.h"
-#include "render/camera.h"
+#include "view/camera.h"
 #include "render/frame_pass.h"
 #include "render/gbuffer.h"
 

@@ -2,7 +2,7 @@
 // The camera uniforms of shaders/lib/camera.glsl, for every program that
 // includes it: the glyph passes and the deferred ones.
 #include "gl/program.h"
-#include "render/camera.h"
+#include "view/camera.h"
 
 namespace tg::render {
 

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <memory>
 
-#include "render/frame_image.h"
+#include "view/frame_image.h"
 
 namespace tg::render {
 

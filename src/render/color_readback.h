@@ -10,8 +10,8 @@
 #include <vector>
 
 #include "gl/loader.h"
-#include "render/camera.h"
-#include "render/frame_image.h"
+#include "view/camera.h"
+#include "view/frame_image.h"
 #include "render/gbuffer.h"
 
 namespace tg::render {

@@ -13,7 +13,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "render/camera.h"
+#include "view/camera.h"
 #include "render/gbuffer.h"
 #include "render/legend_key.h"
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "gl/program.h"
-#include "render/camera.h"
+#include "view/camera.h"
 #include "render/context_item.h"
 #include "render/frame_params.h"
 #include "render/gbuffer.h"

@@ -6,7 +6,7 @@
 #include <stdexcept>
 
 #include "render/camera_uniforms.h"
-#include "render/frustum.h"
+#include "view/frustum.h"
 #include "shaders/lib/bindings.h"
 
 namespace tg::render {

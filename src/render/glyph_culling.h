@@ -19,7 +19,7 @@
 #include "gl/async_counter.h"
 #include "gl/program.h"
 #include "render/frame_params.h"
-#include "render/camera.h"
+#include "view/camera.h"
 #include "render/glyph_ranges.h"
 #include "render/quad_sprites.h"
 #include "tensor/glyph_scale.h"

@@ -18,7 +18,7 @@
 #include <glm/vec3.hpp>
 
 #include "gl/program.h"
-#include "render/camera.h"
+#include "view/camera.h"
 #include "render/frame_params.h"
 #include "render/gbuffer.h"
 #include "tensor/glyph.h"

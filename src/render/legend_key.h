@@ -3,7 +3,7 @@
 // underlay (render/slice_plane.h), the value range its colormap spans.
 #include <string>
 
-#include "render/underlay.h"
+#include "view/underlay.h"
 
 namespace tg::render {
 

@@ -12,7 +12,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "render/camera.h"
+#include "view/camera.h"
 #include "render/legend_key.h"
 #include "render/legend_params.h"
 #include "tensor/glyph_scale.h"

@@ -5,7 +5,7 @@
 // one the user gave (app/render_session.h).
 #include <vector>
 
-#include "render/camera.h"
+#include "view/camera.h"
 #include "render/legend_layout.h"
 #include "tensor/glyph.h"
 #include "tensor/glyph_scale.h"

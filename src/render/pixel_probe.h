@@ -5,7 +5,7 @@
 #include <cstdint>
 
 #include "gl/loader.h"
-#include "render/camera.h"
+#include "view/camera.h"
 #include "render/gbuffer.h"
 
 namespace tg::render {

@@ -13,10 +13,10 @@
 #include <vector>
 
 #include "gl/program.h"
-#include "render/camera.h"
+#include "view/camera.h"
 #include "render/color_readback.h"
 #include "render/context_item.h"
-#include "render/frame_image.h"
+#include "view/frame_image.h"
 #include "render/frame_params.h"
 #include "render/frame_pass.h"
 #include "render/gbuffer.h"

@@ -24,7 +24,7 @@
 
 #include "gl/program.h"
 #include "render/frame_pass.h"
-#include "render/camera.h"
+#include "view/camera.h"
 #include "render/gbuffer.h"
 #include "render/occluder_pyramid.h"
 

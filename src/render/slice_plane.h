@@ -17,7 +17,7 @@
 
 #include "gl/program.h"
 #include "render/context_item.h"
-#include "render/underlay.h"
+#include "view/underlay.h"
 
 namespace tg::render {
 

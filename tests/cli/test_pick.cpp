@@ -24,7 +24,7 @@
 #include "io/writers.h"
 #include "real_data.h"
 #include "ref/ellipsoid_ref.h"
-#include "render/camera.h"
+#include "view/camera.h"
 #include "tensor/glyph.h"
 
 namespace fs = std::filesystem;

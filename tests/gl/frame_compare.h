@@ -6,7 +6,7 @@
 
 #include "gl/loader.h"
 #include "ref/ellipsoid_ref.h"
-#include "render/frame_image.h"
+#include "view/frame_image.h"
 
 namespace tg::test {
 

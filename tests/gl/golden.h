@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "io/image_writer.h"
-#include "render/frame_image.h"
+#include "view/frame_image.h"
 
 namespace tg::test {
 

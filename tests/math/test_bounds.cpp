@@ -10,7 +10,7 @@
 
 #include "ref/ellipsoid_ref.h"
 #include "ref/pixel_loop.h"
-#include "render/camera.h"
+#include "view/camera.h"
 #include "tensor/glyph.h"
 
 using namespace tg;

@@ -4,7 +4,7 @@
 #include <algorithm>
 #include <random>
 
-#include "render/frustum.h"
+#include "view/frustum.h"
 #include "render/glyph_ranges.h"
 
 using namespace tg;

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "render/frame_image.h"
+#include "view/frame_image.h"
 
 using tg::render::toUnorm8;
 

@@ -6,7 +6,7 @@
 #include <string>
 
 #include "ref/ellipsoid_ref.h"
-#include "render/camera.h"
+#include "view/camera.h"
 #include "render/glyph_kind.h"
 #include "tensor/glyph.h"
 

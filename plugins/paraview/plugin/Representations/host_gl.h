@@ -7,7 +7,7 @@
 
 #include "gl/loader.h"
 #include "gl/program.h"
-#include "render/camera.h"
+#include "view/camera.h"
 #include "render/gbuffer.h"
 
 namespace tg::paraview {

@@ -1,4 +1,4 @@
-#include "render/camera.h"
+#include "view/camera.h"
 
 #include <algorithm>
 #include <cfloat>

@@ -1,6 +1,6 @@
 // Plot drawing with OpenImageIO's ImageBufAlgo (lines, boxes, text); part of
 // the OpenImageIO module (io/oiio_module.h), so that only `bench` loads it.
-#include "app/plot.h"
+#include "io/plot_panels.h"
 
 #include <OpenImageIO/imagebuf.h>
 #include <OpenImageIO/imagebufalgo.h>
@@ -10,7 +10,7 @@
 #include <cstdio>
 #include <stdexcept>
 
-namespace tg::app {
+namespace tg::io {
 namespace {
 
 namespace IBA = OIIO::ImageBufAlgo;
@@ -130,4 +130,4 @@ bool drawPlot(const std::vector<PlotPanel>& panels, int w, int h, std::vector<fl
   return c.labelled();
 }
 
-}  // namespace tg::app
+}  // namespace tg::io

@@ -1,4 +1,4 @@
-#include "render/frustum.h"
+#include "view/frustum.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "render/underlay.h"
+#include "view/underlay.h"
 
 #include <algorithm>
 #include <cmath>

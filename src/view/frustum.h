@@ -7,7 +7,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "render/camera.h"
+#include "view/camera.h"
 
 namespace tg::render {
 
