@@ -1,6 +1,5 @@
 #include "app/cli_values.h"
 
-#include <charconv>
 #include <cctype>
 #include <cmath>
 #include <cstdio>
@@ -9,18 +8,19 @@
 
 #include "io/atomic_file.h"
 #include "util/number_text.h"
+#include "util/strict_number.h"
 
 namespace tg::app {
 
+// Command-line values are read as file text is (util/strict_number.h): whole
+// decimal numbers, a leading '+' allowed.
 double parseDouble(std::string_view flag, std::string_view text) {
-  double v = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
   // "--ortho --fov 30": the parser gave the next flag as the value.
   if (text.size() > 2 && text.starts_with("--") && !std::isdigit(static_cast<unsigned char>(text[2])))
     throw UsageError(std::string(flag) + ": a number is missing (found the option " + std::string(text) + ")");
-  if (ec != std::errc() || end != text.data() + text.size() || text.empty() || !std::isfinite(v))
-    throw UsageError(std::string(flag) + ": \"" + std::string(text) + "\" is not a finite number");
-  return v;
+  const std::optional<double> v = util::parseFinite(text);
+  if (!v) throw UsageError(std::string(flag) + ": \"" + std::string(text) + "\" is not a finite number");
+  return *v;
 }
 
 double parseDoubleIn(std::string_view flag, std::string_view text, double lo, double hi) {
@@ -34,20 +34,17 @@ double parseDoubleIn(std::string_view flag, std::string_view text, double lo, do
 }
 
 long long parseInt(std::string_view flag, std::string_view text) {
-  long long v = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (ec != std::errc() || end != text.data() + text.size() || text.empty())
-    throw UsageError(std::string(flag) + ": \"" + std::string(text) + "\" is not an integer");
-  return v;
+  const std::optional<long long> v = util::parseInteger(text);
+  if (!v) throw UsageError(std::string(flag) + ": \"" + std::string(text) + "\" is not an integer");
+  return *v;
 }
 
 long long parseInt(std::string_view flag, std::string_view text, long long lo, long long hi) {
-  long long v = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), v);
-  if (ec != std::errc() || end != text.data() + text.size() || text.empty() || v < lo || v > hi)
+  const std::optional<long long> v = util::parseInteger(text);
+  if (!v || *v < lo || *v > hi)
     throw UsageError(std::string(flag) + ": \"" + std::string(text) + "\" is not an integer within " +
                      std::to_string(lo) + ".." + std::to_string(hi));
-  return v;
+  return *v;
 }
 
 void checkOutputPath(std::string_view flag, const std::string& path) {
