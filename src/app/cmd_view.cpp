@@ -99,8 +99,7 @@ int cmdView(int argc, const char** argv) {
   for (const ScriptStep& s : script)
     if (s.verb == "screenshot") scriptShots.push_back({o.script + ":" + std::to_string(s.line) + ": screenshot", s.args[0]});
   for (const ScriptStep& s : script)
-    if (s.verb == "pick" && (parseIntIn("pick", s.args[0], 0, kMaxFrameSide) >= o.width ||
-                             parseIntIn("pick", s.args[1], 0, kMaxFrameSide) >= o.height))
+    if (s.verb == "pick" && (s.integer(0) >= o.width || s.integer(1) >= o.height))
       throw io::InputError(o.script + ":" + std::to_string(s.line) + ": pick: the pixel is outside the " +
                            std::to_string(o.width) + " x " + std::to_string(o.height) + " window");
   std::vector<NamedPath> inputs = {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath}, {"--script", o.script},
@@ -195,9 +194,8 @@ int cmdView(int argc, const char** argv) {
         const ScriptStep& s = script[step++];
         if (s.verb == "screenshot") shot = s.args[0];
         else if (s.verb == "pick")
-          scriptPick = PixelIJ{parseIntIn("pick", s.args[0], 0, kMaxFrameSide - 1),
-                               parseIntIn("pick", s.args[1], 0, kMaxFrameSide - 1)};
-        else if (s.verb == "frames") framesLeft = parseIntIn("frames", s.args[0], 1, 100000) - 1;
+          scriptPick = PixelIJ{s.integer(0), s.integer(1)};
+        else if (s.verb == "frames") framesLeft = s.integer(0) - 1;
         else applyStep(s, v);
       } else {
         glfwSetWindowShouldClose(window, GLFW_TRUE);

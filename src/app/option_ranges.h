@@ -10,6 +10,7 @@
 #include <string>
 #include <string_view>
 
+#include "app/frame_size.h"
 #include "render/ao_pass.h"
 #include "render/legend_params.h"
 #include "render/outline_pass.h"
@@ -54,6 +55,9 @@ inline constexpr NumberRange kStride{1, 1000000, true};
 inline constexpr NumberRange kClampSpacings{0.01, 1e6, false, true};
 inline constexpr NumberRange kRepeat{0, 10000, true};
 inline constexpr NumberRange kFrames{1, 1000, true};
+// The view script: frames to wait, and a pixel of the window to pick.
+inline constexpr NumberRange kScriptFrames{1, 100000, true};
+inline constexpr NumberRange kPixelIndex{0, kMaxFrameSide - 1, true};
 inline constexpr NumberRange kPercent{0.0, 100.0};
 inline constexpr NumberRange kPlaneOffsetRadii{0.0, 100.0};
 inline constexpr NumberRange kFeatureAngleDeg{0.0, 180.0};

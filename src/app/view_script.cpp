@@ -101,8 +101,8 @@ void check(const ScriptStep& s) {
   if (v == "iterations") ranged(s, 0, ranges::kIterations);
   if (v == "epsilon") ranged(s, 0, ranges::kEpsilon);
   if (v == "stats" && s.args[0] != "on" && s.args[0] != "off") throw UsageError("stats: on or off");
-  if (v == "frames") parseIntIn(v, s.args[0], 1, 100000);
-  if (v == "pick") parseIntIn(v, s.args[0], 0, kMaxFrameSide - 1), parseIntIn(v, s.args[1], 0, kMaxFrameSide - 1);
+  if (v == "frames") ranged(s, 0, ranges::kScriptFrames);
+  if (v == "pick") ranged(s, 0, ranges::kPixelIndex), ranged(s, 1, ranges::kPixelIndex);
   // As render's -o: a format that cannot be written is known before the window opens.
   if (v == "screenshot" && !io::canWriteImage(s.args[0]))
     throw UsageError("screenshot: no image format for \"" + s.args[0] + "\"");
@@ -131,6 +131,8 @@ void check(const ScriptStep& s) {
 }
 
 }  // namespace
+
+int ScriptStep::integer(std::size_t k) const { return int(parseInt(verb, args.at(k))); }
 
 std::vector<ScriptStep> parseScript(const std::string& path) {
   // A regular file of sane size: a FIFO would block and /dev/zero never end.

@@ -87,6 +87,10 @@ struct ScriptStep {
   int line = 0;
   std::string verb;
   std::vector<std::string> args;
+  // Argument k as an integer, once parseScript has held it to its range
+  // (frames, pick: app/option_ranges.h), so the viewer reads it without a
+  // second range of its own.
+  int integer(std::size_t k) const;
 };
 
 // Throws io::InputError "PATH:LINE: ..." for an unreadable file, an unknown

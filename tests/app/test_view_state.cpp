@@ -341,10 +341,14 @@ TEST_F(ViewScript, ValuesAreHeldToTheRangesRenderDeclares) {
     }
   }
   for (const std::string line : {"light key 1e300", "light ambient -1", "light specular 2", "light shininess 0",
-                                 "zoom 1e-40", "scale 1e300", "slab z 1e300 2e300"})
+                                 "zoom 1e-40", "scale 1e300", "slab z 1e300 2e300", "frames 0", "frames 100001",
+                                 "pick -1 3", "pick 3 16384"})
     EXPECT_PRED_FORMAT2(testing::IsSubstring, "must be within", scriptError(line + "\n")) << line;
-  std::ofstream(path) << "fa-min 1\nlight key 1\nlight shininess 200\n";
-  EXPECT_EQ(app::parseScript(path).size(), 3u);
+  std::ofstream(path) << "fa-min 1\nlight key 1\nlight shininess 200\nframes 100000\npick 16383 0\n";
+  const std::vector<app::ScriptStep> steps = app::parseScript(path);
+  ASSERT_EQ(steps.size(), 5u);
+  EXPECT_EQ(steps[3].integer(0), 100000);
+  EXPECT_EQ(steps[4].integer(0), 16383);
 }
 
 }  // namespace
