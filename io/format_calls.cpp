@@ -5,6 +5,7 @@
 // (io/temp_registry.h); the modules only encode.
 #include "io/atomic_file.h"
 #include "io/format_modules.h"
+#include "io/format_table.h"
 #include "io/input_files.h"
 #include "io/module_loader.h"
 #include "io/writers.h"
@@ -30,24 +31,44 @@ const Table& formats(const Table* (*linked)(), const LoadedModule& loaded, const
 }  // namespace
 
 // Each module is loaded once per process; its handle stays open until exit.
-const VtkFormats& vtkFormats(const std::string& who, const std::string& path) {
+// Linked in (the weak symbol defined), it needs no loading.
+const LoadedModule& vtkModule() {
   static const LoadedModule loaded =
       tg_vtk_formats ? LoadedModule{} : loadModule("tensorglyph-vtk.so", "tg_vtk_formats", VtkFormats::kVersion);
-  return formats(tg_vtk_formats, loaded, who, path, "VTK");
+  return loaded;
 }
-
-const TeemFormats& teemFormats(const std::string& who, const std::string& path) {
+const LoadedModule& teemModule() {
   static const LoadedModule loaded = tg_teem_formats
                                          ? LoadedModule{}
                                          : loadModule("tensorglyph-teem.so", "tg_teem_formats", TeemFormats::kVersion);
-  return formats(tg_teem_formats, loaded, who, path, "Teem");
+  return loaded;
 }
-
-const NiftiFormats& niftiFormats(const std::string& who, const std::string& path) {
+const LoadedModule& niftiModule() {
   static const LoadedModule loaded =
       tg_nifti_formats ? LoadedModule{}
                        : loadModule("tensorglyph-nifti.so", "tg_nifti_formats", NiftiFormats::kVersion);
-  return formats(tg_nifti_formats, loaded, who, path, "libnifti");
+  return loaded;
+}
+
+const VtkFormats& vtkFormats(const std::string& who, const std::string& path) {
+  return formats(tg_vtk_formats, vtkModule(), who, path, "VTK");
+}
+const TeemFormats& teemFormats(const std::string& who, const std::string& path) {
+  return formats(tg_teem_formats, teemModule(), who, path, "Teem");
+}
+const NiftiFormats& niftiFormats(const std::string& who, const std::string& path) {
+  return formats(tg_nifti_formats, niftiModule(), who, path, "libnifti");
+}
+
+std::string moduleProblem(std::string_view module) {
+  const auto problem = [](bool linked, const LoadedModule& m) {
+    return linked || m.table ? std::string() : m.path + " " + m.error;
+  };
+  if (module == "vtk") return problem(tg_vtk_formats, vtkModule());
+  if (module == "teem") return problem(tg_teem_formats, teemModule());
+  if (module == "nifti") return problem(tg_nifti_formats, niftiModule());
+  if (module.empty()) return {};
+  return "no module named \"" + std::string(module) + "\"";
 }
 
 TensorField readVtk(const std::string& path, const ReadOptions& opt) {

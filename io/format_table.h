@@ -6,6 +6,7 @@
 // format is its reader, one row (io/format_table.cpp) and its tests.
 #include <cstdint>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "io/readers.h"
@@ -46,6 +47,10 @@ struct InputFormatRow {
   // filesReadBy; null: none.
   std::vector<std::string> (*dataFiles)(const std::string& path) = nullptr;
 };
+
+// "" where the row's module (InputFormatRow::module) is linked in or loads
+// on this machine, or is none; else what stops it, as the loader says.
+std::string moduleProblem(std::string_view module);
 
 // Every row, in the order help texts and errors list them.
 const std::vector<InputFormatRow>& inputFormats();

@@ -3,11 +3,13 @@
 #include <cctype>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <string_view>
 
 #include "app/commands.h"
 #include "app/option_table.h"
 #include "app/render_options.h"
+#include "io/format_table.h"
 
 namespace tg::app {
 namespace {
@@ -27,7 +29,41 @@ const OptionGroup* topicGroup(std::string_view topic) {
 std::string topics() {
   std::string s = "topics (the groups of 'tensorglyph render --help'):\n";
   for (const OptionGroup& g : kOptionGroups) s += std::string("  ") + g.name + "\n";
-  return s + "or a command: render, view, info, synth, bench; docs/cli.md has them all\n";
+  return s + "formats: the input formats, what each is read as, and whether its module loads here\n" +
+         "or a command: render, view, info, synth, bench; docs/cli.md has them all\n";
+}
+
+// One line per row of the format table (io/format_table.h), with what its
+// module needs on this machine: a missing module is found here, not at the
+// first file.
+std::string formatsHelp() {
+  static const std::pair<unsigned, const char*> kUses[] = {{io::kTensorUse, "input"},
+                                                           {io::kScalarUse, "--mask/--underlay"},
+                                                           {io::kSurfaceUse, "--mesh"},
+                                                           {io::kVolumeMeshUse, "--mesh (outer surface)"},
+                                                           {io::kFemUse, "--mesh-from-input"}};
+  static const std::pair<unsigned, const char*> kOptions[] = {{io::kLayoutOption, "--layout"},
+                                                              {io::kFrameOption, "--frame"},
+                                                              {io::kArrayOption, "--array"},
+                                                              {io::kConfidenceOption, "--confidence-min"}};
+  std::string s = "input formats: extensions; what a file can be given as; the options that apply; its module\n";
+  for (const io::InputFormatRow& row : io::inputFormats()) {
+    std::string line = std::string("  ") + row.name + ":";
+    for (const std::string& e : row.extensions) line += " " + e;
+    std::string uses, options;
+    for (const auto& [bit, name] : kUses)
+      if (row.uses & bit) uses += (uses.empty() ? "" : ", ") + std::string(name);
+    for (const auto& [bit, name] : kOptions)
+      if (row.options & bit) options += (options.empty() ? "" : ", ") + std::string(name);
+    line += "; as " + uses + "; " + (options.empty() ? "no format options" : options);
+    const std::string module = row.module;
+    if (module.empty()) line += "; read by tensorglyph itself";
+    else if (const std::string problem = io::moduleProblem(module); problem.empty())
+      line += "; module " + module + " (loads)";
+    else line += "; module " + module + " NOT AVAILABLE: " + problem;
+    s += line + "\n";
+  }
+  return s;
 }
 
 }  // namespace
@@ -39,6 +75,10 @@ int cmdHelp(int argc, const char** argv, int (*command)(const std::string&, int,
   }
   if (argc > 2) throw UsageError("give one topic; " + topics().substr(0, topics().find('\n')));
   const std::string topic = argv[1];
+  if (topic == "formats") {
+    std::fputs(formatsHelp().c_str(), stdout);
+    return 0;
+  }
   if (const OptionGroup* g = topicGroup(topic)) {
     RenderOptions o;
     OptionTable table(kRenderUsage);

@@ -287,6 +287,12 @@ TEST(Options, HelpIsGroupedByTaskAndHelpTopicPrintsOneGroup) {
   EXPECT_EQ(run("help depth").out.find("depth cues:\n"), 0u);
   EXPECT_NE(run("help").out.find("input and selection"), std::string::npos);
   EXPECT_NE(run("help info").out.find("usage: tensorglyph info"), std::string::npos);
+  const CmdResult formats = run("help formats");
+  ASSERT_EQ(formats.code, 0) << formats.err;
+  for (const char* row : {"NIfTI: .nii .nii.gz; as input, --mask/--underlay; --layout, --frame; module nifti (loads)",
+                          "MRtrix: .mif .mih; as input, --mask/--underlay; no format options; read by tensorglyph itself",
+                          "STL: .stl; as --mesh; no format options; module vtk (loads)"})
+    EXPECT_NE(formats.out.find(row), std::string::npos) << row << "\n" << formats.out;
   const CmdResult unknown = run("help lighting");
   EXPECT_EQ(unknown.code, 2);
   EXPECT_NE(unknown.err.find("unknown topic \"lighting\""), std::string::npos) << unknown.err;

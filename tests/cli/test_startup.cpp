@@ -189,6 +189,20 @@ TEST(Startup, WithoutAFormatModuleOnlyItsFilesFail) {
         EXPECT_EQ(r.code, 0) << args << " without " << missing.module << " -> " << r.err;
       }
     }
+    // `help formats` finds it before any file does: the missing module's
+    // rows say so, the others load.
+    const auto help = runBinary("help formats", d, lone.string());
+    EXPECT_EQ(help.code, 0) << help.err;
+    const std::string name = std::string(missing.module).substr(12, std::string(missing.module).find('.') - 12);
+    EXPECT_NE(help.out.find("module " + name + " NOT AVAILABLE: " + (lone.parent_path() / missing.module).string() +
+                            " is missing"),
+              std::string::npos)
+        << help.out;
+    for (const auto& c : cases)
+      if (&c != &missing) {
+        const std::string other = std::string(c.module).substr(12, std::string(c.module).find('.') - 12);
+        EXPECT_NE(help.out.find("module " + other + " (loads)"), std::string::npos) << other << "\n" << help.out;
+      }
     fs::copy_file(built / missing.module, lone.parent_path() / missing.module, fs::copy_options::overwrite_existing);
   }
 }
