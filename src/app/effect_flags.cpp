@@ -9,17 +9,6 @@
 #include "tensor/glyph_scale.h"
 
 namespace tg::app {
-namespace {
-
-template <class T>
-std::string withDefault(const char* text, T value) {
-  std::ostringstream s;
-  s << text << " (default " << value << ")";
-  return s.str();
-}
-
-}  // namespace
-
 void EffectFlags::addTo(OptionTable& ap) {
   using Args = OptionArgs;
   const render::AoParams a;
@@ -38,13 +27,13 @@ void EffectFlags::addTo(OptionTable& ap) {
         ao.radius = parseDouble(v[0], v[1]);
         aoTuned = true;
       });
-  ap.arg("--ao-strength S").help(withDefault("occlusion weight; 1 takes all ambient and head light from a fully "
-                                             "occluded point", a.strength))
-      .range(ranges::kAoStrength).action([&](Args v) {
+  ap.arg("--ao-strength S").help("occlusion weight; 1 takes all ambient and head light from a fully occluded point")
+      .range(ranges::kAoStrength).byDefault(formatNumber(a.strength)).action([&](Args v) {
         ao.strength = parseDouble(v[0], v[1]);
         aoTuned = true;
       });
-  ap.arg("--ao-samples N").help(withDefault("hemisphere samples per pixel", a.samples)).range(ranges::kAoSamples)
+  ap.arg("--ao-samples N").help("hemisphere samples per pixel").range(ranges::kAoSamples)
+      .byDefault(formatNumber(a.samples))
       .action([&](Args v) {
     ao.samples = int(parseInt(v[0], v[1]));
     aoTuned = true;
@@ -52,18 +41,21 @@ void EffectFlags::addTo(OptionTable& ap) {
   ap.arg("--outlines").help("silhouette and crease lines where glyph, depth or normal change").action([&](Args) {
     outline.enabled = true;
   });
-  ap.arg("--outline-width W").help(withDefault("line width in pixels", o.width)).range(ranges::kOutlineWidth)
+  ap.arg("--outline-width W").help("line width in pixels").range(ranges::kOutlineWidth)
+      .byDefault(formatNumber(o.width))
       .action([&](Args v) {
     outline.width = parseDouble(v[0], v[1]);
     outlineTuned = true;
   });
-  ap.arg("--outline-color R G B A").help("line colour; A blends (default 0 0 0 1)").range(ranges::kUnit)
+  ap.arg("--outline-color R G B A").help("line colour; A blends").range(ranges::kUnit)
+      .byDefault(formatNumber(o.color.r) + " " + formatNumber(o.color.g) + " " + formatNumber(o.color.b) + " " +
+                 formatNumber(o.color.a))
       .action([&](Args v) {
     for (int k = 0; k < 4; ++k) outline.color[k] = float(parseDouble(v[0], v[1 + k]));
     outlineTuned = true;
   });
-  ap.arg("--outline-crease DEG").help(withDefault("normals turning more than this draw a crease line", o.creaseDeg))
-      .range(ranges::kCreaseDeg).action([&](Args v) {
+  ap.arg("--outline-crease DEG").help("normals turning more than this draw a crease line")
+      .range(ranges::kCreaseDeg).byDefault(formatNumber(o.creaseDeg)).action([&](Args v) {
         outline.creaseDeg = parseDouble(v[0], v[1]);
         outlineTuned = true;
       });

@@ -29,8 +29,9 @@ void MeshFlags::addTo(OptionTable& ap) {
   ap.arg("--mesh-from-input").help("draw the boundary of the FEM mesh the tensors came from (a " + io::extensionList(io::kFemUse, "/") + " input)")
       .action([this](Args) { fromInput = true; });
   ap.arg("--mesh-mode MODE")
-      .help(std::string("how meshes are drawn: opaque, see-through (the front layer blended over the glyphs) or "
-                        "edges (feature edges); default ") + render::meshModeName(d.mode))
+      .help("how meshes are drawn: opaque, see-through (the front layer blended over the glyphs) or edges (feature "
+            "edges)")
+      .byDefault(render::meshModeName(d.mode))
       .action([this, given](Args a) {
         given("--mesh-mode");
         const auto m = meshModeNamed(a[1]);
@@ -38,23 +39,21 @@ void MeshFlags::addTo(OptionTable& ap) {
         params.mode = *m;
       });
   ap.arg("--mesh-color R G B")
-      .help("mesh colour (default " + formatNumber(d.color.r) + " " + formatNumber(d.color.g) + " " + formatNumber(d.color.b) + ")")
-      .range(ranges::kUnit).action([this, given](Args a) {
+      .help("mesh colour")
+      .range(ranges::kUnit).byDefault(formatNumber(d.color.r) + " " + formatNumber(d.color.g) + " " + formatNumber(d.color.b)).action([this, given](Args a) {
         given("--mesh-color");
         for (int k = 0; k < 3; ++k) params.color[k] = float(parseDouble(a[0], a[1 + std::size_t(k)]));
       });
   ap.arg("--mesh-opacity A")
-      .help("see-through: opacity of a face seen head-on, rising towards the outline (default " +
-            formatNumber(d.opacity) + ")")
-      .range(ranges::kUnit).action([this, given](Args a) {
+      .help("see-through: opacity of a face seen head-on, rising towards the outline")
+      .range(ranges::kUnit).byDefault(formatNumber(d.opacity)).action([this, given](Args a) {
         given("--mesh-opacity");
         opacityGiven = true;
         params.opacity = float(parseDouble(a[0], a[1]));
       });
   ap.arg("--mesh-feature-angle DEG")
-      .help("edges: draw creases sharper than this, and every boundary edge (default " +
-            formatNumber(d.featureAngleDeg) + ")")
-      .range(ranges::kFeatureAngleDeg).action([this, given](Args a) {
+      .help("edges: draw creases sharper than this, and every boundary edge")
+      .range(ranges::kFeatureAngleDeg).byDefault(formatNumber(d.featureAngleDeg)).action([this, given](Args a) {
         given("--mesh-feature-angle");
         featureAngleGiven = true;
         params.featureAngleDeg = float(parseDouble(a[0], a[1]));

@@ -194,14 +194,15 @@ std::string markdownReference(const OptionTable& table, const std::string& title
       current = group;
       md += "\n### " + group + "\n\n";
       if (const OptionGroup* g = groupNamed(group)) md += "Example: `" + std::string(g->example) + "`\n\n";
-      md += "| option | values | range | what it does |\n|---|---|---|---|\n";
+      md += "| option | values | range | default | what it does |\n|---|---|---|---|---|\n";
     }
     std::string help = o->helpText;
     for (std::size_t at = 0; (at = help.find('|', at)) != std::string::npos; at += 2) help.replace(at, 1, "\\|");
     const std::string flag = o->shortFlag.empty() ? o->flag : o->shortFlag + ", " + o->flag;
     const std::string range = o->numbers ? (o->list ? "each " : "") + o->numbers->text() : "";
+    const std::string byDefault = o->defaultText.empty() ? "" : "`" + o->defaultText + "`";
     md += "| `" + flag + "` | " + (o->metavars.empty() ? "" : "`" + joined(o->metavars) + "`") + " | " + range +
-          " | " + help + (o->repeatable ? " (repeatable)" : "") + " |\n";
+          " | " + byDefault + " | " + help + (o->repeatable ? " (repeatable)" : "") + " |\n";
   }
   return md;
 }

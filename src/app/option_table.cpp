@@ -25,9 +25,10 @@ std::string OptionTable::Option::keyword() const {
 }
 
 std::string OptionTable::Option::description() const {
-  if (!numbers) return helpText;
-  const std::string range = (list ? "each " : "") + numbers->text();
-  return helpText.empty() ? "(" + range + ")" : helpText + " [" + range + "]";
+  std::string note = numbers ? (list ? "each " : "") + numbers->text() : "";
+  if (!defaultText.empty()) note += (note.empty() ? "" : "; ") + std::string("default ") + defaultText;
+  if (note.empty()) return helpText;
+  return helpText.empty() ? "(" + note + ")" : helpText + " [" + note + "]";
 }
 
 OptionTable::Option& OptionTable::arg(std::string_view spec) {

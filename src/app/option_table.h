@@ -41,6 +41,11 @@ class OptionTable {
     std::optional<NumberRange> numbers;
     bool list = false;
     std::string group;  // the --help section (kOptionGroups); "" for a command's own
+    // The values the option stands at when not given, as it takes them
+    // ("1.5", "0 0 0 1", "opaque"), read from the options' own structs
+    // where the table is built; "" where the default is not one value (it
+    // follows the data or another option: the help text says how).
+    std::string defaultText;
 
     Option& help(std::string h) {
       helpText = std::move(h);
@@ -75,6 +80,10 @@ class OptionTable {
       list = true;
       return *this;
     }
+    Option& byDefault(std::string valueText) {
+      defaultText = std::move(valueText);
+      return *this;
+    }
     Option& inGroup(std::string g) {
       group = std::move(g);
       return *this;
@@ -82,8 +91,9 @@ class OptionTable {
     std::size_t arity() const { return metavars.size(); }
     // "fa_min" for "--fa-min": the Python keyword.
     std::string keyword() const;
-    // The help text with the range the option declares, as --help, docs/cli.md
-    // and the Python docstrings show it: "superquadric sharpness [0..10000]".
+    // The help text with the range and default the option declares, as
+    // --help, docs/cli.md and the Python docstrings show it:
+    // "superquadric sharpness [0..10000; default 3]".
     std::string description() const;
   };
 

@@ -18,9 +18,8 @@ void ShadowFlags::addTo(OptionTable& ap) {
   ap.arg("--shadows").help("soft shadows from the key light (percentage-closer filtered shadow map)")
       .action([&p](Args) { p.enabled = true; });
   ap.arg("--shadow-penumbra F")
-      .help("width of the shadows' soft edge, as a fraction of the shadowed region's width (default " +
-            formatNumber(d.penumbra) + ")")
-      .range(ranges::kShadowPenumbra).action([&p, given](Args a) {
+      .help("width of the shadows' soft edge, as a fraction of the shadowed region's width")
+      .range(ranges::kShadowPenumbra).byDefault(formatNumber(d.penumbra)).action([&p, given](Args a) {
         given("--shadow-penumbra");
         p.penumbra = float(parseDouble(a[0], a[1]));
       });
@@ -33,14 +32,14 @@ void ShadowFlags::addTo(OptionTable& ap) {
         p.mapDensity = 0.0f;
       });
   ap.arg("--shadow-strength S")
-      .help("share of the key light a full shadow removes (default " + formatNumber(d.strength) + ")")
-      .range(ranges::kUnit).action([&p, given](Args a) {
+      .help("share of the key light a full shadow removes")
+      .range(ranges::kUnit).byDefault(formatNumber(d.strength)).action([&p, given](Args a) {
         given("--shadow-strength");
         p.strength = float(parseDouble(a[0], a[1]));
       });
   ap.arg("--shadow-bias B")
-      .help("depth bias along the light, in shadow map texels (default " + formatNumber(d.bias) + ")")
-      .range(ranges::kShadowBias).action([&p, given](Args a) {
+      .help("depth bias along the light, in shadow map texels")
+      .range(ranges::kShadowBias).byDefault(formatNumber(d.bias)).action([&p, given](Args a) {
         given("--shadow-bias");
         p.bias = float(parseDouble(a[0], a[1]));
       });

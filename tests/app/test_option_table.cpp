@@ -120,6 +120,35 @@ TEST(RenderOptions, EveryNumericOptionDeclaresARange) {
   }
 }
 
+// A declared default is one the option itself takes: as many values as it
+// names, each within its range, and applying it leaves the frame as it was.
+TEST(RenderOptions, DeclaredDefaultsAreValuesTheOptionTakesAndChangeNothing) {
+  RenderOptions o;
+  OptionTable t;
+  addRenderOptions(t, o);
+  std::size_t withDefaults = 0;
+  for (const OptionTable::Option& opt : t.options()) {
+    if (opt.defaultText.empty()) continue;
+    ++withDefaults;
+    std::vector<std::string> values;
+    for (std::size_t at = 0; at < opt.defaultText.size();) {
+      const std::size_t end = std::min(opt.defaultText.find(' ', at), opt.defaultText.size());
+      values.push_back(opt.defaultText.substr(at, end - at));
+      at = end + 1;
+    }
+    ASSERT_EQ(values.size(), opt.arity()) << opt.flag << " default \"" << opt.defaultText << "\"";
+    RenderOptions given;
+    OptionTable g;
+    addRenderOptions(g, given);
+    EXPECT_NO_THROW(OptionTable::apply(*g.find(opt.flag), values)) << opt.flag << " " << opt.defaultText;
+    EXPECT_TRUE(given.effects.ao == o.effects.ao && given.effects.outline == o.effects.outline &&
+                given.shadow.params == o.shadow.params && given.mesh.params == o.mesh.params)
+        << opt.flag << " " << opt.defaultText << " is not what the option stands at";
+    EXPECT_NE(opt.description().find("default " + opt.defaultText), std::string::npos) << opt.description();
+  }
+  EXPECT_GE(withDefaults, 12u);
+}
+
 TEST(OptionTable, ARepeatedSingleValuedOptionIsRefusedAndRepeatableOnesAdd) {
   RenderOptions o;
   OptionTable t;
