@@ -10,8 +10,8 @@
 # largest process of the run) and the ratios, then how far the images agree:
 # the pixels each covers and the pixels covered by one image only.
 #   bash tests/bench/peers.sh [-n N] [-b BUILD_DIR] [-v VTK_RUNS]
-# Defaults: N 3, build, VTK_RUNS 1 (a VTK run takes minutes and gigabytes;
-# -v 0 skips VTK). A bench, not a test: not registered in ctest.
+# Defaults: N 3, build, VTK_RUNS 1 (runs of each of the two VTK cases; one
+# takes minutes and gigabytes; -v 0 skips VTK). A bench, not a test: not registered in ctest.
 set -euo pipefail
 n=3 build=build vtk_runs=1
 while getopts "n:b:v:" opt; do
