@@ -1,10 +1,19 @@
-"""ParaView's TensorGlyph filter (superquadric source, resolution 16) against
-the plugin's "Tensor Glyphs (ray cast)", in one pvbatch run, on the same data
-and camera. A benchmark, not a test.
+"""ParaView's TensorGlyph filter against the plugin's "Tensor Glyphs (ray
+cast)", in one pvbatch run per shape, on the same data and camera. A
+benchmark, not a test. Each run compares like with like (--shape):
+
+  ellipsoid     the plugin's exact ellipsoids against the filter's Sphere
+                source, 16 x 16: an ellipsoid per glyph, the same shape;
+  superquadric  the plugin's Kindlmann superquadrics (gamma 3, each glyph's
+                shape from its anisotropy) against the filter's Superquadric
+                source as ParaView sets it up (toroidal, roundness 1: one
+                torus shape for every glyph). ParaView has no Kindlmann
+                glyph; this is what its "Superquadric" option draws, a
+                different shape, so its coverage error measures the shape.
 
   PYTHONPATH=/opt/tg-paraview-python/usr/lib/python3/dist-packages \\
   xvfb-run -a pvbatch tests/bench/paraview_peers.py --plugin SO --cli build/tensorglyph \\
-      [--input FILE] [--frames N] [--size W H] [--out DIR]
+      --shape ellipsoid|superquadric [--input FILE] [--frames N] [--size W H] [--out DIR]
 
 Per renderer: build time and first frames together (from creating the
 filter or representation to the first picture at the benchmark's camera: the
@@ -13,8 +22,10 @@ a degree between frames), resident memory it added (VmRSS; llvmpipe keeps
 GPU buffers in host memory), and coverage error: the share of the reference's
 glyph pixels whose coverage (glyph or background) differs, plus those covered
 only by the renderer. The reference is the CLI's picture of the same glyphs
-(tensorglyph render, exact ray casts: the project's tests hold it to src/ref).
-Prints a table, with ratios filter / plugin.
+in the plugin's shape (tensorglyph render, exact ray casts: the project's
+tests hold it to src/ref). Prints a table naming each side's shape, with
+ratios filter / plugin. One shape per process: a second filter's memory
+would hide in the first one's freed pages.
 """
 import argparse
 import os
@@ -27,6 +38,15 @@ from vtkmodules.vtkIOImage import vtkPNGReader
 
 EYE, AT, UP, FOV = [40, 70, 170], [-1.5, 41.8, 5.6], [0, 1, 0], 30.0
 BG = [0.08, 0.08, 0.10]
+# Per shape: the CLI's glyph options, the plugin's kind (its TensorGlyphKind
+# enumeration), ParaView's glyph type and how each side's shape is named.
+SHAPES = {
+    "ellipsoid": (["--glyph", "ellipsoid"], 0, "Sphere",
+                  "plugin: exact ellipsoids", "ParaView TensorGlyph: Sphere source 16x16 (ellipsoids)"),
+    "superquadric": (["--glyph", "superquadric", "--gamma", "3"], 1, "Superquadric",
+                     "plugin: Kindlmann superquadrics (gamma 3)",
+                     "ParaView TensorGlyph: Superquadric source 16x16 (one torus shape, not Kindlmann's)"),
+}
 
 
 def rss_mib():
@@ -80,25 +100,26 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--plugin", required=True)
     ap.add_argument("--cli", required=True)
+    ap.add_argument("--shape", required=True, choices=sorted(SHAPES))
     ap.add_argument("--input", default=os.path.join(os.path.dirname(__file__),
                                                    "../../../shared/data/real/tsv-kitten-stress/kitten-stress.vtu"))
     ap.add_argument("--frames", type=int, default=5)
     ap.add_argument("--size", type=int, nargs=2, default=[400, 300])
     ap.add_argument("--out", default="/tmp/tg_paraview_peers")
     a = ap.parse_args()
+    cli_glyph, plugin_kind, pv_type, plugin_name, filter_name = SHAPES[a.shape]
     os.makedirs(a.out, exist_ok=True)
     simple.LoadPlugin(a.plugin, remote=False, ns=globals())
     reader = simple.OpenDataFile(a.input)
     reader.UpdatePipeline()
     cam = ["--eye"] + [str(v) for v in EYE] + ["--look-at"] + [str(v) for v in AT] + ["--fov", str(FOV)]
     size = ["--size", str(a.size[0]), str(a.size[1])]
-    ref_png = os.path.join(a.out, "reference.png")
+    ref_png = os.path.join(a.out, a.shape + "-reference.png")
     # Absolute scale, no clamp: vtkTensorGlyph's own sizing (eigenvalues times ScaleFactor).
     scale = 0.0089
-    subprocess.run([a.cli, "render", a.input, "-o", ref_png, "--glyph", "superquadric", "--gamma", "3",
-                    "--scale-mode", "absolute", "--scale", str(scale)] + size + cam, check=True)
+    subprocess.run([a.cli, "render", a.input, "-o", ref_png] + cli_glyph +
+                   ["--scale-mode", "absolute", "--scale", str(scale)] + size + cam, check=True)
     ref = coverage(ref_png)
-    rows = {}
 
     # The plugin first, so that the filter's freed memory does not hide its own.
     # The plugin: its glyph build happens in the first frame.
@@ -107,7 +128,7 @@ def main():
     t = time.perf_counter()
     disp = simple.Show(reader, view)
     disp.SetRepresentationType("Tensor Glyphs (ray cast)")
-    disp.TensorGlyphKind = 1
+    disp.TensorGlyphKind = plugin_kind
     disp.TensorGlyphGamma = 3.0
     disp.TensorGlyphScaleMode = 0
     disp.TensorGlyphScaleFactor = scale
@@ -115,28 +136,28 @@ def main():
     place_camera(view)
     simple.Render(view)
     first = 1000 * (time.perf_counter() - t)
-    png = os.path.join(a.out, "plugin.png")
+    png = os.path.join(a.out, a.shape + "-plugin.png")
     simple.SaveScreenshot(png, view, ImageResolution=a.size)
     # The plugin's classes have no Python wrapping: its glyph build (the
     # representation's input preparation and the mapper's eigen-decomposition)
     # is inside its update and first frame, reported together.
-    build = 0.0
     median = frames(view, a.frames)
-    plugin_row = (build, first, median, rss_mib() - rss0,
-                  coverage_error(ref, coverage(png)))
+    plugin_row = (first, median, rss_mib() - rss0, coverage_error(ref, coverage(png)))
     simple.Delete(disp)
     simple.Delete(view)
 
-    # ParaView's own filter: one superquadric source per point, on the CPU.
+    # ParaView's own filter: one copy of the source per point, on the CPU.
     view = make_view(a.size)
     rss0 = rss_mib()
     t = time.perf_counter()
-    glyphs = simple.TensorGlyph(Input=reader, GlyphType="Superquadric")
+    glyphs = simple.TensorGlyph(Input=reader, GlyphType=pv_type)
     glyphs.Tensors = ["POINTS", "stress"]
     glyphs.GlyphType.ThetaResolution = 16
     glyphs.GlyphType.PhiResolution = 16
-    # vtkSuperquadricSource has radius 0.5: twice the factor gives the
-    # semi-axes |eigenvalue| * scale, as the plugin's glyphs have.
+    # Both sources have radius 0.5: twice the factor gives the semi-axes
+    # |eigenvalue| * scale, as the plugin's glyphs have. The superquadric
+    # source keeps ParaView's settings (Toroidal 1, roundness 1, thickness
+    # 0.3333): what a user choosing "Superquadric" gets.
     glyphs.ScaleFactor = 2 * scale
     glyphs.UpdatePipeline()
     build = 1000 * (time.perf_counter() - t)
@@ -147,22 +168,19 @@ def main():
     place_camera(view)
     simple.Render(view)
     first = 1000 * (time.perf_counter() - t)
-    png = os.path.join(a.out, "tensorglyph_filter.png")
+    png = os.path.join(a.out, a.shape + "-filter.png")
     simple.SaveScreenshot(png, view, ImageResolution=a.size)
     median = frames(view, a.frames)
-    rows["ParaView TensorGlyph (superquadric, res 16)"] = (build, first, median, rss_mib() - rss0,
-                                                           coverage_error(ref, coverage(png)))
-    rows["plugin: Tensor Glyphs (ray cast)"] = plugin_row
+    filter_row = (build + first, median, rss_mib() - rss0, coverage_error(ref, coverage(png)))
 
-    print("%-46s %16s %10s %10s %9s" % ("renderer", "build+first ms", "frame ms", "RSS MiB", "cov err"))
-    for name in ["ParaView TensorGlyph (superquadric, res 16)", "plugin: Tensor Glyphs (ray cast)"]:
-        b, f, m, r, c = rows[name]
-        print("%-46s %16.1f %10.1f %10.1f %8.2f%%" % (name, b + f, m, r, 100 * c))
-    (fb, ff, fm, fr, fc) = rows["ParaView TensorGlyph (superquadric, res 16)"]
-    (pb, pf, pm, pr, pc) = rows["plugin: Tensor Glyphs (ray cast)"]
+    print("reference: tensorglyph render %s (%d glyph pixels); load average %s" %
+          (" ".join(cli_glyph), sum(ref), " ".join(open("/proc/loadavg").read().split()[:3])))
+    print("%-84s %16s %10s %10s %9s" % ("renderer (shape it draws)", "build+first ms", "frame ms", "RSS MiB", "cov err"))
+    for name, (f, m, r, c) in [(filter_name, filter_row), (plugin_name, plugin_row)]:
+        print("%-84s %16.1f %10.1f %10.1f %8.2f%%" % (name, f, m, r, 100 * c))
     ratio = lambda x, y: x / y if y > 0 else float("inf")
-    print("%-46s %15.1fx %9.1fx %9.1fx %8.1fx" % ("ratio filter / plugin", ratio(fb + ff, pb + pf), ratio(fm, pm),
-                                                  ratio(fr, pr), ratio(fc, pc)))
+    print("%-84s %15.1fx %9.1fx %9.1fx" % ("ratio filter / plugin", ratio(filter_row[0], plugin_row[0]),
+                                         ratio(filter_row[1], plugin_row[1]), ratio(filter_row[2], plugin_row[2])))
 
 
 if __name__ == "__main__":
