@@ -2,14 +2,18 @@
 // on reference scenes. Both run the same intersection source
 // (shaders/lib/ellipsoid.glsl, as GLSL on llvmpipe and as C++ over GLM), so
 // that the pictures agree to float rounding:
-// - coverage and ids: equal at every pixel centre but where a pixel centre
-//   lies within float rounding of a silhouette (the hit test's discriminant
-//   h = 1 - |q|^2 within a few ulps of 0) or of a depth tie between two
-//   glyphs. llvmpipe contracts a * b + c into one rounding (FMA) where the C++
-//   rounds twice, so such pixels may go either way: at most 0.2% of the
-//   covered pixels (measured: see kIdMismatch);
-// - depth: relative 1e-5 (the view depth of the two roots differs by a few
-//   float ulps, 6e-8 each, of the O(1) terms it is summed from);
+// - coverage and ids: equal at every pixel centre (measured: no pixel differs
+//   on any scene here). A pixel centre within float rounding of a silhouette
+//   (the hit test's h = 1 - |q|^2 within a few ulps of 0) or of a depth tie
+//   could go either way where llvmpipe contracts a * b + c into one rounding
+//   (FMA) and the C++ rounds twice: one pixel in 10^4 is allowed for that;
+// - depth: 2e-5 of the depth (perspective) or of the depth range
+//   (orthographic: a linear depth buffer), the unit and bound test_render.cpp
+//   holds the raster path to against the double reference. The view depth
+//   tc + t is summed from terms that may be far larger than it (a ray from
+//   inside a glyph, the far wall), and llvmpipe's division, square root and
+//   FMA contraction round those terms otherwise than the C++ does, by a few
+//   float ulps (6e-8) of the largest; measured up to 1.3e-5;
 // - normals: 0.05 degrees (both stored as RGBA16F: 11-bit mantissas, < 0.03
 //   degrees, plus the rounding of the hit point);
 // - lit colour: 2e-3, below one 8-bit step (3.9e-3).
@@ -25,7 +29,7 @@ using test::GlFixture;
 
 namespace {
 
-constexpr double kIdMismatch = 0.002, kRelDepth = 1e-5, kNormalDeg = 0.05, kColor = 2e-3;
+constexpr double kIdMismatch = 1e-4, kRelDepth = 2e-5, kNormalDeg = 0.05, kColor = 2e-3;
 
 struct Pair {
   render::FrameImage raster, cpu;
@@ -37,7 +41,8 @@ struct Agreement {
   double relDepth = 0, normalDeg = 0, color = 0;
 };
 
-Agreement agreement(const Pair& s) {
+Agreement agreement(const Pair& s, const render::Camera& cam) {
+  const bool ortho = cam.desc.projection == render::Projection::Orthographic;
   Agreement g;
   const auto& a = s.raster;
   const auto& b = s.cpu;
@@ -49,7 +54,8 @@ Agreement agreement(const Pair& s) {
     }
     for (int k = 0; k < 3; ++k) g.color = std::max(g.color, double(std::abs(a.rgba[4 * i + k] - b.rgba[4 * i + k])));
     if (a.id[i] == ref::kNoGlyph) continue;
-    g.relDepth = std::max(g.relDepth, double(std::abs(a.depth[i] - b.depth[i]) / a.depth[i]));
+    const double unit = ortho ? cam.farVC - cam.nearVC : double(a.depth[i]);
+    g.relDepth = std::max(g.relDepth, double(std::abs(a.depth[i] - b.depth[i])) / unit);
     const glm::dvec3 na(a.normalWC[3 * i], a.normalWC[3 * i + 1], a.normalWC[3 * i + 2]);
     const glm::dvec3 nb(b.normalWC[3 * i], b.normalWC[3 * i + 1], b.normalWC[3 * i + 2]);
     const double c = std::clamp(glm::dot(na, nb) / (glm::length(na) * glm::length(nb)), -1.0, 1.0);
@@ -58,9 +64,9 @@ Agreement agreement(const Pair& s) {
   return g;
 }
 
-void expectAgree(const Pair& s, const std::string& what, std::size_t minCovered = 500) {
+void expectAgree(const Pair& s, const render::Camera& cam, const std::string& what, std::size_t minCovered = 500) {
   SCOPED_TRACE(what);
-  const Agreement g = agreement(s);
+  const Agreement g = agreement(s, cam);
   std::printf("[ cpu path ] %s: %zu covered, %zu id mismatches, depth %.2g, normal %.3g deg, colour %.2g\n",
               what.c_str(), g.covered, g.idMismatch, g.relDepth, g.normalDeg, g.color);
   EXPECT_GE(g.covered, minCovered);
@@ -110,7 +116,7 @@ TEST_F(CpuGlyphs, EllipsoidsMatchTheRasterPath) {
     render::FrameParams p;
     p.scale = scale;
     const Pair s = both(set, cam, p);
-    expectAgree(s, proj == render::Projection::Perspective ? "perspective" : "orthographic");
+    expectAgree(s, cam, proj == render::Projection::Perspective ? "perspective" : "orthographic");
     EXPECT_GT(s.cpuDrawn, 20u);
   }
 }
@@ -118,7 +124,7 @@ TEST_F(CpuGlyphs, EllipsoidsMatchTheRasterPath) {
 TEST_F(CpuGlyphs, SpheresMatchTheRasterPath) {
   const tensor::GlyphSet set = spheres();
   const auto cam = test::cameraFor(set, 1.0, test::oblique(set, 6.0, render::Projection::Perspective), 160, 120);
-  expectAgree(both(set, cam, render::FrameParams{}), "spheres");
+  expectAgree(both(set, cam, render::FrameParams{}), cam, "spheres");
 }
 
 // Every colour mode (sign colours per surface point) and the selection: FA
@@ -131,21 +137,23 @@ TEST_F(CpuGlyphs, ColoursAndSelectionMatchTheRasterPath) {
     render::FrameParams p;
     p.scale = scale;
     p.color = mode;
-    expectAgree(both(set, cam, p), "colour mode " + std::to_string(int(mode)));
+    expectAgree(both(set, cam, p), cam, "colour mode " + std::to_string(int(mode)));
   }
   render::FrameParams p;
   p.scale = scale;
   p.faMin = 0.3;
   p.slab = {2, 0.5, 2.5};
-  expectAgree(both(set, cam, p), "FA threshold and slab", 200);
+  expectAgree(both(set, cam, p), cam, "FA threshold and slab", 200);
 }
 
 // The eye inside a glyph and the eye plane cutting others: no finite
 // rectangle, rays from inside see the far wall.
 TEST_F(CpuGlyphs, GlyphsAroundTheEyeMatchTheRasterPath) {
   const tensor::GlyphSet set = test::glyphsAroundTheEye();
-  for (const auto proj : {render::Projection::Perspective, render::Projection::Orthographic})
-    expectAgree(both(set, test::insideCamera(proj), render::FrameParams{}), "around the eye");
+  for (const auto proj : {render::Projection::Perspective, render::Projection::Orthographic}) {
+    const auto cam = test::insideCamera(proj);
+    expectAgree(both(set, cam, render::FrameParams{}), cam, "around the eye");
+  }
 }
 
 // Deferred passes and context read the same G-buffer: AO and outlines on.
@@ -157,11 +165,13 @@ TEST_F(CpuGlyphs, DepthCuesMatchTheRasterPath) {
   p.scale = scale;
   p.ao.enabled = p.outline.enabled = true;
   const Pair s = both(set, cam, p);
-  const Agreement g = agreement(s);
+  const Agreement g = agreement(s, cam);
+  std::printf("[ cpu path ] depth cues: %zu id mismatches, colour %.2g\n", g.idMismatch, g.color);
   EXPECT_LE(double(g.idMismatch), kIdMismatch * double(g.covered));
-  // AO samples depth and normals around each pixel: rounding-level depth
-  // differences move a sample across a surface only at grazing angles.
-  EXPECT_LT(g.color, 2e-2);
+  // AO samples depth and normals around each pixel; rounding-level depth
+  // differences could move a sample across a surface at grazing angles
+  // (measured: none moved, colour within 1.5e-4).
+  EXPECT_LT(g.color, kColor);
 }
 
 // Picking reads one pixel of the G-buffer (render/pixel_probe.h): the same
