@@ -20,13 +20,7 @@ namespace {
 
 static_assert(sizeof(glsl::GlyphRecord) == sizeof(tensor::GlyphRecord));
 
-// A glyph that some pixel centre may see: what its fragments would receive.
-struct Candidate {
-  glsl::vec3 centreVC;
-  glsl::mat3 gcFromVC;
-  float nearVC;  // no hit lies nearer: the raster quad's depth
-  std::uint32_t record;
-};
+using Candidate = CastCandidate;
 
 // The pixel centres (k + 0.5) within rectNDC, as rectMissesEveryPixelCentre
 // maps it; false where none lies in the viewport.
@@ -50,39 +44,45 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
   const std::size_t n = std::size_t(w) * std::size_t(h);
   out.width = w;
   out.height = h;
-  out.windowDepth.assign(n, 0.0f);
+  out.windowDepth.resize(n);
   out.record.assign(n, 0);
   out.normalWC.resize(n);
-  if (hitGC) out.hitGC.resize(n);
-  else out.hitGC.clear();
+  out.hitGC.resize(hitGC ? n : 0);
 
-  // Set-up, the vertex stage's: each part keeps its glyphs in record order.
-  std::vector<std::vector<Candidate>> partCands(static_cast<std::size_t>(threads));
-  std::vector<std::vector<PixelRect>> partRects(static_cast<std::size_t>(threads));
+  // Set-up, the vertex stage's: part k writes its glyphs, in record order,
+  // from its first record's slot on; then the parts close up.
+  const std::size_t m = records.size();
+  if (out.candidates.size() < m) {
+    out.candidates.resize(m);
+    out.rects.resize(m);
+  }
+  std::vector<std::size_t> kept(static_cast<std::size_t>(threads), 0);
   runParts(threads, [&](int part, int parts) {
-    auto& cands = partCands[std::size_t(part)];
-    auto& rects = partRects[std::size_t(part)];
-    for (std::size_t i = partBegin(records.size(), part, parts); i < partBegin(records.size(), part + 1, parts); ++i) {
+    const std::size_t begin = partBegin(m, part, parts);
+    std::size_t at = begin;
+    for (std::size_t i = begin; i < partBegin(m, part + 1, parts); ++i) {
       glsl::GlyphRecord g;
       std::memcpy(&g, &records[i], sizeof g);
       glsl::EllipsoidSprite s;
-      PixelRect r;
+      PixelRect& r = out.rects[at];
       if (!sh.ellipsoidSprite(g, s) || !pixelsOf(s.rectNDC, w, h, r)) continue;
-      cands.push_back({s.centreVC, sh.ellipsoidGcFromVC(s.rotVC, s.axes), std::max(s.dist - s.radius, sh.uNearVC),
-                       std::uint32_t(i)});
-      rects.push_back(r);
+      out.candidates[at++] = {s.centreVC, sh.ellipsoidGcFromVC(s.rotVC, s.axes),
+                              std::max(s.dist - s.radius, sh.uNearVC), std::uint32_t(i)};
     }
+    kept[std::size_t(part)] = at - begin;
   });
-  std::vector<Candidate> cands;
-  std::vector<PixelRect> rects;
-  for (int k = 0; k < threads; ++k) {
-    cands.insert(cands.end(), partCands[std::size_t(k)].begin(), partCands[std::size_t(k)].end());
-    rects.insert(rects.end(), partRects[std::size_t(k)].begin(), partRects[std::size_t(k)].end());
-    partCands[std::size_t(k)] = {};
-    partRects[std::size_t(k)] = {};
+  std::size_t count = kept[0];
+  for (int k = 1; k < threads; ++k) {
+    const std::size_t begin = partBegin(m, k, threads), n_k = kept[std::size_t(k)];
+    std::copy_n(out.candidates.begin() + std::ptrdiff_t(begin), n_k, out.candidates.begin() + std::ptrdiff_t(count));
+    std::copy_n(out.rects.begin() + std::ptrdiff_t(begin), n_k, out.rects.begin() + std::ptrdiff_t(count));
+    count += n_k;
   }
-  TileBins bins;
-  binToTiles(rects, w, h, threads, bins);
+  out.count = count;
+  const std::vector<Candidate>& cands = out.candidates;
+  const std::vector<PixelRect>& rects = out.rects;
+  TileBins& bins = out.bins;
+  binToTiles(std::span(rects.data(), count), w, h, threads, bins);
 
   // Per tile, per pixel centre: the tile's glyphs nearest first, until the
   // next one's nearest depth lies behind the hit. The depth test is the
@@ -94,8 +94,10 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
     for (std::size_t t; (t = nextTile.fetch_add(1)) < bins.tiles();) {
       order.assign(bins.items.begin() + bins.start[t], bins.items.begin() + bins.start[t + 1]);
       if (order.empty()) continue;
-      std::stable_sort(order.begin(), order.end(),
-                       [&](std::uint32_t a, std::uint32_t b) { return cands[a].nearVC < cands[b].nearVC; });
+      // Nearest first; of equal depths the lower record first, as drawn.
+      std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return cands[a].nearVC < cands[b].nearVC || (cands[a].nearVC == cands[b].nearVC && a < b);
+      });
       const int tx = int(t % std::size_t(bins.tilesX)), ty = int(t / std::size_t(bins.tilesX));
       const int x1 = std::min(w, (tx + 1) * kTilePx), y1 = std::min(h, (ty + 1) * kTilePx);
       for (int y = ty * kTilePx; y < y1; ++y)
@@ -129,7 +131,7 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
         }
     }
   });
-  return cands.size();
+  return count;
 }
 
 CpuGlyphs::CpuGlyphs(const gl::Api& gl, const gl::ShaderLibrary& lib)

@@ -17,6 +17,7 @@
 #include <memory>
 #include <vector>
 
+#include <glm/mat3x3.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
@@ -27,18 +28,32 @@ namespace tg::render {
 
 class RasterGlyphs;
 
-// One pixel's cast: what the CPU path uploads.
+// A glyph that some pixel centre may see: what its fragments would receive.
+struct CastCandidate {
+  glm::vec3 centreVC;
+  glm::mat3 gcFromVC;
+  float nearVC;  // no hit lies nearer: the raster quad's depth
+  std::uint32_t record;
+};
+
+// One pixel's cast: what the CPU path uploads; and the set-up's buffers,
+// kept from frame to frame so that a frame allocates nothing.
 struct CpuCasts {
   int width = 0, height = 0;
   std::vector<float> windowDepth;       // reversed, 0 where empty; rows bottom first as GL's
   std::vector<std::uint32_t> record;    // index into the uploaded records + 1; 0 where empty
   std::vector<glm::vec4> normalWC;      // unit, w 0
   std::vector<glm::vec4> hitGC;         // the GC hit point; filled only when asked
+  std::vector<CastCandidate> candidates;  // the first `count` hold this frame's, in record order
+  std::vector<PixelRect> rects;           // and their pixels
+  std::size_t count = 0;
+  TileBins bins;
 };
 
 // The casts of `cam` at p's parameters over `records` on `threads` threads
-// (what CpuGlyphs::drawView uploads; the tests compare it directly). Returns
-// the glyphs that reached a tile.
+// (what CpuGlyphs::drawView uploads; the tests compare it directly). Depth,
+// normal and hit are left undefined where the record says empty. Returns the
+// glyphs that reached a tile.
 std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Camera& cam, const FrameParams& p,
                          bool hitGC, int threads, CpuCasts& out);
 
