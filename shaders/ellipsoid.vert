@@ -14,6 +14,7 @@
 #include "lib/selection.glsl"
 #include "lib/sprite.glsl"
 #include "lib/occlusion.glsl"
+#include "lib/ellipsoid_sprite.glsl"
 
 uniform int uColorMode;
 uniform vec2 uMdRange;
@@ -35,29 +36,13 @@ out SpriteFS {
 void main() {
   gl_Position = kSpriteCulledCC;
   GlyphRecord g = glyphs[spriteGlyphIndex()];
-  if (!glyphSelected(g.posWC_fa)) return;
-  vec3 axes = glyphAxes(g.eigenvalues_id.xyz);
-  float radius = max(axes.x, max(axes.y, axes.z));
-  if (!(radius > 0.0)) return;
-
-  vec3 centreVC = (uViewWCVC * vec4(g.posWC_fa.xyz, 1.0)).xyz;
-  float dist = -centreVC.z;
-  if (dist + radius < uNearVC || (uOrtho == 1 && dist - radius > uFarVC)) return;
-  // The sphere of the longest axis holds the ellipsoid.
-  if (spriteMissesEveryPixelCentre(centreVC, radius)) return;
-  mat3 rotWC = quatToMat3(g.frameWC);
-  mat3 rotVC = mat3(uViewWCVC) * rotWC;
-
-  // T of eq. (2), in VC: parameter space -> view coordinates.
-  mat4 tVC = mat4(vec4(rotVC[0] * axes.x, 0.0), vec4(rotVC[1] * axes.y, 0.0),
-                  vec4(rotVC[2] * axes.z, 0.0), vec4(centreVC, 1.0));
-  vec4 rect;
-  if (!ellipsoidRectNDC(uProjVCCC * tVC, rect)) rect = vec4(-1.0, -1.0, 1.0, 1.0);
-  else if (rectMissesEveryPixelCentre(rect, kPixelCentreMarginDC)) return;
-  // A quarter pixel of margin so that pixel centres on the exact edge are kept.
-  vec2 px = 0.5 / uViewportDC;
-  rect = clamp(rect + vec4(-px, px), -1.0, 1.0);
-  if (rect.x >= rect.z || rect.y >= rect.w) return;
+  EllipsoidSprite s;
+  if (!ellipsoidSprite(g, s)) return;
+  vec3 axes = s.axes, centreVC = s.centreVC;
+  float radius = s.radius, dist = s.dist;
+  mat3 rotWC = s.rotWC, rotVC = s.rotVC;
+  mat4 tVC = s.tVC;
+  vec4 rect = s.rectNDC;
   // Hidden behind the pre-pass's occluders, which hold this very ellipsoid
   // (so a glyph visible anywhere never is): no fragment of it could win.
   if (spriteOccluded(rect, dist - radius, 0.0)) return;
@@ -75,7 +60,7 @@ void main() {
   // outline's 1%), or an outline thinner than a hundredth of its length,
   // whose conic rounds by more than that 1%.
   if (!(min(axes.x, min(axes.y, axes.z)) >= 1e-5 * radius)) return;
-  mat3 gcFromVC = transpose(mat3(rotVC[0] / axes.x, rotVC[1] / axes.y, rotVC[2] / axes.z));
+  mat3 gcFromVC = ellipsoidGcFromVC(rotVC, axes);
   vec3 depthGC = -vec3(rotVC[0].z * axes.x, rotVC[1].z * axes.y, rotVC[2].z * axes.z);
   if (!silhouetteFarVC(gcFromVC, depthGC, centreVC, farVC)) return;
   // det / trace^2 is about the squared ratio of the outline's axes.
@@ -103,7 +88,7 @@ void main() {
   vs.conicDC = vec3(supportDC[1][1], -supportDC[0][1], supportDC[0][0]) / det;
 #else
   vs.centreVC = centreVC;
-  vs.gcFromVC = transpose(mat3(rotVC[0] / axes.x, rotVC[1] / axes.y, rotVC[2] / axes.z));
+  vs.gcFromVC = ellipsoidGcFromVC(rotVC, axes);
   // One input fewer per fragment: llvmpipe's ellipsoid fragments cost by the inputs they read.
   vs.color = uColorMode == kColorSign ? signWeights(g.eigenvalues_id.xyz, axes)
                                       : glyphColor(uColorMode, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, uMdRange);

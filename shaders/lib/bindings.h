@@ -22,6 +22,10 @@
 #define TG_UNIT_LEGEND_ATLAS 0
 #define TG_UNIT_SLICE 0              // a slice plane's underlay
 #define TG_UNIT_RESOLVE_DEPTH 0      // depth_resolve.frag: a path's float window depth
+#define TG_UNIT_CPU_DEPTH 0          // cpu_gbuffer.frag: the CPU path's window depth,
+#define TG_UNIT_CPU_RECORD 1         // record index + 1 (0: empty),
+#define TG_UNIT_CPU_NORMAL 2         // WC normal,
+#define TG_UNIT_CPU_HIT_GC 3         // GC hit point (sign colours only)
 
 // Image units: the occluder pyramid's reduction.
 #define TG_IMAGE_PYRAMID_FINER 0

@@ -1,5 +1,10 @@
 // Per-frame camera uniforms (see tg::render::Camera). Depth is reversed:
 // window depth 1 at the near plane, 0 at infinity (perspective) or far (ortho).
+// In the GLSL/C++ subset (lib/glsl_cpp.h).
+// C++ includes it as shaders/lib/glsl_cpp.h first (render/glsl_cpp.h).
+#ifndef TG_GLSL_CPP_H
+#include "lib/glsl_cpp.h"
+#endif
 uniform mat4 uViewWCVC;
 uniform mat4 uProjVCCC;
 uniform vec2 uViewportDC;   // width, height in pixels
@@ -10,14 +15,14 @@ uniform float uFarVC;
 
 // The ray through window position fragDC, with a unit component along -z_VC,
 // so that its parameter is the depth along the view axis.
-void rayThroughFragment(vec2 fragDC, out vec3 originVC, out vec3 dirVC) {
-  vec2 ndc = fragDC / uViewportDC * 2.0 - 1.0;
+void rayThroughFragment(vec2 fragDC, TG_OUT(vec3) originVC, TG_OUT(vec3) dirVC) {
+  vec2 ndc = fragDC / uViewportDC * 2.0f - 1.0f;
   if (uOrtho == 1) {
-    originVC = vec3(ndc * uRayScaleVC, 0.0);
-    dirVC = vec3(0.0, 0.0, -1.0);
+    originVC = vec3(ndc * uRayScaleVC, 0.0f);
+    dirVC = vec3(0.0f, 0.0f, -1.0f);
   } else {
-    originVC = vec3(0.0);
-    dirVC = vec3(ndc * uRayScaleVC, -1.0);
+    originVC = vec3(0.0f);
+    dirVC = vec3(ndc * uRayScaleVC, -1.0f);
   }
 }
 

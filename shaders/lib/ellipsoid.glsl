@@ -1,8 +1,12 @@
 // Ellipsoid maths after Sigg et al. 2006, shared by every stage that needs it.
-// Requires lib/camera.glsl.
+// Requires lib/camera.glsl. In the GLSL/C++ subset (lib/glsl_cpp.h).
+// C++ includes it as shaders/lib/glsl_cpp.h first (render/glsl_cpp.h).
+#ifndef TG_GLSL_CPP_H
+#include "lib/glsl_cpp.h"
+#endif
 
 // Mirrors tg::tensor::kMinAxisRatio: the thinnest axis relative to the longest.
-const float kMinAxisRatio = 1e-7;
+const float kMinAxisRatio = 1e-7f;
 
 vec3 ellipsoidAxes(vec3 eigenvalues, float scale) {
   vec3 a = abs(eigenvalues) * scale;
@@ -11,7 +15,7 @@ vec3 ellipsoidAxes(vec3 eigenvalues, float scale) {
 
 // Bilinear form with D = diag(1, 1, 1, -1): the unit sphere in homogeneous
 // parameter coordinates.
-float formD(vec4 u, vec4 v) { return dot(u.xyz, v.xyz) - u.w * v.w; }
+float formD(vec4 u, vec4 v) { return dot(vec3(u), vec3(v)) - u.w * v.w; }
 
 // Sigg et al. eq. (5): tight NDC rectangle (xmin, ymin, xmax, ymax) of the
 // ellipsoid whose parameter->clip transform is pmt. Returns false when the
@@ -31,12 +35,12 @@ struct EllipseTerms {
   vec2 b;
 };
 
-bool ellipseTerms(mat4 pmt, out EllipseTerms e) {
+bool ellipseTerms(mat4 pmt, TG_OUT(EllipseTerms) e) {
   vec4 r1 = vec4(pmt[0][0], pmt[1][0], pmt[2][0], pmt[3][0]);
   vec4 r2 = vec4(pmt[0][1], pmt[1][1], pmt[2][1], pmt[3][1]);
   vec4 r4 = vec4(pmt[0][3], pmt[1][3], pmt[2][3], pmt[3][3]);
   e.a = formD(r4, r4);
-  if (!(e.a < 0.0)) return false;
+  if (!(e.a < 0.0f)) return false;
   e.x0 = vec2(formD(r1, r4), formD(r2, r4)) / e.a;
   e.u1 = r1 - e.x0.x * r4;
   e.u2 = r2 - e.x0.y * r4;
@@ -44,12 +48,12 @@ bool ellipseTerms(mat4 pmt, out EllipseTerms e) {
   return true;
 }
 
-bool ellipsoidRectNDC(mat4 pmt, out vec4 rect) {
+bool ellipsoidRectNDC(mat4 pmt, TG_OUT(vec4) rect) {
   EllipseTerms e;
   if (!ellipseTerms(pmt, e)) return false;
   float a = e.a;
   vec2 x0 = e.x0, b = e.b;
-  vec2 s = sqrt(max(b * b - a * vec2(formD(e.u1, e.u1), formD(e.u2, e.u2)), 0.0));
+  vec2 s = sqrt(max(b * b - a * vec2(formD(e.u1, e.u1), formD(e.u2, e.u2)), 0.0f));
   vec2 lo = x0 + (b + s) / a, hi = x0 + (b - s) / a;  // a < 0, so (b + s)/a is the smaller root
   rect = vec4(min(lo, hi), max(lo, hi));
   return true;
@@ -60,12 +64,12 @@ bool ellipsoidRectNDC(mat4 pmt, out vec4 rect) {
 // same points; t keeps float precision that z_w compresses away with distance.
 // Roots of |o + t d|^2 = 1 from the closest approach to the centre, so that
 // neither suffers cancellation.
-bool unitSphereRoots(vec3 o, vec3 d, out float t0, out float t1) {
+bool unitSphereRoots(vec3 o, vec3 d, TG_OUT(float) t0, TG_OUT(float) t1) {
   float dd = dot(d, d);
   float tc = -dot(o, d) / dd;
   vec3 q = o + tc * d;
-  float h = 1.0 - dot(q, q);
-  if (h < 0.0) return false;
+  float h = 1.0f - dot(q, q);
+  if (h < 0.0f) return false;
   float s = sqrt(h / dd);
   t0 = tc - s;
   t1 = tc + s;
@@ -80,21 +84,59 @@ bool unitSphereRoots(vec3 o, vec3 d, out float t0, out float t1) {
 // two hits and inside the contour, where view depth is largest on the
 // contour itself: no front hit lies behind this depth. False when the eye is
 // inside the ellipsoid.
-bool silhouetteFarVC(mat3 gcFromVC, vec3 depthGC, vec3 centreVC, out float farVC) {
+bool silhouetteFarVC(mat3 gcFromVC, vec3 depthGC, vec3 centreVC, TG_OUT(float) farVC) {
   farVC = -centreVC.z;
   float ww = dot(depthGC, depthGC);
   if (uOrtho == 1) {
-    vec3 e = normalize(gcFromVC * vec3(0.0, 0.0, -1.0));
+    vec3 e = normalize(gcFromVC * vec3(0.0f, 0.0f, -1.0f));
     float we = dot(depthGC, e);
-    farVC += sqrt(max(ww - we * we, 0.0));
+    farVC += sqrt(max(ww - we * we, 0.0f));
     return true;
   }
   // The eye in parameter space; the contour is the circle x.e = 1, |x| = 1:
   // centre e / |e|^2, radius sqrt(1 - 1 / |e|^2).
   vec3 e = -(gcFromVC * centreVC);
   float ee = dot(e, e);
-  if (!(ee > 1.0)) return false;
+  if (!(ee > 1.0f)) return false;
   float we = dot(depthGC, e);
-  farVC += we / ee + sqrt(1.0 - 1.0 / ee) * sqrt(max(ww - we * we / ee, 0.0));
+  farVC += we / ee + sqrt(1.0f - 1.0f / ee) * sqrt(max(ww - we * we / ee, 0.0f));
   return true;
+}
+
+// The parameter -> view transform's parts for a glyph of frame rotVC (its
+// axes in VC) and semi-axes `axes`: gcFromVC = M^-1 for M = rotVC diag(axes),
+// and T of Sigg et al. eq. (2) in VC, for ellipsoidRectNDC(uProjVCCC * T).
+mat3 ellipsoidGcFromVC(mat3 rotVC, vec3 axes) {
+  return transpose(mat3(rotVC[0] / axes.x, rotVC[1] / axes.y, rotVC[2] / axes.z));
+}
+
+mat4 ellipsoidTVC(mat3 rotVC, vec3 axes, vec3 centreVC) {
+  return mat4(vec4(rotVC[0] * axes.x, 0.0f), vec4(rotVC[1] * axes.y, 0.0f), vec4(rotVC[2] * axes.z, 0.0f),
+              vec4(centreVC, 1.0f));
+}
+
+// The ray through window position fragDC against the ellipsoid centreVC + M x,
+// |x| <= 1 (gcFromVC = M^-1): its first surface at or beyond the near plane
+// (from inside, the far wall), as view depth and the GC point, which is also
+// the GC normal. False where the ray misses or the hit lies outside the depth
+// range. The ray restarts at its closest approach to the centre: on every
+// ray that can hit, GC coordinates are then O(1) even for 1e6:1 glyphs far away.
+bool castEllipsoid(vec2 fragDC, vec3 centreVC, mat3 gcFromVC, TG_OUT(float) depthVC, TG_OUT(vec3) nGC) {
+  vec3 originVC, dirVC;
+  rayThroughFragment(fragDC, originVC, dirVC);
+  float tc = dot(centreVC - originVC, dirVC) / dot(dirVC, dirVC);
+  vec3 o = gcFromVC * (originVC + tc * dirVC - centreVC);
+  vec3 d = gcFromVC * dirVC;
+  float t0, t1;
+  if (!unitSphereRoots(o, d, t0, t1)) return false;
+  float t = tc + t0 >= uNearVC ? t0 : t1;
+  depthVC = tc + t;
+  if (!(depthVC >= uNearVC) || (uOrtho == 1 && depthVC > uFarVC)) return false;
+  nGC = o + t * d;
+  return true;
+}
+
+// The unit WC normal at GC point nGC: the inverse transpose of GC -> VC, then VC -> WC.
+vec3 ellipsoidNormalWC(mat3 gcFromVC, vec3 nGC) {
+  return normalize(transpose(mat3(uViewWCVC)) * (transpose(gcFromVC) * nGC));
 }

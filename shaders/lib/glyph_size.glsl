@@ -10,15 +10,15 @@ uniform float uMaxRadiusWC;   // clamp on the largest semi-axis; 0: none
 // exactly uScale when linear and unclamped.
 float glyphFactor(float m) {
   float k = uScale;
-  if (!(m > 0.0)) return k;
+  if (!(m > 0.0f)) return k;
   if (uMagnitude == 1) {
     // ln(1 + x) / x, with its series below 1e-3 where 1 + x rounds away x.
     float x = m / uLambda0;
-    k *= x < 1e-3 ? 1.0 - x * (0.5 - x / 3.0) : log(1.0 + x) / x;
+    k *= x < 1e-3f ? 1.0f - x * (0.5f - x / 3.0f) : log(1.0f + x) / x;
   } else if (uMagnitude == 2) {
     k *= uLambda0 / m;
   }
-  if (uMaxRadiusWC > 0.0 && k * m > uMaxRadiusWC) k = uMaxRadiusWC / m;
+  if (uMaxRadiusWC > 0.0f && k * m > uMaxRadiusWC) k = uMaxRadiusWC / m;
   return k;
 }
 

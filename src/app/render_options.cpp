@@ -1,5 +1,7 @@
 #include "app/render_options.h"
 
+#include <algorithm>
+#include <iterator>
 #include <span>
 #include <vector>
 
@@ -11,6 +13,7 @@
 #include "app/output_check.h"
 #include "io/image_writer.h"
 #include "io/readers.h"
+#include "render/glyph_path.h"
 #include "render/tessellated.h"
 
 namespace tg::app {
@@ -46,6 +49,9 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
     o.height = int(parseInt(a[0], a[2]));
   });
   ap.setGroup("glyphs");
+  ap.arg("--pipeline NAME").reloads().help("how glyphs are drawn: raster (default; a ray-cast sprite per glyph) or "
+                                            "cpu (tiles cast on every core; ellipsoid glyphs only)")
+      .action([&](Args a) { o.pipeline = a[1]; });
   ap.arg("--glyph KIND").help("ellipsoid (default; the built-in scene: superquadric), superquadric, "
                                   "or Teem's cylinder or box").action([&](Args a) {
     o.glyph = a[1];
@@ -111,6 +117,13 @@ void validateRenderOptions(const RenderOptions& o, bool toFile) {
   // The kind table says which kinds the march's options (gamma among them) apply to.
   const bool marches = render::glyphKind(o.look.glyphGiven || !o.input.empty() ? *glyphKindNamed(o.glyph)
                                                                                : SceneLook{}.glyph).gamma;
+  if (std::find(std::begin(render::kGlyphPathNames), std::end(render::kGlyphPathNames), o.pipeline) ==
+      std::end(render::kGlyphPathNames))
+    throw UsageError("--pipeline: unknown glyph path \"" + o.pipeline + "\"; choose " + render::glyphPathNames());
+  const render::GlyphKind kind = o.look.glyphGiven || !o.input.empty() ? *glyphKindNamed(o.glyph) : SceneLook{}.glyph;
+  if (o.pipeline == "cpu" && (kind != render::GlyphKind::Ellipsoid || o.tessellate != 0))
+    throw UsageError("--pipeline cpu draws ellipsoid glyphs only; this render draws " +
+                     std::string(render::glyphKind(kind).name) + " glyphs (use --glyph ellipsoid)");
   if (toFile && !o.marchFlag.empty() && !marches)
     throw UsageError(o.marchFlag + " applies to --glyph superquadric only; this render draws " + o.glyph + " glyphs");
   o.validateSceneFlags(o.input);

@@ -33,6 +33,7 @@ struct RenderOptions : SceneFlags {
   // it for glyphs that do not march (a Teem user's --gamma on a file's
   // default ellipsoids); view and Python may switch to superquadrics later.
   std::string marchFlag;
+  std::string pipeline = "raster";  // the glyph path (render::makeGlyphPath)
 };
 
 

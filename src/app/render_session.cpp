@@ -61,7 +61,7 @@ RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io
 
   ctx_ = hooks.makeContext ? hooks.makeContext(o) : createContext(o.backend, o.width, o.height);
   lib_ = std::make_unique<gl::ShaderLibrary>();
-  renderer_ = std::make_unique<render::GlyphRenderer>(ctx_->api(), *lib_, render::makeLegendPass);
+  renderer_ = std::make_unique<render::GlyphRenderer>(ctx_->api(), *lib_, render::makeLegendPass, o.pipeline);
   target_ = std::make_unique<render::GBuffer>(ctx_->api(), o.width, o.height);
   if (underlay)
     planes_ = addSlicePlanes(*renderer_, ctx_->api(), *lib_, o.slices, std::move(*underlay), glyphs_.maxAbsEigenvalue);

@@ -7,17 +7,30 @@
 
 namespace tg::render {
 
-void setCameraUniforms(const gl::Program& prog, const Camera& cam) {
-  prog.set("uViewWCVC", glm::mat4(cam.viewWCVC));
-  prog.set("uProjVCCC", glm::mat4(cam.projVCCC));
-  prog.set("uViewportDC", glm::vec2(float(cam.width), float(cam.height)));
+CameraUniforms cameraUniforms(const Camera& cam) {
+  CameraUniforms u;
+  u.viewWCVC = glm::mat4(cam.viewWCVC);
+  u.projVCCC = glm::mat4(cam.projVCCC);
+  u.viewportDC = glm::vec2(float(cam.width), float(cam.height));
   const bool ortho = cam.desc.projection == Projection::Orthographic;
-  prog.set("uOrtho", ortho ? 1 : 0);
+  u.ortho = ortho ? 1 : 0;
   const double aspect = double(cam.width) / cam.height;
   const double h = ortho ? 0.5 * cam.desc.orthoHeight : std::tan(glm::radians(cam.desc.fovYDeg) * 0.5);
-  prog.set("uRayScaleVC", glm::vec2(float(h * aspect), float(h)));
-  prog.set("uNearVC", float(cam.nearVC));
-  prog.set("uFarVC", ortho ? float(cam.farVC) : std::numeric_limits<float>::max());
+  u.rayScaleVC = glm::vec2(float(h * aspect), float(h));
+  u.nearVC = float(cam.nearVC);
+  u.farVC = ortho ? float(cam.farVC) : std::numeric_limits<float>::max();
+  return u;
+}
+
+void setCameraUniforms(const gl::Program& prog, const Camera& cam) {
+  const CameraUniforms u = cameraUniforms(cam);
+  prog.set("uViewWCVC", u.viewWCVC);
+  prog.set("uProjVCCC", u.projVCCC);
+  prog.set("uViewportDC", u.viewportDC);
+  prog.set("uOrtho", u.ortho);
+  prog.set("uRayScaleVC", u.rayScaleVC);
+  prog.set("uNearVC", u.nearVC);
+  prog.set("uFarVC", u.farVC);
 }
 
 }  // namespace tg::render

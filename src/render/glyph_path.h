@@ -7,7 +7,8 @@
 // the raster path is. The depth the deferred passes read is a depth
 // attachment; a path that cannot raster it writes a float depth channel and
 // resolves it (render/depth_resolve.h). Paths are selected by name
-// (makeGlyphPath); today's one is "raster" (render/raster_glyphs.h).
+// (makeGlyphPath): "raster" (render/raster_glyphs.h) and "cpu"
+// (render/cpu_glyphs.h).
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -62,9 +63,12 @@ class GlyphPath {
   virtual std::optional<std::uint64_t> latestDrawnCount() { return std::nullopt; }
 };
 
+// The paths' names, GL-free, for the options that choose one.
+inline constexpr std::string_view kGlyphPathNames[] = {"raster", "cpu"};
+
 // The path called `name`; throws std::invalid_argument naming the choices.
 std::unique_ptr<GlyphPath> makeGlyphPath(std::string_view name, const gl::Api& gl, const gl::ShaderLibrary& lib);
-// "raster": the names makeGlyphPath takes, for messages.
+// "raster, cpu": the names makeGlyphPath takes, for messages.
 std::string glyphPathNames();
 
 }  // namespace tg::render

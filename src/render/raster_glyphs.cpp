@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "render/camera_uniforms.h"
+#include "render/cpu_glyphs.h"
 #include "render/shadow_pass.h"
 #include "render/sprite_primitive.h"
 #include "shaders/lib/bindings.h"
@@ -158,17 +159,22 @@ int RasterGlyphs::splitFor(const FrameParams& p) {
   return !sq ? 3 : p.gamma > 0.0 ? 1 : 2;
 }
 
-std::pair<glm::dvec3, glm::dvec3> RasterGlyphs::castersBoxWC(const FrameParams& p) const {
+std::pair<glm::dvec3, glm::dvec3> castersBoxWC(const glm::dvec3& centresLoWC, const glm::dvec3& centresHiWC,
+                                               double maxAbsEigenvalue, const FrameParams& p) {
   // The selected centres, grown by the largest glyph box's half diagonal (a
   // superquadric reaches its box's corners).
-  glm::dvec3 lo = centresLoWC_, hi = centresHiWC_;
+  glm::dvec3 lo = centresLoWC, hi = centresHiWC;
   if (p.slab.axis >= 0) {
     const int a = p.slab.axis;
     lo[a] = std::max(lo[a], p.slab.lo);
     hi[a] = std::max(lo[a], std::min(hi[a], p.slab.hi));
   }
-  const double pad = tensor::kGlyphReach * tensor::glyphRadiusWC(p.scale, p.sizing, maxAbsEigenvalue_);
+  const double pad = tensor::kGlyphReach * tensor::glyphRadiusWC(p.scale, p.sizing, maxAbsEigenvalue);
   return {lo - pad, hi + pad};
+}
+
+std::pair<glm::dvec3, glm::dvec3> RasterGlyphs::castersBoxWC(const FrameParams& p) const {
+  return render::castersBoxWC(centresLoWC_, centresHiWC_, maxAbsEigenvalue_, p);
 }
 
 void RasterGlyphs::drawShadowCasters(const Camera& light, const FrameParams& p, ShadowPass& shadow) {
@@ -323,10 +329,15 @@ IterationStats RasterGlyphs::iterationStats() const {
 
 std::unique_ptr<GlyphPath> makeGlyphPath(std::string_view name, const gl::Api& gl, const gl::ShaderLibrary& lib) {
   if (name == "raster") return std::make_unique<RasterGlyphs>(gl, lib);
+  if (name == "cpu") return std::make_unique<CpuGlyphs>(gl, lib);
   throw std::invalid_argument("makeGlyphPath: unknown glyph path \"" + std::string(name) + "\"; choose " +
                               glyphPathNames());
 }
 
-std::string glyphPathNames() { return "raster"; }
+std::string glyphPathNames() {
+  std::string names;
+  for (const std::string_view n : kGlyphPathNames) names += (names.empty() ? "" : ", ") + std::string(n);
+  return names;
+}
 
 }  // namespace tg::render

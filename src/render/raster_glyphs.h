@@ -101,6 +101,11 @@ class RasterGlyphs final : public GlyphPath {
   bool orientedSprites_ = false;  // as last set
 };
 
+// The casters' box (GlyphPath::castersBoxWC) of glyphs whose centres span
+// [centresLoWC, centresHiWC] and whose largest |eigenvalue| is maxAbsEigenvalue.
+std::pair<glm::dvec3, glm::dvec3> castersBoxWC(const glm::dvec3& centresLoWC, const glm::dvec3& centresHiWC,
+                                               double maxAbsEigenvalue, const FrameParams& p);
+
 // `path` as the raster path, for what only it counts; throws std::bad_cast
 // for another path.
 inline const RasterGlyphs& asRaster(const GlyphPath& path) { return dynamic_cast<const RasterGlyphs&>(path); }

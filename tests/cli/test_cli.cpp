@@ -134,6 +134,8 @@ TEST(Cli, BadInputFailsWithOneLineAndNoOutput) {
       {"render -o " + out.string() + " --background 2 0 0 1", "--background must be within 0..1"},
       {"render -o " + (d / "x.notanimage").string(), "no image format"},
       {"render -o " + out.string() + " --backend vulkan", "backend"},
+      {"render -o " + out.string() + " --pipeline tiles", "--pipeline: unknown glyph path \"tiles\"; choose raster, cpu"},
+      {"render -o " + out.string() + " --pipeline cpu", "--pipeline cpu draws ellipsoid glyphs only; this render draws superquadric"},
       {"render", "-o OUT"},
       {"info", "INPUT"},
       {"frobnicate", "unknown command"}};

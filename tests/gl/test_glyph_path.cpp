@@ -91,15 +91,16 @@ tensor::GlyphSet oneGlyph() {
 }  // namespace
 
 TEST(GlyphPath, PathsAreSelectedByName) {
-  EXPECT_EQ(render::glyphPathNames(), "raster");
+  EXPECT_EQ(render::glyphPathNames(), "raster, cpu");
   auto ctx = gl::createOSMesaContext();
   const gl::ShaderLibrary lib;
   EXPECT_EQ(render::makeGlyphPath("raster", ctx->api(), lib)->name(), "raster");
+  EXPECT_EQ(render::makeGlyphPath("cpu", ctx->api(), lib)->name(), "cpu");
   try {
     render::makeGlyphPath("tiles", ctx->api(), lib);
     ADD_FAILURE() << "an unknown path was made";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("\"tiles\"; choose raster"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("\"tiles\"; choose raster, cpu"), std::string::npos) << e.what();
   }
 }
 

@@ -1,0 +1,40 @@
+#version 450 core
+// The CPU glyph path's G-buffer (render/cpu_glyphs.h): the caster wrote each
+// pixel's window depth, record and normal; this pass writes them into the
+// G-buffer's attachments and takes the albedo and id from the record with the
+// raster path's own colour code (ellipsoid.vert, lib/color.glsl), so that
+// the colour maths stays on one side. Empty pixels are discarded: they keep
+// what GBuffer::beginGeometry cleared.
+#include "lib/bindings.h"
+#include "lib/camera.glsl"
+#include "lib/glyph_record.glsl"
+#include "lib/ellipsoid.glsl"
+#include "lib/glyph_size.glsl"
+#include "lib/color.glsl"
+
+uniform int uColorMode;
+uniform vec2 uMdRange;
+
+layout(binding = TG_UNIT_CPU_DEPTH) uniform sampler2D uWindowDepth;
+layout(binding = TG_UNIT_CPU_RECORD) uniform usampler2D uRecord;
+layout(binding = TG_UNIT_CPU_NORMAL) uniform sampler2D uCastNormalWC;
+layout(binding = TG_UNIT_CPU_HIT_GC) uniform sampler2D uHitGC;
+
+layout(location = 0) out vec4 oAlbedo;
+layout(location = 1) out vec4 oNormalWC;
+layout(location = 2) out uint oId;
+
+void main() {
+  ivec2 p = ivec2(gl_FragCoord.xy);
+  uint r = texelFetch(uRecord, p, 0).r;
+  if (r == 0u) discard;
+  GlyphRecord g = glyphs[r - 1u];
+  vec3 axes = glyphAxes(g.eigenvalues_id.xyz);
+  vec3 color = uColorMode == kColorSign
+                   ? signColor(signWeights(g.eigenvalues_id.xyz, axes), texelFetch(uHitGC, p, 0).xyz)
+                   : glyphColor(uColorMode, quatToMat3(g.frameWC)[0], g.posWC_fa.w, g.eigenvalues_id.xyz, uMdRange);
+  gl_FragDepth = texelFetch(uWindowDepth, p, 0).r;
+  oAlbedo = vec4(color, 1.0);
+  oNormalWC = vec4(texelFetch(uCastNormalWC, p, 0).xyz, 0.0);
+  oId = floatBitsToUint(g.eigenvalues_id.w);
+}

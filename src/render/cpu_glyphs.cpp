@@ -1,0 +1,238 @@
+#include "render/cpu_glyphs.h"
+
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <cstring>
+#include <limits>
+#include <stdexcept>
+#include <string>
+
+#include "render/camera_uniforms.h"
+#include "render/glsl_cpp.h"
+#include "render/kind_programs.h"
+#include "render/raster_glyphs.h"
+#include "shaders/lib/bindings.h"
+
+namespace tg::render {
+
+namespace {
+
+static_assert(sizeof(glsl::GlyphRecord) == sizeof(tensor::GlyphRecord));
+
+using Candidate = CastCandidate;
+
+// The pixel centres (k + 0.5) within rectNDC, as rectMissesEveryPixelCentre
+// maps it; false where none lies in the viewport.
+bool pixelsOf(const glsl::vec4& rectNDC, int width, int height, PixelRect& r) {
+  const glsl::vec4 dc = (rectNDC + 1.0f) * 0.5f * glsl::vec4(float(width), float(height), float(width), float(height));
+  r.x0 = std::max(0, int(std::ceil(dc.x - 0.5f)));
+  r.y0 = std::max(0, int(std::ceil(dc.y - 0.5f)));
+  r.x1 = std::min(width - 1, int(std::floor(dc.z - 0.5f)));
+  r.y1 = std::min(height - 1, int(std::floor(dc.w - 0.5f)));
+  return r.x0 <= r.x1 && r.y0 <= r.y1;
+}
+
+}  // namespace
+
+std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Camera& cam, const FrameParams& p,
+                         bool hitGC, int threads, CpuCasts& out) {
+  glsl::Shaders sh;
+  sh.setCamera(cam);
+  sh.setGlyph(p);
+  const int w = cam.width, h = cam.height;
+  const std::size_t n = std::size_t(w) * std::size_t(h);
+  out.width = w;
+  out.height = h;
+  out.windowDepth.resize(n);
+  out.record.assign(n, 0);
+  out.normalWC.resize(n);
+  out.hitGC.resize(hitGC ? n : 0);
+
+  // Set-up, the vertex stage's: part k writes its glyphs, in record order,
+  // from its first record's slot on; then the parts close up.
+  const std::size_t m = records.size();
+  if (out.candidates.size() < m) {
+    out.candidates.resize(m);
+    out.rects.resize(m);
+  }
+  std::vector<std::size_t> kept(static_cast<std::size_t>(threads), 0);
+  runParts(threads, [&](int part, int parts) {
+    const std::size_t begin = partBegin(m, part, parts);
+    std::size_t at = begin;
+    for (std::size_t i = begin; i < partBegin(m, part + 1, parts); ++i) {
+      glsl::GlyphRecord g;
+      std::memcpy(&g, &records[i], sizeof g);
+      glsl::EllipsoidSprite s;
+      PixelRect& r = out.rects[at];
+      if (!sh.ellipsoidSprite(g, s) || !pixelsOf(s.rectNDC, w, h, r)) continue;
+      out.candidates[at++] = {s.centreVC, sh.ellipsoidGcFromVC(s.rotVC, s.axes),
+                              std::max(s.dist - s.radius, sh.uNearVC), std::uint32_t(i)};
+    }
+    kept[std::size_t(part)] = at - begin;
+  });
+  std::size_t count = kept[0];
+  for (int k = 1; k < threads; ++k) {
+    const std::size_t begin = partBegin(m, k, threads), n_k = kept[std::size_t(k)];
+    std::copy_n(out.candidates.begin() + std::ptrdiff_t(begin), n_k, out.candidates.begin() + std::ptrdiff_t(count));
+    std::copy_n(out.rects.begin() + std::ptrdiff_t(begin), n_k, out.rects.begin() + std::ptrdiff_t(count));
+    count += n_k;
+  }
+  out.count = count;
+  const std::vector<Candidate>& cands = out.candidates;
+  const std::vector<PixelRect>& rects = out.rects;
+  TileBins& bins = out.bins;
+  binToTiles(std::span(rects.data(), count), w, h, threads, bins);
+
+  // Per tile, per pixel centre: the tile's glyphs nearest first, until the
+  // next one's nearest depth lies behind the hit. The depth test is the
+  // raster path's (reversed window depth, GL_GREATER: of equal depths the
+  // glyph drawn first, the lower record, stays).
+  std::atomic<std::size_t> nextTile{0};
+  runParts(threads, [&](int, int) {
+    std::vector<std::uint32_t> order;
+    for (std::size_t t; (t = nextTile.fetch_add(1)) < bins.tiles();) {
+      order.assign(bins.items.begin() + bins.start[t], bins.items.begin() + bins.start[t + 1]);
+      if (order.empty()) continue;
+      // Nearest first; of equal depths the lower record first, as drawn.
+      std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return cands[a].nearVC < cands[b].nearVC || (cands[a].nearVC == cands[b].nearVC && a < b);
+      });
+      const int tx = int(t % std::size_t(bins.tilesX)), ty = int(t / std::size_t(bins.tilesX));
+      const int x1 = std::min(w, (tx + 1) * kTilePx), y1 = std::min(h, (ty + 1) * kTilePx);
+      for (int y = ty * kTilePx; y < y1; ++y)
+        for (int x = tx * kTilePx; x < x1; ++x) {
+          const glsl::vec2 fragDC(float(x) + 0.5f, float(y) + 0.5f);
+          float bestWin = 0.0f, bestVC = std::numeric_limits<float>::infinity();
+          const Candidate* best = nullptr;
+          glsl::vec3 bestGC(0.0f);
+          for (const std::uint32_t k : order) {
+            const Candidate& c = cands[k];
+            if (c.nearVC > bestVC) break;
+            const PixelRect& r = rects[k];
+            if (x < r.x0 || x > r.x1 || y < r.y0 || y > r.y1) continue;
+            float depthVC;
+            glsl::vec3 nGC;
+            if (!sh.castEllipsoid(fragDC, c.centreVC, c.gcFromVC, depthVC, nGC)) continue;
+            const float win = sh.windowDepthFromViewDepth(depthVC);
+            if (win > bestWin || (best && win == bestWin && c.record < best->record)) {
+              bestWin = win;
+              bestVC = depthVC;
+              best = &c;
+              bestGC = nGC;
+            }
+          }
+          if (!best) continue;
+          const std::size_t px = std::size_t(y) * std::size_t(w) + std::size_t(x);
+          out.windowDepth[px] = bestWin;
+          out.record[px] = best->record + 1;
+          out.normalWC[px] = glsl::vec4(sh.ellipsoidNormalWC(best->gcFromVC, bestGC), 0.0f);
+          if (hitGC) out.hitGC[px] = glsl::vec4(bestGC, 0.0f);
+        }
+    }
+  });
+  return count;
+}
+
+CpuGlyphs::CpuGlyphs(const gl::Api& gl, const gl::ShaderLibrary& lib)
+    : gl_(gl),
+      lib_(lib),
+      program_(gl, lib, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "cpu_gbuffer.frag"}}),
+      threads_(cpuPathThreads()) {
+  gl.CreateVertexArrays(1, &vao_);
+  gl::checkError(gl, "CpuGlyphs");
+}
+
+CpuGlyphs::~CpuGlyphs() {
+  if (buffer_) gl_.DeleteBuffers(1, &buffer_);
+  if (tex_[0]) gl_.DeleteTextures(4, tex_);
+  gl_.DeleteVertexArrays(1, &vao_);
+}
+
+void CpuGlyphs::upload(const tensor::GlyphSet& set) {
+  if (set.glyphs.size() >= std::size_t(std::numeric_limits<std::uint32_t>::max()))
+    throw std::runtime_error("GlyphRenderer::upload: " + std::to_string(set.glyphs.size()) +
+                             " glyphs; the cpu path numbers them in 32 bits");
+  set_ = set;
+  if (buffer_) gl_.DeleteBuffers(1, &buffer_);
+  buffer_ = 0;
+  if (!set.glyphs.empty()) {
+    gl_.CreateBuffers(1, &buffer_);
+    gl_.NamedBufferStorage(buffer_, GLsizeiptr(set.glyphs.size() * sizeof(tensor::GlyphRecord)), set.glyphs.data(), 0);
+  }
+  program_.set("uMdRange", glm::vec2(float(set.mdMin), float(set.mdMax)));
+  if (shadowCasters_) shadowCasters_->upload(set);
+  gl::checkError(gl_, "GlyphRenderer::upload");
+}
+
+void CpuGlyphs::setParams(const FrameParams& p, const FrameParams* old) {
+  setGlyphUniforms(program_, p, old);
+  if (shadowCasters_) shadowCasters_->setParams(p, old);
+}
+
+void CpuGlyphs::allocate(int width, int height) {
+  if (tex_[0] && casts_.width == width && casts_.height == height) return;
+  if (tex_[0]) gl_.DeleteTextures(4, tex_);
+  const GLenum formats[4] = {GL_R32F, GL_R32UI, GL_RGBA32F, GL_RGBA32F};
+  gl_.CreateTextures(GL_TEXTURE_2D, 4, tex_);
+  for (int k = 0; k < 4; ++k) {
+    gl_.TextureStorage2D(tex_[k], 1, formats[k], width, height);
+    gl_.TextureParameteri(tex_[k], GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    gl_.TextureParameteri(tex_[k], GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+  }
+}
+
+void CpuGlyphs::drawView(const Camera& cam, const FrameParams& p, const GBuffer& target) {
+  if (glyphKind(p.glyph).kind != GlyphKind::Ellipsoid || p.tessellation > 0)
+    throw std::invalid_argument("GlyphRenderer::render: the cpu glyph path draws ellipsoid glyphs only (this frame: " +
+                                std::string(p.tessellation > 0 ? "tessellated " : "") +
+                                std::string(glyphKind(p.glyph).name) + "); use the raster path");
+  if (target.width() != cam.width || target.height() != cam.height)
+    throw std::invalid_argument("GlyphRenderer::render: the target is not the camera's size");
+  const bool sign = p.color == ColorMode::Sign;
+  drawn_ = castGlyphs(set_.glyphs, cam, p, sign, threads_, casts_);
+  allocate(cam.width, cam.height);
+  target.beginGeometry();
+  if (drawn_ == 0) return;
+  const int w = cam.width, h = cam.height;
+  gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  gl_.TextureSubImage2D(tex_[0], 0, 0, 0, w, h, GL_RED, GL_FLOAT, casts_.windowDepth.data());
+  gl_.TextureSubImage2D(tex_[1], 0, 0, 0, w, h, GL_RED_INTEGER, GL_UNSIGNED_INT, casts_.record.data());
+  gl_.TextureSubImage2D(tex_[2], 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, casts_.normalWC.data());
+  if (sign) gl_.TextureSubImage2D(tex_[3], 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, casts_.hitGC.data());
+  setCameraUniforms(program_, cam);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_GLYPHS, buffer_);
+  gl_.BindTextureUnit(TG_UNIT_CPU_DEPTH, tex_[0]);
+  gl_.BindTextureUnit(TG_UNIT_CPU_RECORD, tex_[1]);
+  gl_.BindTextureUnit(TG_UNIT_CPU_NORMAL, tex_[2]);
+  gl_.BindTextureUnit(TG_UNIT_CPU_HIT_GC, tex_[3]);
+  gl_.Enable(GL_DEPTH_TEST);
+  gl_.DepthFunc(GL_ALWAYS);
+  gl_.DepthMask(GL_TRUE);
+  gl_.UseProgram(program_.id());
+  gl_.BindVertexArray(vao_);
+  gl_.DrawArrays(GL_TRIANGLES, 0, 3);
+  gl_.DepthFunc(GL_GREATER);  // reversed Z, as the raster path leaves it for the context
+  gl::checkError(gl_, "CpuGlyphs::drawView");
+}
+
+std::pair<glm::dvec3, glm::dvec3> CpuGlyphs::castersBoxWC(const FrameParams& p) const {
+  return render::castersBoxWC(set_.boundsMinWC, set_.boundsMaxWC, set_.maxAbsEigenvalue, p);
+}
+
+void CpuGlyphs::drawShadowCasters(const Camera& light, const FrameParams& p, ShadowPass& shadow) {
+  if (!shadowCasters_) {
+    shadowCasters_ = std::make_unique<RasterGlyphs>(gl_, lib_);
+    shadowCasters_->upload(set_);
+    shadowCasters_->setParams(p, nullptr);
+  }
+  shadowCasters_->drawShadowCasters(light, p, shadow);
+}
+
+std::size_t CpuGlyphs::gpuBytes() const {
+  const std::size_t pixels = std::size_t(casts_.width) * std::size_t(casts_.height);
+  return set_.glyphs.size() * sizeof(tensor::GlyphRecord) + (tex_[0] ? pixels * 40 : 0) +
+         (shadowCasters_ ? shadowCasters_->gpuBytes() : 0);
+}
+
+}  // namespace tg::render

@@ -1,0 +1,92 @@
+#pragma once
+// The CPU glyph path (render/glyph_path.h, "cpu"): one pass over all cores
+// sets up every glyph's sprite as the raster path's vertex stage does
+// (shaders/lib/ellipsoid_sprite.glsl, compiled as C++: render/glsl_cpp.h)
+// and bins its pixel rectangle to screen tiles (render/tile_binning.h); then
+// per tile each pixel centre is cast against the tile's glyphs in order of
+// their nearest depth, stopping where the next lies behind the hit
+// (shaders/lib/ellipsoid.glsl's castEllipsoid, the fragment stage's own
+// code). The casts are uploaded and written into the G-buffer by
+// cpu_gbuffer.frag, which takes albedo and id from the record, so that the
+// deferred passes, context and picking run unchanged.
+//
+// Draws ellipsoid glyphs (spheres included); other kinds and the
+// tessellated baseline are refused. The key light's shadow map is drawn by
+// a raster path built on the first frame with shadows.
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include <glm/mat3x3.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+#include "render/glyph_path.h"
+#include "render/tile_binning.h"
+
+namespace tg::render {
+
+class RasterGlyphs;
+
+// A glyph that some pixel centre may see: what its fragments would receive.
+struct CastCandidate {
+  glm::vec3 centreVC;
+  glm::mat3 gcFromVC;
+  float nearVC;  // no hit lies nearer: the raster quad's depth
+  std::uint32_t record;
+};
+
+// One pixel's cast: what the CPU path uploads; and the set-up's buffers,
+// kept from frame to frame so that a frame allocates nothing.
+struct CpuCasts {
+  int width = 0, height = 0;
+  std::vector<float> windowDepth;       // reversed, 0 where empty; rows bottom first as GL's
+  std::vector<std::uint32_t> record;    // index into the uploaded records + 1; 0 where empty
+  std::vector<glm::vec4> normalWC;      // unit, w 0
+  std::vector<glm::vec4> hitGC;         // the GC hit point; filled only when asked
+  std::vector<CastCandidate> candidates;  // the first `count` hold this frame's, in record order
+  std::vector<PixelRect> rects;           // and their pixels
+  std::size_t count = 0;
+  TileBins bins;
+};
+
+// The casts of `cam` at p's parameters over `records` on `threads` threads
+// (what CpuGlyphs::drawView uploads; the tests compare it directly). Depth,
+// normal and hit are left undefined where the record says empty. Returns the
+// glyphs that reached a tile.
+std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Camera& cam, const FrameParams& p,
+                         bool hitGC, int threads, CpuCasts& out);
+
+class CpuGlyphs final : public GlyphPath {
+ public:
+  CpuGlyphs(const gl::Api& gl, const gl::ShaderLibrary& lib);
+  ~CpuGlyphs() override;
+  CpuGlyphs(const CpuGlyphs&) = delete;
+  CpuGlyphs& operator=(const CpuGlyphs&) = delete;
+
+  std::string_view name() const override { return "cpu"; }
+  void upload(const tensor::GlyphSet& set) override;
+  void setParams(const FrameParams& p, const FrameParams* old) override;
+  void drawView(const Camera& cam, const FrameParams& p, const GBuffer& target) override;
+  std::pair<glm::dvec3, glm::dvec3> castersBoxWC(const FrameParams& p) const override;
+  void drawShadowCasters(const Camera& light, const FrameParams& p, ShadowPass& shadow) override;
+  std::size_t gpuBytes() const override;
+  std::uint64_t drawnGlyphs() const override { return drawn_; }
+
+ private:
+  // The casts' textures at width x height, reallocated when the size changes.
+  void allocate(int width, int height);
+
+  const gl::Api& gl_;
+  const gl::ShaderLibrary& lib_;
+  gl::Program program_;
+  tensor::GlyphSet set_;  // the records, kept for the casts (and a raster path for shadows)
+  std::unique_ptr<RasterGlyphs> shadowCasters_;  // built on the first frame with shadows
+  CpuCasts casts_;
+  GLuint buffer_ = 0, vao_ = 0;
+  GLuint tex_[4] = {};  // depth, record, normal, hit: cpu_gbuffer.frag's inputs
+  int threads_;
+  std::uint64_t drawn_ = 0;
+};
+
+}  // namespace tg::render

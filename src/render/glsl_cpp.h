@@ -1,0 +1,64 @@
+#pragma once
+// shaders/lib's shared maths compiled as C++ over GLM: the same files the
+// glyph shaders include (lib/glsl_cpp.h says which subset they keep), inside
+// a struct whose members are their uniforms. The CPU glyph path
+// (render/cpu_glyphs.h) sets the members as the raster path sets the
+// uniforms (setCameraUniforms, setGlyphUniforms) and calls the functions, so
+// that both paths run one copy of the intersection, bounds and normal code.
+#include <glm/common.hpp>
+#include <glm/exponential.hpp>
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/mat4x4.hpp>
+#include <glm/matrix.hpp>
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+#include <glm/vector_relational.hpp>
+
+#include "view/camera.h"
+#include "render/frame_params.h"
+#include "shaders/lib/glsl_cpp.h"
+
+namespace tg::render::glsl {
+
+using glm::any;
+using glm::ceil;
+using glm::clamp;
+using glm::dot;
+using glm::greaterThan;
+using glm::ivec2;
+using glm::log;
+using glm::mat3;
+using glm::mat4;
+using glm::max;
+using glm::min;
+using glm::normalize;
+using glm::sqrt;
+using glm::transpose;
+using glm::uint;
+using glm::vec2;
+using glm::vec3;
+using glm::vec4;
+
+#define uniform
+struct Shaders {
+#include "shaders/lib/camera.glsl"
+#include "shaders/lib/glyph_record_type.glsl"
+#include "shaders/lib/ellipsoid.glsl"
+#include "shaders/lib/glyph_size.glsl"
+#include "shaders/lib/selection.glsl"
+#include "shaders/lib/pixel_centres.glsl"
+#include "shaders/lib/ellipsoid_sprite.glsl"
+
+  // The uniforms of camera.glsl, as render/camera_uniforms.cpp sets them.
+  void setCamera(const Camera& cam);
+  // Those of glyph_size.glsl and selection.glsl, as setGlyphUniforms.
+  void setGlyph(const FrameParams& p);
+};
+#undef uniform
+
+using GlyphRecord = Shaders::GlyphRecord;
+using EllipsoidSprite = Shaders::EllipsoidSprite;
+
+}  // namespace tg::render::glsl

@@ -1,0 +1,47 @@
+#!/usr/bin/env bash
+# Glyph paths against each other (issue 33): median frame time of
+# `--pipeline raster` and `--pipeline cpu` on the same scenes, in one run,
+# with the load average before and after. The cpu path draws ellipsoids
+# only, so every case here draws ellipsoids (the dt-helix too).
+#   bash tests/bench/pipelines.sh [-n N_TENSORS] [-r REPEAT] [-b BUILD_DIR]
+# Defaults: 2000000 tensors (synth random), 5 frames, build. LP_NUM_THREADS
+# is passed through: llvmpipe's threads and the cpu path's (every core)
+# run one after the other within a frame, never at once.
+# A bench, not a test: not registered in ctest.
+set -euo pipefail
+n=2000000 repeat=5 build=build
+while getopts "n:r:b:" opt; do
+  case $opt in
+    n) n=$OPTARG ;;
+    r) repeat=$OPTARG ;;
+    b) build=$OPTARG ;;
+    *) echo "usage: $0 [-n N_TENSORS] [-r REPEAT] [-b BUILD_DIR]" >&2; exit 2 ;;
+  esac
+done
+bin=$(realpath "$build/tensorglyph")
+here=$(cd "$(dirname "$0")" && pwd)
+helix=$(realpath "$here/../../../shared/data/real/kindlmann-dt-helix/dt-helix.nhdr")
+dir=$(mktemp -d)
+trap 'rm -rf "$dir"' EXIT
+"$bin" synth random --n "$n" --seed 3 -o "$dir/random.vtk" >/dev/null
+echo "cores $(nproc), LP_NUM_THREADS ${LP_NUM_THREADS:-unset}, load before: $(cut -d' ' -f1-3 /proc/loadavg)"
+ms() { sed -n "s/.*median of [0-9]* frames \([0-9.]*\) ms.*/\1/p" "$1"; }
+# The process's CPU time per frame over all threads: on a shared machine,
+# what the frame cost apart from waiting for a core.
+cpu() { sed -n "s/.*CPU, all threads: \([0-9.]*\) ms.*/\1/p" "$1"; }
+printf '| %-34s | %12s | %12s | %7s | %14s | %14s |\n' case "raster ms" "cpu ms" "ratio" "raster CPU ms" "cpu CPU ms"
+run() {  # LABEL ARGS...
+  local label=$1; shift
+  local t=() c=()
+  for p in raster cpu; do
+    "$bin" render "$@" --pipeline "$p" -o "$dir/$p.png" --repeat "$repeat" --verbose 2>"$dir/$p.err" >/dev/null
+    t+=("$(ms "$dir/$p.err")")
+    c+=("$(cpu "$dir/$p.err")")
+  done
+  printf '| %-34s | %12s | %12s | %6sx | %14s | %14s |\n' "$label" "${t[0]}" "${t[1]}" \
+    "$(awk -v a="${t[0]}" -v b="${t[1]}" 'BEGIN { printf "%.1f", a / b }')" "${c[0]}" "${c[1]}"
+}
+run "synth random $n, 1920x1080" "$dir/random.vtk" --size 1920 1080
+run "dt-helix ellipsoids, 512x512" "$helix" --glyph ellipsoid --size 512 512 --scale 0.06 \
+  --eye 5.4 -9.6 7.5 --look-at 0 0 0 --up 0 0 1 --fov 30
+echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"

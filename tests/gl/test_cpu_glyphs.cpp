@@ -1,0 +1,223 @@
+// Tier 3: the CPU glyph path (render/cpu_glyphs.h) against the raster path
+// on reference scenes. Both run the same intersection source
+// (shaders/lib/ellipsoid.glsl, as GLSL on llvmpipe and as C++ over GLM), so
+// that the pictures agree to float rounding:
+// - coverage and ids: equal at every pixel centre (measured: no pixel differs
+//   on any scene here). A pixel centre within float rounding of a silhouette
+//   (the hit test's h = 1 - |q|^2 within a few ulps of 0) or of a depth tie
+//   could go either way where llvmpipe contracts a * b + c into one rounding
+//   (FMA) and the C++ rounds twice: one pixel in 10^4 is allowed for that;
+// - depth: 2e-5 of the depth (perspective) or of the depth range
+//   (orthographic: a linear depth buffer), the unit and bound test_render.cpp
+//   holds the raster path to against the double reference. The view depth
+//   tc + t is summed from terms that may be far larger than it (a ray from
+//   inside a glyph, the far wall), and llvmpipe's division, square root and
+//   FMA contraction round those terms otherwise than the C++ does, by a few
+//   float ulps (6e-8) of the largest; measured up to 1.3e-5;
+// - normals: 0.05 degrees (both stored as RGBA16F: 11-bit mantissas, < 0.03
+//   degrees, plus the rounding of the hit point);
+// - lit colour: 2e-3, below one 8-bit step (3.9e-3).
+#include <algorithm>
+#include <cmath>
+
+#include "render/cpu_glyphs.h"
+#include "render/pixel_probe.h"
+#include "render_fixture.h"
+
+using namespace tg;
+using test::GlFixture;
+
+namespace {
+
+constexpr double kIdMismatch = 1e-4, kRelDepth = 2e-5, kNormalDeg = 0.05, kColor = 2e-3;
+
+struct Pair {
+  render::FrameImage raster, cpu;
+  std::uint64_t cpuDrawn = 0;
+};
+
+struct Agreement {
+  std::size_t covered = 0, idMismatch = 0;
+  double relDepth = 0, normalDeg = 0, color = 0;
+};
+
+Agreement agreement(const Pair& s, const render::Camera& cam) {
+  const bool ortho = cam.desc.projection == render::Projection::Orthographic;
+  Agreement g;
+  const auto& a = s.raster;
+  const auto& b = s.cpu;
+  for (std::size_t i = 0; i < a.id.size(); ++i) {
+    g.covered += a.id[i] != ref::kNoGlyph ? 1 : 0;
+    if (a.id[i] != b.id[i]) {
+      ++g.idMismatch;
+      continue;
+    }
+    for (int k = 0; k < 3; ++k) g.color = std::max(g.color, double(std::abs(a.rgba[4 * i + k] - b.rgba[4 * i + k])));
+    if (a.id[i] == ref::kNoGlyph) continue;
+    const double unit = ortho ? cam.farVC - cam.nearVC : double(a.depth[i]);
+    g.relDepth = std::max(g.relDepth, double(std::abs(a.depth[i] - b.depth[i])) / unit);
+    const glm::dvec3 na(a.normalWC[3 * i], a.normalWC[3 * i + 1], a.normalWC[3 * i + 2]);
+    const glm::dvec3 nb(b.normalWC[3 * i], b.normalWC[3 * i + 1], b.normalWC[3 * i + 2]);
+    const double c = std::clamp(glm::dot(na, nb) / (glm::length(na) * glm::length(nb)), -1.0, 1.0);
+    g.normalDeg = std::max(g.normalDeg, glm::degrees(std::acos(c)));
+  }
+  return g;
+}
+
+void expectAgree(const Pair& s, const render::Camera& cam, const std::string& what, std::size_t minCovered = 500) {
+  SCOPED_TRACE(what);
+  const Agreement g = agreement(s, cam);
+  std::printf("[ cpu path ] %s: %zu covered, %zu id mismatches, depth %.2g, normal %.3g deg, colour %.2g\n",
+              what.c_str(), g.covered, g.idMismatch, g.relDepth, g.normalDeg, g.color);
+  EXPECT_GE(g.covered, minCovered);
+  EXPECT_LE(double(g.idMismatch), kIdMismatch * double(g.covered));
+  EXPECT_LT(g.relDepth, kRelDepth);
+  EXPECT_LT(g.normalDeg, kNormalDeg);
+  EXPECT_LT(g.color, kColor);
+}
+
+tensor::GlyphSet grid(std::uint32_t n, std::uint64_t seed) { return test::glyphsOf(test::mixedGrid(n, seed)); }
+
+// Isotropic tensors only: every glyph a sphere.
+tensor::GlyphSet spheres() {
+  std::vector<float> pos, ten;
+  for (int i = 0; i < 27; ++i) {
+    const float r = 0.3f + 0.05f * float(i % 7);
+    pos.insert(pos.end(), {float(i % 3), float(i / 3 % 3), float(i / 9) * 0.8f});
+    ten.insert(ten.end(), {r, 0, 0, r, 0, r});
+  }
+  return tensor::buildGlyphs(pos, ten, {});
+}
+
+}  // namespace
+
+class CpuGlyphs : public GlFixture {
+ protected:
+  Pair both(const tensor::GlyphSet& set, const render::Camera& cam, const render::FrameParams& p) {
+    ctx_->makeCurrent();
+    render::GBuffer target(ctx_->api(), cam.width, cam.height);
+    Pair out;
+    for (const char* path : {"raster", "cpu"}) {
+      render::GlyphRenderer r(ctx_->api(), *lib_, nullptr, path);
+      r.upload(set);
+      r.render(cam, p, target);
+      (std::string(path) == "cpu" ? out.cpu : out.raster) = r.readback(cam, target);
+      if (std::string(path) == "cpu") out.cpuDrawn = r.drawnGlyphs();
+    }
+    return out;
+  }
+};
+
+TEST_F(CpuGlyphs, EllipsoidsMatchTheRasterPath) {
+  const tensor::GlyphSet set = grid(4, 7);
+  const double scale = 0.45;
+  for (const auto proj : {render::Projection::Perspective, render::Projection::Orthographic}) {
+    const auto cam = test::cameraFor(set, scale, test::oblique(set, 9.0, proj), 200, 150);
+    render::FrameParams p;
+    p.scale = scale;
+    const Pair s = both(set, cam, p);
+    expectAgree(s, cam, proj == render::Projection::Perspective ? "perspective" : "orthographic");
+    EXPECT_GT(s.cpuDrawn, 20u);
+  }
+}
+
+TEST_F(CpuGlyphs, SpheresMatchTheRasterPath) {
+  const tensor::GlyphSet set = spheres();
+  const auto cam = test::cameraFor(set, 1.0, test::oblique(set, 6.0, render::Projection::Perspective), 160, 120);
+  expectAgree(both(set, cam, render::FrameParams{}), cam, "spheres");
+}
+
+// Every colour mode (sign colours per surface point) and the selection: FA
+// threshold and a slab.
+TEST_F(CpuGlyphs, ColoursAndSelectionMatchTheRasterPath) {
+  const tensor::GlyphSet set = grid(4, 11);
+  const double scale = 0.45;
+  const auto cam = test::cameraFor(set, scale, test::oblique(set, 9.0, render::Projection::Perspective), 160, 120);
+  for (const auto mode : {render::ColorMode::FA, render::ColorMode::MD, render::ColorMode::CL, render::ColorMode::Sign}) {
+    render::FrameParams p;
+    p.scale = scale;
+    p.color = mode;
+    expectAgree(both(set, cam, p), cam, "colour mode " + std::to_string(int(mode)));
+  }
+  render::FrameParams p;
+  p.scale = scale;
+  p.faMin = 0.3;
+  p.slab = {2, 0.5, 2.5};
+  expectAgree(both(set, cam, p), cam, "FA threshold and slab", 200);
+}
+
+// The eye inside a glyph and the eye plane cutting others: no finite
+// rectangle, rays from inside see the far wall.
+TEST_F(CpuGlyphs, GlyphsAroundTheEyeMatchTheRasterPath) {
+  const tensor::GlyphSet set = test::glyphsAroundTheEye();
+  for (const auto proj : {render::Projection::Perspective, render::Projection::Orthographic}) {
+    const auto cam = test::insideCamera(proj);
+    expectAgree(both(set, cam, render::FrameParams{}), cam, "around the eye");
+  }
+}
+
+// Deferred passes and context read the same G-buffer: AO and outlines on.
+TEST_F(CpuGlyphs, DepthCuesMatchTheRasterPath) {
+  const tensor::GlyphSet set = grid(3, 5);
+  const double scale = 0.5;
+  const auto cam = test::cameraFor(set, scale, test::oblique(set, 7.0, render::Projection::Perspective), 160, 120);
+  render::FrameParams p;
+  p.scale = scale;
+  p.ao.enabled = p.outline.enabled = true;
+  const Pair s = both(set, cam, p);
+  const Agreement g = agreement(s, cam);
+  std::printf("[ cpu path ] depth cues: %zu id mismatches, colour %.2g\n", g.idMismatch, g.color);
+  EXPECT_LE(double(g.idMismatch), kIdMismatch * double(g.covered));
+  // AO samples depth and normals around each pixel; rounding-level depth
+  // differences could move a sample across a surface at grazing angles
+  // (measured: none moved, colour within 1.5e-4).
+  EXPECT_LT(g.color, kColor);
+}
+
+// Picking reads one pixel of the G-buffer (render/pixel_probe.h): the same
+// glyph and depth on both paths.
+TEST_F(CpuGlyphs, PickingReadsTheCpuPathsGBuffer) {
+  const tensor::GlyphSet set = grid(3, 9);
+  const double scale = 0.5;
+  const auto cam = test::cameraFor(set, scale, test::oblique(set, 7.0, render::Projection::Perspective), 120, 90);
+  render::FrameParams p;
+  p.scale = scale;
+  ctx_->makeCurrent();
+  render::GBuffer target(ctx_->api(), cam.width, cam.height);
+  std::vector<render::PixelSample> picks[2];
+  int k = 0;
+  for (const char* path : {"raster", "cpu"}) {
+    render::GlyphRenderer r(ctx_->api(), *lib_, nullptr, path);
+    r.upload(set);
+    r.render(cam, p, target);
+    for (int j = 5; j < cam.height; j += 11)
+      for (int i = 3; i < cam.width; i += 13) picks[k].push_back(render::readPixel(ctx_->api(), cam, target, i, j));
+    ++k;
+  }
+  std::size_t hits = 0, same = 0;
+  for (std::size_t i = 0; i < picks[0].size(); ++i) {
+    if (picks[0][i].id == ref::kNoGlyph) continue;
+    ++hits;
+    if (picks[0][i].id != picks[1][i].id) continue;
+    ++same;
+    EXPECT_NEAR(picks[1][i].viewDepth, picks[0][i].viewDepth, kRelDepth * picks[0][i].viewDepth);
+  }
+  EXPECT_GT(hits, 10u);
+  EXPECT_GE(double(same), double(hits) - 1.0);
+}
+
+TEST_F(CpuGlyphs, OtherKindsAreRefused) {
+  const tensor::GlyphSet set = grid(2, 3);
+  ctx_->makeCurrent();
+  const auto cam = test::cameraFor(set, 0.5, test::oblique(set, 5.0, render::Projection::Perspective), 64, 48);
+  render::GBuffer target(ctx_->api(), cam.width, cam.height);
+  render::GlyphRenderer r(ctx_->api(), *lib_, nullptr, "cpu");
+  r.upload(set);
+  try {
+    r.render(cam, test::superquadricParams(0.5), target);
+    ADD_FAILURE() << "a superquadric frame was drawn";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("ellipsoid glyphs only (this frame: superquadric)"), std::string::npos)
+        << e.what();
+  }
+}

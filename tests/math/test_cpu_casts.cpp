@@ -1,0 +1,139 @@
+// Tier 1: shaders/lib's intersection, bounds and normal code compiled as C++
+// (render/glsl_cpp.h), as the CPU glyph path runs it (render::castGlyphs),
+// against src/ref's double-precision ray caster. No GL: the same source
+// the GPU runs is checked here in float against double, with test_render's
+// raster-path tolerances (tests/gl/test_render.cpp says why), but for the
+// normals, which here skip the G-buffer's RGBA16F storage.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "data-synthetic/generators.h"
+#include "ref/ellipsoid_ref.h"
+#include "ref/image_diff.h"
+#include "render/cpu_glyphs.h"
+#include "render/glsl_cpp.h"
+#include "render/tile_binning.h"
+
+using namespace tg;
+
+namespace {
+
+tensor::GlyphSet glyphsOf(const io::TensorField& f) { return tensor::buildGlyphs(f.positions, f.tensors, f.ids); }
+
+render::Camera cameraFor(const tensor::GlyphSet& s, double scale, render::Projection proj, int w, int h) {
+  render::CameraDesc d;
+  d.lookAtWC = 0.5 * (s.boundsMinWC + s.boundsMaxWC);
+  d.eyeWC = d.lookAtWC + 12.0 * glm::normalize(glm::dvec3(0.7, -1.1, 0.9));
+  d.upWC = {0, 0, 1};
+  d.projection = proj;
+  d.orthoHeight = 0.9 * 12.0;
+  const auto [lo, hi] = tensor::glyphBoxWC(s, scale);
+  return render::makeCamera(d, w, h, lo, hi);
+}
+
+// The casts as a frame image (rows top first; view depth), for diffImages.
+render::FrameImage asFrame(const render::CpuCasts& c, const tensor::GlyphSet& set, const render::Camera& cam) {
+  render::FrameImage f;
+  f.width = c.width;
+  f.height = c.height;
+  const std::size_t n = std::size_t(c.width) * std::size_t(c.height);
+  f.depth.assign(n, INFINITY);
+  f.normalWC.assign(3 * n, 0.0f);
+  f.id.assign(n, ref::kNoGlyph);
+  f.rgba.assign(4 * n, 0.0f);
+  for (int j = 0; j < c.height; ++j)
+    for (int i = 0; i < c.width; ++i) {
+      const std::size_t src = std::size_t(c.height - 1 - j) * std::size_t(c.width) + std::size_t(i);
+      const std::size_t dst = std::size_t(j) * std::size_t(c.width) + std::size_t(i);
+      if (c.record[src] == 0) continue;
+      f.id[dst] = set.glyphs[c.record[src] - 1].id;
+      f.depth[dst] = float(cam.viewDepthFromWindowDepth(c.windowDepth[src]));
+      for (int k = 0; k < 3; ++k) f.normalWC[3 * dst + std::size_t(k)] = c.normalWC[src][k];
+    }
+  return f;
+}
+
+}  // namespace
+
+TEST(CpuCasts, SharedIntersectionMatchesTheReference) {
+  const tensor::GlyphSet set = glyphsOf(synth::randomField(216, 3));
+  const double scale = 0.6;
+  for (const auto proj : {render::Projection::Perspective, render::Projection::Orthographic}) {
+    SCOPED_TRACE(proj == render::Projection::Perspective ? "perspective" : "orthographic");
+    const auto cam = cameraFor(set, scale, proj, 200, 150);
+    render::FrameParams p;
+    p.scale = scale;
+    for (const int threads : {1, 3}) {
+      render::CpuCasts casts;
+      const std::uint64_t drawn = render::castGlyphs(set.glyphs, cam, p, false, threads, casts);
+      EXPECT_GT(drawn, 100u);
+      const ref::ImageDiff d =
+          ref::diffImages(asFrame(casts, set, cam), ref::renderEllipsoids(cam, set.glyphs, {scale, 0.0}), cam);
+      const double covered = double(d.refCovered);
+      EXPECT_GT(d.refCovered, 5000u);
+      EXPECT_EQ(d.interiorMismatch, 0u);
+      EXPECT_LE(double(d.coverageMismatch), 0.01 * covered);
+      EXPECT_EQ(d.idMismatch, 0u);
+      EXPECT_LT(d.depth.max, 2e-5);
+      EXPECT_LT(d.normalDeg.median, 0.01);
+      EXPECT_LT(d.normalDeg.max, 2.0);
+    }
+  }
+}
+
+// The screen rectangle: the C++-compiled ellipsoidRectNDC against the
+// reference's double-precision Sigg et al. eq. (5).
+TEST(CpuCasts, SharedRectangleMatchesTheReference) {
+  const tensor::GlyphSet set = glyphsOf(synth::randomField(64, 5));
+  const double scale = 0.6;
+  const auto cam = cameraFor(set, scale, render::Projection::Perspective, 320, 240);
+  render::FrameParams p;
+  p.scale = scale;
+  render::glsl::Shaders sh;
+  sh.setCamera(cam);
+  sh.setGlyph(p);
+  int checked = 0;
+  for (const tensor::GlyphRecord& g : set.glyphs) {
+    render::glsl::GlyphRecord r;
+    std::memcpy(&r, &g, sizeof r);
+    const ref::RectNDC want = ref::ellipsoidRectNDC(cam, g, scale);
+    if (want.full) continue;
+    const glm::vec3 axes = sh.glyphAxes(glm::vec3(r.eigenvalues_id));
+    const glm::mat3 rotVC = glm::mat3(sh.uViewWCVC) * sh.quatToMat3(r.frameWC);
+    const glm::vec3 centreVC = glm::vec3(sh.uViewWCVC * glm::vec4(glm::vec3(r.posWC_fa), 1.0f));
+    glm::vec4 rect;
+    ASSERT_TRUE(sh.ellipsoidRectNDC(sh.uProjVCCC * sh.ellipsoidTVC(rotVC, axes, centreVC), rect));
+    // A 64th of a pixel: the margin the raster path allows for the rounding.
+    const double tolX = 2.0 / 320 / 64, tolY = 2.0 / 240 / 64;
+    EXPECT_NEAR(rect.x, want.xmin, tolX);
+    EXPECT_NEAR(rect.z, want.xmax, tolX);
+    EXPECT_NEAR(rect.y, want.ymin, tolY);
+    EXPECT_NEAR(rect.w, want.ymax, tolY);
+    ++checked;
+  }
+  EXPECT_GT(checked, 50);
+}
+
+// Tile bins hold each rectangle in every tile it touches, in index order,
+// whatever the number of parts.
+TEST(CpuCasts, TileBinsHoldEachRectangleInOrder) {
+  const std::vector<render::PixelRect> rects = {{0, 0, 0, 0}, {10, 10, 40, 20}, {15, 0, 16, 69}, {0, 0, 99, 69}};
+  for (const int parts : {1, 2, 5}) {
+    render::TileBins b;
+    render::binToTiles(rects, 100, 70, parts, b);
+    ASSERT_EQ(b.tilesX, 7);
+    ASSERT_EQ(b.tilesY, 5);
+    for (std::size_t t = 0; t < b.tiles(); ++t) {
+      const int tx = int(t % 7), ty = int(t / 7);
+      std::vector<std::uint32_t> want;
+      for (std::uint32_t i = 0; i < rects.size(); ++i) {
+        const auto& r = rects[i];
+        if (r.x0 / 16 <= tx && tx <= r.x1 / 16 && r.y0 / 16 <= ty && ty <= r.y1 / 16) want.push_back(i);
+      }
+      const std::vector<std::uint32_t> got(b.items.begin() + b.start[t], b.items.begin() + b.start[t + 1]);
+      EXPECT_EQ(got, want) << "tile " << t << ", " << parts << " parts";
+    }
+  }
+}
