@@ -37,7 +37,7 @@ void main() {
   vec3 nVC = transpose(fin.gcFromVC) * nGC;  // inverse transpose of GC -> VC
   vec3 nWC = normalize(transpose(mat3(uViewWCVC)) * nVC);
   gl_FragDepth = windowDepthFromViewDepth(depth);
-  oAlbedo = vec4(uColorMode == kColorSign ? signColor(fin.color, nGC) : fin.color, 1.0);
+  oAlbedo = vec4(uColorMode == kColorSign ? signColor(fin.color, nGC, fin.gcFromVC) : fin.color, 1.0);
   oNormalWC = vec4(nWC, 0.0);
   oId = fin.id;
 }

@@ -10,13 +10,10 @@
 #include "lib/glyph_record.glsl"
 #include "lib/ellipsoid.glsl"
 #include "lib/glyph_size.glsl"
-#include "lib/color.glsl"
+#include "lib/glyph_color.glsl"
 #include "lib/selection.glsl"
 #include "lib/sprite.glsl"
 #include "lib/occlusion.glsl"
-
-uniform int uColorMode;
-uniform vec2 uMdRange;
 
 #ifdef TG_OCCLUDER_DISC
 out OccluderFS {
@@ -34,7 +31,8 @@ out SpriteFS {
 
 void main() {
   gl_Position = kSpriteCulledCC;
-  GlyphRecord g = glyphs[spriteGlyphIndex()];
+  uint index = spriteGlyphIndex();
+  GlyphRecord g = glyphs[index];
   if (!glyphSelected(g.posWC_fa)) return;
   vec3 axes = glyphAxes(g.eigenvalues_id.xyz);
   float radius = max(axes.x, max(axes.y, axes.z));
@@ -105,8 +103,7 @@ void main() {
   vs.centreVC = centreVC;
   vs.gcFromVC = transpose(mat3(rotVC[0] / axes.x, rotVC[1] / axes.y, rotVC[2] / axes.z));
   // One input fewer per fragment: llvmpipe's ellipsoid fragments cost by the inputs they read.
-  vs.color = uColorMode == kColorSign ? signWeights(g.eigenvalues_id.xyz, axes)
-                                      : glyphColor(uColorMode, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, uMdRange);
+  vs.color = glyphVertexColor(index, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, g.eigenvalues_id.xyz);
   vs.id = floatBitsToUint(g.eigenvalues_id.w);
 #endif
 }
