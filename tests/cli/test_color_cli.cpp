@@ -101,7 +101,8 @@ TEST(ColorCli, BadColourOptionsAreRefused) {
   const struct {
     std::string flags, what;
   } cases[] = {
-      {"--color vonmises --color-range nan 1", "--color-range must be within"},
+      {"--color vonmises --color-range nan 1", "--color-range: \"nan\" is not a finite number"},
+      {"--color vonmises --color-range 0 1e300", "--color-range must be within"},
       {"--color vonmises --color-range 5 5", "--color-range: LO 5 must be below HI 5"},
       {"--color vonmises --color-range 6 2", "--color-range: LO 6 must be below HI 2"},
       {"--color dec --color-range 0 1", "--color-range: --color dec maps directions"},
