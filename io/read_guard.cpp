@@ -35,11 +35,13 @@ using Clock = std::chrono::steady_clock;
 constexpr std::uint32_t kWireMagic = 0x54474631;  // "TGF1"
 // Every member of TensorField crosses the process boundary in writeField and
 // readField; a new member changes this size and must be carried there too.
-static_assert(sizeof(TensorField) == 648, "TensorField changed: carry the new member in writeField/readField");
+static_assert(sizeof(TensorField) == 648 + sizeof(util::MappedArray<float>) + 2 * sizeof(std::string), "TensorField changed: carry the new member in writeField/readField");
 
 void writeField(WireOut& w, const TensorField& f) {
   w.pod(kWireMagic);
-  for (const std::string* s : {&f.path, &f.description, &f.arrayName, &f.space, &f.layout, &f.frame}) w.str(*s);
+  for (const std::string* s : {&f.path, &f.description, &f.arrayName, &f.space, &f.layout, &f.frame,
+                               &f.colorArrayName, &f.pointArrays})
+    w.str(*s);
   for (const auto* m : {&f.measurementFrame, &f.tensorToWC}) {
     w.pod(m->has_value());
     if (*m) w.pod(**m);
@@ -50,6 +52,7 @@ void writeField(WireOut& w, const TensorField& f) {
   w.array(f.positions);
   w.array(f.tensors);
   w.array(f.ids);
+  w.array(f.colorValues);
   for (std::size_t n : {f.totalPoints, f.skippedNonFinite, f.skippedOverflow, f.masked, f.unselected})
     w.pod(std::uint64_t(n));
   w.pod(f.grid.has_value());
@@ -60,7 +63,9 @@ void writeField(WireOut& w, const TensorField& f) {
 TensorField readField(WireIn& r) {
   if (r.pod<std::uint32_t>() != kWireMagic) throw std::runtime_error("the reader's result is malformed");
   TensorField f;
-  for (std::string* s : {&f.path, &f.description, &f.arrayName, &f.space, &f.layout, &f.frame}) *s = r.str();
+  for (std::string* s : {&f.path, &f.description, &f.arrayName, &f.space, &f.layout, &f.frame, &f.colorArrayName,
+                         &f.pointArrays})
+    *s = r.str();
   for (auto* m : {&f.measurementFrame, &f.tensorToWC})
     if (r.pod<bool>()) *m = r.pod<std::array<double, 9>>();
   f.hasConfidence = r.pod<bool>();
@@ -69,6 +74,7 @@ TensorField readField(WireIn& r) {
   r.array(f.positions);
   r.array(f.tensors);
   r.array(f.ids);
+  r.array(f.colorValues);
   for (std::size_t* n : {&f.totalPoints, &f.skippedNonFinite, &f.skippedOverflow, &f.masked, &f.unselected})
     *n = std::size_t(r.pod<std::uint64_t>());
   if (r.pod<bool>()) f.grid = r.pod<GridInfo>();

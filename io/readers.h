@@ -19,6 +19,9 @@ struct ReadOptions {
   // VTK: the point array holding the tensors; empty: the active tensors, else
   // the only tensor-like array (see readVtk).
   std::string arrayName;
+  // VTK: a scalar point array to colour by (--color-array), read beside the
+  // tensors into TensorField::colorValues; other formats leave it to the caller.
+  std::string colorArray;
   // Component order of six values (NIfTI, 6-component VTK arrays): "" (a
   // NIfTI file's header: the SYMMATRIX intent means "nifti", an MRtrix
   // `descrip` "mrtrix", else "fsl"; VTK's own order) or a name of

@@ -52,6 +52,11 @@ struct TensorField {
   util::MappedArray<float> positions;    // 3 per kept tensor, WC
   util::MappedArray<float> tensors;      // 6 per kept tensor: xx xy xz yy yz zz, WC
   util::MappedArray<std::uint32_t> ids;  // input index of each kept tensor
+  // ReadOptions::colorArray's values, one per kept tensor (beside ids), as
+  // named in the file; when the file has no point array of that name, none,
+  // and `pointArrays` lists those it has ("name (N components), ...").
+  util::MappedArray<float> colorValues;
+  std::string colorArrayName, pointArrays;
   std::size_t totalPoints = 0;
   std::size_t skippedNonFinite = 0;
   std::size_t skippedOverflow = 0;  // |D| beyond single precision: its eigenvalues would be infinite
@@ -110,6 +115,7 @@ struct TensorField {
     positions = {};
     tensors = {};
     ids = {};
+    colorValues = {};
   }
 };
 

@@ -470,6 +470,20 @@ TensorField impl::readVtk(const std::string& path, const ReadOptions& opt) {
                                                      : "the image grid is singular (its Direction and spacing)");
     }
   }
+  vtkDataArray* colorArr = nullptr;
+  if (!opt.colorArray.empty()) {
+    colorArr = ds->GetPointData()->GetArray(opt.colorArray.c_str());
+    if (!colorArr) {
+      const std::string seen = describeArrays(ds->GetPointData(), false);
+      f.pointArrays = seen.empty() ? "none" : seen;
+    } else if (colorArr->GetNumberOfComponents() != 1 || colorArr->GetNumberOfTuples() != n) {
+      fail(path, "--color-array: point array \"" + nameOf(colorArr) + "\" has " +
+                     std::to_string(colorArr->GetNumberOfComponents()) + " components and " +
+                     std::to_string(colorArr->GetNumberOfTuples()) + " tuples; colour takes 1 component per point");
+    } else {
+      f.colorArrayName = nameOf(colorArr);
+    }
+  }
   const Selector sel(opt.selection, path, image ? image->GetDimensions() : nullptr, placed ? &*placed : nullptr);
   if (sel.selectsAll()) f.reserve(std::size_t(n));
   double p[3], t[9], full[9];
@@ -478,6 +492,8 @@ TensorField impl::readVtk(const std::string& path, const ReadOptions& opt) {
     ds->GetPoint(i, p);
     for (double& x : p) x = read.nonFinite.restore(x);
     if (!sel.admit(std::uint64_t(i), p, f)) continue;
+    // The colour value of each tensor kept (addFull may skip a non-finite one).
+    const std::size_t kept = f.ids.size();
     if (!arr) {
       f.addFull(std::uint32_t(i), p, &trailer[9 * std::size_t(i)]);
     } else {
@@ -487,6 +503,7 @@ TensorField impl::readVtk(const std::string& path, const ReadOptions& opt) {
       if (nc == 9) maxAsym = std::max(maxAsym, asymmetry(full));
       f.addFull(std::uint32_t(i), p, full);
     }
+    if (colorArr && f.ids.size() > kept) f.colorValues.push_back(float(read.nonFinite.restore(colorArr->GetComponent(i, 0))));
   }
   if (std::string w = asymmetryWarning("9-component tensors", maxAsym); !w.empty()) f.warnings.push_back(std::move(w));
   if (auto* img = image) {

@@ -8,7 +8,7 @@ from tensorglyph import _core
 PATH = "str | os.PathLike[str]"
 # Value types by keyword; a one-value option not named here takes a float.
 STR = {"glyph", "color", "array", "slice", "scale_mode", "magnitude", "underlay_colormap", "mesh_mode",
-       "legend_corner", "units", "length_units", "backend"}
+       "legend_corner", "units", "length_units", "backend", "colormap", "color_array"}
 INT = {"iterations", "stride", "ao_samples", "shadow_map_size", "tessellate"}
 # Repeatable on the command line: a list gives one value each.
 REPEATABLE = {"plane": "str", "mesh": PATH, "plane_at": "Sequence[float]"}
@@ -19,6 +19,8 @@ OWN = {"layout", "frame"}
 def value_type(kw, names):
     if kw in REPEATABLE:
         return f"{REPEATABLE[kw]} | Sequence[{REPEATABLE[kw]}]"
+    if kw == "color":  # a mode's name, or one value per tensor
+        return "str | ArrayLike"
     if not names:
         return "bool"
     one = "int" if kw in INT or kw == "size" else "str" if kw in STR else PATH if kw in ("mask", "underlay") else "float"

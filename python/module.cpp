@@ -185,7 +185,12 @@ class CurrentFor {
 
 class Renderer {
  public:
-  Renderer(Source source, OptionList options) : source_(std::move(source)) { rebuild(options); }
+  Renderer(Source source, OptionList options,
+           std::optional<py::array_t<float, py::array::c_style | py::array::forcecast>> colorValues)
+      : source_(std::move(source)) {
+    setColorValues(std::move(colorValues));
+    rebuild(options);
+  }
 
   // Re-renders with `options` (all of them, not a difference): loads and
   // uploads again only when an option that reloads (OptionTable::reloads)
@@ -203,6 +208,7 @@ class Renderer {
     app::OptionTable table;
     app::addRenderOptions(table, o);
     applyOptions(table, options, "render");
+    o.colorValuesGiven = colorValues_.has_value();
     validateFor(source_, o);
     if (!session_ || reloadKeys(table, options) != reloadKeys_) {
       {
@@ -210,6 +216,12 @@ class Renderer {
         build(o, options, table);
       }
       warnLoaded();
+    }
+    // color=array: into the renderer's own buffer when new; the records stay.
+    if (colorValues_ && colorValuesSent_ != session_.get()) {
+      const CurrentFor current(session_->context());
+      session_->setColorValues(*colorValues_, "color");
+      colorValuesSent_ = session_.get();
     }
     render::FrameImage img;
     bool marches = true;
@@ -252,7 +264,26 @@ class Renderer {
     app::OptionTable table;
     app::addRenderOptions(table, o);
     applyOptions(table, options, "set");
+    o.colorValuesGiven = colorValues_.has_value();
     validateFor(source_, o);
+  }
+
+  // color=array's values, one per input tensor (none: no array); the count
+  // is checked here against the loaded field, before any frame.
+  // The Python Renderer's lock orders it with render().
+  void setColorValues(std::optional<py::array_t<float, py::array::c_style | py::array::forcecast>> values) {
+    if (!values) {
+      colorValues_.reset();
+      colorValuesSent_ = nullptr;
+      return;
+    }
+    std::vector<float> v(values->data(), values->data() + values->size());
+    if (session_ && session_->scene().field.totalPoints != v.size())
+      throw std::invalid_argument("color: " + std::to_string(v.size()) + " values for " +
+                                  std::to_string(session_->scene().field.totalPoints) +
+                                  " tensors; give one value per tensor");
+    if (colorValues_ != v) colorValuesSent_ = nullptr;
+    colorValues_ = std::move(v);
   }
 
   std::uint64_t uploads() const { return previousUploads_ + (session_ ? session_->renderer().uploadCount() : 0); }
@@ -273,6 +304,7 @@ class Renderer {
     app::OptionTable table;
     app::addRenderOptions(table, o);
     applyOptions(table, options, "Renderer");
+    o.colorValuesGiven = colorValues_.has_value();
     validateFor(source_, o);
     {
       py::gil_scoped_release release;
@@ -305,10 +337,17 @@ class Renderer {
     // Freed before the next is made (peak memory): if making it throws, the
     // next render builds again instead of drawing with no session.
     session_.reset();
+    app::SessionHooks hooks;
+    hooks.loadWhole = [this, &o](const io::ReadOptions& read) {
+      app::RenderOptions whole = o;
+      whole.field.read = read;
+      return loadSource(source_, whole).field;
+    };
     session_ = std::make_unique<app::RenderSession>(o, std::move(scene), std::move(meshes), true, "python",
                                                     [](io::TensorField& f) { f.releaseSamples(); },
-                                                    source_.progress->sink());
+                                                    source_.progress->sink(), hooks);
     session_->context().releaseCurrent();  // made current on this thread; the next call may come from another
+    colorValuesSent_ = nullptr;  // a new session has no colour values yet
     reloadKeys_ = reloadKeys(table, options);
     source_.progress->rethrow();
   }
@@ -318,6 +357,8 @@ class Renderer {
   OptionList reloadKeys_;
   std::vector<std::string> loadWarnings_;  // made without the GIL, raised with it
   std::uint64_t previousUploads_ = 0;
+  std::optional<std::vector<float>> colorValues_;
+  const app::RenderSession* colorValuesSent_ = nullptr;  // the session holding colorValues_
   std::mutex mutex_;
 };
 
@@ -419,16 +460,18 @@ PYBIND11_MODULE(_core, m) {
   py::class_<Renderer>(m, "Renderer")
       .def(py::init([](std::optional<py::array> tensors, std::optional<py::array> positions,
                        std::optional<std::vector<double>> affine, std::string layout, std::string frame,
-                       std::string path, OptionList options, py::object progress) {
+                       std::string path, OptionList options, py::object progress,
+                       std::optional<py::array_t<float, py::array::c_style | py::array::forcecast>> colorValues) {
              return std::make_unique<Renderer>(makeSource(std::move(tensors), std::move(positions), std::move(affine),
                                                           std::move(layout), std::move(frame), std::move(path),
                                                           std::move(progress)),
-                                               std::move(options));
+                                               std::move(options), std::move(colorValues));
            }),
            py::arg("tensors"), py::arg("positions"), py::arg("affine"), py::arg("layout"), py::arg("frame"),
-           py::arg("path"), py::arg("options"), py::arg("progress"))
+           py::arg("path"), py::arg("options"), py::arg("progress"), py::arg("color_values") = py::none())
       .def("render", &Renderer::render, py::arg("options"), py::arg("channels"))
       .def("check", &Renderer::check, py::arg("options"))
+      .def("set_color_values", &Renderer::setColorValues, py::arg("values"))
       .def_property_readonly("uploads", &Renderer::uploads)
       .def_property_readonly("glyph_count", &Renderer::glyphCount);
   // The option table, for keyword checks, docstrings and the type stubs:

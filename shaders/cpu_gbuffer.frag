@@ -10,10 +10,7 @@
 #include "lib/glyph_record.glsl"
 #include "lib/ellipsoid.glsl"
 #include "lib/glyph_size.glsl"
-#include "lib/color.glsl"
-
-uniform int uColorMode;
-uniform vec2 uMdRange;
+#include "lib/glyph_color.glsl"
 
 layout(binding = TG_UNIT_CPU_DEPTH) uniform sampler2D uWindowDepth;
 layout(binding = TG_UNIT_CPU_RECORD) uniform usampler2D uRecord;
@@ -28,11 +25,14 @@ void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
   uint r = texelFetch(uRecord, p, 0).r;
   if (r == 0u) discard;
-  GlyphRecord g = glyphs[r - 1u];
-  vec3 axes = glyphAxes(g.eigenvalues_id.xyz);
-  vec3 color = uColorMode == kColorSign
-                   ? signColor(signWeights(g.eigenvalues_id.xyz, axes), texelFetch(uHitGC, p, 0).xyz)
-                   : glyphColor(uColorMode, quatToMat3(g.frameWC)[0], g.posWC_fa.w, g.eigenvalues_id.xyz, uMdRange);
+  uint index = r - 1u;
+  GlyphRecord g = glyphs[index];
+  mat3 rotWC = quatToMat3(g.frameWC);
+  vec3 color = glyphVertexColor(index, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, g.eigenvalues_id.xyz);
+  if (uColorMode == kColorSign) {
+    mat3 gcFromVC = ellipsoidGcFromVC(mat3(uViewWCVC) * rotWC, glyphAxes(g.eigenvalues_id.xyz));
+    color = signColor(color, texelFetch(uHitGC, p, 0).xyz, gcFromVC);
+  }
   gl_FragDepth = texelFetch(uWindowDepth, p, 0).r;
   oAlbedo = vec4(color, 1.0);
   oNormalWC = vec4(texelFetch(uCastNormalWC, p, 0).xyz, 0.0);

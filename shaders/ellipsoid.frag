@@ -23,7 +23,7 @@ void main() {
   vec3 nGC;
   if (!castEllipsoid(gl_FragCoord.xy, fin.centreVC, fin.gcFromVC, depth, nGC)) discard;
   gl_FragDepth = windowDepthFromViewDepth(depth);
-  oAlbedo = vec4(uColorMode == kColorSign ? signColor(fin.color, nGC) : fin.color, 1.0);
+  oAlbedo = vec4(uColorMode == kColorSign ? signColor(fin.color, nGC, fin.gcFromVC) : fin.color, 1.0);
   oNormalWC = vec4(ellipsoidNormalWC(fin.gcFromVC, nGC), 0.0);
   oId = fin.id;
 }

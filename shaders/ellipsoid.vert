@@ -10,14 +10,11 @@
 #include "lib/glyph_record.glsl"
 #include "lib/ellipsoid.glsl"
 #include "lib/glyph_size.glsl"
-#include "lib/color.glsl"
+#include "lib/glyph_color.glsl"
 #include "lib/selection.glsl"
 #include "lib/sprite.glsl"
 #include "lib/occlusion.glsl"
 #include "lib/ellipsoid_sprite.glsl"
-
-uniform int uColorMode;
-uniform vec2 uMdRange;
 
 #ifdef TG_OCCLUDER_DISC
 out OccluderFS {
@@ -35,7 +32,8 @@ out SpriteFS {
 
 void main() {
   gl_Position = kSpriteCulledCC;
-  GlyphRecord g = glyphs[spriteGlyphIndex()];
+  uint index = spriteGlyphIndex();
+  GlyphRecord g = glyphs[index];
   EllipsoidSprite s;
   if (!ellipsoidSprite(g, s)) return;
   vec3 axes = s.axes, centreVC = s.centreVC;
@@ -90,8 +88,7 @@ void main() {
   vs.centreVC = centreVC;
   vs.gcFromVC = ellipsoidGcFromVC(rotVC, axes);
   // One input fewer per fragment: llvmpipe's ellipsoid fragments cost by the inputs they read.
-  vs.color = uColorMode == kColorSign ? signWeights(g.eigenvalues_id.xyz, axes)
-                                      : glyphColor(uColorMode, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, uMdRange);
+  vs.color = glyphVertexColor(index, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, g.eigenvalues_id.xyz);
   vs.id = floatBitsToUint(g.eigenvalues_id.w);
 #endif
 }

@@ -13,7 +13,6 @@ in PrismFS {
   flat vec3 centreVC;
   flat mat3 gcFromVC;
   flat vec3 color;
-  flat vec3 signWeightsGC;
   flat uint id;
 } fin;
 
@@ -47,7 +46,7 @@ void main() {
   vec3 nVC = transpose(fin.gcFromVC) * nGC;  // inverse transpose of GC -> VC
   vec3 nWC = normalize(transpose(mat3(uViewWCVC)) * nVC);
   gl_FragDepth = windowDepthFromViewDepth(depth);
-  oAlbedo = vec4(uColorMode == kColorSign ? signColor(fin.signWeightsGC, o + t * d) : fin.color, 1.0);
+  oAlbedo = vec4(uColorMode == kColorSign ? signColor(fin.color, o + t * d, fin.gcFromVC) : fin.color, 1.0);
   oNormalWC = vec4(nWC, 0.0);
   oId = fin.id;
 }

@@ -11,24 +11,21 @@
 #include "lib/ellipsoid.glsl"
 #include "lib/glyph_size.glsl"
 #include "lib/prism.glsl"
-#include "lib/color.glsl"
+#include "lib/glyph_color.glsl"
 #include "lib/selection.glsl"
 #include "lib/sprite.glsl"
-
-uniform int uColorMode;
-uniform vec2 uMdRange;
 
 out PrismFS {
   flat vec3 centreVC;
   flat mat3 gcFromVC;  // rows: GC axes in VC over their lengths; a cylinder's axis is GC z
   flat vec3 color;
-  flat vec3 signWeightsGC;
   flat uint id;
 } vs;
 
 void main() {
   gl_Position = kSpriteCulledCC;
-  GlyphRecord g = glyphs[spriteGlyphIndex()];
+  uint index = spriteGlyphIndex();
+  GlyphRecord g = glyphs[index];
   if (!glyphSelected(g.posWC_fa)) return;
   vec3 l = g.eigenvalues_id.xyz;
   vec3 axes = glyphAxes(l);
@@ -84,8 +81,6 @@ void main() {
   gl_Position = spriteCornerCC(rect, windowDepthFromViewDepth(max(nearest, uNearVC)));
   vs.centreVC = centreVC;
   vs.gcFromVC = transpose(mat3(e0 / dot(e0, e0), e1 / dot(e1, e1), e2 / dot(e2, e2)));
-  vs.color = glyphColor(uColorMode, rotWC[0], g.posWC_fa.w, l, uMdRange);
-  vs.signWeightsGC = uColorMode != kColorSign ? vec3(0.0)
-      : signWeights(vec3(l[src.x], l[src.y], l[src.z]), vec3(axes[src.x], axes[src.y], axes[src.z]));
+  vs.color = glyphVertexColor(index, rotWC[0], g.posWC_fa.w, l, vec3(l[src.x], l[src.y], l[src.z]));
   vs.id = floatBitsToUint(g.eigenvalues_id.w);
 }

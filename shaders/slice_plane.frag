@@ -11,7 +11,7 @@ uniform mat4 uTexFromWC;
 uniform vec4 uPlaneVC;  // the offset plane: dot(xyz, pVC) = w, xyz facing the camera
 uniform vec3 uNormalWC;
 uniform vec2 uWindow;
-uniform int uColormap;  // tg::render::Colormap: 0 gray, 1 viridis
+uniform int uColormap;  // tg::render::Colormap (lib/color.glsl)
 uniform int uIdBits;
 
 in vec3 vPointWC;
@@ -40,7 +40,7 @@ void main() {
   gl_FragDepth = windowDepthFromViewDepth(depth);
   // Halved first: a window from -3e38 to 3e38 is wider than a float holds.
   float x = clamp((0.5 * v - 0.5 * uWindow.x) / (0.5 * uWindow.y - 0.5 * uWindow.x), 0.0, 1.0);
-  oAlbedo = vec4(uColormap == 1 ? viridis(x) : vec3(x), 1.0);
+  oAlbedo = vec4(colormap(uColormap, x), 1.0);
   oNormalWC = vec4(uNormalWC, 0.0);
   oId = uint(uIdBits);
 }

@@ -78,7 +78,7 @@ void main() {
   vec3 nVC = transpose(fin.gcFromVC) * m.gradGC;  // inverse transpose of GC -> VC
   vec3 nWC = normalize(transpose(mat3(uViewWCVC)) * nVC);
   gl_FragDepth = windowDepthFromViewDepth(depth);
-  oAlbedo = vec4(uColorMode == kColorSign ? signColor(fin.color, o + m.s * d / dl) : fin.color, 1.0);
+  oAlbedo = vec4(uColorMode == kColorSign ? signColor(fin.color, o + m.s * d / dl, fin.gcFromVC) : fin.color, 1.0);
   oNormalWC = vec4(nWC, 0.0);
   oId = fin.id;
 }

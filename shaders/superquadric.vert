@@ -11,13 +11,11 @@
 #include "lib/ellipsoid.glsl"
 #include "lib/glyph_size.glsl"
 #include "lib/superquadric.glsl"
-#include "lib/color.glsl"
+#include "lib/glyph_color.glsl"
 #include "lib/selection.glsl"
 #include "lib/sprite.glsl"
 #include "lib/occlusion.glsl"
 
-uniform int uColorMode;
-uniform vec2 uMdRange;
 uniform float uGamma;
 uniform float uEpsilon;
 
@@ -31,7 +29,8 @@ out SuperquadricFS {
 
 void main() {
   gl_Position = kSpriteCulledCC;
-  GlyphRecord g = glyphs[spriteGlyphIndex()];
+  uint index = spriteGlyphIndex();
+  GlyphRecord g = glyphs[index];
   if (!glyphSelected(g.posWC_fa)) return;
   vec3 axes = glyphAxes(g.eigenvalues_id.xyz);
   if (!(max(axes.x, max(axes.y, axes.z)) > 0.0)) return;
@@ -153,9 +152,7 @@ void main() {
   vs.gcFromVC = transpose(mat3(e0 / dot(e0, e0), e1 / dot(e1, e1), e2 / dot(e2, e2)));
   vs.shape = shape.xyz;
   // One input fewer per fragment, as for ellipsoids: only one of the two is read.
-  vs.color = uColorMode == kColorSign
-                 ? signWeights(vec3(g.eigenvalues_id[src.x], g.eigenvalues_id[src.y], g.eigenvalues_id[src.z]),
-                               vec3(axes[src.x], axes[src.y], axes[src.z]))
-                 : glyphColor(uColorMode, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, uMdRange);
+  vs.color = glyphVertexColor(index, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz,
+                              vec3(g.eigenvalues_id[src.x], g.eigenvalues_id[src.y], g.eigenvalues_id[src.z]));
   vs.id = floatBitsToUint(g.eigenvalues_id.w);
 }

@@ -10,11 +10,9 @@
 #include "lib/ellipsoid.glsl"
 #include "lib/glyph_size.glsl"
 #include "lib/superquadric.glsl"
-#include "lib/color.glsl"
+#include "lib/glyph_color.glsl"
 #include "lib/selection.glsl"
 
-uniform int uColorMode;
-uniform vec2 uMdRange;
 uniform float uGamma;
 uniform int uResolution;
 
@@ -52,6 +50,8 @@ void main() {
   vec3 pWC = pf.xyz + e0 * pGC.x + e1 * pGC.y + e2 * pGC.z;
   gl_Position = uProjVCCC * (uViewWCVC * vec4(pWC, 1.0));
   vs.normalWC = normalize(e0 / dot(e0, e0) * gradGC.x + e1 / dot(e1, e1) * gradGC.y + e2 / dot(e2, e2) * gradGC.z);
-  vs.color = glyphColor(uColorMode, rotWC[0], pf.w, g.eigenvalues_id.xyz, uMdRange);
+  // No per-point sign colour on the mesh: its glyph colour is that of the other scalar modes.
+  vs.color = uColorMode == kColorSign ? vec3(1.0)
+                                      : glyphVertexColor(uint(gl_InstanceID), rotWC[0], pf.w, g.eigenvalues_id.xyz, vec3(0.0));
   vs.id = floatBitsToUint(g.eigenvalues_id.w);
 }

@@ -68,9 +68,29 @@ def _occurrences(kw, value):
     return [[_spell(kw, v) for v in occ] for occ in items]
 
 
+def _is_color_values(kw, value):
+    """color= given as an array of numbers: one value per tensor."""
+    return kw == "color" and not isinstance(value, (str, os.PathLike)) and np.ndim(value) >= 1
+
+
+def _color_values(opts):
+    """color=array's values as float32 in the tensors' order (None: no array):
+    a volume's (X, Y, Z) with x fastest, as its tensors are read."""
+    value = opts.get("color")
+    if value is None or not _is_color_values("color", value):
+        return None
+    a = np.asarray(value)
+    if not np.issubdtype(a.dtype, np.number) or np.issubdtype(a.dtype, np.complexfloating):
+        raise TypeError(f"color: an array of real numbers, not of {a.dtype}")
+    return np.ascontiguousarray(a.ravel(order="F" if a.ndim == 3 else "C"), dtype=np.float32)
+
+
 def _option_list(opts):
     out = []
     for kw, value in opts.items():
+        if _is_color_values(kw, value):
+            out.append((kw, ["array"]))
+            continue
         out.extend((kw, occ) for occ in _occurrences(kw, value))
     return out
 
@@ -305,13 +325,15 @@ class Renderer:
             options.update({k: v for k, v in (("layout", lay), ("frame", fr)) if v})
             lay = fr = ""
         for kw, value in options.items():
-            _occurrences(kw, value)  # TypeError before anything is made
+            if not _is_color_values(kw, value):
+                _occurrences(kw, value)  # TypeError before anything is made
         self._options = {kw: value for kw, value in options.items() if value is not None}
         self._array_source = t is not None
         # The core checks every option against this source (as set() does)
         # before it loads anything.
         with _process.call("Renderer"):
-            self._core = _core.Renderer(t, p, a, lay, fr, path, _option_list(self._options), progress)
+            self._core = _core.Renderer(t, p, a, lay, fr, path, _option_list(self._options), progress,
+                                        _color_values(self._options))
 
     def set(self, **options):
         """Changes options (None: back to the default); returns self."""
@@ -323,14 +345,22 @@ class Renderer:
         # every later render.
         changed = dict(self._options)
         for kw, value in options.items():
-            _occurrences(kw, value)  # TypeError now, not at render time
+            if not _is_color_values(kw, value):
+                _occurrences(kw, value)  # TypeError now, not at render time
             if self._array_source and kw in ("layout", "frame"):
                 raise TypeError(f"{kw}: an array's {kw} is given when the Renderer is made")
             if value is None:
                 changed.pop(kw, None)
             else:
                 changed[kw] = value
-        self._core.check(_option_list(changed))
+        values = _color_values(changed)
+        previous = _color_values(self._options)
+        self._core.set_color_values(values)
+        try:
+            self._core.check(_option_list(changed))
+        except Exception:
+            self._core.set_color_values(previous)
+            raise
         self._options = changed
         return self
 

@@ -8,15 +8,16 @@
 
 namespace tg::app {
 
-inline constexpr const char* kColorModeNames = "dec, fa, md, cl, cp or sign";
+// The --color names, in render::ColorMode's order ("array" comes with --color-array).
+inline constexpr std::string_view kColorModeList[render::kColorModeCount] = {
+    "dec", "fa", "md", "cl", "cp", "sign", "vonmises", "tresca", "pressure", "s1", "s2", "s3", "trace", "decfa",
+    "array"};
+inline constexpr const char* kColorModeNames =
+    "dec, fa, md, cl, cp, sign, vonmises, tresca, pressure, s1, s2, s3, trace, decfa or array";
 
 inline std::optional<render::ColorMode> colorModeNamed(std::string_view c) {
-  if (c == "dec") return render::ColorMode::DEC;
-  if (c == "fa") return render::ColorMode::FA;
-  if (c == "md") return render::ColorMode::MD;
-  if (c == "cl") return render::ColorMode::CL;
-  if (c == "cp") return render::ColorMode::CP;
-  if (c == "sign") return render::ColorMode::Sign;
+  for (int k = 0; k < render::kColorModeCount; ++k)
+    if (c == kColorModeList[k]) return render::ColorMode(k);
   return std::nullopt;
 }
 

@@ -13,6 +13,7 @@
 #include "app/output_check.h"
 #include "io/image_writer.h"
 #include "io/readers.h"
+#include "render/color_scalar.h"
 #include "render/glyph_path.h"
 #include "render/tessellated.h"
 
@@ -96,13 +97,56 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
   ap.arg("--ortho HEIGHT").help("orthographic, view height in world units").range(ranges::kPositiveFloat)
       .action([&](Args a) { o.ortho = parseDouble("--ortho", a[1]); });
   ap.setGroup("colour");
-  ap.arg("--color MODE").help("dec, fa, md, cl, cp or sign (normal stress: orange tension, blue compression)").action([&](Args a) { o.color = a[1]; });
+  ap.arg("--color MODE").help("dec (default), decfa (|e1| x FA, dark where isotropic), fa, md, cl, cp; stress: "
+                               "sign (normal stress, saturated at the window's largest |value|: orange tension, blue "
+                               "compression), vonmises, tresca (s1 - s3), pressure (-trace/3), s1, s2, s3 (principal "
+                               "values, descending), trace; array (with --color-array)")
+      .action([&](Args a) {
+        o.color = a[1];
+        o.colorGiven = true;
+      });
+  ap.arg("--color-array NAME").reloads().help("colour by a scalar given beside the tensors: a VTK input's point "
+                                               "array NAME, or a volume input's scalar volume file NAME on its grid "
+                                               "(implies --color array)")
+      .action([&](Args a) {
+        o.field.read.colorArray = a[1];
+        if (!o.colorGiven) o.color = "array";
+      });
+  ap.arg("--colormap NAME").help("the scalar's map: viridis, gray or diverging (blue, white at 0, orange); default "
+                                 "diverging for pressure, s1, s2, s3 and trace, else viridis")
+      .action([&](Args a) { o.colormap = a[1]; });
+  ap.arg("--color-range LO HI").help("the colour window: values at the map's ends, clamped beyond (sign: saturated at "
+                                     "max(|LO|, |HI|)); default the whole field's range")
+      .range(ranges::kAnyFloat).action([&](Args a) {
+        o.colorRange = glm::dvec2(parseDouble(a[0], a[1]), parseDouble(a[0], a[2]));
+      });
   ap.arg("--background R G B A").help("background colour (default 0.08 0.08 0.1 1)").range(ranges::kUnit)
       .action([&](Args a) {
         for (int k = 0; k < 4; ++k) o.background[k] = float(parseDouble(a[0], a[1 + k]));
       });
   o.addSceneFlags(ap);
   ap.setGroup(group);
+}
+
+void validateColorOptions(const RenderOptions& o) {
+  const auto mode = colorModeNamed(o.color);
+  if (!mode) throw UsageError("--color: unknown mode \"" + o.color + "\"; choose " + kColorModeNames);
+  if (*mode == render::ColorMode::Array && o.field.read.colorArray.empty() && !o.colorValuesGiven)
+    throw UsageError("--color array needs --color-array NAME, the values to colour by");
+  if (!o.colormap.empty()) {
+    if (!render::colormapNamed(o.colormap))
+      throw UsageError("--colormap: unknown map \"" + o.colormap + "\"; choose " + render::kColormapNames);
+    if (!render::colorIsScalar(*mode))
+      throw UsageError("--colormap: --color " + o.color + " has colours of its own; a map applies to a scalar (" +
+                       "fa, md, cl, cp, vonmises, tresca, pressure, s1, s2, s3, trace, array)");
+  }
+  if (o.colorRange) {
+    if (!(o.colorRange->x < o.colorRange->y))
+      throw UsageError("--color-range: LO " + formatNumber(o.colorRange->x) + " must be below HI " +
+                       formatNumber(o.colorRange->y));
+    if (*mode == render::ColorMode::DEC || *mode == render::ColorMode::DecFA)
+      throw UsageError("--color-range: --color " + o.color + " maps directions, no scalar");
+  }
 }
 
 // Every parameter is checked before anything is loaded or created.
@@ -130,8 +174,7 @@ void validateRenderOptions(const RenderOptions& o, bool toFile) {
   if (toFile) o.mesh.checkModeParameters();
   if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
   if ((o.lookAt || o.up) && !o.eye) throw UsageError("--look-at and --up need --eye");
-  if (!colorModeNamed(o.color))
-    throw UsageError("--color: unknown mode \"" + o.color + "\"; choose " + kColorModeNames);
+  validateColorOptions(o);
   checkBackend(o.backend);
   if (toFile && !io::canWriteImage(o.output))
     throw UsageError("-o: no image format for \"" + o.output + "\"");
@@ -161,6 +204,8 @@ render::FrameParams frameParams(const RenderOptions& o, const Scene& s, const te
   p.sizing = sized.mapping;
   p.faMin = o.faMin.value_or(s.preferredFaMin.value_or(0.0));
   p.color = *colorModeNamed(o.color);
+  if (!o.colormap.empty()) p.colormap = render::colormapNamed(o.colormap);
+  p.colorWindow = o.colorRange;
   p.glyph = *glyphKindNamed(o.glyph);
   p.gamma = o.gamma;
   p.march = {o.maxIterations, o.epsilon};

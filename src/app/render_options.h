@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
@@ -20,6 +21,10 @@ namespace tg::app {
 
 struct RenderOptions : SceneFlags {
   std::string input, output, backend = "osmesa", glyph = "ellipsoid", color = "dec";
+  std::string colormap;                  // --colormap; empty: the quantity's own
+  std::optional<glm::dvec2> colorRange;  // --color-range LO HI
+  bool colorGiven = false;               // --color itself; --color-array alone colours by the array
+  bool colorValuesGiven = false;         // Python's color=array (RenderSession::setColorValues)
   PickFlags pick;
   int width = 1024, height = 768;
   double gamma = 3.0;
@@ -45,6 +50,9 @@ void addRenderOptions(OptionTable& table, RenderOptions& o);
 // look, the camera, the field's selection and sizing, and the scene's
 // context items. The defaults the help text gives are o's when called.
 void addViewOptions(OptionTable& table, RenderOptions& o);
+// --color, --colormap and --color-range: names known, LO < HI, a map only
+// for a scalar (UsageError). The view script checks its colour commands so too.
+void validateColorOptions(const RenderOptions& o);
 // Every parameter checked before anything is loaded or created (UsageError).
 // `toFile`: -o is required and checked (the command line); the Python module
 // returns images instead.

@@ -8,6 +8,8 @@
 #include <tuple>
 
 #include "app/cli_common.h"
+#include "app/color_array.h"
+#include "app/field_ranges.h"
 #include "app/field_flags.h"
 #include "app/mesh_flags.h"
 #include "app/names.h"
@@ -25,10 +27,10 @@ render::CameraDesc withLegendRoom(const RenderOptions& o, const render::FramePar
                                   const std::vector<render::GlyphCell>& cells, const tensor::GlyphSet& set,
                                   const render::GlyphRenderer& r, const glm::dvec3& lo, const glm::dvec3& hi) {
   // What the legend pass will be given (GlyphRenderer::render): its panel's size.
-  const render::LegendInputs in{p.color,        p.scale,           float(set.mdMin), float(set.mdMax),
-                                set.eigenvalueMin, set.eigenvalueMax, p.sizing,         r.legendKeys()};
+  static_cast<void>(set);
   return render::frameBesideLegend(desc, o.width, o.height, lo, hi,
-                                   render::drawnCellBoxes(cells, p.faMin, p.scale, p.sizing), p.legend, in);
+                                   render::drawnCellBoxes(cells, p.faMin, p.scale, p.sizing), p.legend,
+                                   r.legendInputs(p));
 }
 
 RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io::MeshData> meshes, bool keepGlyphs,
@@ -38,6 +40,7 @@ RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io
   const auto t0 = Clock::now();
   glyphs_ = tensor::buildGlyphs(scene_.field.positions, scene_.field.tensors, scene_.field.ids, 0, o.field.glyph, progress);
   checkDrawable(glyphs_, scene_.field.path);
+  const std::optional<ColorValues> colors = colorArrayValues(o.field.read.colorArray, scene_.field, glyphs_);
   buildMs_ = msSince(t0);
   if (progress) progress("preparing", 0, 0, {});
   magnitudes_ = tensor::sampleMagnitudes(glyphs_, scene_.field.sampleSpacing);
@@ -67,6 +70,10 @@ RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io
     planes_ = addSlicePlanes(*renderer_, ctx_->api(), *lib_, o.slices, std::move(*underlay), glyphs_.maxAbsEigenvalue);
   const auto t1 = Clock::now();
   renderer_->upload(glyphs_);
+  if (colors) renderer_->setColorScalars(colors->byRecord, colors->name);
+  const std::function<io::TensorField(const io::ReadOptions&)> whole =
+      hooks.loadWhole ? hooks.loadWhole : [&o](const io::ReadOptions& r) { return loadScene(o.input, r).field; };
+  if (const auto ranges = wholeFieldColorRanges(o, whole)) renderer_->setColorRanges(*ranges);
   addMeshes(*renderer_, ctx_->api(), *lib_, meshes, o.mesh.params);
   meshes.clear();
   ctx_->api().Finish();
@@ -116,6 +123,13 @@ const std::vector<render::GlyphCell>& RenderSession::cells() const {
   return *cells_;
 }
 
+void RenderSession::setColorValues(std::span<const float> byInput, const std::string& option) {
+  if (glyphs_.glyphs.empty() && glyphCount_ > 0)
+    throw std::logic_error("RenderSession::setColorValues: the glyph records were dropped");
+  const ColorValues v = colorValuesByInput(byInput, scene_.field.totalPoints, glyphs_, option);
+  renderer_->setColorScalars(v.byRecord, v.name);
+}
+
 render::GBuffer& RenderSession::target(int width, int height) {
   if (target_->width() != width || target_->height() != height)
     target_ = std::make_unique<render::GBuffer>(ctx_->api(), width, height);
@@ -155,6 +169,7 @@ RenderSession::Frame RenderSession::frame(const RenderOptions& o) const {
       return a.eyeWC == desc.eyeWC && a.lookAtWC == desc.lookAtWC && a.upWC == desc.upWC &&
              a.projection == desc.projection && a.fovYDeg == desc.fovYDeg && a.orthoHeight == desc.orthoHeight &&
              r.width == o.width && r.height == o.height && q.legend == params.legend && q.color == params.color &&
+             q.colormap == params.colormap && q.colorWindow == params.colorWindow &&
              q.scale == params.scale && q.sizing == params.sizing && q.faMin == params.faMin &&
              r.keys == renderer_->legendKeys();
     };

@@ -47,6 +47,9 @@ struct SessionHooks {
   std::function<void(const render::UnderlayVolume&)> underlayLoaded;
   // Default: an offscreen context of o.backend at o.width x o.height.
   std::function<std::unique_ptr<gl::Context>(const RenderOptions&)> makeContext;
+  // Reads the whole field for its colour ranges when the load selected part
+  // of it (app/field_ranges.h). Default: loadScene(o.input, read).
+  std::function<io::TensorField(const io::ReadOptions&)> loadWhole;
 };
 
 class RenderSession {
@@ -85,6 +88,11 @@ class RenderSession {
   render::GBuffer& target(int width, int height);
   // The records' set: its counts, ranges and box always, the records only with keepGlyphs.
   const tensor::GlyphSet& glyphs() const { return glyphs_; }
+  // Colour values given one per input tensor (Python's color=array) for
+  // ColorMode::Array: a buffer beside the records, which stay uploaded.
+  // Needs the records (keepGlyphs); std::invalid_argument naming `option`
+  // for another count.
+  void setColorValues(std::span<const float> byInput, const std::string& option);
   const tensor::MagnitudeSample& magnitudes() const { return magnitudes_; }
   // The underlay's planes, in the order of the flags (none without one).
   std::span<render::SlicePlane* const> slicePlanes() const { return planes_; }

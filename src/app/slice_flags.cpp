@@ -69,7 +69,7 @@ void SliceFlags::addTo(OptionTable& ap) {
         planes.push_back(p);
       });
   ap.arg("--underlay-colormap NAME")
-      .help(std::string("gray (default) or viridis"))
+      .help(std::string("gray (default), viridis or diverging"))
       .action([this, param](Args a) {
         param("--underlay-colormap");
         const auto c = render::colormapNamed(a[1]);

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "app/option_ranges.h"
+#include "render/color_scalar.h"
 
 namespace tg::app {
 namespace {
@@ -89,9 +90,17 @@ void controls(ViewState& v, const tensor::GlyphSet& meta) {
     p.scale = v.baseScale * factor;
   }
   sizeControls(v);
+  // In render::ColorMode's order; the array only where a script chose it.
   int color = int(p.color);
-  if (ImGui::Combo("colour", &color, "DEC (principal direction)\0FA\0mean diffusivity\0cl\0cp\0sign\0"))
+  const char* const colorNames[render::kColorModeCount] = {
+      "DEC (principal direction)", "FA", "mean diffusivity", "cl", "cp", "sign (normal stress)", "von Mises",
+      "Tresca", "pressure", "s1", "s2", "s3", "trace", "DEC x FA", "array"};
+  if (ImGui::Combo("colour", &color, colorNames, render::kColorModeCount - (p.color == render::ColorMode::Array ? 0 : 1)))
     p.color = render::ColorMode(color);
+  if (render::colorIsScalar(p.color)) {
+    int map = int(render::resolveColormap(p));
+    if (ImGui::Combo("colormap", &map, "gray\0viridis\0diverging\0")) p.colormap = render::Colormap(map);
+  }
 
   int axis = p.slab.axis + 1;
   if (ImGui::Combo("slab", &axis, "off\0x\0y\0z\0")) {

@@ -28,7 +28,8 @@ const std::map<std::string, int, std::less<>> kArity = {
     {"epsilon", 1}, {"stats", 1}, {"frames", 1},     {"screenshot", 1}, {"magnitude", -2}, {"clamp", 1},
     {"legend", 1},  {"legend-corner", 1}, {"units", 1}, {"length-units", 1},
     {"ao", 1},      {"ao-radius", 1}, {"ao-strength", 1}, {"outlines", 1}, {"outline-width", 1},
-    {"shadows", 1}, {"shadow", 2}, {"pick", 2}, {"plane", -3}, {"mesh", 2}, {"mesh-opacity", 2}};
+    {"shadows", 1}, {"shadow", 2}, {"pick", 2}, {"plane", -3}, {"mesh", 2}, {"mesh-opacity", 2},
+    {"colormap", 1}, {"color-range", -2}};
 
 double number(const ScriptStep& s, std::size_t k) { return parseDouble(s.verb, s.args[k]); }
 
@@ -86,6 +87,13 @@ void check(const ScriptStep& s) {
     throw UsageError("glyph: unknown kind \"" + s.args[0] + "\"; choose " + kGlyphKindNames);
   if (v == "color" && !colorModeNamed(s.args[0]))
     throw UsageError("color: unknown mode \"" + s.args[0] + "\"; choose " + kColorModeNames);
+  if (v == "colormap" && s.args[0] != "auto" && !render::colormapNamed(s.args[0]))
+    throw UsageError("colormap: unknown map \"" + s.args[0] + "\"; choose auto, " + render::kColormapNames);
+  if (v == "color-range") {
+    if (n == 1 && s.args[0] != "auto") throw UsageError("color-range: give LO HI, or auto");
+    if (n == 2) ranged(s, 0, ranges::kAnyFloat, "color-range"), ranged(s, 1, ranges::kAnyFloat, "color-range");
+    if (n == 2 && !(number(s, 0) < number(s, 1))) throw UsageError("color-range: LO must be below HI");
+  }
   if (v == "slab") {
     if (n == 1 && s.args[0] != "off") throw UsageError("slab: give x|y|z LO HI, or off");
     if (n == 3 && axisNamed(s.args[0]) < 0) throw UsageError("slab: axis must be x, y or z");
@@ -202,6 +210,9 @@ void applyStep(const ScriptStep& s, ViewState& v) {
   else if (w == "gamma") p.gamma = number(s, 0);
   else if (w == "fa-min") p.faMin = number(s, 0);
   else if (w == "color") p.color = *colorModeNamed(s.args[0]);
+  else if (w == "colormap") p.colormap = s.args[0] == "auto" ? std::nullopt : render::colormapNamed(s.args[0]);
+  else if (w == "color-range")
+    p.colorWindow = s.args.size() == 1 ? std::nullopt : std::optional(glm::dvec2(number(s, 0), number(s, 1)));
   else if (w == "iterations") p.march.maxIterations = parseIntIn(w, s.args[0], 1, 1000);
   else if (w == "epsilon") p.march.epsilon = number(s, 0);
   else if (w == "stats") p.iterationStats = s.args[0] == "on";

@@ -145,6 +145,7 @@ CpuGlyphs::CpuGlyphs(const gl::Api& gl, const gl::ShaderLibrary& lib)
 
 CpuGlyphs::~CpuGlyphs() {
   if (buffer_) gl_.DeleteBuffers(1, &buffer_);
+  if (scalars_) gl_.DeleteBuffers(1, &scalars_);
   if (tex_[0]) gl_.DeleteTextures(4, tex_);
   gl_.DeleteVertexArrays(1, &vao_);
 }
@@ -155,12 +156,12 @@ void CpuGlyphs::upload(const tensor::GlyphSet& set) {
                              " glyphs; the cpu path numbers them in 32 bits");
   set_ = set;
   if (buffer_) gl_.DeleteBuffers(1, &buffer_);
-  buffer_ = 0;
+  if (scalars_) gl_.DeleteBuffers(1, &scalars_);
+  buffer_ = scalars_ = 0;
   if (!set.glyphs.empty()) {
     gl_.CreateBuffers(1, &buffer_);
     gl_.NamedBufferStorage(buffer_, GLsizeiptr(set.glyphs.size() * sizeof(tensor::GlyphRecord)), set.glyphs.data(), 0);
   }
-  program_.set("uMdRange", glm::vec2(float(set.mdMin), float(set.mdMax)));
   if (shadowCasters_) shadowCasters_->upload(set);
   gl::checkError(gl_, "GlyphRenderer::upload");
 }
@@ -168,6 +169,26 @@ void CpuGlyphs::upload(const tensor::GlyphSet& set) {
 void CpuGlyphs::setParams(const FrameParams& p, const FrameParams* old) {
   setGlyphUniforms(program_, p, old);
   if (shadowCasters_) shadowCasters_->setParams(p, old);
+}
+
+// The colour inputs as the raster path takes them (RasterGlyphs), for the
+// same colour code in cpu_gbuffer.frag; the shadow casters draw no colour.
+void CpuGlyphs::setColorWindow(glm::dvec2 window) {
+  colorWindow_ = glm::vec2(window);
+  program_.set("uColorWindow", colorWindow_);
+}
+
+void CpuGlyphs::uploadColorScalars(std::span<const float> byRecord) {
+  if (byRecord.size() != set_.glyphs.size())
+    throw std::invalid_argument("GlyphRenderer::setColorScalars: " + std::to_string(byRecord.size()) +
+                                " values for " + std::to_string(set_.glyphs.size()) + " glyphs");
+  if (scalars_) gl_.DeleteBuffers(1, &scalars_);
+  scalars_ = 0;
+  if (!byRecord.empty()) {
+    gl_.CreateBuffers(1, &scalars_);
+    gl_.NamedBufferStorage(scalars_, GLsizeiptr(byRecord.size_bytes()), byRecord.data(), 0);
+  }
+  gl::checkError(gl_, "GlyphRenderer::setColorScalars");
 }
 
 void CpuGlyphs::allocate(int width, int height) {
@@ -202,6 +223,7 @@ void CpuGlyphs::drawView(const Camera& cam, const FrameParams& p, const GBuffer&
   if (sign) gl_.TextureSubImage2D(tex_[3], 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, casts_.hitGC.data());
   setCameraUniforms(program_, cam);
   gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_GLYPHS, buffer_);
+  if (scalars_) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_COLOR_SCALARS, scalars_);
   gl_.BindTextureUnit(TG_UNIT_CPU_DEPTH, tex_[0]);
   gl_.BindTextureUnit(TG_UNIT_CPU_RECORD, tex_[1]);
   gl_.BindTextureUnit(TG_UNIT_CPU_NORMAL, tex_[2]);
@@ -231,7 +253,7 @@ void CpuGlyphs::drawShadowCasters(const Camera& light, const FrameParams& p, Sha
 
 std::size_t CpuGlyphs::gpuBytes() const {
   const std::size_t pixels = std::size_t(casts_.width) * std::size_t(casts_.height);
-  return set_.glyphs.size() * sizeof(tensor::GlyphRecord) + (tex_[0] ? pixels * 40 : 0) +
+  return set_.glyphs.size() * (sizeof(tensor::GlyphRecord) + (scalars_ ? sizeof(float) : 0)) + (tex_[0] ? pixels * 40 : 0) +
          (shadowCasters_ ? shadowCasters_->gpuBytes() : 0);
 }
 

@@ -67,6 +67,8 @@ class CpuGlyphs final : public GlyphPath {
   std::string_view name() const override { return "cpu"; }
   void upload(const tensor::GlyphSet& set) override;
   void setParams(const FrameParams& p, const FrameParams* old) override;
+  void setColorWindow(glm::dvec2 window) override;
+  void uploadColorScalars(std::span<const float> byRecord) override;
   void drawView(const Camera& cam, const FrameParams& p, const GBuffer& target) override;
   std::pair<glm::dvec3, glm::dvec3> castersBoxWC(const FrameParams& p) const override;
   void drawShadowCasters(const Camera& light, const FrameParams& p, ShadowPass& shadow) override;
@@ -83,7 +85,8 @@ class CpuGlyphs final : public GlyphPath {
   tensor::GlyphSet set_;  // the records, kept for the casts (and a raster path for shadows)
   std::unique_ptr<RasterGlyphs> shadowCasters_;  // built on the first frame with shadows
   CpuCasts casts_;
-  GLuint buffer_ = 0, vao_ = 0;
+  GLuint buffer_ = 0, vao_ = 0, scalars_ = 0;  // scalars_: ColorMode::Array's values, by record
+  glm::vec2 colorWindow_{0.0f, 1.0f};
   GLuint tex_[4] = {};  // depth, record, normal, hit: cpu_gbuffer.frag's inputs
   int threads_;
   std::uint64_t drawn_ = 0;

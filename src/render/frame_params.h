@@ -2,16 +2,28 @@
 // What one frame is drawn with: every parameter the renderer, the CLI, the
 // viewer, its scripts, Python and ParaView set. GL-free, so that option
 // handling includes this rather than the renderer.
+#include <optional>
+
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
 #include "render/glyph_kind.h"
 #include "render/legend_params.h"
 #include "tensor/glyph_scale.h"
+#include "view/underlay.h"
 
 namespace tg::render {
 
-enum class ColorMode { DEC = 0, FA = 1, MD = 2, CL = 3, CP = 4, Sign = 5 };
+// The glyphs' colour (shaders/lib/color.glsl): directions (DEC, DecFA: |e1|
+// times FA, dark where isotropic), the per-point sign of the normal stress,
+// or a scalar on a colormap: derived from the eigenvalues (render/color_scalar.h)
+// or, Array, one value per glyph given beside the records.
+enum class ColorMode {
+  DEC = 0, FA = 1, MD = 2, CL = 3, CP = 4, Sign = 5,
+  VonMises = 6, Tresca = 7, Pressure = 8, S1 = 9, S2 = 10, S3 = 11, Trace = 12, DecFA = 13, Array = 14
+};
+inline constexpr int kColorModeCount = 15;
 
 struct Lighting {
   glm::vec3 keyDirVC{-0.45f, 0.55f, 0.70f};  // upper left, in front
@@ -120,6 +132,11 @@ struct FrameParams {
   // casting (superquadrics at `gamma`; render/tessellated.h).
   int tessellation = 0;
   ColorMode color = ColorMode::DEC;
+  // A scalar mode's map; none: the quantity's own (render/color_scalar.h).
+  std::optional<Colormap> colormap;
+  // The values at the map's ends (sign: M = max(|lo|, |hi|) saturates);
+  // none: the uploaded field's range (GlyphRenderer::colorWindow).
+  std::optional<glm::dvec2> colorWindow;
   glm::vec4 background{0.08f, 0.08f, 0.10f, 1.0f};
   Lighting light;
   LegendParams legend;

@@ -12,9 +12,11 @@
 
 #include "gl/program.h"
 #include "view/camera.h"
+#include "render/color_scalar.h"
 #include "render/context_item.h"
 #include "render/frame_params.h"
 #include "render/gbuffer.h"
+#include "render/legend_layout.h"
 #include "render/legend_key.h"
 
 namespace tg::render {
@@ -24,10 +26,16 @@ class ShadowPass;
 
 // What the overlays show of the uploaded glyphs: the ranges they are coloured by.
 struct UploadedRanges {
-  float mdMin = 0, mdMax = 0;         // the uMdRange uniform
+  float mdMin = 0, mdMax = 0;         // MD's automatic window
   double eigenMin = 0, eigenMax = 0;  // signed, over the glyphs
+  ColorRanges color;                  // every scalar's automatic window, the array's included
+  std::string scalarName;             // ColorMode::Array's quantity (GlyphRenderer::setColorScalars)
   std::vector<UnderlayKey> underlays{};  // of the visible context items, each once
 };
+
+// What the legend shows for `p` over ranges `r` (the underlays' keys as in r):
+// the quantity, its map, window and units, as the glyph shaders draw them.
+LegendInputs legendInputs(const FrameParams& p, const UploadedRanges& r);
 
 // What a pass is given: the frame's camera, parameters and target, and what
 // the renderer knows of the scene.

@@ -12,10 +12,13 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 #include <utility>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "gl/program.h"
@@ -45,6 +48,12 @@ class GlyphPath {
   virtual void upload(const tensor::GlyphSet& set) = 0;
   // The parameters of the next frames; `old`: those last set, or null.
   virtual void setParams(const FrameParams& p, const FrameParams* old) = 0;
+  // The colour window of the next frames (GlyphRenderer::colorWindow): the
+  // values at the colormap's ends; for the sign colour (-M, M).
+  virtual void setColorWindow(glm::dvec2 window) { static_cast<void>(window); }
+  // ColorMode::Array's values, one per record in the records' order, into
+  // a buffer of their own: the records stay as uploaded.
+  virtual void uploadColorScalars(std::span<const float> byRecord);
   // The view's glyphs: clears and binds the geometry framebuffer
   // (GBuffer::beginGeometry) and writes albedo, normalWC, id and depth;
   // the caller draws context into what it leaves bound.
@@ -65,6 +74,11 @@ class GlyphPath {
 
 // The paths' names, GL-free, for the options that choose one.
 inline constexpr std::string_view kGlyphPathNames[] = {"raster", "cpu"};
+
+inline void GlyphPath::uploadColorScalars(std::span<const float>) {
+  throw std::invalid_argument("GlyphRenderer::setColorScalars: the " + std::string(name()) +
+                              " glyph path draws no per-glyph scalars");
+}
 
 // The path called `name`; throws std::invalid_argument naming the choices.
 std::unique_ptr<GlyphPath> makeGlyphPath(std::string_view name, const gl::Api& gl, const gl::ShaderLibrary& lib);

@@ -1,5 +1,7 @@
 #include "render/kind_programs.h"
 
+#include "render/color_scalar.h"
+
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -22,6 +24,8 @@ void setGlyphUniforms(const gl::Program& prog, const FrameParams& p, const Frame
     prog.set("uSlabWC", glm::vec2(float(p.slab.lo), float(p.slab.hi)));
   }
   if (changed(&FrameParams::color)) prog.set("uColorMode", int(p.color));
+  if (changed(&FrameParams::color) || changed(&FrameParams::colormap))
+    prog.set("uColormap", int(p.colormap.value_or(defaultColormap(p.color))));
 }
 
 const gl::Program& KindPrograms::program(GlyphKind k, const FrameParams& p) {
@@ -36,7 +40,7 @@ const gl::Program& KindPrograms::program(GlyphKind k, const FrameParams& p) {
     if (!kind.option.empty()) on.push_back(kind.option);
     slot = std::make_unique<gl::Program>(gl_, lib_, stages, std::move(on));
     setGlyphUniforms(*slot, p, nullptr);
-    slot->set("uMdRange", mdRange_);
+    slot->set("uColorWindow", colorWindow_);
   }
   return *slot;
 }
@@ -46,10 +50,10 @@ void KindPrograms::setParams(const FrameParams& p, const FrameParams* old) const
     if (prog) setGlyphUniforms(*prog, p, old);
 }
 
-void KindPrograms::setMdRange(glm::vec2 mdRange) {
-  mdRange_ = mdRange;
+void KindPrograms::setColorWindow(glm::vec2 window) {
+  colorWindow_ = window;
   for (const auto& prog : programs_)
-    if (prog) prog->set("uMdRange", mdRange_);
+    if (prog) prog->set("uColorWindow", colorWindow_);
 }
 
 }  // namespace tg::render

@@ -25,14 +25,14 @@ class KindPrograms {
   const gl::Program& program(GlyphKind k, const FrameParams& p);
   // Keeps built programs in step with the renderer's parameters.
   void setParams(const FrameParams& p, const FrameParams* old) const;
-  void setMdRange(glm::vec2 mdRange);
+  void setColorWindow(glm::vec2 window);
   bool built(GlyphKind k) const { return programs_[std::size_t(k)] != nullptr; }
 
  private:
   const gl::Api& gl_;
   const gl::ShaderLibrary& lib_;
   std::array<std::unique_ptr<gl::Program>, kGlyphKindCount> programs_;
-  glm::vec2 mdRange_{0.0f};
+  glm::vec2 colorWindow_{0.0f};
 };
 
 }  // namespace tg::render

@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
+#include "render/color_scalar.h"
 #include "render/frame_params.h"
 
 namespace tg::render {
@@ -131,16 +132,22 @@ void offset(LegendRect& r, float dx, float dy) {
   r.x0 += dx, r.x1 += dx, r.y0 += dy, r.y1 += dy;
 }
 
-const char* colorTitle(ColorMode m) {
-  switch (m) {
-    case ColorMode::FA: return "FA (fractional anisotropy)";
-    case ColorMode::MD: return "MD, mean eigenvalue";
-    case ColorMode::CL: return "cl (Westin linear)";
-    case ColorMode::CP: return "cp (Westin planar)";
-    case ColorMode::Sign: return "sign of normal stress";
-    case ColorMode::DEC: break;
+// The quantity, its units where it has the tensor's, and the map it is drawn on.
+std::string colorTitle(const LegendInputs& in, const LegendParams& p) {
+  std::string t = in.color == ColorMode::Array && !in.scalarName.empty() ? in.scalarName : colorQuantityName(in.color);
+  if (colorHasTensorUnits(in.color) && !p.units.empty()) t += " [" + p.units + "]";
+  if (colorIsScalar(in.color)) t += std::string(" (") + colormapName(in.colormap.value_or(defaultColormap(in.color))) + ")";
+  return t;
+}
+
+// The window a bar spans when the inputs give none (LegendInputs::window).
+glm::dvec2 defaultWindow(const LegendInputs& in) {
+  if (in.color == ColorMode::MD) return {in.mdMin, in.mdMax};
+  if (in.color == ColorMode::Sign) {
+    const double m = std::max(std::abs(in.eigenMin), std::abs(in.eigenMax));
+    return {-m, m};
   }
-  return "DEC: principal eigenvector e1";
+  return {0.0, 1.0};
 }
 
 // The values at a bar's ends, and its middle where that clears both ends by a character.
@@ -164,40 +171,47 @@ void tickLabels(Builder& b, const LegendFont& font, glm::dvec2 values, float bar
 void colorBar(Builder& b, LegendLayout& out, const LegendParams& p, const LegendInputs& in, const LegendFont& font,
               float barLen) {
   const float k = b.k();
+  // The bar is the glyphs' own map over their window (shaders/lib/color.glsl,
+  // windowColor): the sign colour's is the diverging ramp over -M..M, so
+  // that its ticks read the normal stress itself.
   const bool sign = in.color == ColorMode::Sign;
-  const bool md = in.color == ColorMode::MD;
-  b.line(md && !p.units.empty() ? std::string(colorTitle(in.color)) + " [" + p.units + "]" : colorTitle(in.color));
+  const Colormap map = sign ? Colormap::Diverging : in.colormap.value_or(defaultColormap(in.color));
+  const glm::dvec2 w = in.window.value_or(defaultWindow(in));
+  b.line(colorTitle(in, p));
   b.skip(4 * k);
   LegendSwatch s;
-  s.kind = sign ? SwatchKind::Sign : SwatchKind::Viridis;
+  s.kind = map == Colormap::Diverging ? SwatchKind::Sign : map == Colormap::Gray ? SwatchKind::Gray : SwatchKind::Viridis;
   s.rect = {0, b.y(), barLen, b.y() + 12 * k};
-  if (sign) s.t0 = -1.0f, s.t1 = 1.0f;
-  // md maps [mdMin, mdMax] onto viridis; a field of one MD is all viridis(0.5).
-  const bool flat = md && !(in.mdMax - in.mdMin > 0.0f);
-  if (flat) s.t0 = s.t1 = 0.5f;
+  if (map == Colormap::Diverging) s.t0 = -1.0f, s.t1 = 1.0f;
+  // A flat window draws the map's middle everywhere (a field of one MD).
+  const bool flat = !(float(0.5 * w.y) - float(0.5 * w.x) > 0.0f);
+  if (flat) s.t0 = s.t1 = 0.5f * (s.t0 + s.t1);
   out.swatches.push_back(s);
   out.hasColorBar = true;
   out.colorBar = s.rect;
-  out.barValues = sign ? glm::dvec2(-1.0, 1.0) : md ? glm::dvec2(in.mdMin, in.mdMax) : glm::dvec2(0.0, 1.0);
+  out.barValues = w;
   b.widen(barLen);
   b.skip(s.rect.height() + 5 * k);  // room for the tick marks
   const float y = b.y();
-  if (sign) {
-    b.text("compression", 0, y, 0);
-    b.text("tension", barLen, y, 1);
-    b.skip(font.lineHeight());
-    b.line(withUnits("stress " + number(in.eigenMin) + " .. " + number(in.eigenMax), p.units));
-  } else if (flat) {
-    b.text(number(in.mdMin), 0.5f * barLen, y, 0.5f);
+  if (flat) {
+    b.text(number(w.x), 0.5f * barLen, y, 0.5f);
     b.skip(font.lineHeight());
   } else {
     tickLabels(b, font, out.barValues, barLen);
   }
+  if (sign) {
+    b.text("compression", 0, b.y(), 0);
+    b.text("tension", barLen, b.y(), 1);
+    b.skip(font.lineHeight());
+  }
+  if (in.windowGiven) b.line("window fixed; clamped beyond");
 }
 
-void decKey(Builder& b, LegendLayout& out, const LegendFont& font, const Camera& cam, float width) {
+void decKey(Builder& b, LegendLayout& out, const LegendFont& font, const Camera& cam, float width,
+            const LegendInputs& in) {
   const float k = b.k(), f = font.pixelSize();
-  b.line(colorTitle(ColorMode::DEC));
+  const bool weighted = in.color == ColorMode::DecFA;
+  b.line(colorQuantityName(in.color));
   const float d = 56 * k, margin = 4 * k + f;
   const float cx = std::round(0.5f * std::max(width, d + 2 * margin)), cy = b.y() + margin + 0.5f * d;
   LegendSwatch s;
@@ -227,7 +241,7 @@ void decKey(Builder& b, LegendLayout& out, const LegendFont& font, const Camera&
   // What decColor (shaders/lib/color.glsl) does: |e1| mixed with white by
   // 1 - FA. The sphere shows FA 1.
   b.line("RGB = |x|,|y|,|z| of e1");
-  b.line("paler as FA falls: white at 0");
+  b.line(weighted ? "darker as FA falls: black at 0" : "paler as FA falls: white at 0");
 }
 
 // A file underlay by its file name alone: a long path would widen the panel.
@@ -255,8 +269,10 @@ void underlayBar(Builder& b, LegendLayout& out, const UnderlayKey& key, const Le
   b.line(underlayTitle(key));
   b.skip(4 * k);
   LegendSwatch s;
-  s.kind = key.colormap == Colormap::Viridis ? SwatchKind::Viridis : SwatchKind::Gray;
+  s.kind = key.colormap == Colormap::Viridis ? SwatchKind::Viridis
+          : key.colormap == Colormap::Diverging ? SwatchKind::Sign : SwatchKind::Gray;
   s.rect = {0, b.y(), barLen, b.y() + 12 * k};
+  if (key.colormap == Colormap::Diverging) s.t0 = -1.0f, s.t1 = 1.0f;
   out.swatches.push_back(s);
   out.underlayBars.push_back(s.rect);
   out.underlayValues.emplace_back(key.lo, key.hi);
@@ -317,7 +333,7 @@ LegendLayout layoutLegend(const LegendParams& p, const LegendInputs& in, const C
   const float barLen = 160 * k;
   out.swatches.push_back({});  // the panel's fill, placed below
   if (p.colorKey) {
-    if (in.color == ColorMode::DEC) decKey(b, out, font, cam, barLen);
+    if (in.color == ColorMode::DEC || in.color == ColorMode::DecFA) decKey(b, out, font, cam, barLen, in);
     else colorBar(b, out, p, in, font, barLen);
   }
   for (const UnderlayKey& key : in.underlays) {

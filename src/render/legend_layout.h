@@ -4,6 +4,7 @@
 // Coordinates are DC pixels with the origin at the image's top-left corner,
 // x right, y down (FrameImage rows); pixel (i, j) covers [i, i+1) x [j, j+1).
 #include <memory>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -30,6 +31,13 @@ struct LegendInputs {
   double eigenMin = 0, eigenMax = 0;  // over the glyphs: the stress range for sign
   tensor::SizeMapping sizing{};       // FrameParams::sizing: magnitude mapping and clamp
   std::vector<UnderlayKey> underlays{};  // the slice planes' underlays, as drawn (UploadedRanges)
+  // The map and window the glyphs were drawn with (GlyphRenderer::legendInputs);
+  // none: the mode's default map, and MD's range, 0..1 for FA, cl, cp, and
+  // for sign -M..M with M the largest |eigenvalue|.
+  std::optional<Colormap> colormap{};
+  std::optional<glm::dvec2> window{};
+  bool windowGiven = false;  // fixed by the user (--color-range): said on the legend
+  std::string scalarName{};  // ColorMode::Array's quantity
 };
 
 struct LegendRect {
@@ -75,8 +83,8 @@ struct LegendLayout {
   std::vector<LegendLabel> labels;
   bool hasColorBar = false, hasSphere = false, hasScaleBar = false;
   LegendRect colorBar, sphere, scaleBar;
-  // What the colour bar's left and right edges stand for, as labelled:
-  // FA, cl, cp 0..1; md its range; sign the normalised normal stress -1..1.
+  // What the colour bar's left and right edges stand for, as labelled: the
+  // window (FA, cl, cp 0..1 by default; sign -M..M in stress units).
   glm::dvec2 barValues{0.0, 1.0};
   ScaleBarChoice scale;
   std::vector<LegendAxisMark> axes;

@@ -30,8 +30,7 @@ class LegendPass final : public FramePass {
   // Draws into the framebuffer bound for lighting (GBuffer::beginLighting).
   void draw(const Camera& cam, const LegendParams& p, const LegendInputs& in);
   void run(const PassFrame& f) override {
-    const UploadedRanges& r = f.ranges;
-    draw(f.cam, f.p.legend, {f.p.color, f.p.scale, r.mdMin, r.mdMax, r.eigenMin, r.eigenMax, f.p.sizing, r.underlays});
+    draw(f.cam, f.p.legend, legendInputs(f.p, f.ranges));
   }
   std::span<const Attachment> reads() const override { return {}; }
   std::span<const Attachment> writes() const override;

@@ -44,6 +44,7 @@ RasterGlyphs::RasterGlyphs(const gl::Api& gl, const gl::ShaderLibrary& lib)
 
 RasterGlyphs::~RasterGlyphs() {
   if (buffer_) gl_.DeleteBuffers(1, &buffer_);
+  if (scalars_) gl_.DeleteBuffers(1, &scalars_);
   gl_.DeleteBuffers(1, &stats_);
 }
 
@@ -52,24 +53,44 @@ void RasterGlyphs::upload(const tensor::GlyphSet& set) {
     throw std::runtime_error("GlyphRenderer::upload: " + std::to_string(set.glyphs.size()) +
                              " glyphs; at most 2^29 fit gl_VertexID's four vertices per glyph");
   if (buffer_) gl_.DeleteBuffers(1, &buffer_);
-  buffer_ = 0;
+  if (scalars_) gl_.DeleteBuffers(1, &scalars_);
+  buffer_ = scalars_ = 0;
   count_ = GLsizei(set.glyphs.size());
   groupCounts_ = {set.sphereCount, set.definiteCount, set.glyphs.size() - set.sphereCount - set.definiteCount};
-  mdRange_ = glm::vec2(float(set.mdMin), float(set.mdMax));
   centresLoWC_ = set.boundsMinWC;
   centresHiWC_ = set.boundsMaxWC;
   maxAbsEigenvalue_ = set.maxAbsEigenvalue;
   typicalDiameter_ = 1.0 / tensor::defaultScale(set, 1.0);
-  for (const gl::Program* prog : glyphPrograms())
-    if (prog) prog->set("uMdRange", mdRange_);
-  kinds_.setMdRange(mdRange_);
   if (count_ > 0) {
     gl_.CreateBuffers(1, &buffer_);
     gl_.NamedBufferStorage(buffer_, GLsizeiptr(set.glyphs.size() * sizeof(tensor::GlyphRecord)),
                            set.glyphs.data(), 0);
+    ++recordUploads_;
   }
   culling_.upload(set, buffer_);
   gl::checkError(gl_, "GlyphRenderer::upload");
+}
+
+void RasterGlyphs::setColorWindow(glm::dvec2 window) {
+  const glm::vec2 w(window);
+  if (w == colorWindow_) return;
+  colorWindow_ = w;
+  for (const gl::Program* prog : glyphPrograms())
+    if (prog) prog->set("uColorWindow", colorWindow_);
+  kinds_.setColorWindow(colorWindow_);
+}
+
+void RasterGlyphs::uploadColorScalars(std::span<const float> byRecord) {
+  if (byRecord.size() != std::size_t(count_))
+    throw std::invalid_argument("GlyphRenderer::setColorScalars: " + std::to_string(byRecord.size()) +
+                                " values for " + std::to_string(count_) + " glyphs");
+  if (scalars_) gl_.DeleteBuffers(1, &scalars_);
+  scalars_ = 0;
+  if (count_ > 0) {
+    gl_.CreateBuffers(1, &scalars_);
+    gl_.NamedBufferStorage(scalars_, GLsizeiptr(byRecord.size_bytes()), byRecord.data(), 0);
+  }
+  gl::checkError(gl_, "GlyphRenderer::setColorScalars");
 }
 
 // Null where a marching or tessellated program has not been built yet.
@@ -114,7 +135,7 @@ const gl::Program& RasterGlyphs::marchProgram(bool stats, MarchVariant v, const 
     slot = std::make_unique<gl::Program>(gl_, lib_, stages, std::move(on));
     setGlyphUniforms(*slot, p, nullptr);
     setShapeUniforms(*slot, p, nullptr);
-    slot->set("uMdRange", mdRange_);
+    slot->set("uColorWindow", colorWindow_);
   }
   return *slot;
 }
@@ -139,7 +160,7 @@ const gl::Program& RasterGlyphs::tessellatedProgram(const FrameParams& p) {
     const gl::Program& prog = tessellated_.build();
     setGlyphUniforms(prog, p, nullptr);
     setShapeUniforms(prog, p, nullptr);
-    prog.set("uMdRange", mdRange_);
+    prog.set("uColorWindow", colorWindow_);
   }
   return *tessellated_.program();
 }
@@ -218,6 +239,7 @@ void RasterGlyphs::beginGlyphs() const {
   gl_.DepthFunc(GL_GREATER);  // reversed Z
   gl_.DepthMask(GL_TRUE);
   gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_GLYPHS, buffer_);
+  if (scalars_) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_COLOR_SCALARS, scalars_);
 }
 
 void RasterGlyphs::useGlyphProgram(const gl::Program& prog, const Camera& cam) const {
@@ -311,7 +333,8 @@ void RasterGlyphs::drawView(const Camera& cam, const FrameParams& p, const GBuff
 }
 
 std::size_t RasterGlyphs::gpuBytes() const {
-  return std::size_t(count_) * sizeof(tensor::GlyphRecord) + culling_.gpuBytes() + tessellated_.meshBytes();
+  return std::size_t(count_) * (sizeof(tensor::GlyphRecord) + (scalars_ ? sizeof(float) : 0)) + culling_.gpuBytes() +
+         tessellated_.meshBytes();
 }
 
 IterationStats RasterGlyphs::iterationStats() const {

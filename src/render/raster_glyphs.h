@@ -29,6 +29,8 @@ class RasterGlyphs final : public GlyphPath {
   std::string_view name() const override { return "raster"; }
   void upload(const tensor::GlyphSet& set) override;
   void setParams(const FrameParams& p, const FrameParams* old) override;
+  void setColorWindow(glm::dvec2 window) override;
+  void uploadColorScalars(std::span<const float> byRecord) override;
   void drawView(const Camera& cam, const FrameParams& p, const GBuffer& target) override;
   std::pair<glm::dvec3, glm::dvec3> castersBoxWC(const FrameParams& p) const override;
   void drawShadowCasters(const Camera& light, const FrameParams& p, ShadowPass& shadow) override;
@@ -49,6 +51,9 @@ class RasterGlyphs final : public GlyphPath {
   // Draws by march variant v since construction.
   std::uint64_t marchDraws(MarchVariant v) const { return marchDraws_[std::size_t(v)]; }
   bool tessellatedProgramBuilt() const { return tessellated_.program() != nullptr; }
+  // Times the records' buffer was made (one per upload): colour changes must
+  // leave it alone.
+  std::uint64_t recordBufferUploads() const { return recordUploads_; }
 
  private:
   // Depth test and the records bound: what every glyph pass needs.
@@ -90,13 +95,14 @@ class RasterGlyphs final : public GlyphPath {
   OccluderPyramid pyramid_;
   TessellatedGlyphs tessellated_;
   KindPrograms kinds_;  // closed-form kinds' programs
-  GLuint buffer_ = 0, stats_ = 0;
+  GLuint buffer_ = 0, stats_ = 0, scalars_ = 0;
+  std::uint64_t recordUploads_ = 0;
   GLsizei count_ = 0;
   double maxPointPx_ = 0;  // GL_POINT_SIZE_RANGE's upper end
   std::uint64_t occlusionPrepasses_ = 0;
   glm::dvec3 centresLoWC_{0.0}, centresHiWC_{0.0};  // of the uploaded glyphs
   double maxAbsEigenvalue_ = 0;
-  glm::vec2 mdRange_{0.0f};
+  glm::vec2 colorWindow_{0.0f};  // uColorWindow
   double typicalDiameter_ = 1.0;  // in eigenvalue units
   bool orientedSprites_ = false;  // as last set
 };

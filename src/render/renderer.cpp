@@ -9,6 +9,7 @@
 #include "render/color_readback.h"
 #include "render/outline_pass.h"
 #include "render/shadow_pass.h"
+#include "render/color_scalar.h"
 #include "tensor/glyph_scale.h"
 
 namespace tg::render {
@@ -50,13 +51,61 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   ranges_.mdMax = float(set.mdMax);
   ranges_.eigenMin = set.eigenvalueMin;
   ranges_.eigenMax = set.eigenvalueMax;
+  // MD and the largest |eigenvalue| as the set gives them (a caller may set
+  // them field-wide there, as the ParaView plugin does across ranks).
+  ranges_.color = render::colorRanges(std::span(set.glyphs.data(), set.glyphs.size()));
+  ranges_.color.of[std::size_t(ColorMode::MD)] = glm::dvec2(set.mdMin, set.mdMax);
+  ranges_.color.maxAbsEigenvalue = set.maxAbsEigenvalue;
+  ranges_.scalarName.clear();
+  hasScalars_ = false;
+  if (params_) path_->setColorWindow(colorWindow(*params_));
   typicalDiameter_ = 1.0 / tensor::defaultScale(set, 1.0);
   ++uploads_;
 }
 
+void GlyphRenderer::setColorScalars(std::span<const float> byRecord, std::string name) {
+  path_->uploadColorScalars(byRecord);
+  ranges_.color.of[std::size_t(ColorMode::Array)] = finiteRange(byRecord);
+  ranges_.scalarName = std::move(name);
+  hasScalars_ = true;
+  if (params_) path_->setColorWindow(colorWindow(*params_));
+}
+
+void GlyphRenderer::setColorRanges(const ColorRanges& ranges) {
+  const glm::dvec2 array = ranges_.color.of[std::size_t(ColorMode::Array)];
+  ranges_.color = ranges;
+  ranges_.mdMin = float(ranges.of[std::size_t(ColorMode::MD)].x);
+  ranges_.mdMax = float(ranges.of[std::size_t(ColorMode::MD)].y);
+  if (!(ranges.of[std::size_t(ColorMode::Array)].x <= ranges.of[std::size_t(ColorMode::Array)].y))
+    ranges_.color.of[std::size_t(ColorMode::Array)] = array;
+  if (params_) path_->setColorWindow(colorWindow(*params_));
+}
+
+glm::dvec2 GlyphRenderer::colorWindow(const FrameParams& p) const {
+  return resolveColorWindow(p, ranges_.color.of[std::size_t(p.color)], ranges_.color.maxAbsEigenvalue);
+}
+
+LegendInputs legendInputs(const FrameParams& p, const UploadedRanges& r) {
+  LegendInputs in{p.color, p.scale, r.mdMin, r.mdMax, r.eigenMin, r.eigenMax, p.sizing, r.underlays};
+  in.colormap = resolveColormap(p);
+  in.window = resolveColorWindow(p, r.color.of[std::size_t(p.color)], r.color.maxAbsEigenvalue);
+  in.windowGiven = p.colorWindow.has_value();
+  in.scalarName = r.scalarName;
+  return in;
+}
+
+LegendInputs GlyphRenderer::legendInputs(const FrameParams& p) const {
+  UploadedRanges r = ranges_;
+  r.underlays = legendKeys();
+  return render::legendInputs(p, r);
+}
+
 void GlyphRenderer::setParams(const FrameParams& p) {
   const FrameParams* old = params_ ? &*params_ : nullptr;
+  if (p.color == ColorMode::Array && !hasScalars_)
+    throw std::invalid_argument("GlyphRenderer::render: colour by array, but no per-glyph scalars were set");
   path_->setParams(p, old);
+  path_->setColorWindow(colorWindow(p));
   lighting_.setParams(p, old);
   params_ = p;
 }

@@ -9,6 +9,7 @@
 #include <memory>
 #include <optional>
 #include <span>
+#include <string>
 #include <string_view>
 #include <vector>
 
@@ -21,6 +22,7 @@
 #include "render/frame_pass.h"
 #include "render/gbuffer.h"
 #include "render/glyph_path.h"
+#include "render/legend_layout.h"
 #include "render/lighting_pass.h"
 #include "tensor/glyph.h"
 
@@ -45,6 +47,24 @@ class GlyphRenderer {
   // How many times upload() has run: parameter changes must leave it alone
   // (the viewer's and the Python module's tests count).
   std::uint64_t uploadCount() const { return uploads_; }
+  // ColorMode::Array's values, one per record of the uploaded set in its
+  // order (tensor::GlyphSet::glyphs; colorScalarsByRecord reorders values
+  // given per input index), named `name` in the legend. Its own buffer: the
+  // records are not uploaded again. Throws std::invalid_argument for
+  // another count. NaN values draw mid grey; the window is of the finite ones.
+  void setColorScalars(std::span<const float> byRecord, std::string name);
+  bool hasColorScalars() const { return hasScalars_; }
+  // The automatic colour windows: by default each scalar's range over the
+  // uploaded glyphs (render/color_scalar.h); a caller that knows the whole
+  // field's (before a slice or threshold selected these glyphs, or over
+  // every MPI rank) sets those instead. An array's range is kept where
+  // `ranges` has none.
+  void setColorRanges(const ColorRanges& ranges);
+  const ColorRanges& colorRanges() const { return ranges_.color; }
+  // The window frames with `p` map their scalar over (resolveColorWindow).
+  glm::dvec2 colorWindow(const FrameParams& p) const;
+  // What the legend shows for `p`: the quantity, its map, window and units.
+  LegendInputs legendInputs(const FrameParams& p) const;
   // Sets the programs' parameter uniforms: all a change of gamma, threshold,
   // scale, colour, slab or lighting costs on the CPU. render() calls it when
   // `p` differs from the last parameters.
@@ -105,6 +125,7 @@ class GlyphRenderer {
   std::size_t glyphCount_ = 0;
   std::uint64_t uploads_ = 0;
   UploadedRanges ranges_;  // less the underlays, which each frame reads from the context
+  bool hasScalars_ = false;
   double typicalDiameter_ = 1.0;  // in eigenvalue units
   std::optional<FrameParams> params_;  // as last set
   std::vector<std::unique_ptr<ContextItem>> context_;

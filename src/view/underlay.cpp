@@ -64,6 +64,7 @@ std::pair<glm::dvec3, glm::dvec3> UnderlayVolume::boundsWC() const {
 std::optional<Colormap> colormapNamed(const std::string& name) {
   if (name == "gray" || name == "grey") return Colormap::Gray;
   if (name == "viridis") return Colormap::Viridis;
+  if (name == "diverging") return Colormap::Diverging;
   return std::nullopt;
 }
 

@@ -30,8 +30,10 @@ struct UnderlayVolume {
   std::pair<glm::dvec3, glm::dvec3> boundsWC() const;
 };
 
-enum class Colormap { Gray, Viridis };
-inline constexpr const char* kColormapNames = "gray or viridis";
+// shaders/lib/color.glsl's colormap(): diverging is blue, white at the
+// middle, orange (the sign colour's ramp).
+enum class Colormap { Gray, Viridis, Diverging };
+inline constexpr const char* kColormapNames = "gray, viridis or diverging";
 std::optional<Colormap> colormapNamed(const std::string& name);
 
 // One home for the planes' look: the CLI, the viewer and scripts share it.

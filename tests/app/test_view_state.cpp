@@ -353,3 +353,22 @@ TEST_F(ViewScript, ValuesAreHeldToTheRangesRenderDeclares) {
 
 }  // namespace
 }  // namespace tg::app
+
+TEST_F(ViewScript, ColourModeMapAndWindow) {
+  std::ofstream(path) << "color vonmises\ncolormap gray\ncolor-range -2 5.5\ncolormap auto\ncolor-range auto\n";
+  const auto steps = app::parseScript(path);
+  ASSERT_EQ(steps.size(), 5u);
+  app::ViewState v{{}, app::OrbitCamera(start()), 1.0, 1.0};
+  for (std::size_t k = 0; k < 3; ++k) app::applyStep(steps[k], v);
+  EXPECT_EQ(v.params.color, render::ColorMode::VonMises);
+  EXPECT_EQ(v.params.colormap, render::Colormap::Gray);
+  EXPECT_EQ(v.params.colorWindow, glm::dvec2(-2.0, 5.5));
+  app::applyStep(steps[3], v);
+  app::applyStep(steps[4], v);
+  EXPECT_FALSE(v.params.colormap);
+  EXPECT_FALSE(v.params.colorWindow);
+  EXPECT_EQ(scriptError("color-range 3 3\n"), path + ":1: color-range: LO must be below HI");
+  EXPECT_EQ(scriptError("colormap jet\n"),
+            path + ":1: colormap: unknown map \"jet\"; choose auto, gray, viridis or diverging");
+  EXPECT_NE(scriptError("color-range nan 1\n").find("color-range"), std::string::npos);
+}

@@ -75,6 +75,7 @@ const std::vector<NumericCase>& numericCases() {
       {"--eye", "{} {} {}", ""},
       {"--eye", "0 0 {}", ""},
       {"--look-at", "{} {} {}", "--eye 1 1 20"},
+      {"--color-range", "0 {}", "--color vonmises"},
       {"--up", "{} {} {}", "--eye 1 1 20"},
       {"--fov", "{}", ""},
       {"--ortho", "{}", ""},

@@ -355,6 +355,56 @@ class BadInput(unittest.TestCase):
             self.assertFalse(os.path.exists(os.path.join(d, "x.exr")))
 
 
+class ColorBy(unittest.TestCase):
+    """color= a derived scalar's name, or a NumPy array of one value per tensor."""
+
+    @staticmethod
+    def _von_mises(t):
+        lam = np.linalg.eigvalsh(t)
+        a, b, c = lam[..., 2], lam[..., 1], lam[..., 0]
+        return np.sqrt(0.5 * ((a - b) ** 2 + (b - c) ** 2 + (c - a) ** 2))
+
+    def test_an_array_draws_what_the_derived_scalar_draws(self):
+        t, p = points(300)
+        opts = dict(size=(160, 120), scale=0.2)
+        by_mode = tg.render(t, positions=p, color="vonmises", **opts).image.astype(int)
+        r = tg.Renderer(t, positions=p, color=self._von_mises(t), **opts)
+        by_array = r.render().image.astype(int)
+        self.assertGreater(np.count_nonzero(by_mode[..., 3]), 300, "nothing drawn")
+        self.assertLessEqual(np.abs(by_mode - by_array).max(), 1)
+        # New values, a window, a map: no upload of the glyphs.
+        other = r.render(color=np.sin(np.arange(300.0)), color_range=(-0.5, 0.5), colormap="gray").image
+        self.assertFalse(np.array_equal(other, by_array.astype(np.uint8)))
+        self.assertEqual(r.uploads, 1)
+
+    def test_a_volume_array_is_in_the_tensors_voxel_order(self):
+        rng = np.random.default_rng(3)
+        L = rng.normal(size=(5, 4, 3, 3, 3)) * 0.3 + np.eye(3) * [1.0, 0.5, 0.25]
+        D = L @ np.swapaxes(L, -1, -2)
+        lam = np.linalg.eigvalsh(D)
+        md = lam.mean(-1, keepdims=True)
+        fa = np.sqrt(1.5 * ((lam - md) ** 2).sum(-1) / (lam ** 2).sum(-1))
+        opts = dict(affine=np.diag([2.0, 1.5, 2.5, 1.0]), frame="world", size=(160, 120), color_range=(0.0, 1.0))
+        by_mode = tg.render(D, color="fa", **opts).image.astype(int)
+        by_array = tg.render(D, color=fa, **opts).image.astype(int)
+        self.assertGreater(np.count_nonzero(by_mode[..., 3]), 300, "nothing drawn")
+        self.assertLessEqual(np.abs(by_mode - by_array).max(), 1)
+
+    def test_bad_arrays_and_windows_are_refused(self):
+        t, p = points(50)
+        with self.assertRaises(ValueError) as cm:
+            tg.render(t, positions=p, color=np.zeros(49))
+        self.assertIn("49 values for 50 tensors", str(cm.exception))
+        with self.assertRaises(ValueError) as cm:
+            tg.render(t, positions=p, color="vonmises", color_range=(float("nan"), 1.0))
+        self.assertIn("--color-range", str(cm.exception))
+        with self.assertRaises(ValueError) as cm:
+            tg.render(t, positions=p, color="vonmises", color_range=(2.0, 1.0))
+        self.assertIn("must be below", str(cm.exception))
+        with self.assertRaises(TypeError):
+            tg.render(t, positions=p, color=np.array(["a"] * 50))
+
+
 class Interactive(unittest.TestCase):
     def test_parameter_changes_upload_nothing(self):
         t, p = points(200)

@@ -32,6 +32,9 @@ CASES = {
     "fov": (10.0, {}),
     "ortho": (3.0, {}),
     "color": ("fa", {}),
+    "colormap": ("gray", {"color": "md"}),
+    "color_range": ((0.2, 0.4), {"color": "fa"}),
+    "color_array": ("@mask", {}),  # a scalar volume on the volumes' grid
     "background": ((1.0, 0.0, 0.0, 1.0), {}),
     "array": ("other", {}),
     "layout": ("mrtrix", {}),
