@@ -32,17 +32,20 @@ int cmdInfo(int argc, const char** argv) {
   checkOptionsApply(input, flags.read);
   TerminalProgress progress(quiet);
   flags.read.progress = progress.sink();
-  const io::TensorField f = [&] {
+  Scene scene;
+  scene.field = [&] {
     try {
       return io::readTensorField(input, flags.read);
     } catch (const io::SliceOutOfRange& e) {
       throw sliceUsageError(e, input);
     }
   }();
+  const io::TensorField& f = scene.field;
   checkLoaded(f, flags.read);
   if (flags.read.progress) flags.read.progress({}, 0, 0, {});
   reportLoad(f, "info");
   const tensor::GlyphSet g = tensor::buildGlyphs(f.positions, f.tensors, f.ids, 0, flags.glyph, flags.read.progress);
+  attachWholeField(scene, flags, input, flags.read);
   progress.finish();
   std::size_t negDef = 0, indefinite = 0, zero = 0;
   constexpr double inf = std::numeric_limits<double>::infinity();
@@ -102,7 +105,7 @@ int cmdInfo(int argc, const char** argv) {
                 g.boundsMaxWC.x, g.boundsMaxWC.y, g.boundsMaxWC.z);
     // What `render` with the same flags would choose, and why.
     const tensor::ResolvedScale sized =
-        tensor::resolveScale(flags.scaleParams(), tensor::sampleMagnitudes(g, f.sampleSpacing));
+        tensor::resolveScale(flags.scaleParams(), sizingSample(scene, g));
     const tensor::FramingBox frame = tensor::framingBox(g, !f.grid, sized.typicalRadiusWC);
     std::printf("size: %s\nframing: %s\n", sized.why.c_str(), frame.why.c_str());
   }

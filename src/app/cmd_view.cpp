@@ -108,6 +108,7 @@ int cmdView(int argc, const char** argv) {
   for (const NamedPath& m : o.mesh.inputs()) inputs.push_back(m);
   refuseOutputsOverInputs(scriptShots, inputs);
   Scene scene = loadScene(o.input, o.field.read);
+  attachWholeField(scene, o.field, o.input, o.field.read);
   reportLoad(scene.field, "view");
   std::vector<io::MeshData> meshes = o.mesh.read(o.input, "view");
   checkScriptMeshes(script, meshes.size(), o.script);

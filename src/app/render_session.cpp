@@ -40,7 +40,7 @@ RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io
   checkDrawable(glyphs_, scene_.field.path);
   buildMs_ = msSince(t0);
   if (progress) progress("preparing", 0, 0, {});
-  magnitudes_ = tensor::sampleMagnitudes(glyphs_, scene_.field.sampleSpacing);
+  magnitudes_ = sizingSample(scene_, glyphs_);
   const tensor::ResolvedScale firstScale = tensor::resolveScale(o.field.scaleParams(), magnitudes_);
   const Boxes first = boxes(firstScale);
   // The records go after the upload: a legend shown now needs its cells first.

@@ -1,5 +1,6 @@
 #pragma once
 // What a render or info command works on: a loaded (or built-in) field.
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -7,12 +8,26 @@
 #include "app/look_flags.h"
 #include "io/readers.h"
 #include "io/selection.h"
+#include "tensor/field_stats.h"
+#include "tensor/glyph_scale.h"
 #include "view/camera.h"
 
 namespace tg::app {
 
+struct FieldFlags;
+
+// The statistics sizes are worked out from (tensor/field_stats.h) when they
+// are not those of the loaded glyphs: the whole field's, loaded again
+// without the selection that left some of it out.
+struct WholeField {
+  tensor::FieldStats stats;
+  double sampleSpacing = 0;
+};
+
 struct Scene {
   io::TensorField field;
+  std::optional<WholeField> wholeField;  // none: the loaded glyphs are what sizes come from
+  std::string sizesFrom;                 // where they come from, for info and --verbose
   std::optional<render::CameraDesc> preferredCamera;  // used when no camera flag is given
   std::optional<double> preferredFaMin;
   std::optional<SceneLook> preferredLook;  // applied where the flags are silent
@@ -28,6 +43,18 @@ Scene defaultScene();
 // result (checkOptionsApply, checkLoaded); a --slice index beyond the grid
 // is a UsageError naming the valid range.
 Scene loadScene(const std::string& input, const io::ReadOptions& opt);
+
+// Field-wide size ranges: unless `flags` asks --sizes-from selection, and
+// when the selection (slice, stride, ROI, mask) or --cl-min/--cp-min left
+// tensors out of s, the statistics of `whole()` (the field loaded again
+// without them) are attached. Sets s.sizesFrom either way.
+void attachWholeField(Scene& s, const FieldFlags& flags, const std::function<io::TensorField()>& whole);
+// The same for `input` (a file, or "" for the built-in scene), read again with `read` less its selection.
+void attachWholeField(Scene& s, const FieldFlags& flags, const std::string& input, io::ReadOptions read);
+// What resolveScale sizes the glyphs of s from: the whole field's
+// statistics, or those of `glyphs` (the loaded ones) when s has none.
+tensor::MagnitudeSample sizingSample(const Scene& s, const tensor::GlyphSet& glyphs);
+tensor::FieldStats sizingStats(const Scene& s, const tensor::GlyphSet& glyphs);
 
 // The UsageError for a --slice index beyond the grid of `input` (empty: the
 // built-in scene): the option, its value and the valid range.

@@ -273,7 +273,7 @@ class BadInput(unittest.TestCase):
         """'>f4' (a big-endian NIfTI's data through nibabel) read in place as
         little-endian is other, mostly finite numbers: once drawn without a word."""
         t, p = points(12)
-        opts = dict(size=(64, 48), scale_mode="absolute", scale=0.3, eye=(5, 5, 40), look_at=(5, 5, 5))
+        opts = dict(size=(64, 48), scale_mode="absolute", scale=0.6, eye=(5, 5, 40), look_at=(5, 5, 5))
         native = tg.render(t.astype(np.float32), positions=p.astype(np.float32), **opts).image
         self.assertGreater(np.count_nonzero(native[..., 3]), 200, "nothing drawn")
         for tt, pp in [(t.astype(">f4"), p.astype(np.float32)), (t.astype(np.float32), p.astype(">f4")),
