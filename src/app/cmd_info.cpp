@@ -46,6 +46,8 @@ int cmdInfo(int argc, const char** argv) {
   reportLoad(f, "info");
   const tensor::GlyphSet g = tensor::buildGlyphs(f.positions, f.tensors, f.ids, 0, flags.glyph, flags.read.progress);
   attachWholeField(scene, flags, input, flags.read);
+  const tensor::FieldStats stats = sizingStats(scene, g);
+  decideStressDefaults(scene, stats);
   progress.finish();
   std::size_t negDef = 0, indefinite = 0, zero = 0;
   constexpr double inf = std::numeric_limits<double>::infinity();
@@ -100,12 +102,21 @@ int cmdInfo(int argc, const char** argv) {
               g.glyphs.size() - negDef - indefinite - zero, indefinite, negDef, zero);
   if (!g.glyphs.empty()) {
     for (int k = 0; k < 3; ++k) std::printf("eigenvalue %d: [%g, %g]\n", k + 1, lmin[k], lmax[k]);
-    std::printf("FA: [%g, %g]\nMD: [%g, %g]\n", faMin, faMax, g.mdMin, g.mdMax);
+    if (scene.stress) {
+      // Of the field the sizes come from (the whole one unless --sizes-from selection).
+      const char* from = scene.wholeField ? " (whole field)" : "";
+      for (int k = 0; k < 3; ++k)
+        std::printf("principal stress %d%s: [%g, %g]\n", k + 1, from, stats.principalMin[k], stats.principalMax[k]);
+      std::printf("von Mises%s: [%g, %g]\n", from, stats.vonMisesMin, stats.vonMisesMax);
+      std::printf("%s\n", stressDefaultsLine(*scene.stress).c_str());
+    } else {
+      std::printf("FA: [%g, %g]\nMD: [%g, %g]\n", faMin, faMax, g.mdMin, g.mdMax);
+    }
     std::printf("bounds: [%g %g %g] - [%g %g %g]\n", g.boundsMinWC.x, g.boundsMinWC.y, g.boundsMinWC.z,
                 g.boundsMaxWC.x, g.boundsMaxWC.y, g.boundsMaxWC.z);
     // What `render` with the same flags would choose, and why.
     const tensor::ResolvedScale sized =
-        tensor::resolveScale(flags.scaleParams(), sizingSample(scene, g));
+        tensor::resolveScale(sizingParams(flags, scene), sizingSample(scene, stats));
     const tensor::FramingBox frame = tensor::framingBox(g, !f.grid, sized.typicalRadiusWC);
     std::printf("size: %s\nframing: %s\n", sized.why.c_str(), frame.why.c_str());
   }

@@ -180,6 +180,7 @@ int cmdRender(int argc, const char** argv) {
                                 : scene.preferredCamera ? std::string("the built-in scene's own view")
                                                         : fr.framing.why;
     std::fprintf(stderr, "  size: %s\n  framing: %s\n", fr.sized.why.c_str(), framing.c_str());
+    if (scene.stress) std::fprintf(stderr, "  %s\n", stressDefaultsLine(*scene.stress).c_str());
     if (params.ao.enabled)
       std::fprintf(stderr, "  ambient occlusion: radius %.6g (%s), strength %.3g, %d samples\n",
                    renderer.aoRadiusWC(params), params.ao.radius > 0 ? "--ao-radius" : "auto",

@@ -142,6 +142,7 @@ int cmdView(int argc, const char** argv) {
   }, {}, hooks);
   const tensor::GlyphSet& glyphs = session.glyphs();  // counts and box: the records are dropped
   v.magnitudes = session.magnitudes();
+  v.sizing = sizingParams(o.field, session.scene());  // a stress field's defaults are known now
   // As render frames it: the sample positions (tensor::framingBox) or the
   // camera the flags give, with room for a legend shown from the start.
   const RenderSession::Frame first = session.frame(o);

@@ -116,6 +116,7 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
         if (!m) throw UsageError(std::string("--magnitude: unknown mapping \"") + a[1] + "\"; choose " +
                                  tensor::kMagnitudeNames);
         sizing.magnitude = *m;
+        magnitudeGiven = true;
       });
   ap.arg("--lambda0 L").help("--magnitude log: the knee; shape: the size every glyph gets (default: the median "
                              "|eigenvalue|)")

@@ -19,6 +19,7 @@ struct FieldFlags {
   std::optional<tensor::ScaleMode> scaleMode;
   tensor::ScaleParams sizing;  // --magnitude, --lambda0, --clamp; mode and factor from the two above
   bool maskMinGiven = false;   // --mask-min needs --mask
+  bool magnitudeGiven = false;      // --magnitude: a stress field's default does not apply
   bool sizesFromSelection = false;  // --sizes-from selection: ranges from the selection, not the whole field
 
   // --array --layout --frame --mask --mask-min --confidence-min --slice --stride

@@ -90,7 +90,10 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
   ap.arg("--ortho HEIGHT").help("orthographic, view height in world units").range(ranges::kPositiveFloat)
       .action([&](Args a) { o.ortho = parseDouble("--ortho", a[1]); });
   ap.setGroup("colour");
-  ap.arg("--color MODE").help("dec, fa, md, cl, cp or sign (normal stress: orange tension, blue compression)").action([&](Args a) { o.color = a[1]; });
+  ap.arg("--color MODE").help("dec, fa, md, cl, cp or sign (normal stress: orange tension, blue compression)").action([&](Args a) {
+    o.color = a[1];
+    o.look.colorGiven = true;
+  });
   ap.arg("--background R G B A").help("background colour (default 0.08 0.08 0.1 1)").range(ranges::kUnit)
       .action([&](Args a) {
         for (int k = 0; k < 4; ++k) o.background[k] = float(parseDouble(a[0], a[1 + k]));

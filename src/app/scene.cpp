@@ -102,13 +102,24 @@ void attachWholeField(Scene& s, const FieldFlags& flags, const std::string& inpu
   });
 }
 
+void decideStressDefaults(Scene& s, const tensor::FieldStats& stats) {
+  if (s.preferredLook) return;
+  s.stress = stressDefaults(s.field, stats);
+  if (s.stress) s.preferredLook = stressLook();
+}
+
+tensor::ScaleParams sizingParams(const FieldFlags& flags, const Scene& s) {
+  tensor::ScaleParams p = flags.scaleParams();
+  if (s.stress && !flags.magnitudeGiven) p.magnitude = kStressMagnitude;
+  return p;
+}
+
 tensor::FieldStats sizingStats(const Scene& s, const tensor::GlyphSet& glyphs) {
   return s.wholeField ? s.wholeField->stats : tensor::fieldStats(glyphs);
 }
 
-tensor::MagnitudeSample sizingSample(const Scene& s, const tensor::GlyphSet& glyphs) {
-  if (s.wholeField) return tensor::magnitudeSample(s.wholeField->stats, s.wholeField->sampleSpacing, s.sizesFrom);
-  return tensor::magnitudeSample(tensor::fieldStats(glyphs), s.field.sampleSpacing, s.sizesFrom);
+tensor::MagnitudeSample sizingSample(const Scene& s, const tensor::FieldStats& stats) {
+  return tensor::magnitudeSample(stats, s.wholeField ? s.wholeField->sampleSpacing : s.field.sampleSpacing, s.sizesFrom);
 }
 
 UsageError sliceUsageError(const io::SliceOutOfRange& e, const std::string& input) {

@@ -33,6 +33,7 @@ void FieldStats::add(const GlyphRecord& g) {
   ++nonZero;
   indefinite += l[0] > 0.0 && l[2] < 0.0;
   negativeDefinite += l[0] < 0.0;
+  notPositive += l[2] <= 0.0;
   maxAbs = std::max(maxAbs, m);
   for (int k = 0; k < 3; ++k) {
     principalMin[k] = std::min(principalMin[k], l[k]);
@@ -60,6 +61,7 @@ void FieldStats::combine(const FieldStats& o) {
   nonZero += o.nonZero;
   indefinite += o.indefinite;
   negativeDefinite += o.negativeDefinite;
+  notPositive += o.notPositive;
   maxAbs = std::max(maxAbs, o.maxAbs);
   for (int k = 0; k < 3; ++k) {
     principalMin[k] = std::min(principalMin[k], o.principalMin[k]);

@@ -33,6 +33,7 @@ struct FieldStats {
   std::uint64_t nonZero = 0;           // with a size
   std::uint64_t indefinite = 0;        // eigenvalues of both signs (tension and compression)
   std::uint64_t negativeDefinite = 0;  // every eigenvalue negative
+  std::uint64_t notPositive = 0;       // the least eigenvalue <= 0: not positive definite
   double maxAbs = 0;                   // the largest |eigenvalue|
   // Of the non-zero tensors: each principal value (descending) and von Mises
   // sqrt(((s1-s2)^2 + (s2-s3)^2 + (s3-s1)^2) / 2); +inf..-inf when none.
@@ -44,8 +45,10 @@ struct FieldStats {
   void combine(const FieldStats& o);
   // The sketch's magnitudes, sorted ascending (all non-zero).
   std::vector<double> sortedMagnitudes() const;
-  // More than half of the non-zero tensors have eigenvalues of both signs.
-  bool mostlyIndefinite() const { return nonZero > 0 && 2 * indefinite > nonZero; }
+  // More than half of the non-zero tensors are not positive definite, as a
+  // diffusion tensor is: compression, tension with compression, or a zero
+  // principal value (plane stress).
+  bool mostlyNotPositive() const { return nonZero > 0 && 2 * notPositive > nonZero; }
 
  private:
   static constexpr double kInf = std::numeric_limits<double>::infinity();
