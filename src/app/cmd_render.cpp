@@ -86,13 +86,16 @@ int cmdRender(int argc, const char** argv) {
                  "larger --scale%s draws them (--scale alone is a factor on the automatic size)\n",
                  typicalPx, cameraFlags.c_str());
   }
-  // The clamp the user did not ask for must not silently flatten the sizes.
-  if (!o.field.sizing.clampSpacings && fr.sized.clampedFraction > kClampWarnShare) {
+  // The clamp the user did not ask for must not silently flatten the sizes
+  // a --scale or --scale-mode asked for (on the defaults it is the design:
+  // info and --verbose give its share).
+  const bool sizeAsked = o.field.scale || o.field.scaleMode;
+  if (sizeAsked && !o.field.sizing.clampSpacings && fr.sized.clampedFraction > kClampWarnShare) {
     if (sink) sink({}, 0, 0, {});
     std::fprintf(stderr,
-                 "tensorglyph render: the default clamp (%g sample spacings across) shrinks %.0f%% of the glyphs, so "
-                 "their size no longer shows their magnitude; --clamp 0 turns it off (or give a larger --clamp, a "
-                 "smaller --scale, --magnitude log)\n",
+                 "tensorglyph render: the default clamp (%g sample spacings across) shrinks %.0f%% of the glyphs at "
+                 "this size, so their size no longer shows their magnitude; --clamp 0 turns it off (or give a larger "
+                 "--clamp, a smaller --scale, --magnitude log)\n",
                  tensor::ScaleParams::kDefaultClamp, 100.0 * fr.sized.clampedFraction);
   }
   // Glyphs around the camera are not seen: each is drawn from outside.

@@ -82,7 +82,8 @@ TEST(Newcomer, HelpNamesThePercentileInfoReports) {
   const std::string pct = info.out.substr(at + key.size(), info.out.find('%', at) - at - key.size());
   const CmdResult help = run("render --help");
   ASSERT_EQ(help.code, 0);
-  EXPECT_NE(help.out.find("spacing (default: " + pct + "th percentile"), std::string::npos) << pct << "\n" << help.out;
+  EXPECT_NE(help.out.find("spacing: the glyph at the " + pct + "th percentile"), std::string::npos) << pct << "\n"
+                                                                                                    << help.out;
   EXPECT_NE(help.out.find("the " + pct + "th-percentile glyph's"), std::string::npos) << pct << "\n" << help.out;
   EXPECT_EQ(help.out.find("99th"), std::string::npos);
 }

@@ -136,8 +136,8 @@ TEST(Sizes, ScaleIsRelativeAloneAndParaViewsDiameterWhenAbsolute) {
 }
 
 // Under a pixel (not only under a quarter) and a default clamp that shrinks
-// more than 5% of the glyphs each get one stderr line naming the option;
-// the defaults draw neither.
+// more than 5% of the glyphs at the size a --scale asked for each get one
+// stderr line naming the option; the defaults draw neither.
 TEST(Sizes, SubPixelAndClampWarnings) {
   const std::string in = pointLoad().string();
   const std::string render = "render " + in + " -o " + (dir() / "w.png").string() + " --size 96 64";
@@ -158,7 +158,7 @@ TEST(Sizes, SubPixelAndClampWarnings) {
   const CmdResult clamped = run(render + " --scale 4 --magnitude linear");
   ASSERT_EQ(clamped.code, 0) << clamped.err;
   ASSERT_TRUE(std::regex_search(clamped.err, m, std::regex("the default clamp \\(2 sample spacings across\\) shrinks "
-                                                           "([0-9]+)% of the glyphs")))
+                                                           "([0-9]+)% of the glyphs at this size")))
       << clamped.err;
   EXPECT_GT(std::stoi(m[1]), 5);
   EXPECT_NE(clamped.err.find("--clamp 0"), std::string::npos) << clamped.err;
