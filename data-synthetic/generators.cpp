@@ -134,6 +134,43 @@ io::TensorField boussinesq(int n, double nu) {
   return f;
 }
 
+void kirschStress(double x, double y, double s6[6]) {
+  constexpr double S = 100.0, a = 1.0;
+  const double r2 = x * x + y * y, q2 = a * a / r2, q4 = q2 * q2;
+  const double th = std::atan2(y, x), c2 = std::cos(2.0 * th), s2 = std::sin(2.0 * th);
+  const double srr = 0.5 * S * (1.0 - q2) + 0.5 * S * (1.0 - 4.0 * q2 + 3.0 * q4) * c2;
+  const double stt = 0.5 * S * (1.0 + q2) - 0.5 * S * (1.0 + 3.0 * q4) * c2;
+  const double srt = -0.5 * S * (1.0 + 2.0 * q2 - 3.0 * q4) * s2;
+  const double c = std::cos(th), s = std::sin(th);
+  const double sxx = srr * c * c + stt * s * s - 2.0 * srt * s * c;
+  const double syy = srr * s * s + stt * c * c + 2.0 * srt * s * c;
+  const double sxy = (srr - stt) * s * c + srt * (c * c - s * s);
+  const double out[6] = {sxx, sxy, 0.0, syy, 0.0, 0.0};
+  for (int k = 0; k < 6; ++k) s6[k] = out[k];
+}
+
+io::TensorField kirschPlate(int n) {
+  io::TensorField f;
+  io::GridInfo g;
+  g.dims[0] = g.dims[1] = n;
+  g.dims[2] = 1;
+  const double h = 8.0 / n;
+  for (int k = 0; k < 3; ++k) g.spacing[k] = h;
+  g.origin[0] = g.origin[1] = -4.0 + 0.5 * h;
+  f.grid = g;
+  f.sampleSpacing = h;
+  f.description = "Kirsch plate with a hole";
+  std::uint32_t id = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i, ++id) {
+      const double p[3] = {g.origin[0] + i * h, g.origin[1] + j * h, 0.0};
+      double s[6] = {0, 0, 0, 0, 0, 0};
+      if (p[0] * p[0] + p[1] * p[1] >= 1.0) kirschStress(p[0], p[1], s);
+      f.addSym(id, p, s);
+    }
+  return f;
+}
+
 io::TensorField extremesGallery(double eigenScale, double positionScale) {
   io::TensorField f;
   f.description = "extremes gallery";

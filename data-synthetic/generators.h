@@ -24,6 +24,14 @@ io::TensorField boussinesq(int n, double nu);
 // The same stress at one point (x, y, z), z > 0; row-major 3x3.
 void boussinesqStress(double x, double y, double z, double nu, double out[9]);
 
+// Kirsch's plate with a circular hole of radius a = 1 under uniaxial tension
+// S = 100 along x (plane stress; Timoshenko & Goodier, §35), on an n x n
+// grid over [-4, 4]^2 in the plane z = 0: zero tensors inside the hole. The
+// hoop stress reaches 3S = 300 at (0, ±1) and -S at (±1, 0).
+io::TensorField kirschPlate(int n);
+// The same stress at one point (x, y) with r >= a; xx xy xz yy yz zz.
+void kirschStress(double x, double y, double out6[6]);
+
 // A row per family: needles, disks, spheres, eigenvalue ratios 1e1..1e6, zero,
 // negative and all-negative eigenvalues, in several orientations. Eigenvalues
 // are multiplied by eigenScale and positions by positionScale.

@@ -145,7 +145,9 @@ app::Scene loadSource(const Source& s, const app::RenderOptions& o) {
   if (!s.tensorsRef) {
     io::ReadOptions read = o.field.read;
     read.progress = s.progress->sink();
-    return app::loadScene(s.path, read);
+    app::Scene scene = app::loadScene(s.path, read);
+    app::attachWholeField(scene, o.field, s.path, read);
+    return scene;
   }
   app::Scene scene;
   const io::ArrayRef& t = *s.tensorsRef;
@@ -157,6 +159,11 @@ app::Scene loadSource(const Source& s, const app::RenderOptions& o) {
                                       o.field.read.selection);
   }
   app::checkLoaded(scene.field, o.field.read);
+  app::attachWholeField(scene, o.field, [&] {
+    const io::Selection all;
+    return s.positionsRef ? io::fieldFromPoints(t, s.layout, *s.positionsRef, all)
+                          : io::fieldFromVolume(t, s.layout, s.affine->data(), s.frame, all);
+  });
   return scene;
 }
 

@@ -199,8 +199,8 @@ int benchAccuracy(int argc, const char** argv) {
   // Every error is a share of these pixels: with none, each row would claim 0%.
   if (refPixels == 0)
     throw io::InputError("bench accuracy: " + scene.field.path +
-                         ": no glyph covers a pixel at this scale and size, so there is nothing to compare (--scale "
-                         "given alone is in world units per eigenvalue unit; try --scale-mode spacing)");
+                         ": no glyph covers a pixel at this scale and size, so there is nothing to compare (try a "
+                         "larger --scale, or --scale-mode spacing)");
   std::fprintf(stderr, "bench accuracy: %s, %zu glyphs, gamma %g, %dx%d, %s (%s); reference %.0f ms, %zu glyph pixels\n",
                scene.field.path.c_str(), glyphs.glyphs.size(), o.gamma, o.width, o.height, ctx->backendName(),
                ctx->describe().c_str(), refMs, refPixels);

@@ -32,17 +32,22 @@ int cmdInfo(int argc, const char** argv) {
   checkOptionsApply(input, flags.read);
   TerminalProgress progress(quiet);
   flags.read.progress = progress.sink();
-  const io::TensorField f = [&] {
+  Scene scene;
+  scene.field = [&] {
     try {
       return io::readTensorField(input, flags.read);
     } catch (const io::SliceOutOfRange& e) {
       throw sliceUsageError(e, input);
     }
   }();
+  const io::TensorField& f = scene.field;
   checkLoaded(f, flags.read);
   if (flags.read.progress) flags.read.progress({}, 0, 0, {});
   reportLoad(f, "info");
   const tensor::GlyphSet g = tensor::buildGlyphs(f.positions, f.tensors, f.ids, 0, flags.glyph, flags.read.progress);
+  attachWholeField(scene, flags, input, flags.read);
+  const tensor::FieldStats stats = sizingStats(scene, g);
+  decideStressDefaults(scene, stats);
   progress.finish();
   std::size_t negDef = 0, indefinite = 0, zero = 0;
   constexpr double inf = std::numeric_limits<double>::infinity();
@@ -97,12 +102,21 @@ int cmdInfo(int argc, const char** argv) {
               g.glyphs.size() - negDef - indefinite - zero, indefinite, negDef, zero);
   if (!g.glyphs.empty()) {
     for (int k = 0; k < 3; ++k) std::printf("eigenvalue %d: [%g, %g]\n", k + 1, lmin[k], lmax[k]);
-    std::printf("FA: [%g, %g]\nMD: [%g, %g]\n", faMin, faMax, g.mdMin, g.mdMax);
+    if (scene.stress) {
+      // Of the field the sizes come from (the whole one unless --sizes-from selection).
+      const char* from = scene.wholeField ? " (whole field)" : "";
+      for (int k = 0; k < 3; ++k)
+        std::printf("principal stress %d%s: [%g, %g]\n", k + 1, from, stats.principalMin[k], stats.principalMax[k]);
+      std::printf("von Mises%s: [%g, %g]\n", from, stats.vonMisesMin, stats.vonMisesMax);
+      std::printf("%s\n", stressDefaultsLine(*scene.stress).c_str());
+    } else {
+      std::printf("FA: [%g, %g]\nMD: [%g, %g]\n", faMin, faMax, g.mdMin, g.mdMax);
+    }
     std::printf("bounds: [%g %g %g] - [%g %g %g]\n", g.boundsMinWC.x, g.boundsMinWC.y, g.boundsMinWC.z,
                 g.boundsMaxWC.x, g.boundsMaxWC.y, g.boundsMaxWC.z);
     // What `render` with the same flags would choose, and why.
     const tensor::ResolvedScale sized =
-        tensor::resolveScale(flags.scaleParams(), tensor::sampleMagnitudes(g, f.sampleSpacing));
+        tensor::resolveScale(sizingParams(flags, scene), sizingSample(scene, stats));
     const tensor::FramingBox frame = tensor::framingBox(g, !f.grid, sized.typicalRadiusWC);
     std::printf("size: %s\nframing: %s\n", sized.why.c_str(), frame.why.c_str());
   }

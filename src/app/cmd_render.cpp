@@ -24,6 +24,14 @@
 #include "render/mesh_item.h"
 
 namespace tg::app {
+namespace {
+
+// Below a pixel the typical glyph is a speck or nothing; a clamp that
+// shrinks more than this share of the glyphs has replaced their sizes.
+constexpr double kSubPixelGlyph = 1.0;
+constexpr double kClampWarnShare = 0.05;
+
+}  // namespace
 
 int cmdRender(int argc, const char** argv) {
   RenderOptions o;
@@ -37,6 +45,7 @@ int cmdRender(int argc, const char** argv) {
   read.progress = sink;
   const auto t0 = Clock::now();
   Scene loaded = loadScene(o.input, read);
+  attachWholeField(loaded, o.field, o.input, read);
   const double loadMs = msSince(t0);
   if (sink) sink({}, 0, 0, {});  // before the load's warnings
   reportLoad(loaded.field, "render");
@@ -55,8 +64,8 @@ int cmdRender(int argc, const char** argv) {
   render::GlyphRenderer& renderer = session.renderer();
   gl::Context& ctx = session.context();
   const std::size_t glyphCount = session.glyphCount();
-  // A blank image needs its reason: --scale alone is absolute (world units
-  // per eigenvalue unit), and a DTI field's eigenvalues are about 1e-3.
+  // A blank image needs its reason: an absolute --scale on a DTI field
+  // (eigenvalues about 1e-3), a far camera; glyphs under a pixel are lost.
   // Measured at the depth of the glyphs' box centre, not of the look-at
   // point: an --eye or --look-at far from the glyphs makes the two differ.
   const glm::dvec3 centre = 0.5 * (fr.framing.lo + fr.framing.hi);
@@ -70,12 +79,24 @@ int cmdRender(int argc, const char** argv) {
   // --ortho or --fov.
   const std::string cameraFlags = std::string(o.eye ? ", a nearer --eye" : "") + (o.ortho ? ", a smaller --ortho" : "") +
                                   (o.fov ? ", a smaller --fov" : "");
-  if (typicalPx < 0.25) {
+  if (typicalPx < kSubPixelGlyph) {
     if (sink) sink({}, 0, 0, {});
     std::fprintf(stderr,
                  "tensorglyph render: the typical glyph is %.2g pixels across, so the image shows almost nothing; a "
-                 "larger --scale%s draws them (given alone, --scale is world units per eigenvalue unit)\n",
+                 "larger --scale%s draws them (--scale alone is a factor on the automatic size)\n",
                  typicalPx, cameraFlags.c_str());
+  }
+  // The clamp the user did not ask for must not silently flatten the sizes
+  // a --scale or --scale-mode asked for (on the defaults it is the design:
+  // info and --verbose give its share).
+  const bool sizeAsked = o.field.scale || o.field.scaleMode;
+  if (sizeAsked && !o.field.sizing.clampSpacings && fr.sized.clampedFraction > kClampWarnShare) {
+    if (sink) sink({}, 0, 0, {});
+    std::fprintf(stderr,
+                 "tensorglyph render: the default clamp (%g sample spacings across) shrinks %.0f%% of the glyphs at "
+                 "this size, so their size no longer shows their magnitude; --clamp 0 turns it off (or give a larger "
+                 "--clamp, a smaller --scale, --magnitude log)\n",
+                 tensor::ScaleParams::kDefaultClamp, 100.0 * fr.sized.clampedFraction);
   }
   // Glyphs around the camera are not seen: each is drawn from outside.
   if (typicalPx > 100.0 * std::max(o.width, o.height)) {
@@ -125,7 +146,7 @@ int cmdRender(int argc, const char** argv) {
   const std::uint64_t drawn = renderer.drawnGlyphs();
   // --fa-min is a uniform, so a threshold above every glyph's FA cannot fail
   // the load; an empty image still needs its reason.
-  if (drawn == 0 && glyphCount > 0 && !(typicalPx < 0.25)) {
+  if (drawn == 0 && glyphCount > 0 && !(typicalPx < kSubPixelGlyph)) {
     if (sink) sink({}, 0, 0, {});
     const std::string why = params.faMin > 0 ? "below --fa-min " + formatNumber(params.faMin) + " or outside" : "outside";
     const std::string flags = std::string(o.eye ? " --eye" : "") + (o.lookAt ? " --look-at" : "") + (o.up ? " --up" : "") +
@@ -162,6 +183,7 @@ int cmdRender(int argc, const char** argv) {
                                 : scene.preferredCamera ? std::string("the built-in scene's own view")
                                                         : fr.framing.why;
     std::fprintf(stderr, "  size: %s\n  framing: %s\n", fr.sized.why.c_str(), framing.c_str());
+    if (scene.stress) std::fprintf(stderr, "  %s\n", stressDefaultsLine(*scene.stress).c_str());
     if (params.ao.enabled)
       std::fprintf(stderr, "  ambient occlusion: radius %.6g (%s), strength %.3g, %d samples\n",
                    renderer.aoRadiusWC(params), params.ao.radius > 0 ? "--ao-radius" : "auto",

@@ -20,7 +20,7 @@
 namespace tg::app {
 namespace {
 
-constexpr const char* kKinds = "helix, boussinesq, extremes, extremes-tiny, extremes-huge, random";
+constexpr const char* kKinds = "helix, boussinesq, kirsch, extremes, extremes-tiny, extremes-huge, random";
 
 // What --n means for each KIND and the values it takes: the helix's grid
 // side (its depth half that), the point load's cube side, the random field's
@@ -34,6 +34,7 @@ struct KindSize {
 constexpr KindSize kSizes[] = {
     {"helix", "the grid side", 2, 256, 32},
     {"boussinesq", "the grid side", 2, 512, 16},
+    {"kirsch", "the grid side", 8, 4096, 64},
     {"extremes", "", 54, 54, 54},
     {"extremes-tiny", "", 54, 54, 54},
     {"extremes-huge", "", 54, 54, 54},
@@ -50,6 +51,7 @@ std::uint64_t tensorsOf(const KindSize& s, long long n) {
   const auto side = std::uint64_t(n);
   if (std::string_view(s.kind) == "helix") return side * side * std::uint64_t(std::max(2LL, n / 2));
   if (std::string_view(s.kind) == "boussinesq") return side * side * side;
+  if (std::string_view(s.kind) == "kirsch") return side * side;
   return side;
 }
 
@@ -62,7 +64,7 @@ bool endsWith(const std::string& s, const char* suffix) {
 // generated: a point set has no grid for .nrrd or .vti, and only random
 // streams .nhdr.
 void checkSynthOutput(const std::string& kind, const std::string& out) {
-  const bool gridded = kind == "helix" || kind == "boussinesq";
+  const bool gridded = kind == "helix" || kind == "boussinesq" || kind == "kirsch";
   for (const char* ext : {".vtk", ".vtu", ".vtp"})
     if (endsWith(out, ext)) return;
   if (gridded && (endsWith(out, ".vti") || endsWith(out, ".nrrd"))) return;
@@ -149,7 +151,8 @@ int cmdSynth(int argc, const char** argv) {
     kind = a[1];
   });
   ap.arg("-o OUT").help("output file").action([&](Args a) { out = a[1]; });
-  ap.arg("--n N").help("size: grid side (helix 2..256, default 32; boussinesq 2..512, default 16) or tensor count "
+  ap.arg("--n N").help("size: grid side (helix 2..256, default 32; boussinesq 2..512, default 16; kirsch 8..4096, default "
+                       "64) or tensor count "
                        "(random 1..4e9, default 10000; beyond memory only as .nhdr)").action([&](Args a) {
     n = parseInt("--n", a[1]);
   });
@@ -176,6 +179,8 @@ int cmdSynth(int argc, const char** argv) {
     writeField(h.field, out, h.measurementFrame, sink);
   } else if (kind == "boussinesq") {
     writeField(synth::boussinesq(int(size), 0.3), out, nullptr, sink);
+  } else if (kind == "kirsch") {
+    writeField(synth::kirschPlate(int(size)), out, nullptr, sink);
   } else if (kind == "extremes") {
     writeField(synth::extremesGallery(1.0, 1.0), out, nullptr, sink);
   } else if (kind == "extremes-tiny") {

@@ -107,6 +107,7 @@ int cmdView(int argc, const char** argv) {
   for (const NamedPath& m : o.mesh.inputs()) inputs.push_back(m);
   refuseOutputsOverInputs(scriptShots, inputs);
   Scene scene = loadScene(o.input, o.field.read);
+  attachWholeField(scene, o.field, o.input, o.field.read);
   reportLoad(scene.field, "view");
   std::vector<io::MeshData> meshes = o.mesh.read(o.input, "view");
   checkScriptMeshes(script, meshes.size(), o.script);
@@ -140,6 +141,7 @@ int cmdView(int argc, const char** argv) {
   }, {}, hooks);
   const tensor::GlyphSet& glyphs = session.glyphs();  // counts and box: the records are dropped
   v.magnitudes = session.magnitudes();
+  v.sizing = sizingParams(o.field, session.scene());  // a stress field's defaults are known now
   // As render frames it: the sample positions (tensor::framingBox) or the
   // camera the flags give, with room for a legend shown from the start.
   const RenderSession::Frame first = session.frame(o);

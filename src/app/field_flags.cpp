@@ -81,15 +81,27 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
     ap.setGroup(group);
     return;
   }
+  // Reloads: the whole field is read again for it.
+  ap.arg("--sizes-from W").help("field (default): sizes, the magnitude mapping and the clamp from the whole field, "
+                                "so a tensor is drawn at one size on every slice, ROI or stride; selection: from "
+                                "the selected tensors only")
+      .action([&](Args a) {
+        const std::string w = a[1];
+        if (w != "field" && w != "selection")
+          throw UsageError("--sizes-from: unknown source \"" + w + "\"; choose field or selection");
+        sizesFromSelection = w == "selection";
+      });
   // Sizing is a frame parameter: the glyph records hold eigenvalues, not sizes.
   const bool reloads = ap.reloadsDefault();
   ap.setReloadsDefault(false);
-  ap.arg("--scale S").help("with --scale-mode absolute (the default when given alone): world units per eigenvalue "
-                           "unit; else a factor on the mode's size")
+  ap.arg("--scale S").help("a factor on the automatic size (--scale 2: glyphs twice as big); with --scale-mode "
+                           "absolute, the glyph diameter in world units per eigenvalue unit, as ParaView's "
+                           "TensorGlyph ScaleFactor (Teem's tend glyph -gsc is S/2)")
       .range(ranges::kPositiveFloat).action([&](Args a) { scale = parseDouble("--scale", a[1]); });
-  ap.arg("--scale-mode M").help("absolute, max (largest eigenvalue -> S sample spacings across) or spacing (default: " +
-                                std::to_string(std::lround(100 * tensor::ScaleParams{}.percentile)) + "th" +
-                                " percentile of the non-zero tensors -> S sample spacings)")
+  ap.arg("--scale-mode M").help("spacing (the default), max or absolute: spacing: the glyph at the " +
+                                std::to_string(std::lround(100 * tensor::ScaleParams{}.percentile)) +
+                                "th percentile of the whole field's non-zero tensors is S sample spacings across; "
+                                "max: the largest is; absolute: S is the diameter per eigenvalue unit")
       .action([&](Args a) {
         const std::string m = a[1];
         if (m == "absolute") scaleMode = tensor::ScaleMode::Absolute;
@@ -104,6 +116,7 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
         if (!m) throw UsageError(std::string("--magnitude: unknown mapping \"") + a[1] + "\"; choose " +
                                  tensor::kMagnitudeNames);
         sizing.magnitude = *m;
+        magnitudeGiven = true;
       });
   ap.arg("--lambda0 L").help("--magnitude log: the knee; shape: the size every glyph gets (default: the median "
                              "|eigenvalue|)")
@@ -133,7 +146,7 @@ double FieldFlags::scaleFor(const tensor::GlyphSet& set, double spacing) const {
 
 tensor::ScaleParams FieldFlags::scaleParams() const {
   tensor::ScaleParams p = sizing;
-  p.mode = scaleMode.value_or(scale ? tensor::ScaleMode::Absolute : tensor::ScaleMode::Spacing);
+  p.mode = scaleMode.value_or(tensor::ScaleMode::Spacing);
   p.factor = scale.value_or(1.0);
   return p;
 }

@@ -19,6 +19,8 @@ struct FieldFlags {
   std::optional<tensor::ScaleMode> scaleMode;
   tensor::ScaleParams sizing;  // --magnitude, --lambda0, --clamp; mode and factor from the two above
   bool maskMinGiven = false;   // --mask-min needs --mask
+  bool magnitudeGiven = false;      // --magnitude: a stress field's default does not apply
+  bool sizesFromSelection = false;  // --sizes-from selection: ranges from the selection, not the whole field
 
   // --array --layout --frame --mask --mask-min --confidence-min --slice --stride
   // --roi --cl-min --cp-min --min-eigenvalue, and with `scaling` also
@@ -26,8 +28,8 @@ struct FieldFlags {
   void addTo(OptionTable& ap, bool scaling);
   // Throws UsageError; called before anything is loaded.
   void validate() const;
-  // World units per eigenvalue unit. --scale alone is absolute (as Teem's
-  // -gsc); no flag at all means the spacing mode with factor 1.
+  // World units per eigenvalue unit. --scale alone is a factor on the
+  // spacing mode's size; no flag at all means that mode with factor 1.
   double scaleFor(const tensor::GlyphSet& set, double sampleSpacing) const;
   // The whole choice: mode, factor, magnitude mapping and clamp.
   tensor::ScaleParams scaleParams() const;

@@ -33,6 +33,7 @@ void LookFlags::validate(bool shadows, bool ao, bool outlines, bool legend) cons
 
 void LookFlags::apply(const SceneLook& look, render::FrameParams& p, int imageHeight) const {
   if (!glyphGiven) p.glyph = look.glyph;
+  if (!colorGiven && look.color) p.color = *look.color;
   p.shadow.enabled = p.shadow.enabled || (look.shadows && !noShadows);
   p.ao.enabled = p.ao.enabled || (look.ao && !noAo);
   p.outline.enabled = p.outline.enabled || (look.outlines && !noOutlines);

@@ -4,7 +4,10 @@
 // applies where the command line is silent; --glyph chooses the kind, and
 // --no-shadows, --no-ao, --no-outlines and --no-legend turn an effect off.
 // A field read from a file has no preferred look: every effect is off unless
-// asked for (docs/guide.md, "Depth cues and legends", says why).
+// asked for (docs/guide.md, "Depth cues and legends", says why), but for a
+// stress field's (app/stress_defaults.h).
+#include <optional>
+
 #include "app/option_table.h"
 
 #include "render/frame_params.h"
@@ -19,10 +22,12 @@ struct SceneLook {
   render::GlyphKind glyph = render::GlyphKind::Superquadric;
   bool shadows = true, ao = true, outlines = false, legend = true;
   int legendMinHeight = 480;  // pixels
+  std::optional<render::ColorMode> color;  // where --color is silent; none: the option's default
 };
 
 struct LookFlags {
   bool glyphGiven = false;  // set by the command's own --glyph action
+  bool colorGiven = false;  // and --color's
   bool noShadows = false, noAo = false, noOutlines = false, noLegend = false;
 
   void addTo(OptionTable& ap);

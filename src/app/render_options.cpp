@@ -104,6 +104,7 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
       .action([&](Args a) {
         o.color = a[1];
         o.colorGiven = true;
+        o.look.colorGiven = true;
       });
   ap.arg("--color-array NAME").reloads().help("colour by a scalar given beside the tensors: a VTK input's point "
                                                "array NAME, or a volume input's scalar volume file NAME on its grid "
@@ -111,6 +112,7 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
       .action([&](Args a) {
         o.field.read.colorArray = a[1];
         if (!o.colorGiven) o.color = "array";
+        o.look.colorGiven = true;  // a stress field's default sign colour must not replace it
       });
   ap.arg("--colormap NAME").help("the scalar's map: viridis, gray or diverging (blue, white at 0, orange); default "
                                  "diverging for pressure, s1, s2, s3 and trace, else viridis")

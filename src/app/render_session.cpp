@@ -43,8 +43,10 @@ RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io
   const std::optional<ColorValues> colors = colorArrayValues(o.field.read.colorArray, scene_.field, glyphs_);
   buildMs_ = msSince(t0);
   if (progress) progress("preparing", 0, 0, {});
-  magnitudes_ = tensor::sampleMagnitudes(glyphs_, scene_.field.sampleSpacing);
-  const tensor::ResolvedScale firstScale = tensor::resolveScale(o.field.scaleParams(), magnitudes_);
+  const tensor::FieldStats stats = sizingStats(scene_, glyphs_);
+  magnitudes_ = sizingSample(scene_, stats);
+  decideStressDefaults(scene_, stats);
+  const tensor::ResolvedScale firstScale = tensor::resolveScale(sizingParams(o.field, scene_), magnitudes_);
   const Boxes first = boxes(firstScale);
   // The records go after the upload: a legend shown now needs its cells first.
   if (!keepGlyphs && leavesLegendRoom(o, frameParams(o, scene_, firstScale))) cells();
@@ -145,7 +147,7 @@ std::pair<glm::dvec3, glm::dvec3> RenderSession::depthBoxWC(const render::FrameP
 
 RenderSession::Frame RenderSession::frame(const RenderOptions& o) const {
   Frame f;
-  f.sized = tensor::resolveScale(o.field.scaleParams(), magnitudes_);
+  f.sized = tensor::resolveScale(sizingParams(o.field, scene_), magnitudes_);
   const render::FrameParams& params = f.params = frameParams(o, scene_, f.sized);
 
   const Boxes b = boxes(f.sized);

@@ -55,6 +55,73 @@ Scene loadScene(const std::string& input, const io::ReadOptions& opt) {
   return s;
 }
 
+namespace {
+
+// The options that left tensors of the loaded field out, " --slice --mask": "" when none did.
+std::string leftOutBy(const io::TensorField& f, const FieldFlags& flags) {
+  const io::Selection& sel = flags.read.selection;
+  std::string by = std::string(sel.slice ? " --slice" : "") + (sel.stride > 1 ? " --stride" : "") +
+                   (sel.roiWC ? " --roi" : "");
+  if (!sel.maskPath.empty() && f.masked > 0) by += " --mask";
+  if (flags.glyph.clMin > 0) by += " --cl-min";
+  if (flags.glyph.cpMin > 0) by += " --cp-min";
+  return f.unselected > 0 || !by.empty() ? by : std::string();
+}
+
+}  // namespace
+
+void attachWholeField(Scene& s, const FieldFlags& flags, const std::function<io::TensorField()>& whole) {
+  s.wholeField.reset();
+  const std::string by = leftOutBy(s.field, flags);
+  if (by.empty()) {
+    s.sizesFrom = "the whole field (" + std::to_string(s.field.size()) + " tensors)";
+    return;
+  }
+  if (flags.sizesFromSelection) {
+    s.sizesFrom = "the selection (" + by.substr(1) + "; --sizes-from selection)";
+    return;
+  }
+  io::TensorField f = whole();
+  // The shape filters are a selection too: every tensor counts.
+  tensor::GlyphOptions g = flags.glyph;
+  g.clMin = g.cpMin = 0;
+  const tensor::GlyphSet set = tensor::buildGlyphs(f.positions, f.tensors, f.ids, 0, g);
+  s.wholeField = WholeField{tensor::fieldStats(set), f.sampleSpacing};
+  s.sizesFrom = "the whole field (" + std::to_string(set.glyphs.size()) + " tensors, before" + by +
+                "; --sizes-from selection for the selection's own)";
+}
+
+void attachWholeField(Scene& s, const FieldFlags& flags, const std::string& input, io::ReadOptions read) {
+  attachWholeField(s, flags, [&] {
+    read.selection.slice.reset();
+    read.selection.stride = 1;
+    read.selection.roiWC.reset();
+    read.selection.maskPath.clear();
+    if (input.empty()) return defaultScene().field;
+    return io::readTensorField(input, read);
+  });
+}
+
+void decideStressDefaults(Scene& s, const tensor::FieldStats& stats) {
+  if (s.preferredLook) return;
+  s.stress = stressDefaults(s.field, stats);
+  if (s.stress) s.preferredLook = stressLook();
+}
+
+tensor::ScaleParams sizingParams(const FieldFlags& flags, const Scene& s) {
+  tensor::ScaleParams p = flags.scaleParams();
+  if (s.stress && !flags.magnitudeGiven) p.magnitude = kStressMagnitude;
+  return p;
+}
+
+tensor::FieldStats sizingStats(const Scene& s, const tensor::GlyphSet& glyphs) {
+  return s.wholeField ? s.wholeField->stats : tensor::fieldStats(glyphs);
+}
+
+tensor::MagnitudeSample sizingSample(const Scene& s, const tensor::FieldStats& stats) {
+  return tensor::magnitudeSample(stats, s.wholeField ? s.wholeField->sampleSpacing : s.field.sampleSpacing, s.sizesFrom);
+}
+
 UsageError sliceUsageError(const io::SliceOutOfRange& e, const std::string& input) {
   // Appended, not `":" + std::to_string(...)`: GCC 12 warns falsely (-Wrestrict).
   std::string value = std::string(1, "xyz"[e.spec.axis]) + ":" + std::to_string(e.spec.index);

@@ -1,18 +1,35 @@
 #pragma once
 // What a render or info command works on: a loaded (or built-in) field.
+#include <functional>
 #include <optional>
 #include <string>
 
 #include "app/cli_values.h"
 #include "app/look_flags.h"
+#include "app/stress_defaults.h"
 #include "io/readers.h"
 #include "io/selection.h"
+#include "tensor/field_stats.h"
+#include "tensor/glyph_scale.h"
 #include "view/camera.h"
 
 namespace tg::app {
 
+struct FieldFlags;
+
+// The statistics sizes are worked out from (tensor/field_stats.h) when they
+// are not those of the loaded glyphs: the whole field's, loaded again
+// without the selection that left some of it out.
+struct WholeField {
+  tensor::FieldStats stats;
+  double sampleSpacing = 0;
+};
+
 struct Scene {
   io::TensorField field;
+  std::optional<WholeField> wholeField;  // none: the loaded glyphs are what sizes come from
+  std::string sizesFrom;                 // where they come from, for info and --verbose
+  std::optional<StressDefaults> stress;  // set by decideStressDefaults
   std::optional<render::CameraDesc> preferredCamera;  // used when no camera flag is given
   std::optional<double> preferredFaMin;
   std::optional<SceneLook> preferredLook;  // applied where the flags are silent
@@ -28,6 +45,24 @@ Scene defaultScene();
 // result (checkOptionsApply, checkLoaded); a --slice index beyond the grid
 // is a UsageError naming the valid range.
 Scene loadScene(const std::string& input, const io::ReadOptions& opt);
+
+// Field-wide size ranges: unless `flags` asks --sizes-from selection, and
+// when the selection (slice, stride, ROI, mask) or --cl-min/--cp-min left
+// tensors out of s, the statistics of `whole()` (the field loaded again
+// without them) are attached. Sets s.sizesFrom either way.
+void attachWholeField(Scene& s, const FieldFlags& flags, const std::function<io::TensorField()>& whole);
+// The same for `input` (a file, or "" for the built-in scene), read again with `read` less its selection.
+void attachWholeField(Scene& s, const FieldFlags& flags, const std::string& input, io::ReadOptions read);
+// The statistics sizes come from: the whole field's, or those of `glyphs`
+// (the loaded ones) when s has none; and resolveScale's sample of them.
+tensor::FieldStats sizingStats(const Scene& s, const tensor::GlyphSet& glyphs);
+tensor::MagnitudeSample sizingSample(const Scene& s, const tensor::FieldStats& stats);
+// A scene with no look of its own gets the stress look when `stats` (the
+// sizing statistics) or its array's name say stress (app/stress_defaults.h).
+void decideStressDefaults(Scene& s, const tensor::FieldStats& stats);
+// flags.scaleParams() with the scene's defaults where the flags are silent
+// (a stress field's --magnitude).
+tensor::ScaleParams sizingParams(const FieldFlags& flags, const Scene& s);
 
 // The UsageError for a --slice index beyond the grid of `input` (empty: the
 // built-in scene): the option, its value and the valid range.

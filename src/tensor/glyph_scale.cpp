@@ -68,16 +68,17 @@ glm::dvec3 glyphAxes(const GlyphRecord& g, double scale, const SizeMapping& s) {
   return ellipsoidAxes(g, glyphFactor(scale, s, magnitudeOf(g)));
 }
 
-MagnitudeSample sampleMagnitudes(const GlyphSet& set, double spacing) {
+MagnitudeSample magnitudeSample(const FieldStats& stats, double spacing, std::string from) {
   MagnitudeSample s;
-  s.maxAbs = set.maxAbsEigenvalue;
+  s.sorted = stats.sortedMagnitudes();
+  s.maxAbs = stats.maxAbs;
   s.spacing = spacing;
-  const std::size_t n = set.glyphs.size();
-  const std::size_t step = std::max<std::size_t>(1, (n + kSampleMax - 1) / kSampleMax);
-  s.sorted.reserve(n / step + 1);
-  for (std::size_t i = 0; i < n; i += step) s.sorted.push_back(magnitudeOf(set.glyphs[i]));
-  std::sort(s.sorted.begin(), s.sorted.end());
+  s.from = std::move(from);
   return s;
+}
+
+MagnitudeSample sampleMagnitudes(const GlyphSet& set, double spacing) {
+  return magnitudeSample(fieldStats(set), spacing);
 }
 
 ResolvedScale resolveScale(const ScaleParams& p, const MagnitudeSample& sample) {
@@ -98,8 +99,10 @@ ResolvedScale resolveScale(const ScaleParams& p, const MagnitudeSample& sample) 
   std::string how;
   switch (p.mode) {
     case ScaleMode::Absolute:
-      r.scale = p.factor;
-      how = format("absolute: %g world units per eigenvalue unit", p.factor);
+      // ParaView's ScaleFactor (its glyph source has radius 0.5): the
+      // diameter per eigenvalue unit, so the semi-axis is half of it.
+      r.scale = 0.5 * p.factor;
+      how = format("absolute: %g world units of diameter per eigenvalue unit (ParaView's ScaleFactor)", p.factor);
       break;
     case ScaleMode::Max:
     case ScaleMode::Spacing: {
@@ -128,6 +131,7 @@ ResolvedScale resolveScale(const ScaleParams& p, const MagnitudeSample& sample) 
   r.why += map.maxRadiusWC > 0.0
                ? format("; clamp %g sample spacings across (%.1f%% of glyphs shrunk)", clamp, 100.0 * r.clampedFraction)
                : std::string("; no clamp");
+  if (!sample.from.empty()) r.why += "; ranges from " + sample.from;
   return r;
 }
 

@@ -16,6 +16,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "tensor/field_stats.h"
 #include "tensor/glyph.h"
 
 namespace tg::tensor {
@@ -51,7 +52,9 @@ glm::dvec3 glyphAxes(const GlyphRecord& g, double scale, const SizeMapping& s);
 
 // What the user chooses (render/view/info flags, viewer, script).
 struct ScaleParams {
-  // absolute: `factor` world units per (mapped) eigenvalue unit;
+  // absolute: `factor` world units of diameter per (mapped) eigenvalue unit,
+  // as ParaView's TensorGlyph ScaleFactor (Teem's tend glyph -gsc, a
+  // semi-axis, is factor / 2);
   // max: the largest glyph is `factor` sample spacings across;
   // spacing: the glyph at the `percentile` of sizes (of the non-zero tensors)
   // is `factor` spacings across.
@@ -72,14 +75,17 @@ struct ScaleParams {
   bool operator==(const ScaleParams&) const = default;
 };
 
-// A strided sample (at most 65536) of the glyphs' magnitudes m, sorted, and
-// what resolution needs besides: computed once, so that the viewer resolves
-// any ScaleParams after the records have gone to the GPU.
+// The glyphs' non-zero magnitudes m (all of them up to 65536, else the
+// FieldStats sketch's uniform sample), sorted, and what resolution needs
+// besides: computed once, so that the viewer resolves any ScaleParams after
+// the records have gone to the GPU.
 struct MagnitudeSample {
   std::vector<double> sorted;
   double maxAbs = 0;
   double spacing = 0;  // the field's sample spacing
+  std::string from;    // where the ranges come from, for the why line ("" : not said)
 };
+MagnitudeSample magnitudeSample(const FieldStats& stats, double sampleSpacing, std::string from = {});
 MagnitudeSample sampleMagnitudes(const GlyphSet& set, double sampleSpacing);
 
 struct ResolvedScale {

@@ -101,7 +101,7 @@ TEST(RenderOptions, EveryNumericOptionDeclaresARange) {
   OptionTable t;
   addRenderOptions(t, o);
   const std::set<std::string> words = {"INPUT", "-o", "--glyph", "--color", "--array", "--layout", "--frame",
-                                       "--mask", "--slice", "--scale-mode", "--magnitude", "--legend-corner",
+                                       "--mask", "--slice", "--scale-mode", "--sizes-from", "--magnitude", "--legend-corner",
                                        "--units", "--length-units", "--underlay", "--plane", "--underlay-colormap",
                                        "--mesh", "--mesh-mode", "--backend", "--color-array", "--colormap"};
   for (const OptionTable::Option& opt : t.options()) {

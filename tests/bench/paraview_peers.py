@@ -115,8 +115,10 @@ def main():
     cam = ["--eye"] + [str(v) for v in EYE] + ["--look-at"] + [str(v) for v in AT] + ["--fov", str(FOV)]
     size = ["--size", str(a.size[0]), str(a.size[1])]
     ref_png = os.path.join(a.out, a.shape + "-reference.png")
-    # Absolute scale, no clamp: vtkTensorGlyph's own sizing (eigenvalues times ScaleFactor).
-    scale = 0.0089
+    # Absolute scale, no clamp: vtkTensorGlyph's own sizing (eigenvalues times
+    # ScaleFactor, the diameter per eigenvalue unit, as --scale-mode absolute
+    # and the plugin's absolute mode take it).
+    scale = 0.0178
     subprocess.run([a.cli, "render", a.input, "-o", ref_png] + cli_glyph +
                    ["--scale-mode", "absolute", "--scale", str(scale)] + size + cam, check=True)
     ref = coverage(ref_png)
@@ -154,11 +156,11 @@ def main():
     glyphs.Tensors = ["POINTS", "stress"]
     glyphs.GlyphType.ThetaResolution = 16
     glyphs.GlyphType.PhiResolution = 16
-    # Both sources have radius 0.5: twice the factor gives the semi-axes
-    # |eigenvalue| * scale, as the plugin's glyphs have. The superquadric
-    # source keeps ParaView's settings (Toroidal 1, roundness 1, thickness
-    # 0.3333): what a user choosing "Superquadric" gets.
-    glyphs.ScaleFactor = 2 * scale
+    # Both sources have radius 0.5: ScaleFactor is the diameter per
+    # eigenvalue unit, the factor the CLI and the plugin were given. The
+    # superquadric source keeps ParaView's settings (Toroidal 1, roundness 1,
+    # thickness 0.3333): what a user choosing "Superquadric" gets.
+    glyphs.ScaleFactor = scale
     glyphs.UpdatePipeline()
     build = 1000 * (time.perf_counter() - t)
     disp = simple.Show(glyphs, view)

@@ -58,7 +58,7 @@ ratio() { awk -v a="$1" -v b="$2" 'BEGIN { if (a > 0 && b > 0) printf "%.1fx", a
 
 # ---- Kindlmann's dt-helix against `tend glyph -rt` --------------------------
 # 59,280 superquadrics, gamma 3, 512x512, every glyph drawn; semi-axes 0.06 |l|
-# (Teem's -gsc, our --scale in absolute mode); one sample per pixel centre.
+# (Teem's -gsc 0.06, our --scale-mode absolute --scale 0.12, a diameter); one sample per pixel centre.
 # Teem's gage refuses the file's own axis mins/maxs ("need some spacing
 # info") and, given spacings alone, fits the grid into [-1, 1]; so Teem reads
 # the same raw data through a header that states the grid we read from the
@@ -70,9 +70,9 @@ sed -e '/^axis m/d' -e "s|^data file: \./|data file: $(dirname "$helix")/|" -e '
 eye="5.4 -9.6 7.5"
 runs=$n
 measure tg-helix "$bin" render "$helix" -o tg-helix.png --glyph superquadric --gamma 3 \
-  --size 512 512 --scale 0.06 --eye $eye --look-at 0 0 0 --up 0 0 1 --fov 30 --background 0 0 0 0
+  --size 512 512 --scale-mode absolute --scale 0.12 --eye $eye --look-at 0 0 0 --up 0 0 1 --fov 30 --background 0 0 0 0
 read -r tg_s tg_mb <tg-helix.med
-"$bin" render "$helix" -o tg-helix.png --glyph superquadric --gamma 3 --size 512 512 --scale 0.06 --eye $eye \
+"$bin" render "$helix" -o tg-helix.png --glyph superquadric --gamma 3 --size 512 512 --scale-mode absolute --scale 0.12 --eye $eye \
   --look-at 0 0 0 --up 0 0 1 --fov 30 --background 0 0 0 0 --repeat 7 --verbose 2>tg-helix-frames.err
 tg_ms=$(ms tg-helix-frames.err)
 measure teem-helix teem-tend glyph -rt -i teem-helix.nhdr -o teem-helix.nrrd -g superquad \
@@ -107,10 +107,10 @@ cam=(--eye $eye --look-at 0 0 -1 --up 0 0 1 --fov 30)
 load_case() {
   local label=$1; shift
   runs=$n
-  measure "$label" "$bin" render load.vti -o "$label.png" "$@" --size 1024 768 --scale 0.054 --clamp 2 \
+  measure "$label" "$bin" render load.vti -o "$label.png" "$@" --size 1024 768 --scale-mode absolute --scale 0.108 --clamp 2 \
     "${cam[@]}" --background 0 0 0 0
   read -r tg_s tg_mb <"$label.med"
-  "$bin" render load.vti -o "$label.png" "$@" --size 1024 768 --scale 0.054 --clamp 2 "${cam[@]}" \
+  "$bin" render load.vti -o "$label.png" "$@" --size 1024 768 --scale-mode absolute --scale 0.108 --clamp 2 "${cam[@]}" \
     --background 0 0 0 0 --repeat 7 --verbose 2>"$label-frames.err"
   tg_ms=$(ms "$label-frames.err")
 }

@@ -42,6 +42,6 @@ run() {  # LABEL ARGS...
     "$(awk -v a="${t[0]}" -v b="${t[1]}" 'BEGIN { printf "%.1f", a / b }')" "${c[0]}" "${c[1]}"
 }
 run "synth random $n, 1920x1080" "$dir/random.vtk" --size 1920 1080
-run "dt-helix ellipsoids, 512x512" "$helix" --glyph ellipsoid --size 512 512 --scale 0.06 \
+run "dt-helix ellipsoids, 512x512" "$helix" --glyph ellipsoid --size 512 512 --scale-mode absolute --scale 0.12 \
   --eye 5.4 -9.6 7.5 --look-at 0 0 0 --up 0 0 1 --fov 30
 echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"

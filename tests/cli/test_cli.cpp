@@ -49,7 +49,7 @@ TEST(Cli, ExrCarriesDepthNormalAndId) {
   TG_REQUIRE_REAL_DATA();
   const fs::path out = dir() / "frame.exr";
   const CmdResult r = run("render " + tg::test::realData("slicer-fiber-tensors/fiber_vtk.vtk") + " -o " + out.string() +
-                    " --size 96 64 --ortho 60 --scale 600 --color fa");
+                    " --size 96 64 --ortho 60 --scale-mode absolute --scale 1200 --color fa");
   ASSERT_EQ(r.code, 0) << r.err;
   auto in = OIIO::ImageInput::open(out.string());
   ASSERT_TRUE(in);

@@ -126,7 +126,10 @@ TEST(CliData, ScaleModes) {
     const std::regex re("scale ([0-9.e+-]+)");
     return std::regex_search(r.err, m, re) ? std::stod(m[1]) : -1.0;
   };
-  EXPECT_DOUBLE_EQ(scaleOf("--scale 250"), 250.0);  // absolute when given alone
+  // Alone, a factor on the automatic size; absolute, the diameter per
+  // eigenvalue unit (ParaView's ScaleFactor), so the semi-axis factor is half.
+  EXPECT_NEAR(scaleOf("--scale 3"), 3.0 * scaleOf(""), 1e-4 * scaleOf(""));
+  EXPECT_DOUBLE_EQ(scaleOf("--scale-mode absolute --scale 500"), 250.0);
   EXPECT_NEAR(scaleOf("--scale-mode max"), 0.5 * 3.125 / 0.00497547, 0.01);
   EXPECT_NEAR(scaleOf("--scale-mode max --scale 2"), 3.125 / 0.00497547, 0.02);
   const double spacing = scaleOf("--scale-mode spacing");

@@ -51,7 +51,7 @@ std::vector<unsigned char> rgba(const fs::path& png, int w, int h) {
   return px;
 }
 
-const std::string kView = " --size 200 150 --ortho 9 --eye 2.5 2.5 20 --look-at 2.5 2.5 0.5 --scale 0.01";
+const std::string kView = " --size 200 150 --ortho 9 --eye 2.5 2.5 20 --look-at 2.5 2.5 0.5 --scale-mode absolute --scale 0.02";
 
 }  // namespace
 

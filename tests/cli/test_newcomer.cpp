@@ -82,7 +82,8 @@ TEST(Newcomer, HelpNamesThePercentileInfoReports) {
   const std::string pct = info.out.substr(at + key.size(), info.out.find('%', at) - at - key.size());
   const CmdResult help = run("render --help");
   ASSERT_EQ(help.code, 0);
-  EXPECT_NE(help.out.find("spacing (default: " + pct + "th percentile"), std::string::npos) << pct << "\n" << help.out;
+  EXPECT_NE(help.out.find("spacing: the glyph at the " + pct + "th percentile"), std::string::npos) << pct << "\n"
+                                                                                                    << help.out;
   EXPECT_NE(help.out.find("the " + pct + "th-percentile glyph's"), std::string::npos) << pct << "\n" << help.out;
   EXPECT_EQ(help.out.find("99th"), std::string::npos);
 }
@@ -163,26 +164,26 @@ TEST(Newcomer, FieldOfViewOutOfRangeIsNamed) {
   }
 }
 
-// `bench accuracy --scale 2` (world units per eigenvalue unit: the helix's
-// glyphs a few thousandths wide) compared frames without a glyph pixel and
-// reported 0% error on every row.
+// `bench accuracy --scale-mode absolute --scale 4` (2 world units per
+// eigenvalue unit: the helix's glyphs a few thousandths wide) compared frames
+// without a glyph pixel and reported 0% error on every row.
 TEST(Newcomer, AccuracyBenchWithNothingToCompareFails) {
   const fs::path csv = dir() / "acc.csv";
   const std::string args =
-      "bench accuracy -o " + csv.string() + " --scale 2 --size 64 48 --frames 1 --iterations 1 --epsilon 1e-2";
+      "bench accuracy -o " + csv.string() + " --scale-mode absolute --scale 4 --size 64 48 --frames 1 --iterations 1 --epsilon 1e-2";
   tg::test::expectFailsCleanly(args, "no glyph covers a pixel at this scale and size", csv, dir(), 1);
   EXPECT_EQ(run(args).code, 1);
   EXPECT_FALSE(fs::exists(dir() / "acc.png"));
 }
 
-// `--scale 1` given alone is absolute: a DTI field's glyphs (eigenvalues
+// An absolute scale of 1 (semi-axis) on a DTI field: its glyphs (eigenvalues
 // about 0.005) come out a hundredth of a pixel wide, and render wrote an
 // empty image without a word.
 TEST(Newcomer, ScaleThatLeavesTheImageEmptySaysSo) {
   const fs::path field = dir() / "tiny.vtk", out = dir() / "tiny.png";
   ASSERT_EQ(run("synth helix --n 8 -o " + field.string()).code, 0);  // eigenvalues about 1e-3
   const std::string render = "render " + field.string() + " -o " + out.string() + " --size 96 64";
-  const CmdResult tiny = run(render + " --scale 1");
+  const CmdResult tiny = run(render + " --scale-mode absolute --scale 2");
   ASSERT_EQ(tiny.code, 0) << tiny.err;
   EXPECT_TRUE(fs::exists(out));
   EXPECT_NE(tiny.err.find("pixels across, so the image shows almost nothing; a larger --scale draws them"),

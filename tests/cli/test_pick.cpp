@@ -98,7 +98,7 @@ tg::render::Camera camera(const tg::tensor::GlyphSet& set, int w, int h) {
 
 std::string cameraFlags() {
   return "--size " + std::to_string(kW) + " " + std::to_string(kH) +
-         " --scale 1 --eye 4 4 40 --look-at 4 4 0 --up 0 1 0 --ortho 14";
+         " --scale-mode absolute --scale 2 --eye 4 4 40 --look-at 4 4 0 --up 0 1 0 --ortho 14";
 }
 
 std::vector<Json::Value> parseLines(const std::string& out) {
@@ -387,7 +387,7 @@ TEST(Pick, BoxesAndCylindersNearTheEyeAreWhole) {
   const double s = std::sqrt(0.5);
   for (const auto& [kind, front] : {std::pair{"box", 1.8 * s}, std::pair{"cylinder", 0.9 * std::sqrt(2.0)}}) {
     const auto r = tg::test::runBinary("render " + path.string() + " -o " + (dir() / "near.png").string() + " --glyph " + kind +
-                                 " --scale 1 --size 65 65 --eye 0 0 10 --look-at 0 0 0 --ortho 3 --pick 32 32",
+                                 " --scale-mode absolute --scale 2 --size 65 65 --eye 0 0 10 --look-at 0 0 0 --ortho 3 --pick 32 32",
                              dir());
     ASSERT_EQ(r.code, 0) << r.err;
     const auto picks = parseLines(r.out);

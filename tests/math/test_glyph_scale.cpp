@@ -104,7 +104,7 @@ TEST(GlyphScale, DefaultsResolveAsDocumented) {
   p.mode = tensor::ScaleMode::Absolute;
   p.factor = 4.0;
   const auto a = tensor::resolveScale(p, sample);
-  EXPECT_EQ(a.scale, 4.0);
+  EXPECT_EQ(a.scale, 2.0);  // ParaView's ScaleFactor: the diameter per eigenvalue unit
   EXPECT_EQ(a.mapping.maxRadiusWC, 0.0);  // absolute: no clamp unless asked
   p.clampSpacings = 3.0;
   EXPECT_DOUBLE_EQ(tensor::resolveScale(p, sample).mapping.maxRadiusWC, 0.75);

@@ -273,7 +273,7 @@ class BadInput(unittest.TestCase):
         """'>f4' (a big-endian NIfTI's data through nibabel) read in place as
         little-endian is other, mostly finite numbers: once drawn without a word."""
         t, p = points(12)
-        opts = dict(size=(64, 48), scale_mode="absolute", scale=0.3, eye=(5, 5, 40), look_at=(5, 5, 5))
+        opts = dict(size=(64, 48), scale_mode="absolute", scale=0.6, eye=(5, 5, 40), look_at=(5, 5, 5))
         native = tg.render(t.astype(np.float32), positions=p.astype(np.float32), **opts).image
         self.assertGreater(np.count_nonzero(native[..., 3]), 200, "nothing drawn")
         for tt, pp in [(t.astype(">f4"), p.astype(np.float32)), (t.astype(np.float32), p.astype(">f4")),
@@ -366,7 +366,7 @@ class ColorBy(unittest.TestCase):
 
     def test_an_array_draws_what_the_derived_scalar_draws(self):
         t, p = points(300)
-        opts = dict(size=(160, 120), scale=0.2)
+        opts = dict(size=(160, 120), scale_mode="absolute", scale=0.4)
         by_mode = tg.render(t, positions=p, color="vonmises", **opts).image.astype(int)
         r = tg.Renderer(t, positions=p, color=self._von_mises(t), **opts)
         by_array = r.render().image.astype(int)
