@@ -41,30 +41,30 @@ tg_installed() { dpkg-query -W -f='${Status}' "$1" 2>/dev/null | grep -q "ok ins
 # libvtk9.1's files and VTK's Python and Java wrapping (packages not
 # installed) switched off in its vtk-config.cmake.
 tg_vtk_dir() {
-  local arch cmake_dir version dir=$1 tmp f
-  arch=$(gcc -print-multiarch)
+  local arch cmake_dir version dir tmp f
+  arch=$(gcc -print-multiarch) || return
   cmake_dir=usr/lib/$arch/cmake/vtk-9.1
   if tg_installed libvtk9-dev; then
     echo "/$cmake_dir"
     return
   fi
-  version=$(dpkg-query -W -f='${Version}' libvtk9.1)
+  version=$(dpkg-query -W -f='${Version}' libvtk9.1) || return
+  dir=$(mkdir -p "$1" && cd "$1" && pwd) || return
   if [ "$(cat "$dir/version" 2>/dev/null)" != "$version" ]; then
-    rm -rf "$dir"
-    tmp=$(mktemp -d)
+    tmp=$(mktemp -d) || return
     # apt fetches as _apt, which must be able to write there.
     chown _apt "$tmp" 2>/dev/null || true
     (cd "$tmp" && { apt-get download -qq "libvtk9-dev=$version" ||
-      { apt-get update -qq && apt-get download -qq "libvtk9-dev=$version"; }; })
-    dpkg-deb -x "$tmp"/libvtk9-dev_*.deb "$dir"
+      { apt-get update -qq && apt-get download -qq "libvtk9-dev=$version"; }; }) &&
+      rm -rf "$dir" && dpkg-deb -x "$tmp"/libvtk9-dev_*.deb "$dir" || { rm -rf "$tmp"; return 1; }
     rm -rf "$tmp"
     for f in /usr/lib/"$arch"/libvtk*-9.1.so.*; do
-      ln -sf "$f" "$dir/usr/lib/$arch/"
+      ln -sf "$f" "$dir/usr/lib/$arch/" || return
     done
-    sed -i 's/_WRAP_\(PYTHON\|JAVA\)" "ON")/_WRAP_\1" "OFF")/' "$dir/$cmake_dir/vtk-config.cmake"
-    echo "$version" >"$dir/version"
+    sed -i 's/_WRAP_\(PYTHON\|JAVA\)" "ON")/_WRAP_\1" "OFF")/' "$dir/$cmake_dir/vtk-config.cmake" &&
+      echo "$version" >"$dir/version" || return
   fi
-  echo "$(cd "$dir" && pwd)/$cmake_dir"
+  echo "$dir/$cmake_dir"
 }
 
 # Compiler launcher arguments for cmake: ccache where it is installed.
