@@ -180,15 +180,18 @@ TG_FORWARD(Shadows, bool)
 #undef TG_FORWARD
 
 // The view's bounds follow the glyphs' size: a new REQUEST_UPDATE.
-void vtkTensorGlyphRayCastRepresentation::SetScaleMode(int v) {
-  this->Mapper->SetScaleMode(v);
-  this->MarkModified();
-}
-
-void vtkTensorGlyphRayCastRepresentation::SetScaleFactor(double v) {
-  this->Mapper->SetScaleFactor(v);
-  this->MarkModified();
-}
+#define TG_FORWARD_SIZE(Name, Type)                                              \
+  void vtkTensorGlyphRayCastRepresentation::Set##Name(Type v) {                  \
+    this->Mapper->Set##Name(v);                                                  \
+    this->MarkModified();                                                        \
+  }
+TG_FORWARD_SIZE(ScaleMode, int)
+TG_FORWARD_SIZE(ScaleFactor, double)
+TG_FORWARD_SIZE(Magnitude, int)
+TG_FORWARD_SIZE(Lambda0, double)
+TG_FORWARD_SIZE(ClampDefault, bool)
+TG_FORWARD_SIZE(Clamp, double)
+#undef TG_FORWARD_SIZE
 
 void vtkTensorGlyphRayCastRepresentation::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);

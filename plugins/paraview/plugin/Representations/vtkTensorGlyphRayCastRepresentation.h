@@ -33,6 +33,10 @@ public:
   void SetGamma(double v);
   void SetScaleMode(int v);
   void SetScaleFactor(double v);
+  void SetMagnitude(int v);
+  void SetLambda0(double v);
+  void SetClampDefault(bool v);
+  void SetClamp(double v);
   void SetFAThreshold(double v);
   void SetColorMode(int v);
   void SetMarchIterations(int v);
