@@ -20,7 +20,7 @@ if(TG_PARAVIEW_PLUGIN)
   endif()
   get_filename_component(_tg_pv_dir ${TG_PARAVIEW_CONFIG} DIRECTORY)
   # The plugin is a shared object: the core it links goes in with it.
-  set(_tg_pv_libs tg_scale tg_render tg_gl tg_field tg_ref tg_view tg_tensor tg_util)
+  set(_tg_pv_libs tg_scale tg_io tg_render tg_gl tg_field tg_ref tg_view tg_tensor tg_util)
   set(_tg_pv_lib_args "")
   foreach(l ${_tg_pv_libs})
     string(TOUPPER ${l} _tg_pv_var)

@@ -11,6 +11,8 @@
 #include <vtkDataObject.h>
 #include <vtkHardwareSelector.h>
 #include <vtkInformation.h>
+#include <vtkLight.h>
+#include <vtkLightCollection.h>
 #include <vtkMath.h>
 #include <vtkMatrix4x4.h>
 #include <vtkObjectFactory.h>
@@ -19,8 +21,8 @@
 #include <vtkRenderer.h>
 
 #include "glyph_input.h"
-#include "app/option_ranges.h"
 #include "host_gl.h"
+#include "property_check.h"
 #include "render/glyph_kind.h"
 #include "render/renderer.h"
 
@@ -96,24 +98,6 @@ vtkTensorGlyphRayCastMapper::~vtkTensorGlyphRayCastMapper() = default;
 
 namespace {
 
-// The command line's refusal (app/option_ranges.h), in its words, with the
-// property's name: ParaView's range domains bound the GUI's widgets only, and
-// Python sets any value, so the setter is where a value is refused. The value
-// held is kept; true when `v` is taken and differs from it.
-template <class T>
-bool accept(vtkObject* self, const char* setter, const char* property, T& field, T v, const app::NumberRange& r) {
-  if (!r.contains(double(v))) {
-    vtkErrorWithObjectMacro(self, << setter << ": " << app::rangeMessage(property, r) << "; kept " << field);
-    return false;
-  }
-  if (field == v) return false;
-  field = v;
-  return true;
-}
-
-// An enumeration's values, 0..count-1.
-app::NumberRange choices(std::size_t count) { return {0.0, double(count) - 1.0, true}; }
-
 // --lambda0's range, with 0 for its default (the median magnitude).
 constexpr app::NumberRange kLambda0{app::ranges::kPositiveFloat.lo, app::ranges::kPositiveFloat.hi, false, true};
 
@@ -121,17 +105,17 @@ constexpr app::NumberRange kLambda0{app::ranges::kPositiveFloat.lo, app::ranges:
 
 #define TG_CHECKED_SETTER(Name, Type, Property, Range)              \
   void vtkTensorGlyphRayCastMapper::Set##Name(Type v) {             \
-    if (accept(this, "Set" #Name, "TensorGlyph" Property, this->Name, v, Range)) this->Modified(); \
+    if (paraview::acceptValue(this, "Set" #Name, "TensorGlyph" Property, this->Name, v, Range)) this->Modified(); \
   }
-TG_CHECKED_SETTER(GlyphKind, int, "Kind", choices(render::kGlyphKindCount))
+TG_CHECKED_SETTER(GlyphKind, int, "Kind", paraview::choices(render::kGlyphKindCount))
 TG_CHECKED_SETTER(Gamma, double, "Gamma", app::ranges::kGamma)
-TG_CHECKED_SETTER(ScaleMode, int, "ScaleMode", choices(3))
+TG_CHECKED_SETTER(ScaleMode, int, "ScaleMode", paraview::choices(3))
 TG_CHECKED_SETTER(ScaleFactor, double, "ScaleFactor", app::ranges::kPositiveFloat)
-TG_CHECKED_SETTER(Magnitude, int, "Magnitude", choices(3))
+TG_CHECKED_SETTER(Magnitude, int, "Magnitude", paraview::choices(3))
 TG_CHECKED_SETTER(Lambda0, double, "Lambda0", kLambda0)
 TG_CHECKED_SETTER(Clamp, double, "Clamp", app::ranges::kClampSpacings)
 TG_CHECKED_SETTER(FAThreshold, double, "FAThreshold", app::ranges::kUnit)
-TG_CHECKED_SETTER(ColorMode, int, "ColorMode", choices(6))  // render::ColorMode's six
+TG_CHECKED_SETTER(ColorMode, int, "ColorMode", paraview::choices(6))  // render::ColorMode's six
 TG_CHECKED_SETTER(MarchIterations, int, "MarchIterations", app::ranges::kIterations)
 TG_CHECKED_SETTER(MarchEpsilon, double, "MarchEpsilon", app::ranges::kEpsilon)
 #undef TG_CHECKED_SETTER
@@ -201,6 +185,22 @@ class SelectionPass {
   vtkHardwareSelector* sel_;
   paraview::CompositeOutput out_;
 };
+
+// The view's light kit (its UseLight and KeyLightIntensity) as a factor on
+// the CLI's key light: the kit's key is its brightest camera light, and
+// ParaView's default key intensity, 0.75, gives the CLI's picture; with the
+// kit off (no camera light on) the key light is off, the head light and the
+// ambient term stay. The key's direction stays the CLI's.
+double keyLightFactor(vtkRenderer* ren) {
+  constexpr double kParaViewKeyIntensity = 0.75;
+  double key = 0.0;
+  vtkLightCollection* lights = ren->GetLights();
+  vtkCollectionSimpleIterator it;
+  lights->InitTraversal(it);
+  while (vtkLight* light = lights->GetNextLight(it))
+    if (light->GetSwitch() && light->LightTypeIsCameraLight()) key = std::max(key, light->GetIntensity());
+  return key / kParaViewKeyIntensity;
+}
 
 }  // namespace
 
@@ -281,6 +281,7 @@ void vtkTensorGlyphRayCastMapper::Render(vtkRenderer* ren, vtkActor*) {
     p.ao.enabled = this->AmbientOcclusion;
     p.outline.enabled = this->Outlines;
     p.shadow.enabled = this->Shadows;
+    p.light.key = float(double(p.light.key) * keyLightFactor(ren));
     tensor::GlyphSet box;  // the depth range: what glyphBoxWC needs of the uploaded set
     box.boundsMinWC = in.centresLo;
     box.boundsMaxWC = in.centresHi;
