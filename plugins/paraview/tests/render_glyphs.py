@@ -159,7 +159,7 @@ def main():
         for name, value in a.set:
             setattr(disp, name, number(value))
         if a.representations_out:
-            write_representations(disp, a.representations_out)
+            write_representations(disp, reader, a.representations_out)
         if a.cell_tensors:
             names = [k for k in reader.CellData.keys() if reader.CellData[k].GetNumberOfComponents() in (6, 9)]
             disp.TensorGlyphTensors = ["CELLS", names[0]]
@@ -212,14 +212,17 @@ def number(text):
         return float(text)
 
 
-def write_representations(disp, path):
+def write_representations(disp, source, path):
     """The representation types offered for the input, and whether the input
-    passes the glyph representation's own input domain."""
-    glyphs = disp.SMProxy.GetSubProxy("TensorGlyphRayCast")
+    passes the glyph representation's own input domain ("input_array")."""
+    glyphs = servermanager.ProxyManager().SMProxyManager.NewProxy(
+        "representations", "TensorGlyphRayCastRepresentation")
+    domain = glyphs.GetProperty("Input").GetDomain("input_array")
     with open(path, "w") as f:
         for name in disp.Representation.Available:
             f.write("offered %s\n" % name)
-        f.write("in_domain %d\n" % glyphs.GetProperty("Input").IsInDomains())
+        f.write("in_domain %d\n" % domain.IsInDomain(source.SMProxy, 0))
+    glyphs.UnRegister(None)
 
 
 def show_legend(disp, view, visible):
