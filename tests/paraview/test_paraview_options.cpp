@@ -270,4 +270,22 @@ TEST_F(ParaViewPlugin, OpacityBelowOneIsSaidToBeIgnored) {
       << r.err;
 }
 
+// ParaView's ColorBy does not colour the glyphs (their colours follow
+// TensorGlyphColorMode): said once when they are drawn, rather than a scalar
+// bar of that array over glyphs coloured otherwise without a word. (Show
+// itself colours the kitten by its "fixed" array; ColorBy None says nothing.)
+TEST_F(ParaViewPlugin, ColorByAnArrayIsSaidNotToColourTheGlyphs) {
+  TG_SKIP_WITHOUT_PARAVIEW();
+  const fs::path png = dir / "c.png";
+  const std::string said = "ColorBy: the glyphs' colours follow TensorGlyphColorMode; colouring by 'fixed'";
+  const CmdResult r = runPvbatch("--output " + png.string() + " " + kCamera + " --color-by fixed", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::size_t at = r.err.find(said);
+  EXPECT_NE(at, std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find(said, at + 1), std::string::npos) << "said more than once: " << r.err;
+  const CmdResult plain = runPvbatch("--output " + png.string() + " " + kCamera + " --color-by NONE", dir);
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  EXPECT_EQ(plain.err.find("ColorBy:"), std::string::npos) << plain.err;
+}
+
 }  // namespace

@@ -10,7 +10,7 @@ and the benchmark's one ParaView driver.
           [--scalar-bar] [--legend-out TXT] [--cell-tensors] [--nan-every K]
           [--multiblock] [--as-six] [--merge-blocks]
           [--set PROPERTY VALUE ...] [--view-set PROPERTY VALUE ...] [--mask-array NAME]
-          [--tensors NAME]
+          [--tensors NAME] [--color-by NAME]
           [--representations-out TXT]
   pvbatch render_glyphs.py --input FILE --write-blocks VTM [--second-without-tensors]
 
@@ -34,7 +34,9 @@ Merge Blocks of the input instead of the input.
 
 --set sets a property of the representation (a number, after the options
 above), --view-set one of the view; --mask-array picks the point array the
-glyphs' mask reads (TensorGlyphMask), --tensors the point array of tensors; --representations-out writes the
+glyphs' mask reads (TensorGlyphMask), --tensors the point array of tensors,
+--color-by colours the display by a point array (ParaView's ColorBy; NONE
+for none); --representations-out writes the
 representation types ParaView offers for the input ("offered NAME" per
 line) and whether the input passes the glyphs' input domain ("in_domain 0|1").
 
@@ -92,6 +94,7 @@ def main():
     ap.add_argument("--representations-out")
     ap.add_argument("--mask-array")
     ap.add_argument("--tensors")
+    ap.add_argument("--color-by")
     a = ap.parse_args()
     if a.write_blocks:
         write_blocks(a.input, a.write_blocks, a.second_without_tensors)
@@ -146,6 +149,8 @@ def main():
         setattr(view, name, number(value))
     if not a.no_glyphs:
         disp = simple.Show(reader, view)
+        if a.color_by is not None:  # before the glyphs update, as a user colours the surface first
+            simple.ColorBy(disp, None if a.color_by == "NONE" else ("POINTS", a.color_by))
         disp.SetRepresentationType("Tensor Glyphs (ray cast)")
         disp.TensorGlyphKind = a.glyph
         disp.TensorGlyphGamma = a.gamma

@@ -127,6 +127,14 @@ int vtkTensorGlyphRayCastRepresentation::ProcessViewRequest(
     if (vtkMath::AreBoundsInitialized(bounds)) vtkPVRenderView::SetGeometryBounds(inInfo, this, bounds);
   } else if (request_type == vtkPVView::REQUEST_RENDER()) {
     this->Mapper->SetInputConnection(vtkPVRenderView::GetPieceProducer(inInfo, this));
+    // Only the representation in use renders: said when the glyphs are drawn.
+    auto* controller = vtkMultiProcessController::GetGlobalController();
+    if (!this->ColorArray.empty() && this->ColorArray != this->ColorArraySaid &&
+        (!controller || controller->GetLocalProcessId() == 0)) {
+      vtkWarningMacro(<< "ColorBy: the glyphs' colours follow TensorGlyphColorMode; colouring by '" << this->ColorArray
+                      << "' through ParaView's lookup table is not applied to them (docs/paraview.md)");
+      this->ColorArraySaid = this->ColorArray;
+    }
   }
   return 1;
 }
@@ -212,6 +220,11 @@ void vtkTensorGlyphRayCastRepresentation::SetOpacity(double v) {
   if (v < 1.0)
     vtkWarningMacro(<< "SetOpacity: the ray-cast glyphs are drawn opaque; Opacity " << v
                     << " is not applied to them (docs/paraview.md)");
+}
+
+void vtkTensorGlyphRayCastRepresentation::SetColorArrayName(int, int, int, int, const char* name) {
+  this->ColorArray = name ? name : "";
+  if (this->ColorArray.empty()) this->ColorArraySaid.clear();
 }
 
 // What is selected is new data: RequestData again.

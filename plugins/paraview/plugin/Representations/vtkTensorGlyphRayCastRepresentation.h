@@ -55,6 +55,10 @@ public:
   // glyphs are drawn opaque, and a value below 1 is said to be ignored
   // (docs/paraview.md) rather than ignored in silence.
   void SetOpacity(double v);
+  // The GeometryRepresentation's ColorArrayName (ParaView's ColorBy), shared
+  // likewise: the glyphs' colours follow ColorMode, and an array chosen is
+  // said not to colour them when the glyphs are next drawn.
+  void SetColorArrayName(int idx, int port, int connection, int association, const char* name);
 
   vtkTensorGlyphRayCastMapper* GetMapper();
 
@@ -87,6 +91,8 @@ protected:
   bool UseMask = false;
   double MaskMin = 0.5;
   double Opacity = 1.0;
+  std::string ColorArray;  // ParaView's ColorBy array, or empty
+  std::string ColorArraySaid;  // the one last said not to apply
 
 private:
   vtkTensorGlyphRayCastRepresentation(const vtkTensorGlyphRayCastRepresentation&) = delete;
