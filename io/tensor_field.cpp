@@ -4,6 +4,7 @@
 #include <cfloat>
 #include <cmath>
 #include <numeric>
+#include <tuple>
 
 namespace tg::io {
 
@@ -49,13 +50,29 @@ void congruence(const double t[9], const double s[6], double out[6]) {
   std::copy(w, w + 6, out);
 }
 
+bool tensorLikeArray(int nc, const std::string& name) {
+  return nc == 9 || nc == 6 || (nc == 4 && (name == "sigma" || name == "epsilon"));
+}
+
+void planarTensor(int nc, const double* t, double full[9]) {
+  for (int k = 0; k < 9; ++k) full[k] = 0.0;
+  const double xy = nc == 4 ? t[3] : t[2];
+  full[0] = t[0], full[1] = full[3] = xy, full[4] = t[1], full[8] = nc == 4 ? t[2] : 0.0;
+}
+
 double estimateSampleSpacing(std::span<const float> pos) {
   const std::size_t n = pos.size() / 3;
   if (n < 2) return 0.0;
   // Points sorted by x; a query scans outwards until x alone exceeds its best.
+  // Ties in x are ordered by y and z, so that the queries (every n/512-th
+  // point of this order) and the estimate do not depend on the points'
+  // order: the same points in another order (a file written otherwise, the
+  // ranks of a distributed run gathered) are the same field.
   std::vector<std::uint32_t> order(n);
   std::iota(order.begin(), order.end(), 0u);
-  std::sort(order.begin(), order.end(), [&](auto a, auto b) { return pos[3 * a] < pos[3 * b]; });
+  std::sort(order.begin(), order.end(), [&](auto a, auto b) {
+    return std::tie(pos[3 * a], pos[3 * a + 1], pos[3 * a + 2]) < std::tie(pos[3 * b], pos[3 * b + 1], pos[3 * b + 2]);
+  });
   const std::size_t samples = std::min<std::size_t>(n, 512);
   std::vector<double> nn;
   for (std::size_t s = 0; s < samples; ++s) {

@@ -130,6 +130,15 @@ std::string asymmetryWarning(const std::string& what, double maxAsymmetry);
 // tensor carried from one frame into another.
 void congruence(const double t[9], const double s6[6], double out6[6]);
 
+// Whether a point array of `components` named `name` is read as tensors
+// without being named (--array): 9 and 6 components, and 4 only under
+// OpenGeoSys's stress and strain names (sigma, epsilon), since arrays of 3 or
+// 4 components are vectors and colours as often as tensors.
+bool tensorLikeArray(int components, const std::string& name);
+// A 2-D tensor as a full row-major 3x3: 4 components XX YY ZZ XY (as
+// OpenGeoSys writes them), or 3 XX YY XY (ZZ = 0); XZ = YZ = 0.
+void planarTensor(int components, const double* t, double full[9]);
+
 // Median nearest-neighbour distance over a sample of up to 512 points.
 double estimateSampleSpacing(std::span<const float> positions);
 

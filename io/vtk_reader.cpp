@@ -168,12 +168,9 @@ bool isLegacy(const std::string& path) {
 
 std::string nameOf(vtkDataArray* a) { return a->GetName() ? a->GetName() : "?"; }
 
-// Arrays of 3 or 4 components are vectors and colours as often as tensors:
-// without --array, only OpenGeoSys's stress and strain names count, which it
-// writes as 4 components (XX YY ZZ XY) on 2-D meshes.
-bool tensorLike(int nc, const std::string& name) {
-  return nc == 9 || nc == 6 || (nc == 4 && (name == "sigma" || name == "epsilon"));
-}
+// Without --array (io::tensorLikeArray): 9 and 6 components, and
+// OpenGeoSys's 4-component stress and strain on 2-D meshes.
+bool tensorLike(int nc, const std::string& name) { return tensorLikeArray(nc, name); }
 bool tensorLike(vtkDataArray* a) { return tensorLike(a->GetNumberOfComponents(), nameOf(a)); }
 
 // An XML point array a piece lacks could be the one read as the tensors
@@ -261,8 +258,7 @@ void fullTensor(int nc, const double* t, const NiftiLayout& six, double full[9])
     const double f[9] = {s[0], s[1], s[2], s[1], s[3], s[4], s[2], s[4], s[5]};
     std::copy(f, f + 9, full);
   } else {  // XX YY ZZ XY, or XX YY XY
-    const double xy = nc == 4 ? t[3] : t[2];
-    full[0] = t[0], full[1] = full[3] = xy, full[4] = t[1], full[8] = nc == 4 ? t[2] : 0.0;
+    planarTensor(nc, t, full);
   }
 }
 

@@ -79,12 +79,12 @@ inline std::string skipReason() {
       GTEST_SKIP() << why;                                  \
   } while (0)
 
-// pvbatch (under mpiexec with `ranks` > 1) running the plugin's driver
+// pvbatch (under mpiexec with `ranks` > 0) running the plugin's driver
 // script. xvfb-run -a picks a free display number, but servers started at
 // once (other jobs on the machine) can race for it, and a rank then fails to
 // open its window or loses its server ("bad X server connection", seen with
 // two suites on one machine): such a run is tried again, up to three times.
-inline CmdResult runPvbatch(const std::string& args, const fs::path& scratch, int ranks = 1) {
+inline CmdResult runPvbatch(const std::string& args, const fs::path& scratch, int ranks = 0) {
   // A hard limit: MPI runs have hung (2 of about 10 full-suite runs, never
   // when run alone; cause not found), so a run that times out is tried again
   // like one whose window failed. timeout signals the whole group (xvfb-run,
@@ -92,7 +92,7 @@ inline CmdResult runPvbatch(const std::string& args, const fs::path& scratch, in
   // Under a display ctest was given (.ci/run's one Xvfb) no server is started.
   std::string launcher = std::string("timeout -k 10 120 env PYTHONPATH=") + TG_PARAVIEW_PYTHONPATH +
                          (std::getenv("DISPLAY") ? " " : " xvfb-run -a -s '-screen 0 640x480x24' ");
-  if (ranks > 1)
+  if (ranks > 0)
     launcher += "mpiexec --allow-run-as-root --oversubscribe -n " + std::to_string(ranks) + " ";
   launcher += "pvbatch " TG_PARAVIEW_SCRIPT " --plugin " TG_PARAVIEW_PLUGIN " --input " + kKitten;
   const auto raced = [](const CmdResult& c) {

@@ -9,6 +9,9 @@ and the benchmark's one ParaView driver.
            --selection-out TXT]
           [--scalar-bar] [--legend-out TXT] [--cell-tensors] [--nan-every K]
           [--multiblock] [--as-six] [--merge-blocks]
+          [--set PROPERTY VALUE ...] [--view-set PROPERTY VALUE ...] [--mask-array NAME]
+          [--tensors NAME] [--color-by NAME]
+          [--representations-out TXT]
   pvbatch render_glyphs.py --input FILE --write-blocks VTM [--second-without-tensors]
 
 Under mpiexec, --redistribute spreads the dataset over the ranks (or give a
@@ -28,6 +31,14 @@ first half of the point ids, then the rest, with their point data) and writes
 them as a multiblock .vtm (--second-without-tensors: the second block
 without its tensor array); nothing is drawn. --merge-blocks shows ParaView's
 Merge Blocks of the input instead of the input.
+
+--set sets a property of the representation (a number, after the options
+above), --view-set one of the view; --mask-array picks the point array the
+glyphs' mask reads (TensorGlyphMask), --tensors the point array of tensors,
+--color-by colours the display by a point array (ParaView's ColorBy; NONE
+for none); --representations-out writes the
+representation types ParaView offers for the input ("offered NAME" per
+line) and whether the input passes the glyphs' input domain ("in_domain 0|1").
 
 --scalar-bar shows ParaView's scalar bar of the glyphs' colour legend (the
 representation's TensorGlyphColorLegend* properties) on the right;
@@ -78,6 +89,12 @@ def main():
     ap.add_argument("--scalar-bar", action="store_true")
     ap.add_argument("--legend-out")
     ap.add_argument("--background", type=float, nargs=3, default=[0.08, 0.08, 0.10])
+    ap.add_argument("--set", nargs=2, action="append", default=[], metavar=("PROPERTY", "VALUE"))
+    ap.add_argument("--view-set", nargs=2, action="append", default=[], metavar=("PROPERTY", "VALUE"))
+    ap.add_argument("--representations-out")
+    ap.add_argument("--mask-array")
+    ap.add_argument("--tensors")
+    ap.add_argument("--color-by")
     a = ap.parse_args()
     if a.write_blocks:
         write_blocks(a.input, a.write_blocks, a.second_without_tensors)
@@ -128,14 +145,26 @@ def main():
     if hasattr(view, "UseColorPaletteForBackground"):
         view.UseColorPaletteForBackground = 0
     view.Background = a.background
+    for name, value in a.view_set:
+        setattr(view, name, number(value))
     if not a.no_glyphs:
         disp = simple.Show(reader, view)
+        if a.color_by is not None:  # before the glyphs update, as a user colours the surface first
+            simple.ColorBy(disp, None if a.color_by == "NONE" else ("POINTS", a.color_by))
         disp.SetRepresentationType("Tensor Glyphs (ray cast)")
         disp.TensorGlyphKind = a.glyph
         disp.TensorGlyphGamma = a.gamma
         disp.TensorGlyphScaleMode = a.scale_mode
         disp.TensorGlyphScaleFactor = a.scale
         disp.TensorGlyphColorMode = a.color
+        if a.tensors:
+            disp.TensorGlyphTensors = ["POINTS", a.tensors]
+        if a.mask_array:
+            disp.TensorGlyphMask = ["POINTS", a.mask_array]
+        for name, value in a.set:
+            setattr(disp, name, number(value))
+        if a.representations_out:
+            write_representations(disp, reader, a.representations_out)
         if a.cell_tensors:
             names = [k for k in reader.CellData.keys() if reader.CellData[k].GetNumberOfComponents() in (6, 9)]
             disp.TensorGlyphTensors = ["CELLS", names[0]]
@@ -178,6 +207,27 @@ def main():
                             f.write("%s %d %d\n" % (kind, k, pid))
                         else:
                             f.write("block%s %d %d %d\n" % (kind, k, flat, pid))
+
+
+def number(text):
+    """An int where the text is one, else a float ("nan" too)."""
+    try:
+        return int(text)
+    except ValueError:
+        return float(text)
+
+
+def write_representations(disp, source, path):
+    """The representation types offered for the input, and whether the input
+    passes the glyph representation's own input domain ("input_array")."""
+    glyphs = servermanager.ProxyManager().SMProxyManager.NewProxy(
+        "representations", "TensorGlyphRayCastRepresentation")
+    domain = glyphs.GetProperty("Input").GetDomain("input_array")
+    with open(path, "w") as f:
+        for name in disp.Representation.Available:
+            f.write("offered %s\n" % name)
+        f.write("in_domain %d\n" % domain.IsInDomain(source.SMProxy, 0))
+    glyphs.UnRegister(None)
 
 
 def show_legend(disp, view, visible):

@@ -18,6 +18,8 @@
 #include <vtkPolyData.h>
 #include <vtkTypeUInt32Array.h>
 
+#include "global_sample.h"
+#include "io/selection.h"
 #include "io/tensor_field.h"
 
 namespace tg::paraview {
@@ -55,10 +57,43 @@ vtkSmartPointer<vtkDoubleArray> doubles(const char* name, const T& values) {
   return a;
 }
 
+// Where io::Selector finds a piece's points: an image piece by the indices
+// of its extent (the whole grid's, so that a stride does not depend on how
+// the ranks split it), any other piece by glyph id as a point set.
+struct PointIndex {
+  bool grid = false;
+  int dims[3] = {0, 0, 0};       // the grid the extent lies in
+  int ext[6] = {0, 0, 0, 0, 0, 0};
+  std::uint64_t of(vtkIdType i, std::uint64_t id) const {
+    if (!grid) return id;
+    const vtkIdType nx = ext[1] - ext[0] + 1, ny = ext[3] - ext[2] + 1;
+    const auto gi = std::uint64_t(i % nx + ext[0]), gj = std::uint64_t(i / nx % ny + ext[2]),
+               gk = std::uint64_t(i / (nx * ny) + ext[4]);
+    return gi + std::uint64_t(dims[0]) * (gj + std::uint64_t(dims[1]) * gk);
+  }
+};
+
+PointIndex pointIndex(vtkDataSet* input) {
+  PointIndex ix;
+  auto* image = vtkImageData::SafeDownCast(input);
+  if (!image) return ix;
+  image->GetExtent(ix.ext);
+  // An extent below index 0 is numbered from its own corner.
+  if (ix.ext[0] < 0 || ix.ext[2] < 0 || ix.ext[4] < 0)
+    for (int k = 0; k < 3; ++k) {
+      ix.ext[2 * k + 1] -= ix.ext[2 * k];
+      ix.ext[2 * k] = 0;
+    }
+  for (int k = 0; k < 3; ++k) ix.dims[k] = ix.ext[2 * k + 1] + 1;
+  ix.grid = true;
+  return ix;
+}
+
 // Reads one piece into `f`, its points numbered from `firstId`; the problem,
 // or "" when it is fine. A problem is reported after the collective calls, so
 // that the other ranks are not left waiting in them.
-std::string readPiece(const Piece& piece, std::uint64_t firstId, io::TensorField& f, LoadReport& report) {
+std::string readPiece(const Piece& piece, std::uint64_t firstId, const SelectionParams& select, io::TensorField& f,
+                      LoadReport& report) {
   vtkDataSet* input = piece.data;
   vtkDataArray* tensors = piece.tensors;
   const vtkIdType n = input ? input->GetNumberOfPoints() : 0;
@@ -68,30 +103,49 @@ std::string readPiece(const Piece& piece, std::uint64_t firstId, io::TensorField
     return "prepareGlyphInput: " + where + std::to_string(n) + " points but no point array of tensors (9 or 6 components)";
   const std::string name = tensors->GetName() ? tensors->GetName() : "";
   const int nc = tensors->GetNumberOfComponents();
-  if (nc != 9 && nc != 6)
+  if (!io::tensorLikeArray(nc, name))
     return "prepareGlyphInput: " + where + "array '" + name + "' has " + std::to_string(nc) +
-           " components; tensors need 9 (3x3) or 6 (XX YY ZZ XY YZ XZ)";
+           " components; tensors need 9 (3x3), 6 (XX YY ZZ XY YZ XZ) or 4 (2-D XX YY ZZ XY, named sigma or epsilon "
+           "as OpenGeoSys writes them)";
   // A cell array (chosen from Python: the property's list offers point
   // arrays only) has one tuple per cell: read per point, it is out of bounds
   // or another cell's tensor.
   if (tensors->GetNumberOfTuples() != n)
     return "prepareGlyphInput: " + where + "array '" + name + "' has " + std::to_string(tensors->GetNumberOfTuples()) +
            " tuples for " + std::to_string(n) + " points; the tensors must be point data";
+  vtkDataArray* mask = piece.mask;
+  if (mask && (mask->GetNumberOfComponents() != 1 || mask->GetNumberOfTuples() != n))
+    return "prepareGlyphInput: " + where + "mask array '" + (mask->GetName() ? mask->GetName() : "") + "' has " +
+           std::to_string(mask->GetNumberOfComponents()) + " components and " +
+           std::to_string(mask->GetNumberOfTuples()) + " tuples; a mask is one value per point";
   if (firstId + std::uint64_t(n) > io::kMaxInputs)
     return "prepareGlyphInput: " + std::to_string(firstId + std::uint64_t(n)) + " points; at most " +
            std::to_string(io::kMaxInputs) + " fit the id channel";
-  double p[3], t[9], s6[6];
+  const PointIndex index = pointIndex(input);
+  io::Selection sel;
+  sel.stride = select.stride;
+  const io::Selector selector(sel, "prepareGlyphInput", index.grid ? index.dims : nullptr);
+  double p[3], t[9], s6[6], full[9];
   for (vtkIdType i = 0; i < n; ++i) {
     input->GetPoint(i, p);
-    tensors->GetTuple(i, t);
     const auto id = std::uint32_t(firstId + std::uint64_t(i));
+    if (!selector.admit(index.of(i, id), p, f)) continue;
+    if (mask && !(mask->GetComponent(i, 0) >= select.maskMin)) {
+      ++f.totalPoints;
+      ++f.masked;
+      continue;
+    }
+    tensors->GetTuple(i, t);
     if (nc == 9) {
       // As io/vtk_reader.cpp measures it, for the same warning.
       report.maxAsymmetry = std::max(report.maxAsymmetry, io::asymmetry(t));
       f.addFull(id, p, t);
-    } else {
+    } else if (nc == 6) {
       symFromParaView(t, s6);
       f.addSym(id, p, s6);
+    } else {
+      io::planarTensor(nc, t, full);
+      f.addFull(id, p, full);
     }
   }
   return "";
@@ -113,7 +167,8 @@ double piecesGridSpacing(std::span<const Piece> pieces) {
 }  // namespace
 
 vtkSmartPointer<vtkPolyData> prepareGlyphInput(std::span<const Piece> pieces, bool composite,
-                                               vtkMultiProcessController* controller, LoadReport* reportOut) {
+                                               vtkMultiProcessController* controller, LoadReport* reportOut,
+                                               const SelectionParams& select) {
   io::TensorField f;
   LoadReport report;
   std::string problem;
@@ -126,7 +181,7 @@ vtkSmartPointer<vtkPolyData> prepareGlyphInput(std::span<const Piece> pieces, bo
       continue;
     }
     if (n > 0) ++report.piecesWithTensors;
-    std::string p = readPiece(piece, nextId, f, report);
+    std::string p = readPiece(piece, nextId, select, f, report);
     if (!p.empty()) {
       if (problem.empty()) problem = std::move(p);
       continue;
@@ -139,64 +194,46 @@ vtkSmartPointer<vtkPolyData> prepareGlyphInput(std::span<const Piece> pieces, bo
   }
   report.skippedNonFinite = f.skippedNonFinite;
   report.skippedOverflow = f.skippedOverflow;
+  report.kept = f.size();
+  report.masked = f.masked;
+  report.unselected = f.unselected;
   const std::size_t kept = f.size();
-  double spacing = piecesGridSpacing(pieces);
-  if (spacing <= 0.0) spacing = io::estimateSampleSpacing(f.positions);
   const tensor::GlyphSet glyphs = tensor::buildGlyphs(f.positions, f.tensors, f.ids);
-  SizingInfo info;
-  info.sample = tensor::sampleMagnitudes(glyphs, spacing);
   const bool any = kept > 0;
+  SizingInfo info;
+  // Collective: the sample and spacing of the whole dataset, whatever the ranks.
+  info.sample = globalMagnitudeSample(glyphs, any ? piecesGridSpacing(pieces) : INFINITY, controller);
   info.mdMin = any ? glyphs.mdMin : INFINITY;
   info.mdMax = any ? glyphs.mdMax : -INFINITY;
   info.eigenMin = any ? glyphs.eigenvalueMin : INFINITY;
   info.eigenMax = any ? glyphs.eigenvalueMax : -INFINITY;
 
   if (controller && controller->GetNumberOfProcesses() > 1) {
-    // Every rank sizes and colours by the whole dataset, so that a
-    // distributed picture equals the serial one: the union of the ranks'
-    // magnitude samples, the largest magnitude, the ranges, and the median
-    // of the ranks' sample spacings (ranks without points give none).
-    const int ranks = controller->GetNumberOfProcesses();
-    std::vector<double> mine = info.sample.sorted;
-    const vtkIdType myCount = vtkIdType(mine.size());
-    std::vector<vtkIdType> counts(ranks), offsets(ranks);
-    controller->AllGather(&myCount, counts.data(), 1);
-    vtkIdType total = 0;
-    for (int r = 0; r < ranks; ++r) {
-      offsets[r] = total;
-      total += counts[r];
-    }
-    std::vector<double> all(std::size_t(total) + 1);
-    controller->AllGatherV(mine.data(), all.data(), myCount, counts.data(), offsets.data());
-    all.resize(std::size_t(total));
-    std::sort(all.begin(), all.end());
-    info.sample.sorted = std::move(all);
-    const double mySpacing = any ? info.sample.spacing : NAN;
-    std::vector<double> spacings(ranks);
-    controller->AllGather(&mySpacing, spacings.data(), 1);
-    spacings.erase(std::remove_if(spacings.begin(), spacings.end(), [](double s) { return !(s > 0.0); }),
-                   spacings.end());
-    std::sort(spacings.begin(), spacings.end());
-    info.sample.spacing = spacings.empty() ? 0.0 : spacings[(spacings.size() - 1) / 2];
-    const double lows[3] = {-info.sample.maxAbs, info.mdMin, info.eigenMin};
+    // Every rank colours by the whole dataset's ranges, as it sizes by its
+    // sample (globalMagnitudeSample), so that a distributed picture equals
+    // the serial one.
+    const double lows[2] = {info.mdMin, info.eigenMin};
     const double highs[2] = {info.mdMax, info.eigenMax};
-    double lowOut[3], highOut[2];
-    controller->AllReduce(lows, lowOut, 3, vtkCommunicator::MIN_OP);
+    double lowOut[2], highOut[2];
+    controller->AllReduce(lows, lowOut, 2, vtkCommunicator::MIN_OP);
     controller->AllReduce(highs, highOut, 2, vtkCommunicator::MAX_OP);
-    info.sample.maxAbs = -lowOut[0];
-    info.mdMin = lowOut[1];
-    info.eigenMin = lowOut[2];
+    info.mdMin = lowOut[0];
+    info.eigenMin = lowOut[1];
     info.mdMax = highOut[0];
     info.eigenMax = highOut[1];
     // The load's warnings, said once for the whole dataset.
-    const double loadCounts[4] = {double(report.skippedNonFinite), double(report.skippedOverflow),
-                              double(report.piecesWithTensors), double(report.piecesWithout)};
-    double countsOut[4];
-    controller->AllReduce(loadCounts, countsOut, 4, vtkCommunicator::SUM_OP);
+    const double loadCounts[7] = {double(report.skippedNonFinite), double(report.skippedOverflow),
+                                  double(report.piecesWithTensors), double(report.piecesWithout),
+                                  double(report.masked), double(report.unselected), double(report.kept)};
+    double countsOut[7];
+    controller->AllReduce(loadCounts, countsOut, 7, vtkCommunicator::SUM_OP);
     report.skippedNonFinite = std::size_t(countsOut[0]);
     report.skippedOverflow = std::size_t(countsOut[1]);
     report.piecesWithTensors = std::size_t(countsOut[2]);
     report.piecesWithout = std::size_t(countsOut[3]);
+    report.masked = std::size_t(countsOut[4]);
+    report.unselected = std::size_t(countsOut[5]);
+    report.kept = std::size_t(countsOut[6]);
     double asym = report.maxAsymmetry;
     controller->AllReduce(&asym, &report.maxAsymmetry, 1, vtkCommunicator::MAX_OP);
   }

@@ -39,6 +39,18 @@ struct Piece {
   vtkDataSet* data = nullptr;
   vtkDataArray* tensors = nullptr;  // null: the piece has none
   unsigned flatIndex = 0;
+  vtkDataArray* mask = nullptr;     // a point array of one component, or none
+};
+
+// The CLI's selection of what is drawn, for a dataset in memory: --stride
+// (io::Selector's rule: every N-th voxel along each axis of an image piece,
+// by the indices of its extent, so that it does not depend on the ranks;
+// every N-th point of other pieces, by glyph id) and --mask-min with the mask
+// a point array of the piece (Piece::mask; kept where mask >= maskMin, the
+// CLI's rule).
+struct SelectionParams {
+  long long stride = 1;
+  double maskMin = 0.5;
 };
 
 // What a load left out or changed, over all ranks (sums and the maximum; a
@@ -47,6 +59,9 @@ struct Piece {
 struct LoadReport {
   std::size_t skippedNonFinite = 0;
   std::size_t skippedOverflow = 0;
+  std::size_t kept = 0;        // tensors to draw
+  std::size_t masked = 0;      // below SelectionParams::maskMin
+  std::size_t unselected = 0;  // left out by the stride
   double maxAsymmetry = 0;          // io::asymmetry over the 9-component tensors
   std::size_t piecesWithTensors = 0;
   std::size_t piecesWithout = 0;    // pieces with points but no tensors (skipped)
@@ -55,18 +70,21 @@ struct LoadReport {
 // The points of the pieces whose tensor is finite (the CLI's rules:
 // io::TensorField::addFull/addSym), as float positions, tensors in
 // tensorglyph's order and ids; a piece's tensors hold 9 components (row-major
-// 3x3, symmetrised) or 6 in ParaView's order XX YY ZZ XY YZ XZ. A glyph's id
+// 3x3, symmetrised), 6 in ParaView's order XX YY ZZ XY YZ XZ, or a 2-D
+// tensor of 4 (XX YY ZZ XY) under OpenGeoSys's names sigma and epsilon, as the
+// CLI reads them (io::tensorLikeArray, io::planarTensor). A glyph's id
 // is its point id when `composite` is false (one piece); otherwise the pieces'
 // points are numbered on in order and kBlockArray maps an id back to (flat
 // index, point id); its pieces without tensors are skipped (counted in
-// LoadReport::piecesWithout). The sizing sample is merged over the ranks of
+// LoadReport::piecesWithout). The sizing sample and spacing are the whole
+// dataset's, over the ranks of
 // `controller` (a collective call; null: this process alone). Throws
 // std::invalid_argument when a single piece has points but no tensors, or
 // any piece's tensors have another component count or are not one tuple per
 // point; after the collective calls, so that no rank is left waiting.
 vtkSmartPointer<vtkPolyData> prepareGlyphInput(std::span<const Piece> pieces, bool composite,
                                                vtkMultiProcessController* controller,
-                                               LoadReport* report = nullptr);
+                                               LoadReport* report = nullptr, const SelectionParams& select = {});
 
 // The composite table of a prepared input: (first id, flat index) pairs in
 // ascending id order; empty for a single dataset.

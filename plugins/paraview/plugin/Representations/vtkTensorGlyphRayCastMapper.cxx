@@ -4,12 +4,15 @@
 #include <chrono>
 #include <cmath>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include <vtkCamera.h>
 #include <vtkDataObject.h>
 #include <vtkHardwareSelector.h>
 #include <vtkInformation.h>
+#include <vtkLight.h>
+#include <vtkLightCollection.h>
 #include <vtkMath.h>
 #include <vtkMatrix4x4.h>
 #include <vtkObjectFactory.h>
@@ -19,6 +22,8 @@
 
 #include "glyph_input.h"
 #include "host_gl.h"
+#include "property_check.h"
+#include "render/glyph_kind.h"
 #include "render/renderer.h"
 
 namespace {
@@ -93,33 +98,27 @@ vtkTensorGlyphRayCastMapper::~vtkTensorGlyphRayCastMapper() = default;
 
 namespace {
 
-// `v` clamped into [lo, hi] as vtkSetClampMacro does; false (nothing set)
-// for a NaN, which the macro would store, and for the value already held.
-bool setClamped(double& field, double v, double lo, double hi) {
-  if (std::isnan(v)) return false;
-  v = std::clamp(v, lo, hi);
-  if (field == v) return false;
-  field = v;
-  return true;
-}
+// --lambda0's range, with 0 for its default (the median magnitude).
+constexpr app::NumberRange kLambda0{app::ranges::kPositiveFloat.lo, app::ranges::kPositiveFloat.hi, false, true};
 
 }  // namespace
 
-void vtkTensorGlyphRayCastMapper::SetGamma(double v) {
-  if (setClamped(this->Gamma, v, 0.0, 1e6)) this->Modified();
-}
-
-void vtkTensorGlyphRayCastMapper::SetScaleFactor(double v) {
-  if (setClamped(this->ScaleFactor, v, 0.0, 1e300)) this->Modified();
-}
-
-void vtkTensorGlyphRayCastMapper::SetFAThreshold(double v) {
-  if (setClamped(this->FAThreshold, v, 0.0, 1e6)) this->Modified();
-}
-
-void vtkTensorGlyphRayCastMapper::SetMarchEpsilon(double v) {
-  if (setClamped(this->MarchEpsilon, v, 1e-12, 1.0)) this->Modified();
-}
+#define TG_CHECKED_SETTER(Name, Type, Property, Range)              \
+  void vtkTensorGlyphRayCastMapper::Set##Name(Type v) {             \
+    if (paraview::acceptValue(this, "Set" #Name, "TensorGlyph" Property, this->Name, v, Range)) this->Modified(); \
+  }
+TG_CHECKED_SETTER(GlyphKind, int, "Kind", paraview::choices(render::kGlyphKindCount))
+TG_CHECKED_SETTER(Gamma, double, "Gamma", app::ranges::kGamma)
+TG_CHECKED_SETTER(ScaleMode, int, "ScaleMode", paraview::choices(3))
+TG_CHECKED_SETTER(ScaleFactor, double, "ScaleFactor", app::ranges::kPositiveFloat)
+TG_CHECKED_SETTER(Magnitude, int, "Magnitude", paraview::choices(3))
+TG_CHECKED_SETTER(Lambda0, double, "Lambda0", kLambda0)
+TG_CHECKED_SETTER(Clamp, double, "Clamp", app::ranges::kClampSpacings)
+TG_CHECKED_SETTER(FAThreshold, double, "FAThreshold", app::ranges::kUnit)
+TG_CHECKED_SETTER(ColorMode, int, "ColorMode", paraview::choices(6))  // render::ColorMode's six
+TG_CHECKED_SETTER(MarchIterations, int, "MarchIterations", app::ranges::kIterations)
+TG_CHECKED_SETTER(MarchEpsilon, double, "MarchEpsilon", app::ranges::kEpsilon)
+#undef TG_CHECKED_SETTER
 
 int vtkTensorGlyphRayCastMapper::FillInputPortInformation(int, vtkInformation* info) {
   info->Set(vtkAlgorithm::INPUT_REQUIRED_DATA_TYPE(), "vtkPolyData");
@@ -128,11 +127,19 @@ int vtkTensorGlyphRayCastMapper::FillInputPortInformation(int, vtkInformation* i
 
 namespace {
 
-tensor::ResolvedScale resolve(vtkTensorGlyphRayCastMapper& m, const paraview::SizingInfo& s) {
+// The CLI's sizing (app::FieldFlags::scaleParams) from the properties.
+tensor::ScaleParams scaleParams(vtkTensorGlyphRayCastMapper& m) {
   tensor::ScaleParams p;
   p.mode = tensor::ScaleMode(m.GetScaleMode());
   p.factor = m.GetScaleFactor();
-  return tensor::resolveScale(p, s.sample);
+  p.magnitude = tensor::Magnitude(m.GetMagnitude());
+  if (m.GetLambda0() > 0.0) p.lambda0 = m.GetLambda0();
+  if (!m.GetClampDefault()) p.clampSpacings = m.GetClamp();
+  return p;
+}
+
+tensor::ResolvedScale resolve(vtkTensorGlyphRayCastMapper& m, const paraview::SizingInfo& s) {
+  return tensor::resolveScale(scaleParams(m), s.sample);
 }
 
 // One prop's render inside one of VTK's hardware selection passes
@@ -179,6 +186,22 @@ class SelectionPass {
   paraview::CompositeOutput out_;
 };
 
+// The view's light kit (its UseLight and KeyLightIntensity) as a factor on
+// the CLI's key light: the kit's key is its brightest camera light, and
+// ParaView's default key intensity, 0.75, gives the CLI's picture; with the
+// kit off (no camera light on) the key light is off, the head light and the
+// ambient term stay. The key's direction stays the CLI's.
+double keyLightFactor(vtkRenderer* ren) {
+  constexpr double kParaViewKeyIntensity = 0.75;
+  double key = 0.0;
+  vtkLightCollection* lights = ren->GetLights();
+  vtkCollectionSimpleIterator it;
+  lights->InitTraversal(it);
+  while (vtkLight* light = lights->GetNextLight(it))
+    if (light->GetSwitch() && light->LightTypeIsCameraLight()) key = std::max(key, light->GetIntensity());
+  return key / kParaViewKeyIntensity;
+}
+
 }  // namespace
 
 double vtkTensorGlyphRayCastMapper::GetResolvedScale() {
@@ -188,10 +211,7 @@ double vtkTensorGlyphRayCastMapper::GetResolvedScale() {
 
 double* vtkTensorGlyphRayCastMapper::GetBounds() {
   auto* input = vtkPolyData::SafeDownCast(this->GetInputDataObject(0, 0));
-  tensor::ScaleParams p;
-  p.mode = tensor::ScaleMode(this->ScaleMode);
-  p.factor = this->ScaleFactor;
-  if (!paraview::glyphBounds(input, p, this->Bounds)) vtkMath::UninitializeBounds(this->Bounds);
+  if (!paraview::glyphBounds(input, scaleParams(*this), this->Bounds)) vtkMath::UninitializeBounds(this->Bounds);
   return this->Bounds;
 }
 
@@ -261,6 +281,7 @@ void vtkTensorGlyphRayCastMapper::Render(vtkRenderer* ren, vtkActor*) {
     p.ao.enabled = this->AmbientOcclusion;
     p.outline.enabled = this->Outlines;
     p.shadow.enabled = this->Shadows;
+    p.light.key = float(double(p.light.key) * keyLightFactor(ren));
     tensor::GlyphSet box;  // the depth range: what glyphBoxWC needs of the uploaded set
     box.boundsMinWC = in.centresLo;
     box.boundsMaxWC = in.centresHi;
@@ -295,5 +316,7 @@ void vtkTensorGlyphRayCastMapper::PrintSelf(ostream& os, vtkIndent indent) {
   this->Superclass::PrintSelf(os, indent);
   os << indent << "GlyphKind: " << this->GlyphKind << "\n" << indent << "Gamma: " << this->Gamma << "\n";
   os << indent << "ScaleMode: " << this->ScaleMode << "\n" << indent << "ScaleFactor: " << this->ScaleFactor << "\n";
+  os << indent << "Magnitude: " << this->Magnitude << "\n" << indent << "Lambda0: " << this->Lambda0 << "\n";
+  os << indent << "ClampDefault: " << this->ClampDefault << "\n" << indent << "Clamp: " << this->Clamp << "\n";
   os << indent << "ColorMode: " << this->ColorMode << "\n" << indent << "FAThreshold: " << this->FAThreshold << "\n";
 }

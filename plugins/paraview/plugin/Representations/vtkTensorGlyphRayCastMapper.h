@@ -21,25 +21,40 @@ public:
   vtkTypeMacro(vtkTensorGlyphRayCastMapper, vtkMapper);
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
-  // Glyph kind: 0 ellipsoid, 1 superquadric, 2 cylinder, 3 box.
-  vtkSetClampMacro(GlyphKind, int, 0, 3);
+  // Every setter refuses a value the command line refuses (the ranges of
+  // src/app/option_ranges.h, the kinds of render/glyph_kind.h): it says so
+  // in the command line's words (vtkErrorMacro: ParaView's output messages)
+  // and keeps the value held. A NaN is refused too.
+  // Glyph kind: the row of render::glyphKinds() (0 ellipsoid, 1 superquadric,
+  // 2 cylinder, 3 box).
+  void SetGlyphKind(int v);
   vtkGetMacro(GlyphKind, int);
-  // The double setters clamp as vtkSetClampMacro would, but ignore a NaN
-  // (keeping the old value), which the macro stores: every comparison with
-  // NaN is false.
   void SetGamma(double v);
   vtkGetMacro(Gamma, double);
   // Scale mode: 0 absolute, 1 max, 2 spacing (tensor::ScaleMode).
-  vtkSetClampMacro(ScaleMode, int, 0, 2);
+  void SetScaleMode(int v);
   vtkGetMacro(ScaleMode, int);
   void SetScaleFactor(double v);
   vtkGetMacro(ScaleFactor, double);
+  // The CLI's --magnitude (0 linear, 1 log, 2 shape: tensor::Magnitude) and
+  // --lambda0 (0: the median magnitude, the CLI's default).
+  void SetMagnitude(int v);
+  vtkGetMacro(Magnitude, int);
+  void SetLambda0(double v);
+  vtkGetMacro(Lambda0, double);
+  // The CLI's --clamp in sample spacings, 0 off; with ClampDefault on (the
+  // default) the CLI's default instead: 2 in the spacing and max modes, off
+  // in absolute mode.
+  vtkSetMacro(ClampDefault, bool);
+  vtkGetMacro(ClampDefault, bool);
+  void SetClamp(double v);
+  vtkGetMacro(Clamp, double);
   void SetFAThreshold(double v);
   vtkGetMacro(FAThreshold, double);
   // Colour mode: 0 DEC, 1 FA, 2 MD, 3 cl, 4 cp, 5 sign (render::ColorMode).
-  vtkSetClampMacro(ColorMode, int, 0, 5);
+  void SetColorMode(int v);
   vtkGetMacro(ColorMode, int);
-  vtkSetClampMacro(MarchIterations, int, 1, 1000);
+  void SetMarchIterations(int v);
   vtkGetMacro(MarchIterations, int);
   void SetMarchEpsilon(double v);
   vtkGetMacro(MarchEpsilon, double);
@@ -74,6 +89,10 @@ protected:
   double Gamma = 3.0;
   int ScaleMode = 2;
   double ScaleFactor = 1.0;
+  int Magnitude = 0;
+  double Lambda0 = 0.0;
+  bool ClampDefault = true;
+  double Clamp = 2.0;
   double FAThreshold = 0.0;
   int ColorMode = 0;
   int MarchIterations = 10;

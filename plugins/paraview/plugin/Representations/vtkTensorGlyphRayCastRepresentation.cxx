@@ -21,6 +21,7 @@
 
 #include "color_legend.h"
 #include "glyph_input.h"
+#include "property_check.h"
 #include "io/tensor_field.h"
 #include "vtkTensorGlyphRayCastMapper.h"
 
@@ -28,8 +29,10 @@ vtkStandardNewMacro(vtkTensorGlyphRayCastRepresentation);
 
 vtkTensorGlyphRayCastRepresentation::vtkTensorGlyphRayCastRepresentation() {
   this->Actor->SetMapper(this->Mapper);
-  // The active tensors unless the user picks another point array.
+  // The active tensors unless the user picks another point array; the mask
+  // (used only with UseMask) the active scalars unless another is picked.
   this->SetInputArrayToProcess(0, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::TENSORS);
+  this->SetInputArrayToProcess(1, 0, 0, vtkDataObject::FIELD_ASSOCIATION_POINTS, vtkDataSetAttributes::SCALARS);
 }
 
 vtkTensorGlyphRayCastRepresentation::~vtkTensorGlyphRayCastRepresentation() = default;
@@ -49,7 +52,7 @@ namespace {
 // The CLI's load warnings (app::reportLoad), in its words, with the array in
 // place of the file. RequestData runs once per update, not once per render.
 void reportLoad(vtkObject* self, const tg::paraview::LoadReport& report,
-                const std::vector<tg::paraview::Piece>& pieces) {
+                const std::vector<tg::paraview::Piece>& pieces, const tg::paraview::SelectionParams& select) {
   std::string name;
   for (const auto& piece : pieces)
     if (piece.tensors && piece.tensors->GetName()) name = piece.tensors->GetName();
@@ -61,6 +64,11 @@ void reportLoad(vtkObject* self, const tg::paraview::LoadReport& report,
   if (report.skippedOverflow)
     vtkWarningWithObjectMacro(self, << array << "skipped " << report.skippedOverflow
                     << " tensors whose values overflow single precision (beyond 3.4e38)");
+  // As the CLI's checkLoaded: the options that left nothing, named.
+  if (report.kept == 0 && report.masked + report.unselected > 0)
+    vtkErrorWithObjectMacro(self, << "prepareGlyphInput: array '" << name << "': no tensor to draw: "
+                                  << report.masked << " masked (TensorGlyphMaskMin " << select.maskMin << "), "
+                                  << report.unselected << " left out by TensorGlyphStride " << select.stride);
   if (report.piecesWithTensors == 0 && report.piecesWithout > 0)
     vtkErrorWithObjectMacro(self, << "prepareGlyphInput: none of the " << report.piecesWithout
                   << " blocks with points has a point array of tensors (9 or 6 components)");
@@ -83,22 +91,27 @@ int vtkTensorGlyphRayCastRepresentation::RequestData(
     it->SkipEmptyNodesOn();
     for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem())
       if (auto* leaf = vtkDataSet::SafeDownCast(it->GetCurrentDataObject()))
-        pieces.push_back({leaf, this->GetInputArrayToProcess(0, leaf), it->GetCurrentFlatIndex()});
+        pieces.push_back({leaf, this->GetInputArrayToProcess(0, leaf), it->GetCurrentFlatIndex(), this->MaskOf(leaf)});
   } else {
-    pieces.push_back({input, input ? this->GetInputArrayToProcess(0, input) : nullptr, 0});
+    pieces.push_back({input, input ? this->GetInputArrayToProcess(0, input) : nullptr, 0, this->MaskOf(input)});
   }
+  const tg::paraview::SelectionParams select{this->Stride, this->MaskMin};
   auto* controller = vtkMultiProcessController::GetGlobalController();
   try {
     // Collective over the ranks: every rank runs this, with or without points.
     tg::paraview::LoadReport report;
-    this->Prepared->ShallowCopy(tg::paraview::prepareGlyphInput(pieces, blocks != nullptr, controller, &report));
+    this->Prepared->ShallowCopy(tg::paraview::prepareGlyphInput(pieces, blocks != nullptr, controller, &report, select));
     // The counts are the whole dataset's: said once, by the first rank.
-    if (!controller || controller->GetLocalProcessId() == 0) reportLoad(this, report, pieces);
+    if (!controller || controller->GetLocalProcessId() == 0) reportLoad(this, report, pieces, select);
   } catch (const std::exception& e) {
     vtkErrorMacro(<< e.what());
     this->Prepared->Initialize();
   }
   return this->Superclass::RequestData(request, inputVector, outputVector);
+}
+
+vtkDataArray* vtkTensorGlyphRayCastRepresentation::MaskOf(vtkDataSet* piece) {
+  return this->UseMask && piece ? this->GetInputArrayToProcess(1, piece) : nullptr;
 }
 
 int vtkTensorGlyphRayCastRepresentation::ProcessViewRequest(
@@ -114,6 +127,14 @@ int vtkTensorGlyphRayCastRepresentation::ProcessViewRequest(
     if (vtkMath::AreBoundsInitialized(bounds)) vtkPVRenderView::SetGeometryBounds(inInfo, this, bounds);
   } else if (request_type == vtkPVView::REQUEST_RENDER()) {
     this->Mapper->SetInputConnection(vtkPVRenderView::GetPieceProducer(inInfo, this));
+    // Only the representation in use renders: said when the glyphs are drawn.
+    auto* controller = vtkMultiProcessController::GetGlobalController();
+    if (!this->ColorArray.empty() && this->ColorArray != this->ColorArraySaid &&
+        (!controller || controller->GetLocalProcessId() == 0)) {
+      vtkWarningMacro(<< "ColorBy: the glyphs' colours follow TensorGlyphColorMode; colouring by '" << this->ColorArray
+                      << "' through ParaView's lookup table is not applied to them (docs/paraview.md)");
+      this->ColorArraySaid = this->ColorArray;
+    }
   }
   return 1;
 }
@@ -180,14 +201,47 @@ TG_FORWARD(Shadows, bool)
 #undef TG_FORWARD
 
 // The view's bounds follow the glyphs' size: a new REQUEST_UPDATE.
-void vtkTensorGlyphRayCastRepresentation::SetScaleMode(int v) {
-  this->Mapper->SetScaleMode(v);
+#define TG_FORWARD_SIZE(Name, Type)                                              \
+  void vtkTensorGlyphRayCastRepresentation::Set##Name(Type v) {                  \
+    this->Mapper->Set##Name(v);                                                  \
+    this->MarkModified();                                                        \
+  }
+TG_FORWARD_SIZE(ScaleMode, int)
+TG_FORWARD_SIZE(ScaleFactor, double)
+TG_FORWARD_SIZE(Magnitude, int)
+TG_FORWARD_SIZE(Lambda0, double)
+TG_FORWARD_SIZE(ClampDefault, bool)
+TG_FORWARD_SIZE(Clamp, double)
+#undef TG_FORWARD_SIZE
+
+void vtkTensorGlyphRayCastRepresentation::SetOpacity(double v) {
+  if (v == this->Opacity) return;
+  this->Opacity = v;
+  if (v < 1.0)
+    vtkWarningMacro(<< "SetOpacity: the ray-cast glyphs are drawn opaque; Opacity " << v
+                    << " is not applied to them (docs/paraview.md)");
+}
+
+void vtkTensorGlyphRayCastRepresentation::SetColorArrayName(int, int, int, int, const char* name) {
+  this->ColorArray = name ? name : "";
+  if (this->ColorArray.empty()) this->ColorArraySaid.clear();
+}
+
+// What is selected is new data: RequestData again.
+void vtkTensorGlyphRayCastRepresentation::SetStride(int v) {
+  if (tg::paraview::acceptValue(this, "SetStride", "TensorGlyphStride", this->Stride, v, tg::app::ranges::kStride))
+    this->MarkModified();
+}
+
+void vtkTensorGlyphRayCastRepresentation::SetUseMask(bool v) {
+  if (this->UseMask == v) return;
+  this->UseMask = v;
   this->MarkModified();
 }
 
-void vtkTensorGlyphRayCastRepresentation::SetScaleFactor(double v) {
-  this->Mapper->SetScaleFactor(v);
-  this->MarkModified();
+void vtkTensorGlyphRayCastRepresentation::SetMaskMin(double v) {
+  if (tg::paraview::acceptValue(this, "SetMaskMin", "TensorGlyphMaskMin", this->MaskMin, v, tg::app::ranges::kAnyFloat))
+    this->MarkModified();
 }
 
 void vtkTensorGlyphRayCastRepresentation::PrintSelf(ostream& os, vtkIndent indent) {

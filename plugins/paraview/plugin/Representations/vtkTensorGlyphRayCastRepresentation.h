@@ -13,6 +13,8 @@
 #include "vtkPVDataRepresentation.h"
 
 class vtkActor;
+class vtkDataArray;
+class vtkDataSet;
 class vtkPolyData;
 class vtkTensorGlyphRayCastMapper;
 
@@ -33,6 +35,15 @@ public:
   void SetGamma(double v);
   void SetScaleMode(int v);
   void SetScaleFactor(double v);
+  void SetMagnitude(int v);
+  void SetLambda0(double v);
+  void SetClampDefault(bool v);
+  void SetClamp(double v);
+  // The CLI's --stride, and --mask/--mask-min with a point array of the
+  // input as the mask (input array 1; glyph_input.h's SelectionParams).
+  void SetStride(int v);
+  void SetUseMask(bool v);
+  void SetMaskMin(double v);
   void SetFAThreshold(double v);
   void SetColorMode(int v);
   void SetMarchIterations(int v);
@@ -40,9 +51,14 @@ public:
   void SetAmbientOcclusion(bool v);
   void SetOutlines(bool v);
   void SetShadows(bool v);
-  // The representation's shared properties that do not apply are accepted
-  // and ignored, so the GeometryRepresentation extension can forward them.
-  void SetOpacity(double) {}
+  // The GeometryRepresentation's Opacity, forwarded to every subproxy: the
+  // glyphs are drawn opaque, and a value below 1 is said to be ignored
+  // (docs/paraview.md) rather than ignored in silence.
+  void SetOpacity(double v);
+  // The GeometryRepresentation's ColorArrayName (ParaView's ColorBy), shared
+  // likewise: the glyphs' colours follow ColorMode, and an array chosen is
+  // said not to colour them when the glyphs are next drawn.
+  void SetColorArrayName(int idx, int port, int connection, int association, const char* name);
 
   vtkTensorGlyphRayCastMapper* GetMapper();
 
@@ -62,6 +78,8 @@ protected:
   int RequestData(vtkInformation*, vtkInformationVector**, vtkInformationVector*) override;
   bool AddToView(vtkView* view) override;
   bool RemoveFromView(vtkView* view) override;
+  // The mask array of a piece when UseMask is on, else null.
+  vtkDataArray* MaskOf(vtkDataSet* piece);
 
   vtkNew<vtkTensorGlyphRayCastMapper> Mapper;
   vtkNew<vtkActor> Actor;
@@ -69,6 +87,12 @@ protected:
   std::string LegendTitle;
   double LegendRange[2] = {0.0, 1.0};
   vtkNew<vtkDoubleArray> LegendPoints;
+  int Stride = 1;
+  bool UseMask = false;
+  double MaskMin = 0.5;
+  double Opacity = 1.0;
+  std::string ColorArray;  // ParaView's ColorBy array, or empty
+  std::string ColorArraySaid;  // the one last said not to apply
 
 private:
   vtkTensorGlyphRayCastRepresentation(const vtkTensorGlyphRayCastRepresentation&) = delete;

@@ -1,0 +1,291 @@
+// The plugin's properties against the command line's options: the same
+// ranges refused in the same words, the same sizing choices drawing the same
+// picture, and the input domain that keeps the representation to tensors.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "paraview/paraview_run.h"
+
+namespace {
+
+using namespace tg::test::pv;
+
+long glyphPixelsOf(const Image& img) {
+  long n = 0;
+  for (int i = 0; i < img.width * img.height; ++i) n += covered(img, i, kBackground);
+  return n;
+}
+
+// What follows "must be within " in `err` after `name`, to the end of its
+// line or the "; kept" the plugin adds: the range as the CLI words it.
+std::string rangeSaid(const std::string& err, const std::string& name) {
+  const std::string key = name + " must be within ";
+  const std::size_t at = err.find(key);
+  if (at == std::string::npos) return "";
+  const std::size_t from = at + key.size();
+  std::size_t to = err.find_first_of(";\n", from);
+  if (to == std::string::npos) to = err.size();
+  // The plugin's messages come through ParaView's coloured log lines.
+  std::string s = err.substr(from, to - from);
+  if (const std::size_t esc = s.find('\x1b'); esc != std::string::npos) s.resize(esc);
+  return s;
+}
+
+struct Refusal {
+  std::string property, value, flag;
+};
+
+// Each property set beyond the CLI's range is refused with the CLI's range in
+// the CLI's words ("NAME must be within RANGE"), and the value held is kept:
+// the picture is the default one, not blank (a scale factor of 0 or -1 drew
+// nothing, and Gamma 20000 was taken past its domain).
+TEST_F(ParaViewPlugin, OutOfRangeValuesAreRefusedInTheCliWords) {
+  TG_SKIP_WITHOUT_PARAVIEW();
+  const std::vector<Refusal> refusals = {
+      {"TensorGlyphGamma", "20000", "--gamma"},
+      {"TensorGlyphScaleFactor", "0", "--scale"},
+      {"TensorGlyphScaleFactor", "-1", "--scale"},
+      {"TensorGlyphFAThreshold", "2", "--fa-min"},
+      {"TensorGlyphMarchIterations", "0", "--iterations"},
+      {"TensorGlyphMarchEpsilon", "1", "--epsilon"},
+      {"TensorGlyphClamp", "0.001", "--clamp"},
+  };
+  const fs::path plain = dir / "plain.png", bad = dir / "bad.png", cliOut = dir / "cli.png";
+  // The clamp is read with its default off; 2 spacings is the default's.
+  std::string sets = " --set TensorGlyphClampDefault 0 --set TensorGlyphClamp 2";
+  for (const Refusal& r : refusals) sets += " --set " + r.property + " " + r.value;
+  const CmdResult a = runPvbatch("--output " + plain.string() + " " + kCamera, dir);
+  ASSERT_EQ(a.code, 0) << a.err;
+  const CmdResult b = runPvbatch("--output " + bad.string() + " " + kCamera + sets, dir);
+  ASSERT_EQ(b.code, 0) << b.err;
+  for (const Refusal& r : refusals) {
+    const CmdResult c = tg::test::runBinary("render " + kKitten + " " + r.flag + "=" + r.value + " -o " +
+                                                cliOut.string(), dir);
+    EXPECT_EQ(c.code, 2) << r.flag << " " << r.value << ": " << c.err;
+    const std::string cli = rangeSaid(c.err, r.flag);
+    ASSERT_FALSE(cli.empty()) << r.flag << ": " << c.err;
+    EXPECT_EQ(rangeSaid(b.err, r.property), cli) << r.property << " " << r.value << ": " << b.err;
+  }
+  EXPECT_NE(b.err.find("SetScaleFactor: TensorGlyphScaleFactor must be within"), std::string::npos) << b.err;
+  const Image x = readImage(plain), y = readImage(bad);
+  ASSERT_EQ(x.width, 400);
+  ASSERT_EQ(y.width, x.width);
+  ASSERT_GT(glyphPixelsOf(x), 2000);
+  EXPECT_EQ(differing(x, y, 0.0f), 0) << "a refused value must leave the picture as it was";
+}
+
+// The kinds outside the table's rows are refused too, in the same words.
+TEST_F(ParaViewPlugin, GlyphKindOutsideTheTableIsRefused) {
+  TG_SKIP_WITHOUT_PARAVIEW();
+  const fs::path png = dir / "kind.png";
+  const CmdResult r = runPvbatch("--output " + png.string() + " " + kCamera + " --set TensorGlyphKind 4", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(rangeSaid(r.err, "TensorGlyphKind"), "0..3") << r.err;
+  EXPECT_GT(glyphPixelsOf(readImage(png)), 2000);
+}
+
+// The CLI's magnitude mapping and clamp through the plugin's properties: the
+// same picture as `render --magnitude log --clamp 0.5`, and another than the
+// default one (the properties take effect).
+TEST_F(ParaViewPlugin, MagnitudeMappingAndClampMatchTheCli) {
+  TG_SKIP_WITHOUT_PARAVIEW();
+  const fs::path cli = dir / "cli.png", pv = dir / "pv.png", plain = dir / "plain.png";
+  const CmdResult c =
+      tg::test::runBinary("render " + kKitten + " --magnitude log --clamp 0.5 -o " + cli.string() + " " + kCamera, dir);
+  ASSERT_EQ(c.code, 0) << c.err;
+  const CmdResult r = runPvbatch("--output " + pv.string() + " " + kCamera +
+                                     " --set TensorGlyphMagnitude 1 --set TensorGlyphClampDefault 0"
+                                     " --set TensorGlyphClamp 0.5",
+                                 dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const CmdResult p = runPvbatch("--output " + plain.string() + " " + kCamera, dir);
+  ASSERT_EQ(p.code, 0) << p.err;
+  const Image a = readImage(cli), b = readImage(pv), d = readImage(plain);
+  ASSERT_EQ(a.width, 400);
+  ASSERT_EQ(b.width, a.width);
+  ASSERT_EQ(d.width, a.width);
+  ASSERT_GT(glyphPixelsOf(a), 2000);
+  EXPECT_LE(differing(a, b, 1.0f / 255.0f), a.width * a.height / 1000);
+  EXPECT_GT(differing(b, d, 1.0f / 255.0f), 1000) << "log mapping and clamp 0.5 must change the picture";
+}
+
+// The glyphs' input domain (point tensors of 9 or 6 components) rejects a
+// dataset of scalars and accepts the kitten's stress tensors.
+TEST_F(ParaViewPlugin, InputDomainKeepsTheRepresentationToTensors) {
+  TG_SKIP_WITHOUT_PARAVIEW();
+  const fs::path in = dir / "scalars.vtk", png = dir / "r.png", out = dir / "repr.txt";
+  std::ofstream(in) << "# vtk DataFile Version 3.0\nscalars only\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n"
+                       "0 0 0 1 0 0 0 1 0\nPOINT_DATA 3\nSCALARS fa float 1\nLOOKUP_TABLE default\n0.1 0.5 0.9\n";
+  const CmdResult s =
+      runPvbatch("--output " + png.string() + " --input " + in.string() + " --representations-out " + out.string(), dir);
+  ASSERT_EQ(s.code, 0) << s.err;
+  const std::string scalars = tg::test::slurp(out);
+  EXPECT_NE(scalars.find("in_domain 0"), std::string::npos) << scalars;
+  const CmdResult k = runPvbatch("--output " + png.string() + " " + kCamera + " --representations-out " + out.string(), dir);
+  ASSERT_EQ(k.code, 0) << k.err;
+  const std::string kitten = tg::test::slurp(out);
+  EXPECT_NE(kitten.find("in_domain 1"), std::string::npos) << kitten;
+  EXPECT_NE(kitten.find("offered Tensor Glyphs (ray cast)"), std::string::npos) << kitten;
+}
+
+}  // namespace
+
+namespace {
+
+// The CLI's --stride through TensorGlyphStride: every third point of the
+// kitten, the same picture as `render --stride 3` (absolute scale, so that
+// the comparison does not rest on how either sizes a selection), and fewer
+// glyph pixels than all points.
+TEST_F(ParaViewPlugin, StrideMatchesTheCli) {
+  TG_SKIP_WITHOUT_PARAVIEW();
+  const fs::path cli = dir / "cli.png", pv = dir / "pv.png", all = dir / "all.png";
+  const std::string sizing = " --scale-mode absolute --scale 0.0089";
+  const CmdResult c =
+      tg::test::runBinary("render " + kKitten + sizing + " --stride 3 -o " + cli.string() + " " + kCamera, dir);
+  ASSERT_EQ(c.code, 0) << c.err;
+  const std::string pvSizing = " --scale-mode 0 --scale 0.0089";
+  const CmdResult r = runPvbatch("--output " + pv.string() + " " + kCamera + pvSizing + " --set TensorGlyphStride 3", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const CmdResult a = runPvbatch("--output " + all.string() + " " + kCamera + pvSizing, dir);
+  ASSERT_EQ(a.code, 0) << a.err;
+  const Image x = readImage(cli), y = readImage(pv), z = readImage(all);
+  ASSERT_EQ(x.width, 400);
+  ASSERT_EQ(y.width, x.width);
+  ASSERT_EQ(z.width, x.width);
+  ASSERT_GT(glyphPixelsOf(x), 1000);
+  EXPECT_LE(differing(x, y, 1.0f / 255.0f), x.width * x.height / 1000);
+  EXPECT_LT(glyphPixelsOf(y), glyphPixelsOf(z));
+}
+
+// A point array as the mask (the kitten's "fixed", 0 or 1): a threshold
+// below every value draws what no mask draws; 0.5 draws the fixed points
+// only, fewer but some; above every value nothing, said in the CLI's
+// checkLoaded terms with the count.
+TEST_F(ParaViewPlugin, MaskArrayKeepsPointsAtOrAboveMaskMin) {
+  TG_SKIP_WITHOUT_PARAVIEW();
+  const fs::path plain = dir / "plain.png", low = dir / "low.png", half = dir / "half.png", high = dir / "high.png";
+  const std::string mask = " --mask-array fixed --set TensorGlyphUseMask 1 --set TensorGlyphMaskMin ";
+  const CmdResult a = runPvbatch("--output " + plain.string() + " " + kCamera, dir);
+  ASSERT_EQ(a.code, 0) << a.err;
+  const CmdResult b = runPvbatch("--output " + low.string() + " " + kCamera + mask + "-1", dir);
+  ASSERT_EQ(b.code, 0) << b.err;
+  const CmdResult c = runPvbatch("--output " + half.string() + " " + kCamera + mask + "0.5", dir);
+  ASSERT_EQ(c.code, 0) << c.err;
+  const CmdResult d = runPvbatch("--output " + high.string() + " " + kCamera + mask + "2", dir);
+  ASSERT_EQ(d.code, 0) << d.err;
+  const Image p = readImage(plain), l = readImage(low), h = readImage(half), n = readImage(high);
+  ASSERT_EQ(p.width, 400);
+  ASSERT_EQ(l.width, p.width);
+  ASSERT_EQ(h.width, p.width);
+  ASSERT_EQ(n.width, p.width);
+  ASSERT_GT(glyphPixelsOf(p), 2000);
+  EXPECT_EQ(differing(p, l, 0.0f), 0);
+  EXPECT_GT(glyphPixelsOf(h), 0);
+  EXPECT_LT(glyphPixelsOf(h), glyphPixelsOf(p));
+  EXPECT_EQ(glyphPixelsOf(n), 0);
+  EXPECT_NE(d.err.find("no tensor to draw: 14961 masked (TensorGlyphMaskMin 2), 0 left out by TensorGlyphStride 1"),
+            std::string::npos)
+      << d.err;
+}
+
+// 2-D stress as OpenGeoSys writes it (4 components XX YY ZZ XY named
+// sigma), which the CLI reads and the plugin refused: the same picture.
+TEST_F(ParaViewPlugin, TwoDimensionalStressMatchesTheCli) {
+  TG_SKIP_WITHOUT_PARAVIEW();
+  const fs::path in = dir / "plane.vtk", cli = dir / "cli.png", pv = dir / "pv.png";
+  {
+    std::ofstream f(in);
+    f << "# vtk DataFile Version 3.0\n2-D stress\nASCII\nDATASET POLYDATA\nPOINTS 25 float\n";
+    for (int j = 0; j < 5; ++j)
+      for (int i = 0; i < 5; ++i) f << i << " " << j << " 0\n";
+    f << "POINT_DATA 25\nFIELD FieldData 1\nsigma 4 25 float\n";
+    for (int j = 0; j < 5; ++j)
+      for (int i = 0; i < 5; ++i) f << 1.0 + 0.2 * i << " " << 0.4 + 0.1 * j << " " << 0.3 << " " << 0.1 * (i - j) << "\n";
+  }
+  const std::string camera = " --size 400 300 --eye 2 2 12 --look-at 2 2 0 --up 0 1 0 --fov 30";
+  const CmdResult c = tg::test::runBinary(
+      "render " + in.string() + " --scale-mode absolute --scale 0.3 -o " + cli.string() + camera, dir);
+  ASSERT_EQ(c.code, 0) << c.err;
+  const CmdResult r = runPvbatch("--output " + pv.string() + " --input " + in.string() + camera +
+                                     " --scale-mode 0 --scale 0.3 --tensors sigma",
+                                 dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Image x = readImage(cli), y = readImage(pv);
+  ASSERT_EQ(x.width, 400);
+  ASSERT_EQ(y.width, x.width);
+  ASSERT_GT(glyphPixelsOf(x), 2000);
+  EXPECT_LE(differing(x, y, 1.0f / 255.0f), x.width * x.height / 1000);
+}
+
+}  // namespace
+
+namespace {
+
+double meanGlyphLuminance(const Image& img) {
+  double sum = 0;
+  long n = 0;
+  for (int i = 0; i < img.width * img.height; ++i)
+    if (covered(img, i, kBackground)) {
+      sum += (img.at(i)[0] + img.at(i)[1] + img.at(i)[2]) / 3.0;
+      ++n;
+    }
+  return n ? sum / double(n) : 0.0;
+}
+
+// The view's light kit: its default key light (0.75) is the CLI's picture
+// (PictureMatchesTheCli); a dimmer key light darkens the glyphs, and the kit
+// off leaves only the head light and the ambient term, darker still.
+TEST_F(ParaViewPlugin, LightKitKeyIntensityLightsTheGlyphs) {
+  TG_SKIP_WITHOUT_PARAVIEW();
+  const fs::path plain = dir / "plain.png", dim = dir / "dim.png", off = dir / "off.png";
+  const CmdResult a = runPvbatch("--output " + plain.string() + " " + kCamera, dir);
+  ASSERT_EQ(a.code, 0) << a.err;
+  const CmdResult b = runPvbatch("--output " + dim.string() + " " + kCamera + " --view-set KeyLightIntensity 0.25", dir);
+  ASSERT_EQ(b.code, 0) << b.err;
+  const CmdResult c = runPvbatch("--output " + off.string() + " " + kCamera + " --view-set UseLight 0", dir);
+  ASSERT_EQ(c.code, 0) << c.err;
+  const Image x = readImage(plain), y = readImage(dim), z = readImage(off);
+  ASSERT_EQ(x.width, 400);
+  ASSERT_EQ(y.width, x.width);
+  ASSERT_EQ(z.width, x.width);
+  ASSERT_GT(glyphPixelsOf(x), 2000);
+  EXPECT_EQ(glyphPixelsOf(y), glyphPixelsOf(x)) << "light changes shading, not coverage";
+  const double lx = meanGlyphLuminance(x), ly = meanGlyphLuminance(y), lz = meanGlyphLuminance(z);
+  EXPECT_LT(ly, lx - 0.02) << lx << " " << ly;
+  EXPECT_LT(lz, ly - 0.01) << ly << " " << lz;
+}
+
+// Opacity below 1 is not applied to the ray-cast glyphs, and said so.
+TEST_F(ParaViewPlugin, OpacityBelowOneIsSaidToBeIgnored) {
+  TG_SKIP_WITHOUT_PARAVIEW();
+  const fs::path png = dir / "o.png";
+  const CmdResult r = runPvbatch("--output " + png.string() + " " + kCamera + " --set Opacity 0.5", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("SetOpacity: the ray-cast glyphs are drawn opaque; Opacity 0.5 is not applied"),
+            std::string::npos)
+      << r.err;
+}
+
+// ParaView's ColorBy does not colour the glyphs (their colours follow
+// TensorGlyphColorMode): said once when they are drawn, rather than a scalar
+// bar of that array over glyphs coloured otherwise without a word. (Show
+// itself colours the kitten by its "fixed" array; ColorBy None says nothing.)
+TEST_F(ParaViewPlugin, ColorByAnArrayIsSaidNotToColourTheGlyphs) {
+  TG_SKIP_WITHOUT_PARAVIEW();
+  const fs::path png = dir / "c.png";
+  const std::string said = "ColorBy: the glyphs' colours follow TensorGlyphColorMode; colouring by 'fixed'";
+  const CmdResult r = runPvbatch("--output " + png.string() + " " + kCamera + " --color-by fixed", dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const std::size_t at = r.err.find(said);
+  EXPECT_NE(at, std::string::npos) << r.err;
+  EXPECT_EQ(r.err.find(said, at + 1), std::string::npos) << "said more than once: " << r.err;
+  const CmdResult plain = runPvbatch("--output " + png.string() + " " + kCamera + " --color-by NONE", dir);
+  ASSERT_EQ(plain.code, 0) << plain.err;
+  EXPECT_EQ(plain.err.find("ColorBy:"), std::string::npos) << plain.err;
+}
+
+}  // namespace
