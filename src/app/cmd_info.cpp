@@ -36,7 +36,7 @@ int cmdInfo(int argc, const char** argv) {
     try {
       return io::readTensorField(input, flags.read);
     } catch (const io::SliceOutOfRange& e) {
-      throw sliceUsageError(e, input);
+      throw sliceUsageError(e, *flags.read.selection.slice, input);
     }
   }();
   checkLoaded(f, flags.read);

@@ -1,6 +1,8 @@
 #include "app/render_options.h"
 
 #include <span>
+
+#include <glm/geometric.hpp>
 #include <vector>
 
 #include "app/cli_common.h"
@@ -12,6 +14,7 @@
 #include "io/image_writer.h"
 #include "io/readers.h"
 #include "render/tessellated.h"
+#include "view/anatomy.h"
 
 namespace tg::app {
 
@@ -87,6 +90,35 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
   ap.arg("--fov DEG").help("perspective, vertical field of view (default 30)").range(ranges::kFovDeg).action([&](Args a) {
     o.fov = parseDouble("--fov", a[1]);
   });
+  ap.arg("--view NAME").help(std::string("look from an anatomical side, up anatomical, framing the field: ") +
+                             render::kViewNames + " (in world terms: RAS+, as every reader converts; x, y, z for "
+                             "fields without an anatomical space); default: a --slice seen face-on, else axial")
+      .action([&](Args a) {
+        if (!render::namedView(a[1], false))
+          throw UsageError(std::string("--view: unknown view \"") + a[1] + "\"; choose " + render::kViewNames);
+        o.view = a[1];
+      });
+  ap.arg("--radiological").help("axial and coronal views show the patient's right on the image's left, as if "
+                                "seen from the feet or facing the patient (Slicer's and mrview's default)")
+      .action([&](Args) {
+        if (o.radiological == false) throw UsageError("--radiological and --neurological exclude each other");
+        o.radiological = true;
+      });
+  ap.arg("--neurological").help("axial and coronal views show the patient's right on the image's right, as if "
+                                "seen from above or from behind (the default; FSLeyes' default)")
+      .action([&](Args) {
+        if (o.radiological == true) throw UsageError("--radiological and --neurological exclude each other");
+        o.radiological = false;
+      });
+  ap.arg("--orientation-letters MODE").help("R/L, A/P, S/I on the image's edges: auto (default: on where the field's "
+                                            "space is anatomical, NIfTI, MRtrix and NRRD with a space; off for FEM "
+                                            "meshes and unknown spaces), on or off")
+      .action([&](Args a) {
+        const std::string m = a[1];
+        if (m != "auto" && m != "on" && m != "off")
+          throw UsageError("--orientation-letters: unknown mode \"" + m + "\"; choose auto, on or off");
+        o.orientationLetters = m;
+      });
   ap.arg("--ortho HEIGHT").help("orthographic, view height in world units").range(ranges::kPositiveFloat)
       .action([&](Args a) { o.ortho = parseDouble("--ortho", a[1]); });
   ap.setGroup("colour");
@@ -117,6 +149,10 @@ void validateRenderOptions(const RenderOptions& o, bool toFile) {
   if (toFile) o.mesh.checkModeParameters();
   if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
   if ((o.lookAt || o.up) && !o.eye) throw UsageError("--look-at and --up need --eye");
+  if (!o.view.empty() && o.eye) throw UsageError("--view and --eye exclude each other");
+  if (o.radiological && o.eye)
+    throw UsageError(std::string(*o.radiological ? "--radiological" : "--neurological") +
+                     " chooses the anatomical views; with --eye the camera is as given");
   if (!colorModeNamed(o.color))
     throw UsageError("--color: unknown mode \"" + o.color + "\"; choose " + kColorModeNames);
   checkBackend(o.backend);
@@ -158,8 +194,29 @@ render::FrameParams frameParams(const RenderOptions& o, const Scene& s, const te
   p.ao = o.effects.ao;
   p.outline = o.effects.outline;
   p.shadow = o.shadow.params;
+  p.orientationLetters = o.orientationLetters == "on" ||
+                         (o.orientationLetters == "auto" && render::isAnatomicalSpace(s.field.space));
   if (s.preferredLook) o.look.apply(*s.preferredLook, p, o.height);
   return p;
+}
+
+std::optional<render::ViewAxes> defaultViewAxes(const RenderOptions& o, const Scene& s) {
+  const bool radiological = o.radiological.value_or(false);
+  if (!o.view.empty()) return render::namedView(o.view, radiological);
+  const std::optional<io::SliceSpec>& slice = o.field.read.selection.slice;
+  if (slice && s.field.grid) {
+    // Face-on: along the normal of the voxel plane the slice keeps.
+    const io::GridInfo& g = *s.field.grid;
+    io::GridPlacement placed;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) placed.axesWC[3 * r + c] = g.directions[3 * r + c] * g.spacing[c];
+    const int a = io::resolveSlice(*slice, placed, g.dims).axis;
+    auto column = [&](int c) { return glm::dvec3(g.directions[c], g.directions[3 + c], g.directions[6 + c]); };
+    const glm::dvec3 normal = glm::cross(column((a + 1) % 3), column((a + 2) % 3));
+    if (glm::length(normal) > 0) return render::faceOnView(normal, radiological);
+  }
+  if (s.preferredCamera && !o.radiological) return std::nullopt;
+  return render::namedView("axial", radiological);
 }
 
 // One singular glyph must not shrink the view: hence the samples' box.
@@ -168,6 +225,8 @@ render::CameraDesc chooseCamera(const RenderOptions& o, const Scene& s, const te
   const double aspect = double(o.width) / o.height;
   const glm::dvec3 lo = frame.lo, hi = frame.hi;
   render::CameraDesc d = sceneCamera(s, lo, hi, proj, o.fov.value_or(30.0), aspect);
+  if (const std::optional<render::ViewAxes> axes = defaultViewAxes(o, s); axes && !o.eye)
+    d = render::fitBox(lo, hi, proj, o.fov.value_or(30.0), aspect, axes->towardEyeWC, axes->upWC);
   if (o.eye) {
     d.eyeWC = *o.eye;
     d.lookAtWC = o.lookAt.value_or(0.5 * (lo + hi));

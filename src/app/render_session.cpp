@@ -14,6 +14,7 @@
 #include "app/slice_flags.h"
 #include "render/legend_pass.h"
 #include "render/legend_room.h"
+#include "render/orientation_pass.h"
 
 namespace tg::app {
 
@@ -61,7 +62,8 @@ RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io
 
   ctx_ = hooks.makeContext ? hooks.makeContext(o) : createContext(o.backend, o.width, o.height);
   lib_ = std::make_unique<gl::ShaderLibrary>();
-  renderer_ = std::make_unique<render::GlyphRenderer>(ctx_->api(), *lib_, render::makeLegendPass);
+  renderer_ = std::make_unique<render::GlyphRenderer>(
+      ctx_->api(), *lib_, render::OverlayFactories{render::makeLegendPass, render::makeOrientationPass});
   target_ = std::make_unique<render::GBuffer>(ctx_->api(), o.width, o.height);
   if (underlay)
     planes_ = addSlicePlanes(*renderer_, ctx_->api(), *lib_, o.slices, std::move(*underlay), glyphs_.maxAbsEigenvalue);

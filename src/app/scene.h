@@ -30,8 +30,8 @@ Scene defaultScene();
 Scene loadScene(const std::string& input, const io::ReadOptions& opt);
 
 // The UsageError for a --slice index beyond the grid of `input` (empty: the
-// built-in scene): the option, its value and the valid range.
-UsageError sliceUsageError(const io::SliceOutOfRange& e, const std::string& input);
+// built-in scene): the option, its value as `asked`, and the valid range.
+UsageError sliceUsageError(const io::SliceOutOfRange& e, const io::SliceSpec& asked, const std::string& input);
 
 // The view used when no camera flag is given: the scene's preferred view if
 // it has one, else fitBox's default over the box (tensor::framingBox).
