@@ -18,6 +18,8 @@ namespace tg::io {
 // (z=12.5mm) names a world axis instead; resolveSlice() turns it into the
 // voxel axis nearest that world axis and, for a position, the nearest index.
 struct SliceSpec {
+  // A voxel-axis slice; SliceSpec{2, 40, 5} reads as before the world forms.
+  SliceSpec(int voxelAxis = 2, long long at = 0, long long slab = 1) : axis(voxelAxis), index(at), thickness(slab) {}
   int axis = 2;
   long long index = 0;
   long long thickness = 1;

@@ -103,7 +103,7 @@ TEST(RenderOptions, EveryNumericOptionDeclaresARange) {
   const std::set<std::string> words = {"INPUT", "-o", "--glyph", "--color", "--array", "--layout", "--frame",
                                        "--mask", "--slice", "--scale-mode", "--magnitude", "--legend-corner",
                                        "--units", "--length-units", "--underlay", "--plane", "--underlay-colormap",
-                                       "--mesh", "--mesh-mode", "--backend"};
+                                       "--mesh", "--mesh-mode", "--backend", "--view", "--orientation-letters"};
   for (const OptionTable::Option& opt : t.options()) {
     if (opt.arity() == 0 && !opt.positional) continue;
     if (words.count(opt.flag)) {
