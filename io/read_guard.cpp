@@ -35,11 +35,11 @@ using Clock = std::chrono::steady_clock;
 constexpr std::uint32_t kWireMagic = 0x54474631;  // "TGF1"
 // Every member of TensorField crosses the process boundary in writeField and
 // readField; a new member changes this size and must be carried there too.
-static_assert(sizeof(TensorField) == 648, "TensorField changed: carry the new member in writeField/readField");
+static_assert(sizeof(TensorField) == 680, "TensorField changed: carry the new member in writeField/readField");
 
 void writeField(WireOut& w, const TensorField& f) {
   w.pod(kWireMagic);
-  for (const std::string* s : {&f.path, &f.description, &f.arrayName, &f.space, &f.layout, &f.frame}) w.str(*s);
+  for (const std::string* s : {&f.path, &f.description, &f.arrayName, &f.space, &f.lengthUnits, &f.layout, &f.frame}) w.str(*s);
   for (const auto* m : {&f.measurementFrame, &f.tensorToWC}) {
     w.pod(m->has_value());
     if (*m) w.pod(**m);
@@ -60,7 +60,7 @@ void writeField(WireOut& w, const TensorField& f) {
 TensorField readField(WireIn& r) {
   if (r.pod<std::uint32_t>() != kWireMagic) throw std::runtime_error("the reader's result is malformed");
   TensorField f;
-  for (std::string* s : {&f.path, &f.description, &f.arrayName, &f.space, &f.layout, &f.frame}) *s = r.str();
+  for (std::string* s : {&f.path, &f.description, &f.arrayName, &f.space, &f.lengthUnits, &f.layout, &f.frame}) *s = r.str();
   for (auto* m : {&f.measurementFrame, &f.tensorToWC})
     if (r.pod<bool>()) *m = r.pod<std::array<double, 9>>();
   f.hasConfidence = r.pod<bool>();

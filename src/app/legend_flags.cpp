@@ -46,7 +46,8 @@ void LegendFlags::addTo(OptionTable& ap) {
         params.units = a[1];
         detailGiven = true;
       });
-  ap.arg("--length-units TEXT").help("units of positions for the scale bar, e.g. mm (default \"world units\")")
+  ap.arg("--length-units TEXT").help("units of positions for the scale bar, e.g. mm (default: the file's, from "
+                                     "NIfTI xyzt_units or NRRD space units, else \"world units\")")
       .action([this](Args a) {
         params.lengthUnits = a[1];
         detailGiven = true;

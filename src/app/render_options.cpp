@@ -191,6 +191,8 @@ render::FrameParams frameParams(const RenderOptions& o, const Scene& s, const te
   p.tessellation = o.tessellate;
   p.background = o.background;
   p.legend = o.legend.params;
+  // The scale bar in the file's units, where --length-units says none.
+  if (p.legend.lengthUnits.empty()) p.legend.lengthUnits = s.field.lengthUnits;
   p.ao = o.effects.ao;
   p.outline = o.effects.outline;
   p.shadow = o.shadow.params;

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <sstream>
 #include <string>
 
 #include "cli/cli_run.h"
@@ -106,6 +107,26 @@ TEST(CliData, SliceStrideAndRoiSelectTheExpectedVoxels) {
   // The glyphs are sized to the thinned spacing within the slice: 2 x 3.125 and 2 x 6.25.
   const CmdResult thinned = run("info " + in + " --slice z:5 --stride 2");
   EXPECT_NE(thinned.out.find("sample spacing: 6.25\n"), std::string::npos) << thinned.out;
+}
+
+// Units from the header (issue 32 item 9): NRRD's "space units" reach `info`
+// and, unless --length-units says otherwise, the legend's scale bar.
+TEST(CliData, LengthUnitsComeFromTheHeader) {
+  TG_REQUIRE_REAL_DATA();
+  const std::string in = tg::test::realData(kHelix3x3.c_str());
+  std::ifstream src(in);
+  std::stringstream text;
+  text << src.rdbuf();
+  std::string header = text.str();
+  const std::string file = "data file: ";
+  const std::size_t at = header.find(file);
+  ASSERT_NE(at, std::string::npos);
+  header.insert(at + file.size(), fs::path(in).parent_path().string() + "/");
+  header.insert(at, "space units: \"mm\" \"mm\" \"mm\"\n");
+  const fs::path withUnits = dir() / "helix-mm.nhdr";
+  std::ofstream(withUnits) << header;
+  EXPECT_NE(run("info " + withUnits.string()).out.find("length units: mm\n"), std::string::npos);
+  EXPECT_NE(run("info " + in).out.find("length units: (none given)\n"), std::string::npos);
 }
 
 TEST(CliData, ShapeThresholdsAndEigenvalueClamp) {
