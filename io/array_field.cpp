@@ -190,6 +190,8 @@ TensorField fieldFromVolume(const ArrayRef& tensors, std::string_view layout, co
   f.description = "volume from arrays, " + std::to_string(g.dims[0]) + "x" + std::to_string(g.dims[1]) + "x" +
                   std::to_string(g.dims[2]);
   f.layout = six ? std::string(l->name) + ": " + l->order : "3x3";
+  // A voxel-to-world affine as nibabel and DIPY hand it: NIfTI's, RAS+.
+  f.space = "RAS (the affine's, as NIfTI's)";
   f.tensorToWC = map.tensorToWC;
   f.frame = std::string(tensorFrameName(*named)) + ": " + map.description;
   ComponentLayout cl;

@@ -302,6 +302,9 @@ double qfacOf(const nifti_image& nim, std::vector<std::string>* warnings) {
 // The affine in use: sform if coded, else qform, else pixdim (NIfTI's
 // "method 1"); true when an affine places the voxels.
 bool placement(const nifti_image& nim, VolumeGeometry& g, TensorField& f) {
+  // xyzt_units' spatial code: what the legend's scale bar and `info` name.
+  f.lengthUnits = nim.xyz_units == NIFTI_UNITS_MM ? "mm" : nim.xyz_units == NIFTI_UNITS_METER ? "m"
+                  : nim.xyz_units == NIFTI_UNITS_MICRON ? "um" : "";
   const int sformCode = usableCode(nim.sform_code, "sform_code", f.warnings);
   const int qformCode = usableCode(nim.qform_code, "qform_code", f.warnings);
   nifti_dmat44 qform = nim.qto_xyz;

@@ -462,6 +462,13 @@ TensorField impl::readNrrd(const std::string& path, const ReadOptions& opt) {
   toRas(n, g, flip);
   const int space = n->space;
   const std::string target = space == nrrdSpace3DLeftHanded ? "3D-right-handed" : "RAS";
+  // "space units": one short word for all three axes, else none is said.
+  if (n->spaceDim == 3 && n->spaceUnits[0] && n->spaceUnits[1] && n->spaceUnits[2]) {
+    const std::string u = n->spaceUnits[0];
+    bool word = !u.empty() && u.size() <= 16 && u == n->spaceUnits[1] && u == n->spaceUnits[2];
+    for (const char c : u) word = word && c > ' ' && c < 127;
+    if (word) f.lengthUnits = u;
+  }
   if (space != nrrdSpaceUnknown) {
     f.space = std::string("RAS");
     if (space != nrrdSpaceRightAnteriorSuperior)

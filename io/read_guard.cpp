@@ -35,11 +35,11 @@ using Clock = std::chrono::steady_clock;
 constexpr std::uint32_t kWireMagic = 0x54474631;  // "TGF1"
 // Every member of TensorField crosses the process boundary in writeField and
 // readField; a new member changes this size and must be carried there too.
-static_assert(sizeof(TensorField) == 648 + sizeof(util::MappedArray<float>) + 2 * sizeof(std::string), "TensorField changed: carry the new member in writeField/readField");
+static_assert(sizeof(TensorField) == 648 + sizeof(util::MappedArray<float>) + 3 * sizeof(std::string), "TensorField changed: carry the new member in writeField/readField");
 
 void writeField(WireOut& w, const TensorField& f) {
   w.pod(kWireMagic);
-  for (const std::string* s : {&f.path, &f.description, &f.arrayName, &f.space, &f.layout, &f.frame,
+  for (const std::string* s : {&f.path, &f.description, &f.arrayName, &f.space, &f.lengthUnits, &f.layout, &f.frame,
                                &f.colorArrayName, &f.pointArrays})
     w.str(*s);
   for (const auto* m : {&f.measurementFrame, &f.tensorToWC}) {
@@ -63,8 +63,8 @@ void writeField(WireOut& w, const TensorField& f) {
 TensorField readField(WireIn& r) {
   if (r.pod<std::uint32_t>() != kWireMagic) throw std::runtime_error("the reader's result is malformed");
   TensorField f;
-  for (std::string* s : {&f.path, &f.description, &f.arrayName, &f.space, &f.layout, &f.frame, &f.colorArrayName,
-                         &f.pointArrays})
+  for (std::string* s : {&f.path, &f.description, &f.arrayName, &f.space, &f.lengthUnits, &f.layout, &f.frame,
+                         &f.colorArrayName, &f.pointArrays})
     *s = r.str();
   for (auto* m : {&f.measurementFrame, &f.tensorToWC})
     if (r.pod<bool>()) *m = r.pod<std::array<double, 9>>();

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <charconv>
+#include <cstdio>
 #include <cstring>
 #include <cmath>
 #include <optional>
@@ -14,30 +15,96 @@
 
 namespace tg::io {
 
+namespace {
+
+constexpr const char* kPlaneNames[3] = {"sagittal", "coronal", "axial"};  // across x (R), y (A), z (S)
+
+}  // namespace
+
 SliceSpec parseSlice(const std::string& text) {
   SliceSpec s;
-  const auto c1 = text.find(':');
-  if (c1 == std::string::npos) throw std::invalid_argument("expected axis:index[:thickness], got \"" + text + "\"");
-  const std::string axis = text.substr(0, c1);
-  if (axis == "x" || axis == "i" || axis == "0") s.axis = 0;
+  const auto sep = text.find_first_of(":=");
+  if (sep == std::string::npos)
+    throw std::invalid_argument("expected axis:index[:thickness] or axis=position[mm][:thickness], got \"" + text +
+                                "\"");
+  const bool world = text[sep] == '=';
+  const std::string axis = text.substr(0, sep);
+  int named = -1;
+  for (int a = 0; a < 3; ++a)
+    if (axis == kPlaneNames[a]) named = a;
+  if (named >= 0) s.worldAxis = named;
+  else if (axis == "x" || axis == "i" || axis == "0") s.axis = 0;
   else if (axis == "y" || axis == "j" || axis == "1") s.axis = 1;
   else if (axis == "z" || axis == "k" || axis == "2") s.axis = 2;
-  else throw std::invalid_argument("unknown axis \"" + axis + "\"; choose x, y or z (or 0, 1, 2)");
-  const auto c2 = text.find(':', c1 + 1);
-  auto number = [&](std::size_t b, std::size_t e, const char* what) {
+  else throw std::invalid_argument("unknown axis \"" + axis + "\"; choose i, j, k (x, y, z, 0, 1, 2: voxel axes) or axial, coronal, sagittal");
+  if (world && named < 0) {
+    if (axis != "x" && axis != "y" && axis != "z")
+      throw std::invalid_argument("a world position takes x, y, z or axial, coronal, sagittal, not \"" + axis + "\"");
+    s.worldAxis = s.axis;
+  }
+  const auto c2 = text.find(':', sep + 1);
+  auto part = [&](std::size_t b, std::size_t e) {
+    return std::string_view(text).substr(b, std::min(e, text.size()) - b);
+  };
+  auto integer = [&](std::string_view t, const char* what) {
     long long v = 0;
-    const char* first = text.data() + b;
-    const char* last = text.data() + std::min(e, text.size());
-    const auto [end, ec] = std::from_chars(first, last, v);
-    if (ec != std::errc() || end != last || first == last)
-      throw std::invalid_argument(std::string(what) + " \"" + std::string(first, last) + "\" is not an integer");
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+    if (ec != std::errc() || end != t.data() + t.size() || t.empty())
+      throw std::invalid_argument(std::string(what) + " \"" + std::string(t) + "\" is not an integer");
     return v;
   };
-  s.index = number(c1 + 1, c2, "index");
-  if (c2 != std::string::npos) s.thickness = number(c2 + 1, text.size(), "thickness");
-  if (s.index < 0) throw std::invalid_argument("index must not be negative");
+  if (world) {
+    std::string_view t = part(sep + 1, c2);
+    if (t.size() > 2 && t.substr(t.size() - 2) == "mm") t.remove_suffix(2);
+    double v = 0;
+    const auto [end, ec] = std::from_chars(t.data(), t.data() + t.size(), v);
+    if (ec != std::errc() || end != t.data() + t.size() || t.empty() || !std::isfinite(v))
+      throw std::invalid_argument("position \"" + std::string(part(sep + 1, c2)) + "\" is not a number (world units; \"mm\" optional)");
+    s.positionWC = v;
+  } else {
+    s.index = integer(part(sep + 1, c2), "index");
+    if (s.index < 0) throw std::invalid_argument("index must not be negative");
+  }
+  if (c2 != std::string::npos) s.thickness = integer(part(c2 + 1, text.size()), "thickness");
   if (s.thickness < 1) throw std::invalid_argument("thickness must be at least 1");
   return s;
+}
+
+std::string SliceSpec::text() const {
+  std::string t;
+  if (positionWC) {
+    char b[48];
+    std::snprintf(b, sizeof b, "%.9g", *positionWC);
+    t = std::string(1, "xyz"[worldAxis]) + "=" + b;
+  } else {
+    // Appended, not `":" + std::to_string(...)`: GCC 12 warns falsely (-Wrestrict).
+    t = worldAxis >= 0 ? std::string(kPlaneNames[worldAxis]) : std::string(1, "xyz"[axis]);
+    t.append(":").append(std::to_string(index));
+  }
+  if (thickness > 1) t.append(":").append(std::to_string(thickness));
+  return t;
+}
+
+SliceSpec resolveSlice(const SliceSpec& s, const GridPlacement& p, const int dims[3]) {
+  if (s.worldAxis < 0) return s;
+  SliceSpec out = s;
+  const int w = s.worldAxis;
+  double best = -1;
+  for (int k = 0; k < 3; ++k) {
+    const double len = std::hypot(p.axesWC[k], p.axesWC[3 + k], p.axesWC[6 + k]);
+    const double along = len > 0 ? std::abs(p.axesWC[3 * w + k]) / len : 0;
+    if (along > best) best = along, out.axis = k;
+  }
+  if (!s.positionWC) return out;
+  // Along the voxel axis through the grid's centre: where world coordinate
+  // w reaches the position. Clamped far outside any grid before rounding.
+  const int a = out.axis;
+  double at = p.originWC[w];
+  for (int k = 0; k < 3; ++k) at += p.axesWC[3 * w + k] * 0.5 * (dims[k] - 1);
+  const double step = p.axesWC[3 * w + a];
+  const double t = 0.5 * (dims[a] - 1) + (*s.positionWC - at) / step;
+  out.index = std::isfinite(t) ? std::llround(std::clamp(t, -1e15, 1e15)) : -1;
+  return out;
 }
 
 std::string gridText(const int d[3]) {
@@ -169,10 +236,14 @@ Selector::Selector(const Selection& sel, const std::string& path, const int* dim
   grid_ = true;
   std::copy(dims, dims + 3, dims_);
   if (sel.slice) {
-    const SliceSpec& s = *sel.slice;
-    if (s.index >= dims_[s.axis])
-      throw SliceOutOfRange("Selector: " + path + ": slice index " + std::to_string(s.index) + " is beyond axis " +
-                                std::to_string(s.axis) + " of size " + std::to_string(dims_[s.axis]),
+    // Anatomical and world slices in voxel terms, on this grid's placement
+    // (the voxel axes themselves when it has none).
+    sel_.slice = resolveSlice(*sel.slice, placement ? *placement : GridPlacement{}, dims_);
+    const SliceSpec& s = *sel_.slice;
+    if (s.index < 0 || s.index >= dims_[s.axis])
+      throw SliceOutOfRange("Selector: " + path + ": slice " + sel.slice->text() + " (index " + std::to_string(s.index) +
+                                " along voxel axis " + "ijk"[s.axis] + ") is outside the grid's 0.." +
+                                std::to_string(dims_[s.axis] - 1),
                             s, dims_[s.axis]);
     slabLo_ = s.index - (s.thickness - 1) / 2;
     slabHi_ = s.index + s.thickness / 2;
@@ -205,10 +276,22 @@ std::uint64_t Selector::keptBound(std::uint64_t n) const {
   std::uint64_t kept = 1;
   for (int k = 0; k < 3; ++k) {
     std::uint64_t along = (std::uint64_t(dims_[k]) + stride - 1) / stride;
-    if (sel_.slice && sel_.slice->axis == k) along = std::min(along, std::uint64_t(slabHi_ - slabLo_ + 1));
+    if (sel_.slice && sel_.slice->axis == k) along = std::min(std::uint64_t(dims_[k]), std::uint64_t(slabHi_ - slabLo_ + 1));
     kept *= along;
   }
   return std::min(kept, n);
+}
+
+double Selector::keptSpacing(const double spacing[3]) const {
+  double s = INFINITY;
+  for (int k = 0; k < 3; ++k) {
+    const bool slab = sel_.slice && sel_.slice->axis == k;
+    const long long from = slab ? std::max(0LL, slabLo_) : 0;
+    const long long to = slab ? std::min<long long>(dims_[k] - 1, slabHi_) : dims_[k] - 1;
+    const long long step = slab ? 1 : sel_.stride;
+    if (to - from >= step && spacing[k] > 0) s = std::min(s, spacing[k] * double(step));
+  }
+  return s;
 }
 
 Selector::Verdict Selector::judge(std::uint64_t index, const double p[3]) const {
@@ -216,8 +299,11 @@ Selector::Verdict Selector::judge(std::uint64_t index, const double p[3]) const 
     const std::uint64_t nx = std::uint64_t(dims_[0]), ny = std::uint64_t(dims_[1]);
     const long long ijk[3] = {(long long)(index % nx), (long long)(index / nx % ny), (long long)(index / (nx * ny))};
     if (sel_.slice && (ijk[sel_.slice->axis] < slabLo_ || ijk[sel_.slice->axis] > slabHi_)) return Verdict::Unselected;
-    if (sel_.stride > 1 && (ijk[0] % sel_.stride || ijk[1] % sel_.stride || ijk[2] % sel_.stride))
-      return Verdict::Unselected;
+    // The stride thins within a slice: its own axis keeps the whole slab.
+    const int spared = sel_.slice ? sel_.slice->axis : -1;
+    if (sel_.stride > 1)
+      for (int k = 0; k < 3; ++k)
+        if (k != spared && ijk[k] % sel_.stride) return Verdict::Unselected;
   } else if (sel_.stride > 1 && index % std::uint64_t(sel_.stride)) {
     return Verdict::Unselected;
   }
@@ -239,8 +325,18 @@ bool Selector::admitJudged(std::uint64_t index, const double p[3], TensorField& 
 }
 
 void applySelection(TensorField& f, const Selection& sel) {
-  const Selector selector(sel, f.path, f.grid ? f.grid->dims : nullptr);
+  std::optional<GridPlacement> placed;
+  if (f.grid) {
+    placed.emplace();
+    for (int r = 0; r < 3; ++r) {
+      placed->originWC[r] = f.grid->origin[r];
+      for (int c = 0; c < 3; ++c) placed->axesWC[3 * r + c] = f.grid->directions[3 * r + c] * f.grid->spacing[c];
+    }
+  }
+  const Selector selector(sel, f.path, f.grid ? f.grid->dims : nullptr, placed ? &*placed : nullptr);
   if (selector.selectsAll()) return;
+  if (f.grid)
+    if (const double s = selector.keptSpacing(f.grid->spacing); std::isfinite(s)) f.sampleSpacing = s;
   std::size_t w = 0;
   for (std::size_t i = 0; i < f.size(); ++i) {
     const double p[3] = {f.positions[3 * i], f.positions[3 * i + 1], f.positions[3 * i + 2]};

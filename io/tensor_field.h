@@ -39,6 +39,7 @@ struct TensorField {
   std::string description;  // dataset type and size, for `info`
   std::string arrayName;
   std::string space;        // world space of the positions, e.g. "RAS"; "" when the format has none
+  std::string lengthUnits;  // of the positions, as the header names them ("mm"); "" when it does not
   std::string layout;       // component order read from the file, for `info`
   std::optional<std::array<double, 9>> measurementFrame;  // row-major, as applied (D_WC = M D Mᵀ)
   // The tensor frame as read, for `info`: its name and why ("fsl: FSL's voxel

@@ -102,15 +102,15 @@ void VolumeSink::emit(std::uint64_t index, const double p[3], const double* v) {
 
 void VolumeSink::finish() {
   GridInfo gi;
-  double minSpacing = INFINITY;
   for (int k = 0; k < 3; ++k) {
     gi.dims[k] = g_.dims[k];
     gi.origin[k] = g_.originWC[k];
     const double len = std::hypot(g_.axesWC[k], g_.axesWC[3 + k], g_.axesWC[6 + k]);
     gi.spacing[k] = len;
     for (int r = 0; r < 3; ++r) gi.directions[3 * r + k] = len > 0 ? g_.axesWC[3 * r + k] / len : (r == k);
-    if (g_.dims[k] > 1 && len > 0) minSpacing = std::min(minSpacing, len);
   }
+  // The kept samples' spacing: a stride thins them, a slice drops its own axis.
+  const double minSpacing = sel_.keptSpacing(gi.spacing);
   f_.grid = gi;
   f_.sampleSpacing = std::isfinite(minSpacing) ? minSpacing : estimateSampleSpacing(f_.positions);
 }

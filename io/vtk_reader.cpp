@@ -510,9 +510,9 @@ TensorField impl::readVtk(const std::string& path, const ReadOptions& opt) {
     const double* dir = img->GetDirectionMatrix()->GetData();
     std::copy(dir, dir + 9, g.directions);
     f.grid = g;
-    double s = INFINITY;
-    for (int k = 0; k < 3; ++k)
-      if (g.dims[k] > 1) s = std::min(s, std::abs(g.spacing[k]));
+    // The kept samples' spacing: a stride thins them, a slice drops its own axis.
+    const double spacing[3] = {std::abs(g.spacing[0]), std::abs(g.spacing[1]), std::abs(g.spacing[2])};
+    const double s = sel.keptSpacing(spacing);
     f.sampleSpacing = std::isfinite(s) ? s : 0.0;
   }
   if (f.sampleSpacing <= 0) f.sampleSpacing = estimateSampleSpacing(f.positions);

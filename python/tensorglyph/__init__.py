@@ -108,14 +108,23 @@ def _nifti_layout(img):
     return "mrtrix" if descrip.startswith("MRtrix version") else ""
 
 
+def _unplaced_nifti(img):
+    """A nibabel NIfTI image with neither sform nor qform: the CLI reads it as
+    a voxel grid, with no anatomical space."""
+    if not (hasattr(img, "affine") and hasattr(img, "dataobj")):
+        return False
+    hdr = img.header
+    keys = hdr.keys() if hasattr(hdr, "keys") else ()
+    return "sform_code" in keys and int(hdr["sform_code"]) <= 0 and int(hdr["qform_code"]) <= 0
+
+
 def _nifti_placement(img, frame):
     """The affine and frame the CLI's NIfTI reader uses. For a header with
     neither sform nor qform nibabel's img.affine is ANALYZE's (x reversed,
     centred); NIfTI's method 1, and the CLI, place by pixdim alone and leave
     the tensors unrotated, which the voxel frame of a diagonal affine does."""
     hdr = img.header
-    keys = hdr.keys() if hasattr(hdr, "keys") else ()
-    if "sform_code" not in keys or int(hdr["sform_code"]) > 0 or int(hdr["qform_code"]) > 0:
+    if not _unplaced_nifti(img):
         return img.affine, frame
     zooms = [float(z) if z > 0 else 1.0 for z in hdr.get_zooms()[:3]]
     return np.diag(zooms + [1.0]), "voxel" if frame in (None, "", "fsl") else frame
@@ -318,6 +327,10 @@ class Renderer:
         self._callback_threads = set()
         if callable(progress):
             progress = _guarded(progress, self._callback_threads)
+        if _unplaced_nifti(tensors) and affine is None and options.get("orientation_letters") is None:
+            # An affine given with arrays is taken as RAS (NIfTI's); this
+            # one is the CLI's voxel grid, which has no letters by default.
+            options["orientation_letters"] = "off"
         t, p, a, lay, fr, path = _source(tensors, positions, affine, layout, frame)
         if t is None:
             # A file's order and frame are its reader's options, --layout and

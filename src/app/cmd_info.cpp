@@ -37,7 +37,7 @@ int cmdInfo(int argc, const char** argv) {
     try {
       return io::readTensorField(input, flags.read);
     } catch (const io::SliceOutOfRange& e) {
-      throw sliceUsageError(e, input);
+      throw sliceUsageError(e, *flags.read.selection.slice, input);
     }
   }();
   const io::TensorField& f = scene.field;
@@ -69,6 +69,7 @@ int cmdInfo(int argc, const char** argv) {
   if (!f.arrayName.empty()) std::printf("tensor array: %s\n", f.arrayName.c_str());
   if (!f.layout.empty()) std::printf("components: %s\n", f.layout.c_str());
   std::printf("space: %s\n", f.space.empty() ? "(none given)" : f.space.c_str());
+  std::printf("length units: %s\n", f.lengthUnits.empty() ? "(none given)" : printable(f.lengthUnits).c_str());
   std::printf("tensor frame: %s\n", f.frame.empty() ? "(not stated)" : f.frame.c_str());
   if (f.measurementFrame) {
     const auto& m = *f.measurementFrame;

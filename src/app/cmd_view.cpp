@@ -57,7 +57,8 @@ ViewOptions parse(int argc, const char** argv) {
   ViewOptions o;
   OptionTable ap("tensorglyph view [INPUT] [options]\n"
            "  mouse: left drag orbits, right or middle drag pans, wheel zooms\n"
-           "  keys: R resets the view, S saves a screenshot, Q or Esc quits");
+           "  keys: R resets the view, 1 2 3 turn to axial, coronal, sagittal, V swaps radiological and\n"
+           "  neurological, L shows or hides the orientation letters, S saves a screenshot, Q or Esc quits");
   using Args = OptionArgs;
   addViewOptions(ap, o);
   ap.arg("--script FILE").help("run the commands in FILE (see docs/guide.md, \"Viewer\"), then exit")
@@ -149,6 +150,9 @@ int cmdView(int argc, const char** argv) {
   resize(v);
   render::FrameParams& p = v.params;
   v.camera = OrbitCamera(first.camera.desc);
+  v.radiological = o.radiological.value_or(false);
+  // The view it starts in, which the convention key turns again.
+  v.view = !o.view.empty() || o.eye || o.field.read.selection.slice || session.scene().preferredCamera ? o.view : "axial";
 
   GLFWwindow* window = gl::glfwWindowOf(session.context());
   glfwSwapInterval(script.empty() ? 1 : 0);  // a script runs as fast as it can

@@ -41,17 +41,22 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
   ap.arg("--mask FILE").help("scalar volume on the same grid (" + io::extensionList(io::kScalarUse) + ")").action([&](Args a) {
     sel.maskPath = a[1];
   });
-  ap.arg("--mask-min V").help("keep voxels whose mask value is >= V (default 0.5; needs --mask)").range(ranges::kAnyFloat)
+  ap.arg("--mask-min V").help("keep voxels whose mask value is >= V (needs --mask)").range(ranges::kAnyFloat)
+      .byDefault(formatNumber(sel.maskMin))
       .action([&](Args a) {
         sel.maskMin = parseDouble("--mask-min", a[1]);
         maskMinGiven = true;
       });
-  ap.arg("--confidence-min C").help("masked NRRD tensors: keep confidence >= C (default 0.5)").range(ranges::kAnyFloat)
+  ap.arg("--confidence-min C").help("masked NRRD tensors: keep confidence >= C").range(ranges::kAnyFloat)
+      .byDefault(formatNumber(sel.confidenceMin))
       .action([&](Args a) {
         sel.confidenceMin = parseDouble("--confidence-min", a[1]);
         read.confidenceGiven = true;
       });
-  ap.arg("--slice SPEC").help("axis:index[:thickness], e.g. z:40 or z:40:5 (a slab centred on 40)")
+  ap.arg("--slice SPEC").help("a slice, or with :THICKNESS a slab centred on it: i|j|k:INDEX along a voxel axis (x, y, z "
+                               "are i, j, k, as ever), axial|coronal|sagittal:INDEX along the voxel axis nearest S, A "
+                               "or R, or x|y|z=POS[mm] at a world position (axial=POS is z=POS); e.g. k:40, "
+                               "axial:40:5, z=12.5mm")
       .action([&](Args a) {
         try {
           sel.slice = io::parseSlice(a[1]);
@@ -59,7 +64,8 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
           throw UsageError(std::string("--slice: ") + e.what());
         }
       });
-  ap.arg("--stride N").help("every N-th voxel along each axis (every N-th point of a point set)")
+  ap.arg("--stride N").help("every N-th voxel along each axis but a --slice's own (every N-th point of a point set); "
+                            "glyphs are sized to the thinned spacing")
       .range(ranges::kStride).action([&](Args a) { sel.stride = parseInt("--stride", a[1]); });
   ap.arg("--roi X0 Y0 Z0 X1 Y1 Z1").help("keep samples inside this box (WC)").range(ranges::kAnyFloat).action([&](Args a) {
     std::array<double, 6> b;

@@ -32,8 +32,8 @@ void LegendFlags::addTo(OptionTable& ap) {
   ap.setGroup("colour");
   ap.arg("--legend").help("draw a legend: the colour key (a bar, or for dec a sphere of directions) and a scale bar")
       .action([this](Args) { params.enabled = true; });
-  ap.arg("--legend-corner C").help(std::string("the legend's corner: ") + kLegendCornerNames + " (default " +
-                                       legendCornerName(render::LegendParams{}.corner) + ")")
+  ap.arg("--legend-corner C").help(std::string("the legend's corner: ") + kLegendCornerNames)
+      .byDefault(legendCornerName(render::LegendParams{}.corner))
       .action([this](Args a) {
         const auto c = legendCornerNamed(a[1]);
         if (!c) throw UsageError(std::string("--legend-corner: unknown corner \"") + a[1] + "\"; choose " +
@@ -46,7 +46,8 @@ void LegendFlags::addTo(OptionTable& ap) {
         params.units = a[1];
         detailGiven = true;
       });
-  ap.arg("--length-units TEXT").help("units of positions for the scale bar, e.g. mm (default \"world units\")")
+  ap.arg("--length-units TEXT").help("units of positions for the scale bar, e.g. mm (default: the file's, from "
+                                     "NIfTI xyzt_units or NRRD space units, else \"world units\")")
       .action([this](Args a) {
         params.lengthUnits = a[1];
         detailGiven = true;

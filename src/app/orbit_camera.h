@@ -1,6 +1,7 @@
 #pragma once
 // The viewer's camera: a turntable about the world up axis, as ParaView's and
 // Slicer's default interaction, GL-free so that scripts and tests share it.
+#include "view/anatomy.h"
 #include "view/camera.h"
 
 namespace tg::app {
@@ -17,6 +18,8 @@ class OrbitCamera {
   // Brings the eye `factor` times closer (ortho: shrinks the view height).
   void zoom(double factor);
   void reset() { d_ = initial_; }
+  // Looks from `axes` (view/anatomy.h), the look-at point and distance kept.
+  void turn(const render::ViewAxes& axes) { d_ = render::turnedTo(d_, axes); }
 
   const render::CameraDesc& desc() const { return d_; }
 

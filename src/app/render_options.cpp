@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <iterator>
 #include <span>
+
+#include <glm/geometric.hpp>
 #include <vector>
 
 #include "app/cli_common.h"
@@ -16,6 +18,7 @@
 #include "render/color_scalar.h"
 #include "render/glyph_path.h"
 #include "render/tessellated.h"
+#include "view/anatomy.h"
 
 namespace tg::app {
 
@@ -44,8 +47,8 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
   const std::string group = ap.groupDefault();
   addInputArg(ap, o.input);
   ap.setGroup("output");
-  const std::string size = "image size in pixels (default " + std::to_string(o.width) + " " + std::to_string(o.height) + ")";
-  ap.arg("--size W H").reloads().help(size).range({1, kMaxFrameSide, true}).action([&](Args a) {
+  ap.arg("--size W H").reloads().help("image size in pixels").range({1, kMaxFrameSide, true})
+      .byDefault(std::to_string(o.width) + " " + std::to_string(o.height)).action([&](Args a) {
     o.width = int(parseInt(a[0], a[1]));
     o.height = int(parseInt(a[0], a[2]));
   });
@@ -58,13 +61,14 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
     o.glyph = a[1];
     o.look.glyphGiven = true;
   });
-  ap.arg("--iterations N").help("superquadric Newton iterations at most (default 10)").range(ranges::kIterations)
+  ap.arg("--iterations N").help("superquadric Newton iterations at most").range(ranges::kIterations)
+      .byDefault(std::to_string(o.maxIterations))
       .action([&](Args a) {
     o.maxIterations = int(parseInt(a[0], a[1]));
     if (o.marchFlag.empty()) o.marchFlag = "--iterations";
   });
-  ap.arg("--epsilon E").help("superquadric hit tolerance, relative to glyph size (default 1e-4)")
-      .range(ranges::kEpsilon).action([&](Args a) {
+  ap.arg("--epsilon E").help("superquadric hit tolerance, relative to glyph size")
+      .range(ranges::kEpsilon).byDefault(formatNumber(o.epsilon)).action([&](Args a) {
         o.epsilon = parseDouble("--epsilon", a[1]);
         if (o.marchFlag.empty()) o.marchFlag = "--epsilon";
       });
@@ -72,8 +76,8 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
     o.stats = true;
     if (o.marchFlag.empty()) o.marchFlag = "--stats";
   });
-  ap.arg("--gamma G").help("superquadric sharpness (Kindlmann 2004; default " + formatNumber(o.gamma) + ")")
-      .range(ranges::kGamma).action([&](Args a) {
+  ap.arg("--gamma G").help("superquadric sharpness (Kindlmann 2004)")
+      .range(ranges::kGamma).byDefault(formatNumber(o.gamma)).action([&](Args a) {
     o.gamma = parseDouble("--gamma", a[1]);
     if (o.marchFlag.empty()) o.marchFlag = "--gamma";
   });
@@ -91,9 +95,39 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
   ap.arg("--up X Y Z").help("camera up vector (WC)").range(ranges::kAnyFloat).action([&](Args a) {
     o.up = parseVec3("--up", rest(a));
   });
-  ap.arg("--fov DEG").help("perspective, vertical field of view (default 30)").range(ranges::kFovDeg).action([&](Args a) {
+  ap.arg("--fov DEG").help("perspective, vertical field of view").range(ranges::kFovDeg)
+      .byDefault(formatNumber(render::CameraDesc{}.fovYDeg)).action([&](Args a) {
     o.fov = parseDouble("--fov", a[1]);
   });
+  ap.arg("--view NAME").help(std::string("look from an anatomical side, up anatomical, framing the field: ") +
+                             render::kViewNames + " (in world terms: RAS+, as every reader converts; x, y, z for "
+                             "fields without an anatomical space); default: a --slice seen face-on, else axial")
+      .action([&](Args a) {
+        if (!render::namedView(a[1], false))
+          throw UsageError(std::string("--view: unknown view \"") + a[1] + "\"; choose " + render::kViewNames);
+        o.view = a[1];
+      });
+  ap.arg("--radiological").help("axial and coronal views show the patient's right on the image's left, as if "
+                                "seen from the feet or facing the patient (Slicer's and mrview's default)")
+      .action([&](Args) {
+        if (o.radiological == false) throw UsageError("--radiological and --neurological exclude each other");
+        o.radiological = true;
+      });
+  ap.arg("--neurological").help("axial and coronal views show the patient's right on the image's right, as if "
+                                "seen from above or from behind (the default; FSLeyes' default)")
+      .action([&](Args) {
+        if (o.radiological == true) throw UsageError("--radiological and --neurological exclude each other");
+        o.radiological = false;
+      });
+  ap.arg("--orientation-letters MODE").help("R/L, A/P, S/I on the image's edges: auto (default: on where the field's "
+                                            "space is anatomical, NIfTI, MRtrix and NRRD with a space; off for FEM "
+                                            "meshes and unknown spaces), on or off")
+      .action([&](Args a) {
+        const std::string m = a[1];
+        if (m != "auto" && m != "on" && m != "off")
+          throw UsageError("--orientation-letters: unknown mode \"" + m + "\"; choose auto, on or off");
+        o.orientationLetters = m;
+      });
   ap.arg("--ortho HEIGHT").help("orthographic, view height in world units").range(ranges::kPositiveFloat)
       .action([&](Args a) { o.ortho = parseDouble("--ortho", a[1]); });
   ap.setGroup("colour");
@@ -122,7 +156,9 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
       .range(ranges::kAnyFloat).action([&](Args a) {
         o.colorRange = glm::dvec2(parseDouble(a[0], a[1]), parseDouble(a[0], a[2]));
       });
-  ap.arg("--background R G B A").help("background colour (default 0.08 0.08 0.1 1)").range(ranges::kUnit)
+  ap.arg("--background R G B A").help("background colour").range(ranges::kUnit)
+      .byDefault(formatNumber(o.background.r) + " " + formatNumber(o.background.g) + " " +
+                 formatNumber(o.background.b) + " " + formatNumber(o.background.a))
       .action([&](Args a) {
         for (int k = 0; k < 4; ++k) o.background[k] = float(parseDouble(a[0], a[1 + k]));
       });
@@ -177,6 +213,10 @@ void validateRenderOptions(const RenderOptions& o, bool toFile) {
   if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
   if ((o.lookAt || o.up) && !o.eye) throw UsageError("--look-at and --up need --eye");
   validateColorOptions(o);
+  if (!o.view.empty() && o.eye) throw UsageError("--view and --eye exclude each other");
+  if (o.radiological && o.eye)
+    throw UsageError(std::string(*o.radiological ? "--radiological" : "--neurological") +
+                     " chooses the anatomical views; with --eye the camera is as given");
   checkBackend(o.backend);
   if (toFile && !io::canWriteImage(o.output))
     throw UsageError("-o: no image format for \"" + o.output + "\"");
@@ -215,11 +255,34 @@ render::FrameParams frameParams(const RenderOptions& o, const Scene& s, const te
   p.tessellation = o.tessellate;
   p.background = o.background;
   p.legend = o.legend.params;
+  // The scale bar in the file's units, where --length-units says none.
+  if (p.legend.lengthUnits.empty()) p.legend.lengthUnits = s.field.lengthUnits;
   p.ao = o.effects.ao;
   p.outline = o.effects.outline;
   p.shadow = o.shadow.params;
+  p.orientationLetters = o.orientationLetters == "on" ||
+                         (o.orientationLetters == "auto" && render::isAnatomicalSpace(s.field.space));
   if (s.preferredLook) o.look.apply(*s.preferredLook, p, o.height);
   return p;
+}
+
+std::optional<render::ViewAxes> defaultViewAxes(const RenderOptions& o, const Scene& s) {
+  const bool radiological = o.radiological.value_or(false);
+  if (!o.view.empty()) return render::namedView(o.view, radiological);
+  const std::optional<io::SliceSpec>& slice = o.field.read.selection.slice;
+  if (slice && s.field.grid) {
+    // Face-on: along the normal of the voxel plane the slice keeps.
+    const io::GridInfo& g = *s.field.grid;
+    io::GridPlacement placed;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) placed.axesWC[3 * r + c] = g.directions[3 * r + c] * g.spacing[c];
+    const int a = io::resolveSlice(*slice, placed, g.dims).axis;
+    auto column = [&](int c) { return glm::dvec3(g.directions[c], g.directions[3 + c], g.directions[6 + c]); };
+    const glm::dvec3 normal = glm::cross(column((a + 1) % 3), column((a + 2) % 3));
+    if (glm::length(normal) > 0) return render::faceOnView(normal, radiological);
+  }
+  if (s.preferredCamera && !o.radiological) return std::nullopt;
+  return render::namedView("axial", radiological);
 }
 
 // One singular glyph must not shrink the view: hence the samples' box.
@@ -228,6 +291,8 @@ render::CameraDesc chooseCamera(const RenderOptions& o, const Scene& s, const te
   const double aspect = double(o.width) / o.height;
   const glm::dvec3 lo = frame.lo, hi = frame.hi;
   render::CameraDesc d = sceneCamera(s, lo, hi, proj, o.fov.value_or(30.0), aspect);
+  if (const std::optional<render::ViewAxes> axes = defaultViewAxes(o, s); axes && !o.eye)
+    d = render::fitBox(lo, hi, proj, o.fov.value_or(30.0), aspect, axes->towardEyeWC, axes->upWC);
   if (o.eye) {
     d.eyeWC = *o.eye;
     d.lookAtWC = o.lookAt.value_or(0.5 * (lo + hi));

@@ -13,6 +13,7 @@
 #include "app/pick_flags.h"
 #include "app/scene.h"
 #include "app/scene_flags.h"
+#include "view/anatomy.h"
 #include "view/camera.h"
 #include "render/frame_params.h"
 #include "tensor/glyph_scale.h"
@@ -30,6 +31,9 @@ struct RenderOptions : SceneFlags {
   double gamma = 3.0;
   std::optional<double> faMin, fov, ortho;
   std::optional<glm::dvec3> eye, lookAt, up;
+  std::string view;                   // --view: a name of render::namedView
+  std::optional<bool> radiological;   // --radiological, --neurological (the default)
+  std::string orientationLetters = "auto";  // --orientation-letters auto|on|off
   glm::vec4 background{0.08f, 0.08f, 0.10f, 1.0f};
   int repeat = 0, tessellate = 0, maxIterations = render::MarchParams{}.maxIterations;
   double epsilon = render::MarchParams{}.epsilon;
@@ -58,8 +62,12 @@ void validateColorOptions(const RenderOptions& o);
 // returns images instead.
 void validateRenderOptions(const RenderOptions& o, bool toFile);
 // The camera: the flags', else the scene's preferred view, else one that
-// frames `frame` (the sample positions, not the glyphs' whole box).
+// frames `frame` (the sample positions, not the glyphs' whole box): --view's,
+// or a --slice seen face-on, or else axial (for a scene without a preferred
+// view), in the convention --radiological or --neurological names.
 render::CameraDesc chooseCamera(const RenderOptions& o, const Scene& s, const tensor::FramingBox& frame);
+// The view chooseCamera frames when no --eye is given; none: the scene's own.
+std::optional<render::ViewAxes> defaultViewAxes(const RenderOptions& o, const Scene& s);
 // The frame's parameters from the options, the scene's preferred look and
 // the resolved glyph size: what `render`, `view` and Python draw with.
 render::FrameParams frameParams(const RenderOptions& o, const Scene& s, const tensor::ResolvedScale& sized);

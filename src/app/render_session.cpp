@@ -16,6 +16,7 @@
 #include "app/slice_flags.h"
 #include "render/legend_pass.h"
 #include "render/legend_room.h"
+#include "render/orientation_pass.h"
 
 namespace tg::app {
 
@@ -66,7 +67,8 @@ RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io
 
   ctx_ = hooks.makeContext ? hooks.makeContext(o) : createContext(o.backend, o.width, o.height);
   lib_ = std::make_unique<gl::ShaderLibrary>();
-  renderer_ = std::make_unique<render::GlyphRenderer>(ctx_->api(), *lib_, render::makeLegendPass, o.pipeline);
+  renderer_ = std::make_unique<render::GlyphRenderer>(
+      ctx_->api(), *lib_, render::OverlayFactories{render::makeLegendPass, render::makeOrientationPass}, o.pipeline);
   target_ = std::make_unique<render::GBuffer>(ctx_->api(), o.width, o.height);
   if (underlay)
     planes_ = addSlicePlanes(*renderer_, ctx_->api(), *lib_, o.slices, std::move(*underlay), glyphs_.maxAbsEigenvalue);

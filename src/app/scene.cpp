@@ -49,7 +49,7 @@ Scene loadScene(const std::string& input, const io::ReadOptions& opt) {
       s.field = io::readTensorField(input, opt);
     }
   } catch (const io::SliceOutOfRange& e) {
-    throw sliceUsageError(e, input);
+    throw sliceUsageError(e, *opt.selection.slice, input);
   }
   checkLoaded(s.field, opt);
   return s;
@@ -122,13 +122,18 @@ tensor::MagnitudeSample sizingSample(const Scene& s, const tensor::FieldStats& s
   return tensor::magnitudeSample(stats, s.wholeField ? s.wholeField->sampleSpacing : s.field.sampleSpacing, s.sizesFrom);
 }
 
-UsageError sliceUsageError(const io::SliceOutOfRange& e, const std::string& input) {
-  // Appended, not `":" + std::to_string(...)`: GCC 12 warns falsely (-Wrestrict).
-  std::string value = std::string(1, "xyz"[e.spec.axis]) + ":" + std::to_string(e.spec.index);
-  if (e.spec.thickness > 1) value.append(":").append(std::to_string(e.spec.thickness));
-  return UsageError("--slice " + value + ": index " + std::to_string(e.spec.index) + " is outside 0.." + std::to_string(e.size - 1) +
-                    " along " + "xyz"[e.spec.axis] + " of the grid of " +
-                    (input.empty() ? std::string("the built-in scene") : input));
+UsageError sliceUsageError(const io::SliceOutOfRange& e, const io::SliceSpec& asked, const std::string& input) {
+  const std::string grid = " of the grid of " + (input.empty() ? std::string("the built-in scene") : input);
+  const std::string range = "0.." + std::to_string(e.size - 1);
+  const char axis = "xyz"[e.spec.axis];
+  if (asked.positionWC)
+    return UsageError("--slice " + asked.text() + ": the position falls at index " + std::to_string(e.spec.index) +
+                      " along voxel axis " + "ijk"[e.spec.axis] + ", outside " + range + grid);
+  if (asked.worldAxis >= 0)
+    return UsageError("--slice " + asked.text() + ": index " + std::to_string(e.spec.index) + " is outside " + range +
+                      " along voxel axis " + "ijk"[e.spec.axis] + " (the nearest " + "RAS"[asked.worldAxis] + ")" + grid);
+  return UsageError("--slice " + asked.text() + ": index " + std::to_string(e.spec.index) + " is outside " + range +
+                    " along " + axis + grid);
 }
 
 render::CameraDesc sceneCamera(const Scene& s, const glm::dvec3& loWC, const glm::dvec3& hiWC, render::Projection p,

@@ -65,8 +65,8 @@ void decideStressDefaults(Scene& s, const tensor::FieldStats& stats);
 tensor::ScaleParams sizingParams(const FieldFlags& flags, const Scene& s);
 
 // The UsageError for a --slice index beyond the grid of `input` (empty: the
-// built-in scene): the option, its value and the valid range.
-UsageError sliceUsageError(const io::SliceOutOfRange& e, const std::string& input);
+// built-in scene): the option, its value as `asked`, and the valid range.
+UsageError sliceUsageError(const io::SliceOutOfRange& e, const io::SliceSpec& asked, const std::string& input);
 
 // The view used when no camera flag is given: the scene's preferred view if
 // it has one, else fitBox's default over the box (tensor::framingBox).

@@ -31,7 +31,9 @@ render::PlaneSpec parsePlane(const std::string& text) {
   } catch (const std::invalid_argument& e) {
     throw UsageError(std::string("--plane: ") + e.what());
   }
-  if (text.find(':') != text.rfind(':')) throw UsageError("--plane: expected x|y|z:INDEX, got \"" + text + "\"");
+  if (text.find(':') != text.rfind(':') || s.worldAxis >= 0)
+    throw UsageError("--plane: expected x|y|z:INDEX (voxel axes of the underlay's grid; --plane-at for a world "
+                     "position), got \"" + text + "\"");
   render::PlaneSpec p;
   p.axis = s.axis;
   p.index = s.index;

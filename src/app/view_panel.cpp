@@ -211,6 +211,14 @@ void navigate(ViewState& v, PanelActions& act) {
   }
   if (!io.WantCaptureKeyboard) {
     if (ImGui::IsKeyPressed(GLFW_KEY_R, false)) v.camera.reset();
+    if (ImGui::IsKeyPressed(GLFW_KEY_1, false)) turnToView(v, "axial");
+    if (ImGui::IsKeyPressed(GLFW_KEY_2, false)) turnToView(v, "coronal");
+    if (ImGui::IsKeyPressed(GLFW_KEY_3, false)) turnToView(v, "sagittal");
+    if (ImGui::IsKeyPressed(GLFW_KEY_V, false)) {
+      v.radiological = !v.radiological;
+      if (v.view == "axial" || v.view == "coronal") turnToView(v, v.view);
+    }
+    if (ImGui::IsKeyPressed(GLFW_KEY_L, false)) v.params.orientationLetters = !v.params.orientationLetters;
     if (ImGui::IsKeyPressed(GLFW_KEY_S, false)) act.screenshot = true;
     if (ImGui::IsKeyPressed(GLFW_KEY_Q, false) || ImGui::IsKeyPressed(GLFW_KEY_ESCAPE, false)) act.quit = true;
   }
@@ -226,6 +234,17 @@ PanelActions drawPanel(ViewState& v, const PanelStatus& s, const tensor::GlyphSe
   controls(v, meta);
   depthCues(v.params, s);
   slicePlanes(v);
+  if (ImGui::Button("axial (1)")) turnToView(v, "axial");
+  ImGui::SameLine();
+  if (ImGui::Button("coronal (2)")) turnToView(v, "coronal");
+  ImGui::SameLine();
+  if (ImGui::Button("sagittal (3)")) turnToView(v, "sagittal");
+  if (bool r = v.radiological; ImGui::Checkbox("radiological (V)", &r)) {
+    v.radiological = r;
+    if (v.view == "axial" || v.view == "coronal") turnToView(v, v.view);
+  }
+  ImGui::SameLine();
+  ImGui::Checkbox("letters (L)", &v.params.orientationLetters);
   if (ImGui::Button("reset view (R)")) v.camera.reset();
   ImGui::SameLine();
   if (ImGui::Button("screenshot (S)")) act.screenshot = true;

@@ -16,6 +16,7 @@
 #include "app/option_ranges.h"
 #include "io/image_writer.h"
 #include "io/tensor_field.h"
+#include "view/anatomy.h"
 
 namespace tg::app {
 namespace {
@@ -29,7 +30,7 @@ const std::map<std::string, int, std::less<>> kArity = {
     {"legend", 1},  {"legend-corner", 1}, {"units", 1}, {"length-units", 1},
     {"ao", 1},      {"ao-radius", 1}, {"ao-strength", 1}, {"outlines", 1}, {"outline-width", 1},
     {"shadows", 1}, {"shadow", 2}, {"pick", 2}, {"plane", -3}, {"mesh", 2}, {"mesh-opacity", 2},
-    {"colormap", 1}, {"color-range", -2}};
+    {"colormap", 1}, {"color-range", -2}, {"view", 1}, {"convention", 1}, {"letters", 1}};
 
 double number(const ScriptStep& s, std::size_t k) { return parseDouble(s.verb, s.args[k]); }
 
@@ -122,6 +123,11 @@ void check(const ScriptStep& s) {
   }
   if (v == "clamp") ranged(s, 0, ranges::kClampSpacings);
   if (v == "legend" && s.args[0] != "on" && s.args[0] != "off") throw UsageError("legend: on or off");
+  if (v == "letters" && s.args[0] != "on" && s.args[0] != "off") throw UsageError("letters: on or off");
+  if (v == "view" && !render::namedView(s.args[0], false))
+    throw UsageError("view: unknown view \"" + s.args[0] + "\"; choose " + render::kViewNames);
+  if (v == "convention" && s.args[0] != "radiological" && s.args[0] != "neurological")
+    throw UsageError("convention: radiological or neurological");
   if (v == "legend-corner" && !legendCornerNamed(s.args[0]))
     throw UsageError("legend-corner: unknown corner \"" + s.args[0] + "\"; choose " + kLegendCornerNames);
   if (v == "units" || v == "length-units") checkLegendText(v, s.args[0]);
@@ -199,6 +205,13 @@ void resize(ViewState& v) {
   v.params.sizing = r.mapping;
 }
 
+void turnToView(ViewState& v, const std::string& name) {
+  if (const std::optional<render::ViewAxes> axes = render::namedView(name, v.radiological)) {
+    v.camera.turn(*axes);
+    v.view = name;
+  }
+}
+
 void applyStep(const ScriptStep& s, ViewState& v) {
   const std::string& w = s.verb;
   render::FrameParams& p = v.params;
@@ -217,6 +230,12 @@ void applyStep(const ScriptStep& s, ViewState& v) {
   else if (w == "epsilon") p.march.epsilon = number(s, 0);
   else if (w == "stats") p.iterationStats = s.args[0] == "on";
   else if (w == "legend") p.legend.enabled = s.args[0] == "on";
+  else if (w == "letters") p.orientationLetters = s.args[0] == "on";
+  else if (w == "view") turnToView(v, s.args[0]);
+  else if (w == "convention") {
+    v.radiological = s.args[0] == "radiological";
+    if (v.view == "axial" || v.view == "coronal") turnToView(v, v.view);
+  }
   else if (w == "legend-corner") p.legend.corner = *legendCornerNamed(s.args[0]);
   else if (w == "units") p.legend.units = s.args[0];
   else if (w == "length-units") p.legend.lengthUnits = s.args[0];

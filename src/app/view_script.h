@@ -7,6 +7,12 @@
 //   pan DX DY              move the scene by view heights, right and up
 //   zoom F                 F times closer
 //   reset                  the initial view
+//   view NAME              look from an anatomical side, look-at and distance kept: axial,
+//                          coronal, sagittal, superior, inferior, anterior, posterior, left,
+//                          right (render --view; keys 1, 2, 3: axial, coronal, sagittal)
+//   convention radiological|neurological   which side axial and coronal look from
+//                          (render --radiological, --neurological; key V swaps them)
+//   letters on|off         R/L, A/P, S/I on the image's edges (render --orientation-letters; key L)
 //   glyph ellipsoid|superquadric
 //   gamma G                superquadric sharpness, >= 0
 //   fa-min F               hide glyphs with FA below F
@@ -77,7 +83,12 @@ struct ViewState {
   tensor::MagnitudeSample magnitudes{};
   std::vector<PlaneView> planes{};  // in the order of --plane and --plane-at
   std::vector<MeshView> meshes{};
+  bool radiological = false;  // the convention `view axial` and `view coronal` follow
+  std::string view{};         // the last view named, which a change of convention turns again
 };
+
+// Turns the camera to the named view (render::namedView) in v's convention.
+void turnToView(ViewState& v, const std::string& name);
 
 // Resolves v.sizing over v.magnitudes into baseScale, params.scale and
 // params.sizing: uniforms only.

@@ -140,6 +140,9 @@ struct FrameParams {
   glm::vec4 background{0.08f, 0.08f, 0.10f, 1.0f};
   Lighting light;
   LegendParams legend;
+  // R/L, A/P, S/I on the image's edges (render/orientation_pass.h), at the
+  // legend's text size; off: no pass of theirs is built, run or allocated.
+  bool orientationLetters = false;
   AoParams ao;            // deferred depth cues: off by default, and then
   OutlineParams outline;  // no pass of theirs is built, run or allocated
   ShadowParams shadow;    // soft shadows from the key light (render/shadow_pass.h)

@@ -17,15 +17,13 @@
 #include "gl/program.h"
 #include "render/legend_layout.h"
 #include "render/frame_pass.h"
+#include "render/overlay_painter.h"
 
 namespace tg::render {
 
 class LegendPass final : public FramePass {
  public:
   LegendPass(const gl::Api& gl, const gl::ShaderLibrary& lib);
-  ~LegendPass() override;
-  LegendPass(const LegendPass&) = delete;
-  LegendPass& operator=(const LegendPass&) = delete;
 
   // Draws into the framebuffer bound for lighting (GBuffer::beginLighting).
   void draw(const Camera& cam, const LegendParams& p, const LegendInputs& in);
@@ -35,17 +33,11 @@ class LegendPass final : public FramePass {
   std::span<const Attachment> reads() const override { return {}; }
   std::span<const Attachment> writes() const override;
   const LegendLayout& layout() const { return layout_; }  // of the last draw
-  std::size_t gpuBytes() const override;
+  std::size_t gpuBytes() const override { return painter_.gpuBytes(); }
 
  private:
-  void ensureFont(int textScale);
-  const gl::Api& gl_;
-  gl::Program swatch_;
-  gl::Program text_;
-  std::unique_ptr<LegendFont> font_;
+  OverlayPainter painter_;  // the font texture, programs and buffers
   LegendLayout layout_;
-  GLuint vao_ = 0, atlas_ = 0, vertices_ = 0;
-  std::size_t vertexCapacity_ = 0;  // bytes
 };
 
 // The factory GlyphRenderer takes (render/renderer.h).

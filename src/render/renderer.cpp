@@ -27,11 +27,11 @@ std::unique_ptr<FramePass> makeShadow(const gl::Api& gl, const gl::ShaderLibrary
 
 }  // namespace
 
-GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib, PassFactory legend,
+GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib, OverlayFactories overlays,
                              std::string_view glyphPath)
-    : GlyphRenderer(gl, lib, legend, makeGlyphPath(glyphPath, gl, lib)) {}
+    : GlyphRenderer(gl, lib, overlays, makeGlyphPath(glyphPath, gl, lib)) {}
 
-GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib, PassFactory legend,
+GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib, OverlayFactories overlays,
                              std::unique_ptr<GlyphPath> path)
     : gl_(gl), lib_(lib), path_(std::move(path)), lighting_(gl, lib) {
   if (!path_) throw std::invalid_argument("GlyphRenderer: no glyph path");
@@ -39,7 +39,9 @@ GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib, Pa
   slots_[kShadow].decl = {"shadow", [](const FrameParams& p) { return p.shadow.enabled; }, makeShadow};
   slots_[kAo].decl = {"ao", [](const FrameParams& p) { return p.ao.enabled; }, make<AoPass>};
   slots_[kOutline].decl = {"outline", [](const FrameParams& p) { return p.outline.enabled; }, make<OutlinePass>};
-  slots_[kLegend].decl = {"legend", [](const FrameParams& p) { return p.legend.enabled; }, legend};
+  slots_[kOrientation].decl = {"orientation", [](const FrameParams& p) { return p.orientationLetters; },
+                               overlays.orientation};
+  slots_[kLegend].decl = {"legend", [](const FrameParams& p) { return p.legend.enabled; }, overlays.legend};
 }
 
 GlyphRenderer::~GlyphRenderer() = default;
@@ -185,6 +187,7 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   for (const auto& item : context_)
     if (item->visible() && item->translucent()) item->drawTranslucent(cam, p, target);
   runSlot(slots_[kOutline], frame);
+  runSlot(slots_[kOrientation], frame);
   // Last before readback: the legend draws over every effect.
   runSlot(slots_[kLegend], frame);
   gl::checkError(gl_, "GlyphRenderer::render");

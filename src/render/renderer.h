@@ -28,16 +28,26 @@
 
 namespace tg::render {
 
+// The overlays that draw text, built by their factories (render/legend_pass.h,
+// render/orientation_pass.h), so that the renderer links no font library and
+// the EGL-only GPU benchmark needs nothing but libEGL and the C library;
+// without one, a frame that asks for it throws.
+struct OverlayFactories {
+  OverlayFactories(PassFactory legendPass = nullptr, PassFactory orientationPass = nullptr)  // NOLINT: implicit
+      : legend(legendPass), orientation(orientationPass) {}
+  PassFactory legend;       // FrameParams::legend
+  PassFactory orientation;  // FrameParams::orientationLetters
+};
+
 class GlyphRenderer {
  public:
-  // `legend` builds the pass for FrameParams::legend, so that the renderer
-  // links no font library and the EGL-only GPU benchmark needs nothing but
-  // libEGL and the C library; without it, a frame that asks for a legend
-  // throws. `glyphPath` names how glyphs reach the G-buffer (makeGlyphPath).
-  GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib, PassFactory legend = nullptr,
+  // `overlays` builds the text passes. `glyphPath` names how glyphs reach
+  // the G-buffer (makeGlyphPath).
+  GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib, OverlayFactories overlays = {},
                 std::string_view glyphPath = "raster");
   // With a glyph path of the caller's (the tests' CPU-made G-buffer).
-  GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib, PassFactory legend, std::unique_ptr<GlyphPath> path);
+  GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib, OverlayFactories overlays,
+                std::unique_ptr<GlyphPath> path);
   ~GlyphRenderer();
   GlyphRenderer(const GlyphRenderer&) = delete;
   GlyphRenderer& operator=(const GlyphRenderer&) = delete;
@@ -79,7 +89,7 @@ class GlyphRenderer {
   void requestDrawnCount() { path_->requestDrawnCount(); }
   std::optional<std::uint64_t> latestDrawnCount() { return path_->latestDrawnCount(); }
   const GlyphPath& glyphPath() const { return *path_; }
-  // A declared pass ("shadow", "ao", "outline", "legend") while built, else
+  // A declared pass ("shadow", "ao", "outline", "orientation", "legend") while built, else
   // null: a pass exists only while frames enable it. Throws for another name.
   const FramePass* pass(std::string_view name) const;
   // Frames that ran pass `name` since construction.
@@ -112,7 +122,7 @@ class GlyphRenderer {
     std::unique_ptr<FramePass> pass;
     std::uint64_t runs = 0;
   };
-  enum SlotIndex { kShadow, kAo, kOutline, kLegend, kSlots };
+  enum SlotIndex { kShadow, kAo, kOutline, kOrientation, kLegend, kSlots };
   // Builds slot s's pass if this frame enables it (else releases it) and
   // runs it; whether it ran.
   bool runSlot(Slot& s, const PassFrame& f);

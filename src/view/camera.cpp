@@ -112,7 +112,8 @@ double Camera::viewDepthFromWindowDepth(double z) const {
 
 glm::dvec3 Camera::viewDirectionWC() const { return glm::normalize(desc.lookAtWC - desc.eyeWC); }
 
-CameraDesc frameBox(const glm::dvec3& lo, const glm::dvec3& hi, Projection p, double fovYDeg, double aspect) {
+CameraDesc frameBox(const glm::dvec3& lo, const glm::dvec3& hi, Projection p, double fovYDeg, double aspect,
+                    const glm::dvec3& towardEyeWC, const glm::dvec3& upWC) {
   CameraDesc d;
   d.projection = p;
   d.fovYDeg = fovYDeg;
@@ -123,22 +124,30 @@ CameraDesc frameBox(const glm::dvec3& lo, const glm::dvec3& hi, Projection p, do
   const double fit = std::min(std::tan(halfFov), std::tan(halfFov) * aspect);
   const double dist = r * std::sqrt(1.0 + 1.0 / (fit * fit));  // sphere tangent to the narrower frustum side
   d.lookAtWC = centre;
-  d.eyeWC = centre + glm::dvec3(0, 0, dist);
-  d.upWC = glm::dvec3(0, 1, 0);
+  d.eyeWC = centre + dist * towardEyeWC;
+  d.upWC = upWC;
   d.orthoHeight = 2.0 * r * std::max(1.0, 1.0 / aspect) * 1.05;
   return d;
 }
 
-CameraDesc fitBox(const glm::dvec3& lo, const glm::dvec3& hi, Projection p, double fovYDeg, double aspect) {
-  CameraDesc d = frameBox(lo, hi, p, fovYDeg, aspect);
+CameraDesc fitBox(const glm::dvec3& lo, const glm::dvec3& hi, Projection p, double fovYDeg, double aspect,
+                  const glm::dvec3& towardEyeWC, const glm::dvec3& upWC) {
+  CameraDesc d = frameBox(lo, hi, p, fovYDeg, aspect, towardEyeWC, upWC);
+  // The box's half extents across the view (right, up) and along it: the
+  // sums over its half edges, which for the default axes are its x, y, z.
   const glm::dvec3 half = 0.5 * (hi - lo);
-  if (!(half.x > 0.0 || half.y > 0.0)) return d;  // a point or a line along z: the sphere's view
+  const glm::dvec3 right = glm::cross(upWC, towardEyeWC);
+  auto across = [&](const glm::dvec3& a) {
+    return std::abs(half.x * a.x) + std::abs(half.y * a.y) + std::abs(half.z * a.z);
+  };
+  const double halfRight = across(right), halfUp = across(upWC), halfDepth = across(towardEyeWC);
+  if (!(halfRight > 0.0 || halfUp > 0.0)) return d;  // a point or a line along the view: the sphere's view
   constexpr double kMargin = 1.05;
   const double tanY = std::tan(glm::radians(fovYDeg) * 0.5), tanX = tanY * aspect;
   // The near face's corners bound the view: they are the closest to the eye.
-  const double dist = half.z + kMargin * std::max(half.x / tanX, half.y / tanY);
-  d.eyeWC = d.lookAtWC + glm::dvec3(0, 0, dist);
-  d.orthoHeight = 2.0 * kMargin * std::max(half.y, half.x / aspect);
+  const double dist = halfDepth + kMargin * std::max(halfRight / tanX, halfUp / tanY);
+  d.eyeWC = d.lookAtWC + dist * towardEyeWC;
+  d.orthoHeight = 2.0 * kMargin * std::max(halfUp, halfRight / aspect);
   return d;
 }
 

@@ -56,15 +56,17 @@ double smallestResolvedView(const CameraDesc& d, int height);
 Camera makeCamera(const CameraDesc& d, int width, int height, const glm::dvec3& sceneLoWC,
                   const glm::dvec3& sceneHiWC);
 
-// The default view: looking down -Z at the box centre, +Y up, framing its
+// The default view: looking down -Z at the box centre, +Y up (or from the
+// unit direction towardEyeWC with the orthogonal unit upWC), framing its
 // bounding sphere (ParaView's and Slicer's axial default).
-CameraDesc frameBox(const glm::dvec3& loWC, const glm::dvec3& hiWC, Projection p, double fovYDeg,
-                    double aspect);
+CameraDesc frameBox(const glm::dvec3& loWC, const glm::dvec3& hiWC, Projection p, double fovYDeg, double aspect,
+                    const glm::dvec3& towardEyeWC = {0, 0, 1}, const glm::dvec3& upWC = {0, 1, 0});
 
-// The default still view: looking down -Z at the box centre, +Y up, from the
-// distance at which the box's corners fill the narrower side of the frustum
-// with a 5% margin. Tighter than frameBox's bounding sphere, which leaves a
-// cubic field half the image height.
-CameraDesc fitBox(const glm::dvec3& loWC, const glm::dvec3& hiWC, Projection p, double fovYDeg, double aspect);
+// The default still view: looking down -Z at the box centre, +Y up (or along
+// the given axes, as frameBox), from the distance at which the box's corners
+// fill the narrower side of the frustum with a 5% margin. Tighter than
+// frameBox's bounding sphere, which leaves a cubic field half the image height.
+CameraDesc fitBox(const glm::dvec3& loWC, const glm::dvec3& hiWC, Projection p, double fovYDeg, double aspect,
+                  const glm::dvec3& towardEyeWC = {0, 0, 1}, const glm::dvec3& upWC = {0, 1, 0});
 
 }  // namespace tg::render

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
 #include "app/cli_values.h"
 #include "app/option_table.h"
 #include "app/render_options.h"
@@ -103,7 +105,8 @@ TEST(RenderOptions, EveryNumericOptionDeclaresARange) {
   const std::set<std::string> words = {"INPUT", "-o", "--glyph", "--color", "--array", "--layout", "--frame",
                                        "--mask", "--slice", "--scale-mode", "--sizes-from", "--magnitude", "--legend-corner",
                                        "--units", "--length-units", "--underlay", "--plane", "--underlay-colormap",
-                                       "--mesh", "--mesh-mode", "--backend", "--color-array", "--colormap"};
+                                       "--mesh", "--mesh-mode", "--backend", "--color-array", "--colormap",
+                                       "--view", "--orientation-letters"};
   for (const OptionTable::Option& opt : t.options()) {
     if (opt.arity() == 0 && !opt.positional) continue;
     if (words.count(opt.flag)) {
@@ -141,12 +144,19 @@ TEST(RenderOptions, DeclaredDefaultsAreValuesTheOptionTakesAndChangeNothing) {
     OptionTable g;
     addRenderOptions(g, given);
     EXPECT_NO_THROW(OptionTable::apply(*g.find(opt.flag), values)) << opt.flag << " " << opt.defaultText;
+    const auto& gs = given.field.read.selection;
+    const auto& os = o.field.read.selection;
     EXPECT_TRUE(given.effects.ao == o.effects.ao && given.effects.outline == o.effects.outline &&
-                given.shadow.params == o.shadow.params && given.mesh.params == o.mesh.params)
+                given.shadow.params == o.shadow.params && given.mesh.params == o.mesh.params &&
+                given.width == o.width && given.height == o.height && given.gamma == o.gamma &&
+                given.maxIterations == o.maxIterations && given.epsilon == o.epsilon &&
+                glm::distance(glm::dvec4(given.background), glm::dvec4(o.background)) < 1e-6 &&
+                given.fov.value_or(render::CameraDesc{}.fovYDeg) == render::CameraDesc{}.fovYDeg &&
+                gs.maskMin == os.maskMin && gs.confidenceMin == os.confidenceMin)
         << opt.flag << " " << opt.defaultText << " is not what the option stands at";
     EXPECT_NE(opt.description().find("default " + opt.defaultText), std::string::npos) << opt.description();
   }
-  EXPECT_GE(withDefaults, 12u);
+  EXPECT_GE(withDefaults, 20u);
 }
 
 TEST(OptionTable, ARepeatedSingleValuedOptionIsRefusedAndRepeatableOnesAdd) {

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <fstream>
 #include <regex>
+#include <sstream>
 #include <string>
 
 #include "cli/cli_run.h"
@@ -87,7 +88,14 @@ TEST(CliData, SliceStrideAndRoiSelectTheExpectedVoxels) {
                {"--stride 2", 32 * 16 * 8, 32768 - 32 * 16 * 8},
                {"--slice z:8 --stride 4", 0, 32768},  // z = 8 is a multiple of 4: 16 x 8 voxels
                // The grid's x runs -98.4375 + 3.125 i: [-2, 7] holds i = 31, 32, 33.
-               {"--roi -2 -1000 -1000 7 1000 1000", 3 * 32 * 16, 32768 - 3 * 32 * 16}};
+               {"--roi -2 -1000 -1000 7 1000 1000", 3 * 32 * 16, 32768 - 3 * 32 * 16},
+               // The stride thins within the slice only: z = 5 is no multiple of 2 (issue 32).
+               {"--slice z:5 --stride 2", 32 * 16, 32768 - 32 * 16},
+               // Anatomical and world slices: the grid's k runs superior, z = -93.75 + 12.5 k.
+               {"--slice axial:8", 64 * 32, 32768 - 64 * 32},
+               {"--slice z=6.25mm", 64 * 32, 32768 - 64 * 32},
+               {"--slice z=1.5:3", 3 * 64 * 32, 32768 - 3 * 64 * 32},
+               {"--slice sagittal:0", 32 * 16, 32768 - 32 * 16}};
   cases[5].drawn = 16 * 8;
   cases[5].outside = 32768 - 16 * 8;
   for (const Case& c : cases) {
@@ -96,6 +104,29 @@ TEST(CliData, SliceStrideAndRoiSelectTheExpectedVoxels) {
     EXPECT_EQ(countBefore(r.out, " drawn"), c.drawn) << c.flags << "\n" << r.out;
     EXPECT_EQ(countBefore(r.out, " outside the selection"), c.outside) << c.flags;
   }
+  // The glyphs are sized to the thinned spacing within the slice: 2 x 3.125 and 2 x 6.25.
+  const CmdResult thinned = run("info " + in + " --slice z:5 --stride 2");
+  EXPECT_NE(thinned.out.find("sample spacing: 6.25\n"), std::string::npos) << thinned.out;
+}
+
+// Units from the header (issue 32 item 9): NRRD's "space units" reach `info`
+// and, unless --length-units says otherwise, the legend's scale bar.
+TEST(CliData, LengthUnitsComeFromTheHeader) {
+  TG_REQUIRE_REAL_DATA();
+  const std::string in = tg::test::realData(kHelix3x3.c_str());
+  std::ifstream src(in);
+  std::stringstream text;
+  text << src.rdbuf();
+  std::string header = text.str();
+  const std::string file = "data file: ";
+  const std::size_t at = header.find(file);
+  ASSERT_NE(at, std::string::npos);
+  header.insert(at + file.size(), fs::path(in).parent_path().string() + "/");
+  header.insert(at, "space units: \"mm\" \"mm\" \"mm\"\n");
+  const fs::path withUnits = dir() / "helix-mm.nhdr";
+  std::ofstream(withUnits) << header;
+  EXPECT_NE(run("info " + withUnits.string()).out.find("length units: mm\n"), std::string::npos);
+  EXPECT_NE(run("info " + in).out.find("length units: (none given)\n"), std::string::npos);
 }
 
 TEST(CliData, ShapeThresholdsAndEigenvalueClamp) {

@@ -31,6 +31,10 @@ CASES = {
     "up": ((1.0, 0.0, 0.0), {"eye": (30.0, -20.0, 25.0)}),
     "fov": (10.0, {}),
     "ortho": (3.0, {}),
+    "view": ("left", {}),
+    "radiological": (True, {}),
+    "neurological": (True, {"view": "coronal"}),
+    "orientation_letters": ("on", {}),
     "color": ("fa", {}),
     "colormap": ("gray", {"color": "md"}),
     "color_range": ((0.2, 0.4), {"color": "fa"}),
@@ -95,7 +99,11 @@ CASES = {
 # Applied without a visible change, by design: statistics on stderr, the
 # built-in scene's look switched off (these inputs have none), the default
 # stated, another GL back end drawing the same pixels.
-NO_VISIBLE_CHANGE = {"stats", "no_shadows", "no_ao", "no_legend", "no_outlines", "backend"}
+# neurological is the default convention; orientation_letters="on" is the
+# default for the anatomical inputs (NIfTI, a volume with its affine) and
+# changes the others: test_views checks where letters are drawn.
+NO_VISIBLE_CHANGE = {"stats", "no_shadows", "no_ao", "no_legend", "no_outlines", "backend", "neurological",
+                     "orientation_letters"}
 # Where an array of points and a .vtu of the same points differ by design:
 # the file names its arrays and holds the cells of a mesh; arrays do neither.
 POINTS_DIFFER_FROM_VTU = {"array", "mesh_from_input"}
