@@ -54,20 +54,23 @@ Options parse(int argc, const char** argv) {
   ap.arg("--plot PNG").help("error against frame time (default: the CSV path with .png)").action([&](Args a) {
     o.plot = a[1];
   });
-  ap.arg("--size W H").help("image size in pixels (default 640 480)").range(ranges::kBenchFrameSide).action([&](Args a) {
+  ap.arg("--size W H").help("image size in pixels").range(ranges::kBenchFrameSide)
+      .byDefault(formatSize(o.width, o.height)).action([&](Args a) {
     o.width = int(parseInt(a[0], a[1]));
     o.height = int(parseInt(a[0], a[2]));
   });
-  ap.arg("--gamma G").help("superquadric sharpness (default 3)").range(ranges::kGamma).action([&](Args a) {
+  ap.arg("--gamma G").help("superquadric sharpness").range(ranges::kGamma).byDefault(formatNumber(o.gamma)).action([&](Args a) {
     o.gamma = parseDouble("--gamma", a[1]);
   });
-  ap.arg("--iterations LIST").help("maximum iterations, comma-separated (default 1,2,3,4,5,6,8,10,12,15,20,30)")
-      .rangeList(ranges::kIterations).action([&](Args a) {
+  ap.arg("--iterations LIST").help("maximum iterations, comma-separated")
+      .rangeList(ranges::kIterations).byDefault(formatList(o.iterations)).action([&](Args a) {
         o.iterations = parseList<int>("--iterations", a[1], [](auto f, auto t) { return parseInt(f, t); });
       });
-  ap.arg("--epsilon LIST").help("tolerances, comma-separated (default 1e-2,1e-3,...,1e-7)").rangeList(ranges::kEpsilon)
+  ap.arg("--epsilon LIST").help("tolerances, comma-separated").rangeList(ranges::kEpsilon)
+      .byDefault(formatList(o.epsilons))
       .action([&](Args a) { o.epsilons = parseList<double>("--epsilon", a[1], parseDouble); });
-  ap.arg("--frames N").help("timed frames per setting; the median is reported (default 5)").range(ranges::kFrames)
+  ap.arg("--frames N").help("timed frames per setting; the median is reported").range(ranges::kFrames)
+      .byDefault(std::to_string(o.frames))
       .action([&](Args a) { o.frames = int(parseInt(a[0], a[1])); });
   ap.arg("--fa-min F").help("hide glyphs with FA below F").range(ranges::kUnit).action([&](Args a) {
     o.faMin = parseDouble(a[0], a[1]);

@@ -68,6 +68,23 @@ inline double processCpuMs() {
 
 // A value as the help texts quote defaults ("%g").
 std::string formatNumber(double v);
+// "W H", as --size takes it. Appended, not `+ " " +`: GCC 12 warns falsely
+// (-Wrestrict) on the concatenation.
+inline std::string formatSize(int width, int height) {
+  std::string s = std::to_string(width);
+  s.append(" ").append(std::to_string(height));
+  return s;
+}
+// A list as its LIST option takes it: "1e-02,0.001" -> "0.01,0.001".
+template <class T>
+std::string formatList(const std::vector<T>& values) {
+  std::string s;
+  for (const T& v : values) {
+    if (!s.empty()) s.push_back(',');
+    s.append(formatNumber(double(v)));
+  }
+  return s;
+}
 
 // Text as a one-line message may show it: control characters (a newline in
 // a file's name, a terminal's escape sequences) and DEL become \n, \t, \r

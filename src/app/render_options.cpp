@@ -48,7 +48,7 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
   addInputArg(ap, o.input);
   ap.setGroup("output");
   ap.arg("--size W H").reloads().help("image size in pixels").range({1, kMaxFrameSide, true})
-      .byDefault(std::to_string(o.width) + " " + std::to_string(o.height)).action([&](Args a) {
+      .byDefault(formatSize(o.width, o.height)).action([&](Args a) {
     o.width = int(parseInt(a[0], a[1]));
     o.height = int(parseInt(a[0], a[2]));
   });
@@ -182,7 +182,9 @@ void validateColorOptions(const RenderOptions& o) {
     if (!(o.colorRange->x < o.colorRange->y))
       throw UsageError("--color-range: LO " + formatNumber(o.colorRange->x) + " must be below HI " +
                        formatNumber(o.colorRange->y));
-    if (*mode == render::ColorMode::DEC || *mode == render::ColorMode::DecFA)
+    // Without --color the scene's look may still choose a scalar (a stress
+    // field's sign colour): frameParams refuses once the look is known.
+    if (o.colorGiven && (*mode == render::ColorMode::DEC || *mode == render::ColorMode::DecFA))
       throw UsageError("--color-range: --color " + o.color + " maps directions, no scalar");
   }
 }
@@ -263,6 +265,9 @@ render::FrameParams frameParams(const RenderOptions& o, const Scene& s, const te
   p.orientationLetters = o.orientationLetters == "on" ||
                          (o.orientationLetters == "auto" && render::isAnatomicalSpace(s.field.space));
   if (s.preferredLook) o.look.apply(*s.preferredLook, p, o.height);
+  if (o.colorRange && (p.color == render::ColorMode::DEC || p.color == render::ColorMode::DecFA))
+    throw UsageError("--color-range: this field is coloured by " + std::string(kColorModeList[int(p.color)]) +
+                     ", directions, no scalar; give --color with a scalar or sign");
   return p;
 }
 

@@ -28,21 +28,22 @@ ScaleOptions parseScaleOptions(int argc, const char** argv, ScaleOptions o, cons
                  "the occlusion pre-pass, and a tessellated superquadric mesh per glyph as VTK's vtkTensorGlyph draws it.");
   using Args = OptionArgs;
   ap.arg("-o CSV").help("results, one row per method and count").action([&](Args a) { o.csv = a[1]; });
-  ap.arg("--n LIST").help("glyph counts, comma-separated, whole numbers (default 1e4,1e5,1e6)")
-      .rangeList({1, 2e8}).action([&](Args a) { o.counts = parseList<double>("--n", a[1], parseDouble); });
-  ap.arg("--resolutions LIST").help("tessellation resolutions (default 8,16,32,64)")
+  ap.arg("--n LIST").help("glyph counts, comma-separated, whole numbers")
+      .rangeList({1, 2e8}).byDefault(formatList(o.counts)).action([&](Args a) { o.counts = parseList<double>("--n", a[1], parseDouble); });
+  ap.arg("--resolutions LIST").help("tessellation resolutions")
       .rangeList({render::TessellatedGlyphs::kMinResolution, render::TessellatedGlyphs::kMaxResolution, true})
+      .byDefault(formatList(o.resolutions))
       .action([&](Args a) { o.resolutions = parseList<int>("--resolutions", a[1], [](auto f, auto t) { return parseInt(f, t); }); });
-  ap.arg("--size W H").help("image size (default " + std::to_string(o.width) + " " + std::to_string(o.height) + ")")
-      .range(ranges::kBenchFrameSide).action([&](Args a) {
+  ap.arg("--size W H").help("image size")
+      .range(ranges::kBenchFrameSide).byDefault(formatSize(o.width, o.height)).action([&](Args a) {
         o.width = int(parseInt(a[0], a[1]));
         o.height = int(parseInt(a[0], a[2]));
       });
-  ap.arg("--frames N").help("timed frames per row after one warm-up; medians are reported (default 3)")
-      .range(ranges::kFrames).action([&](Args a) { o.frames = int(parseInt(a[0], a[1])); });
-  ap.arg("--budget S").help("a method whose warm-up frame took over S seconds skips larger counts (default 20)")
-      .range({1e-3, 1e6}).action([&](Args a) { o.budgetS = parseDouble(a[0], a[1]); });
-  ap.arg("--gamma G").help("superquadric sharpness (default 3)").range(ranges::kGamma).action([&](Args a) {
+  ap.arg("--frames N").help("timed frames per row after one warm-up; medians are reported")
+      .range(ranges::kFrames).byDefault(std::to_string(o.frames)).action([&](Args a) { o.frames = int(parseInt(a[0], a[1])); });
+  ap.arg("--budget S").help("a method whose warm-up frame took over S seconds skips larger counts")
+      .range({1e-3, 1e6}).byDefault(formatNumber(o.budgetS)).action([&](Args a) { o.budgetS = parseDouble(a[0], a[1]); });
+  ap.arg("--gamma G").help("superquadric sharpness").range(ranges::kGamma).byDefault(formatNumber(o.gamma)).action([&](Args a) {
     o.gamma = parseDouble(a[0], a[1]);
   });
   ap.arg("--backend NAME").help("osmesa, egl, glfw or auto (default " + o.backend + ")").action([&](Args a) {

@@ -86,7 +86,11 @@ void attachWholeField(Scene& s, const FieldFlags& flags, const std::function<io:
   tensor::GlyphOptions g = flags.glyph;
   g.clMin = g.cpMin = 0;
   const tensor::GlyphSet set = tensor::buildGlyphs(f.positions, f.tensors, f.ids, 0, g);
-  s.wholeField = WholeField{tensor::fieldStats(set), f.sampleSpacing};
+  // The magnitudes are the whole field's; the spacing stays that of the
+  // samples drawn, which depends on the grid, the stride and the slice's
+  // axis but not on which slice: a thinned slice's glyphs grow to the
+  // thinned spacing (io::Selector::keptSpacing).
+  s.wholeField = WholeField{tensor::fieldStats(set), s.field.sampleSpacing};
   s.sizesFrom = "the whole field (" + std::to_string(set.glyphs.size()) + " tensors, before" + by +
                 "; --sizes-from selection for the selection's own)";
 }

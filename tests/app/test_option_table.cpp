@@ -106,7 +106,7 @@ TEST(RenderOptions, EveryNumericOptionDeclaresARange) {
                                        "--mask", "--slice", "--scale-mode", "--sizes-from", "--magnitude", "--legend-corner",
                                        "--units", "--length-units", "--underlay", "--plane", "--underlay-colormap",
                                        "--mesh", "--mesh-mode", "--backend", "--color-array", "--colormap",
-                                       "--view", "--orientation-letters"};
+                                       "--view", "--orientation-letters", "--pipeline", "--sizes-from"};
   for (const OptionTable::Option& opt : t.options()) {
     if (opt.arity() == 0 && !opt.positional) continue;
     if (words.count(opt.flag)) {

@@ -88,7 +88,7 @@ TEST_F(ParaViewPlugin, BlocksUnderMpiEqualTheSerialPicture) {
   TG_SKIP_WITHOUT_PARAVIEW();
   if (std::system("command -v mpiexec >/dev/null 2>&1") != 0) GTEST_SKIP() << "mpiexec is not installed";
   const fs::path vtm = writeBlocks(dir);
-  const std::string args = kCamera + " --input " + vtm.string() + " --scale-mode 0 --scale 0.0089";
+  const std::string args = kCamera + " --input " + vtm.string() + " --scale-mode 0 --scale 0.0178";
   const fs::path serial = dir / "serial.png", parallel = dir / "parallel.png";
   const CmdResult one = runPvbatch("--output " + serial.string() + " " + args, dir);
   ASSERT_EQ(one.code, 0) << one.err;
@@ -107,7 +107,7 @@ TEST_F(ParaViewPlugin, BlocksUnderMpiEqualTheSerialPicture) {
 // there, and the second block's glyphs leave many pixels uncovered.
 TEST_F(ParaViewPlugin, BlocksWithoutTheTensorsAreSkipped) {
   TG_SKIP_WITHOUT_PARAVIEW();
-  const std::string args = kCamera + " --scale-mode 0 --scale 0.0089";
+  const std::string args = kCamera + " --scale-mode 0 --scale 0.0178";
   const fs::path full = dir / "full.png", part = dir / "part.png";
   const CmdResult a = runPvbatch("--output " + full.string() + " " + args, dir);
   ASSERT_EQ(a.code, 0) << a.err;
@@ -140,7 +140,7 @@ std::pair<long, long> inBlocks(std::uint32_t id) {
 TEST_F(ParaViewPlugin, SelectionOnBlocksReturnsBlockAndPointIds) {
   TG_SKIP_WITHOUT_PARAVIEW();
   const fs::path exr = dir / "cli.exr", pv = dir / "pv.png", sel = dir / "selection.txt";
-  const CmdResult c = tg::test::runBinary("render " + kKitten + " -o " + exr.string() + " " + kCamera, dir);
+  const CmdResult c = tg::test::runBinary("render " + kKitten + kPluginLook + " -o " + exr.string() + " " + kCamera, dir);
   ASSERT_EQ(c.code, 0) << c.err;
   const Image img = readImage(exr);
   const std::vector<std::uint32_t> ids = readIds(exr, img);

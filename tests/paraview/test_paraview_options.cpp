@@ -95,7 +95,7 @@ TEST_F(ParaViewPlugin, MagnitudeMappingAndClampMatchTheCli) {
   TG_SKIP_WITHOUT_PARAVIEW();
   const fs::path cli = dir / "cli.png", pv = dir / "pv.png", plain = dir / "plain.png";
   const CmdResult c =
-      tg::test::runBinary("render " + kKitten + " --magnitude log --clamp 0.5 -o " + cli.string() + " " + kCamera, dir);
+      tg::test::runBinary("render " + kKitten + " --glyph ellipsoid --color dec --magnitude log --clamp 0.5 -o " + cli.string() + " " + kCamera, dir);
   ASSERT_EQ(c.code, 0) << c.err;
   const CmdResult r = runPvbatch("--output " + pv.string() + " " + kCamera +
                                      " --set TensorGlyphMagnitude 1 --set TensorGlyphClampDefault 0"
@@ -143,11 +143,11 @@ namespace {
 TEST_F(ParaViewPlugin, StrideMatchesTheCli) {
   TG_SKIP_WITHOUT_PARAVIEW();
   const fs::path cli = dir / "cli.png", pv = dir / "pv.png", all = dir / "all.png";
-  const std::string sizing = " --scale-mode absolute --scale 0.0089";
+  const std::string sizing = " --scale-mode absolute --scale 0.0178";
   const CmdResult c =
-      tg::test::runBinary("render " + kKitten + sizing + " --stride 3 -o " + cli.string() + " " + kCamera, dir);
+      tg::test::runBinary("render " + kKitten + kPluginLook + sizing + " --stride 3 -o " + cli.string() + " " + kCamera, dir);
   ASSERT_EQ(c.code, 0) << c.err;
-  const std::string pvSizing = " --scale-mode 0 --scale 0.0089";
+  const std::string pvSizing = " --scale-mode 0 --scale 0.0178";
   const CmdResult r = runPvbatch("--output " + pv.string() + " " + kCamera + pvSizing + " --set TensorGlyphStride 3", dir);
   ASSERT_EQ(r.code, 0) << r.err;
   const CmdResult a = runPvbatch("--output " + all.string() + " " + kCamera + pvSizing, dir);
@@ -208,10 +208,10 @@ TEST_F(ParaViewPlugin, TwoDimensionalStressMatchesTheCli) {
   }
   const std::string camera = " --size 400 300 --eye 2 2 12 --look-at 2 2 0 --up 0 1 0 --fov 30";
   const CmdResult c = tg::test::runBinary(
-      "render " + in.string() + " --scale-mode absolute --scale 0.3 -o " + cli.string() + camera, dir);
+      "render " + in.string() + kPluginLook + " --scale-mode absolute --scale 0.6 -o " + cli.string() + camera, dir);
   ASSERT_EQ(c.code, 0) << c.err;
   const CmdResult r = runPvbatch("--output " + pv.string() + " --input " + in.string() + camera +
-                                     " --scale-mode 0 --scale 0.3 --tensors sigma",
+                                     " --scale-mode 0 --scale 0.6 --tensors sigma",
                                  dir);
   ASSERT_EQ(r.code, 0) << r.err;
   const Image x = readImage(cli), y = readImage(pv);

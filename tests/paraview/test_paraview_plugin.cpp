@@ -32,7 +32,7 @@ using namespace tg::test::pv;
 TEST_F(ParaViewPlugin, PictureMatchesTheCli) {
   TG_SKIP_WITHOUT_PARAVIEW();
   const fs::path cli = dir / "cli.png", pv = dir / "pv.png";
-  const CmdResult c = tg::test::runBinary("render " + kKitten + " -o " + cli.string() + " " + kCamera, dir);
+  const CmdResult c = tg::test::runBinary("render " + kKitten + kPluginLook + " -o " + cli.string() + " " + kCamera, dir);
   ASSERT_EQ(c.code, 0) << c.err;
   const CmdResult r = runPvbatch("--output " + pv.string() + " " + kCamera, dir);
   ASSERT_EQ(r.code, 0) << r.err;
@@ -133,7 +133,7 @@ TEST_F(ParaViewPlugin, GlyphsMixWithASliceByDepth) {
                             std::to_string(n[1]) + " " + std::to_string(n[2]);
   const fs::path exr = dir / "cli.exr", glyphs = dir / "glyphs.png", sliceOnly = dir / "slice.png",
                  mixed = dir / "mixed.png";
-  const CmdResult c = tg::test::runBinary("render " + kKitten + " -o " + exr.string() + " " + kCamera, dir);
+  const CmdResult c = tg::test::runBinary("render " + kKitten + kPluginLook + " -o " + exr.string() + " " + kCamera, dir);
   ASSERT_EQ(c.code, 0) << c.err;
   for (const auto& [out, extra] : {std::pair{glyphs, std::string()}, std::pair{sliceOnly, slice + " --no-glyphs"},
                                    std::pair{mixed, slice}}) {
@@ -184,7 +184,7 @@ TEST_P(ParaViewMpi, PictureEqualsTheSerialOne) {
   const auto [mode, ranks] = GetParam();
   // Max mode: the largest glyph 20 spacings across (the default clamp then
   // caps it at 2), so that the typical one covers pixels.
-  const std::string sizing = mode == 0   ? " --scale-mode 0 --scale 0.0089"
+  const std::string sizing = mode == 0   ? " --scale-mode 0 --scale 0.0178"
                              : mode == 1 ? " --scale-mode 1 --scale 20"
                                          : " --scale-mode 2";
   const std::string args = kCamera + " --redistribute" + sizing;
@@ -222,7 +222,7 @@ INSTANTIATE_TEST_SUITE_P(Ranks, ParaViewMpi,
 TEST_F(ParaViewPlugin, SelectionReturnsTheGlyphsPointIds) {
   TG_SKIP_WITHOUT_PARAVIEW();
   const fs::path exr = dir / "cli.exr", pv = dir / "pv.png", sel = dir / "selection.txt";
-  const CmdResult c = tg::test::runBinary("render " + kKitten + " -o " + exr.string() + " " + kCamera, dir);
+  const CmdResult c = tg::test::runBinary("render " + kKitten + kPluginLook + " -o " + exr.string() + " " + kCamera, dir);
   ASSERT_EQ(c.code, 0) << c.err;
   const Image img = readImage(exr);
   const std::vector<std::uint32_t> ids = readIds(exr, img);

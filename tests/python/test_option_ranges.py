@@ -51,7 +51,7 @@ class SameRangesAsTheCli(unittest.TestCase):
 
     def test_the_documented_keywords_show_their_ranges(self):
         docs = tg.options()
-        self.assertIn("[0..10000]", docs["gamma"][2])
+        self.assertIn("[0..10000; default 3]", docs["gamma"][2])
         self.assertIn("[0..1]", docs["fa_min"][2])
 
 

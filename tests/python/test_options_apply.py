@@ -95,15 +95,18 @@ CASES = {
     "no_outlines": (True, {}),
     "tessellate": (6, SQ),
     "backend": ("egl", {}),
+    "pipeline": ("cpu", {"glyph": "ellipsoid"}),
+    "sizes_from": ("selection", {"roi": (0.0, 0.0, 0.0, 3.0, 3.0, 3.0)}),
 }
 # Applied without a visible change, by design: statistics on stderr, the
 # built-in scene's look switched off (these inputs have none), the default
 # stated, another GL back end drawing the same pixels.
 # neurological is the default convention; orientation_letters="on" is the
 # default for the anatomical inputs (NIfTI, a volume with its affine) and
-# changes the others: test_views checks where letters are drawn.
+# changes the others: test_views checks where letters are drawn. The cpu
+# pipeline draws the raster path's pixels (tests/gl/test_cpu_glyphs.cpp).
 NO_VISIBLE_CHANGE = {"stats", "no_shadows", "no_ao", "no_legend", "no_outlines", "backend", "neurological",
-                     "orientation_letters"}
+                     "orientation_letters", "pipeline"}
 # Where an array of points and a .vtu of the same points differ by design:
 # the file names its arrays and holds the cells of a mesh; arrays do neither.
 POINTS_DIFFER_FROM_VTU = {"array", "mesh_from_input"}
