@@ -189,6 +189,21 @@ void validateColorOptions(const RenderOptions& o) {
   }
 }
 
+namespace {
+
+// The options that need a kind of glyph: the cpu path draws ellipsoids, the
+// march's options (gamma among them) apply where the kind table says.
+void checkKindOptions(const RenderOptions& o, render::GlyphKind kind, bool toFile) {
+  if (o.pipeline == "cpu" && (kind != render::GlyphKind::Ellipsoid || o.tessellate != 0))
+    throw UsageError("--pipeline cpu draws ellipsoid glyphs only; this render draws " +
+                     std::string(render::glyphKind(kind).name) + " glyphs (use --glyph ellipsoid)");
+  if (toFile && !o.marchFlag.empty() && !render::glyphKind(kind).gamma)
+    throw UsageError(o.marchFlag + " applies to --glyph superquadric only; this render draws " +
+                     std::string(render::glyphKind(kind).name) + " glyphs");
+}
+
+}  // namespace
+
 // Every parameter is checked before anything is loaded or created.
 void validateRenderOptions(const RenderOptions& o, bool toFile) {
   if (toFile && o.output.empty()) throw UsageError("-o OUT is required");
@@ -198,18 +213,14 @@ void validateRenderOptions(const RenderOptions& o, bool toFile) {
     throw UsageError("--glyph: unknown kind \"" + o.glyph + "\"; choose " + kGlyphKindNames);
   if (o.tessellate != 0 && o.glyph != "superquadric") throw UsageError("--tessellate needs --glyph superquadric");
   if (o.tessellate != 0 && o.stats) throw UsageError("--stats counts the ray march; --tessellate has none");
-  // The kind table says which kinds the march's options (gamma among them) apply to.
-  const bool marches = render::glyphKind(o.look.glyphGiven || !o.input.empty() ? *glyphKindNamed(o.glyph)
-                                                                               : SceneLook{}.glyph).gamma;
   if (std::find(std::begin(render::kGlyphPathNames), std::end(render::kGlyphPathNames), o.pipeline) ==
       std::end(render::kGlyphPathNames))
     throw UsageError("--pipeline: unknown glyph path \"" + o.pipeline + "\"; choose " + render::glyphPathNames());
   const render::GlyphKind kind = o.look.glyphGiven || !o.input.empty() ? *glyphKindNamed(o.glyph) : SceneLook{}.glyph;
-  if (o.pipeline == "cpu" && (kind != render::GlyphKind::Ellipsoid || o.tessellate != 0))
-    throw UsageError("--pipeline cpu draws ellipsoid glyphs only; this render draws " +
-                     std::string(render::glyphKind(kind).name) + " glyphs (use --glyph ellipsoid)");
-  if (toFile && !o.marchFlag.empty() && !marches)
-    throw UsageError(o.marchFlag + " applies to --glyph superquadric only; this render draws " + o.glyph + " glyphs");
+  // A file's kind without --glyph may still change with its look (a stress
+  // field's superquadrics): frameParams checks those once the look is known.
+  const bool kindKnown = o.look.glyphGiven || o.input.empty();
+  if (kindKnown) checkKindOptions(o, kind, toFile);
   o.validateSceneFlags(o.input);
   if (toFile) o.mesh.checkModeParameters();
   if (o.fov && o.ortho) throw UsageError("--fov and --ortho exclude each other");
@@ -265,6 +276,7 @@ render::FrameParams frameParams(const RenderOptions& o, const Scene& s, const te
   p.orientationLetters = o.orientationLetters == "on" ||
                          (o.orientationLetters == "auto" && render::isAnatomicalSpace(s.field.space));
   if (s.preferredLook) o.look.apply(*s.preferredLook, p, o.height);
+  if (!o.look.glyphGiven && !o.input.empty()) checkKindOptions(o, p.glyph, !o.output.empty());
   if (o.colorRange && (p.color == render::ColorMode::DEC || p.color == render::ColorMode::DecFA))
     throw UsageError("--color-range: this field is coloured by " + std::string(kColorModeList[int(p.color)]) +
                      ", directions, no scalar; give --color with a scalar or sign");

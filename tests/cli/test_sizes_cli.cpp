@@ -227,6 +227,15 @@ TEST(Sizes, StressDefaultsOnStressFieldsOnly) {
   const auto [o1, blue] = signPixels(png);
   EXPECT_GT(blue, 20) << o1;
   EXPECT_LT(4 * paleBlue, blue) << "the default window saturates at 3S, so -S is pale";
+  // The march's options follow the kind the defaults choose: a Teem user's
+  // --gamma draws the plate's superquadrics; the cpu path, which draws
+  // ellipsoids only, is refused in one line before anything is written.
+  EXPECT_EQ(run(render + " --no-legend --gamma 2").code, 0);
+  const CmdResult cpu = run(render + " --no-legend --pipeline cpu");
+  EXPECT_EQ(cpu.code, 2) << cpu.err;
+  EXPECT_NE(cpu.err.find("--pipeline cpu draws ellipsoid glyphs only; this render draws superquadric glyphs"),
+            std::string::npos)
+      << cpu.err;
   const CmdResult x = run(render + " --color dec --magnitude linear --no-legend");
   ASSERT_EQ(x.code, 0) << x.err;
   EXPECT_NE(x.err.find("magnitude linear"), std::string::npos) << x.err;
