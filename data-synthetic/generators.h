@@ -3,7 +3,7 @@
 #include <cstdint>
 #include <string>
 
-#include "io/tensor_field.h"
+#include "io/field/tensor_field.h"
 #include "util/progress.h"
 
 namespace tg::synth {

@@ -7,9 +7,9 @@
 
 #include "data-synthetic/generators.h"
 #include "data-synthetic/random_tensors.h"
-#include "io/atomic_file.h"
-#include "io/format_modules.h"
-#include "io/input_files.h"
+#include "io/field/atomic_file.h"
+#include "io/core/format_modules.h"
+#include "io/core/input_files.h"
 
 namespace tg::synth {
 namespace {

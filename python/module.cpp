@@ -15,18 +15,18 @@
 #include <utility>
 #include <vector>
 
-#include "app/cli_values.h"
+#include "app/scale/cli_values.h"
 #include "app/field_flags.h"
-#include "app/option_table.h"
+#include "app/scale/option_table.h"
 #include "app/output_check.h"
 #include "app/render_options.h"
 #include "app/render_session.h"
 #include "app/scene.h"
 #include "gl/context.h"
-#include "io/array_field.h"
-#include "io/image_writer.h"
-#include "io/selection.h"
-#include "io/tensor_field.h"
+#include "io/core/array_field.h"
+#include "io/core/image_writer.h"
+#include "io/core/selection.h"
+#include "io/field/tensor_field.h"
 #include "util/progress.h"
 
 namespace py = pybind11;

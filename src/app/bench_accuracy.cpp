@@ -12,18 +12,18 @@
 #include <unordered_map>
 #include <vector>
 
-#include "app/option_ranges.h"
-#include "app/option_table.h"
+#include "app/scale/option_ranges.h"
+#include "app/scale/option_table.h"
 #include "app/bench.h"
 #include "app/field_flags.h"
-#include "app/frame_size.h"
+#include "app/scale/frame_size.h"
 #include "app/output_check.h"
 #include "app/cli_common.h"
 #include "app/progress.h"
 #include "app/plot.h"
 #include "app/scene.h"
 #include "gl/shader_library.h"
-#include "io/atomic_file.h"
+#include "io/field/atomic_file.h"
 #include "ref/image_diff.h"
 #include "ref/superquadric_ref.h"
 #include "render/renderer.h"

@@ -1,10 +1,10 @@
-// tensorglyph bench scale: the scale sweep (app/scale_sweep.h) on any backend.
+// tensorglyph bench scale: the scale sweep (app/scale/scale_sweep.h) on any backend.
 #include <cstdio>
 
 #include "app/bench.h"
 #include "app/cli_common.h"
 #include "app/progress.h"
-#include "app/scale_sweep.h"
+#include "app/scale/scale_sweep.h"
 #include "gl/backends.h"
 
 namespace tg::app {

@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-#include "app/cli_values.h"
+#include "app/scale/cli_values.h"
 #include "gl/context.h"
 
 namespace tg::app {

@@ -7,9 +7,9 @@
 #include <string_view>
 
 #include "app/commands.h"
-#include "app/option_table.h"
+#include "app/scale/option_table.h"
 #include "app/render_options.h"
-#include "io/format_table.h"
+#include "io/core/format_table.h"
 
 namespace tg::app {
 namespace {
@@ -33,7 +33,7 @@ std::string topics() {
          "or a command: render, view, info, synth, bench; docs/cli.md has them all\n";
 }
 
-// One line per row of the format table (io/format_table.h), with what its
+// One line per row of the format table (io/core/format_table.h), with what its
 // module needs on this machine: a missing module is found here, not at the
 // first file.
 std::string formatsHelp() {

@@ -4,13 +4,13 @@
 #include <cstdio>
 #include <limits>
 
-#include "app/option_table.h"
+#include "app/scale/option_table.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/field_flags.h"
 #include "app/progress.h"
 #include "app/scene.h"
-#include "io/readers.h"
+#include "io/core/readers.h"
 #include "render/glyph_kind.h"
 #include "tensor/glyph.h"
 #include "tensor/glyph_scale.h"

@@ -13,14 +13,14 @@
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/field_flags.h"
-#include "app/option_table.h"
+#include "app/scale/option_table.h"
 #include "app/pick.h"
 #include "app/pick_json.h"
 #include "app/progress.h"
 #include "app/render_options.h"
 #include "app/render_session.h"
-#include "io/image_writer.h"
-#include "render/legend_pass.h"
+#include "io/core/image_writer.h"
+#include "render/legend/legend_pass.h"
 #include "render/mesh_item.h"
 
 namespace tg::app {

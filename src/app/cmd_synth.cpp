@@ -9,13 +9,13 @@
 #include <string>
 #include <string_view>
 
-#include "app/option_table.h"
+#include "app/scale/option_table.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/progress.h"
 #include "data-synthetic/generators.h"
-#include "io/read_guard.h"
-#include "io/writers.h"
+#include "io/core/read_guard.h"
+#include "io/core/writers.h"
 
 namespace tg::app {
 namespace {

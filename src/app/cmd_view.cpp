@@ -18,13 +18,13 @@
 #include <stdexcept>
 #include <string>
 
-#include "app/option_table.h"
+#include "app/scale/option_table.h"
 #include "app/render_options.h"
 #include "app/cli_common.h"
 #include "app/commands.h"
 #include "app/scene_flags.h"
 #include "app/field_flags.h"
-#include "app/frame_size.h"
+#include "app/scale/frame_size.h"
 #include "app/effect_flags.h"
 #include "app/legend_flags.h"
 #include "app/look_flags.h"
@@ -39,8 +39,8 @@
 #include "app/view_panel.h"
 #include "app/view_script.h"
 #include "app/mesh_flags.h"
-#include "gl/context_glfw.h"
-#include "io/image_writer.h"
+#include "gl/backends/glfw/context_glfw.h"
+#include "io/core/image_writer.h"
 #include "render/slice_plane.h"
 
 namespace tg::app {

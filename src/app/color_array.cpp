@@ -5,8 +5,8 @@
 #include <limits>
 #include <stdexcept>
 
-#include "app/cli_values.h"
-#include "io/selection.h"
+#include "app/scale/cli_values.h"
+#include "io/core/selection.h"
 #include "render/color_scalar.h"
 
 namespace tg::app {

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "io/tensor_field.h"
+#include "io/field/tensor_field.h"
 #include "tensor/glyph.h"
 
 namespace tg::app {

@@ -4,8 +4,8 @@
 #include <sstream>
 #include <string>
 
-#include "app/cli_values.h"
-#include "app/option_ranges.h"
+#include "app/scale/cli_values.h"
+#include "app/scale/option_ranges.h"
 #include "tensor/glyph_scale.h"
 
 namespace tg::app {

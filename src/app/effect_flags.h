@@ -1,9 +1,9 @@
 #pragma once
 // The deferred depth cues' command-line flags (render --ao --outlines and
-// their parameters); their ranges are app/option_ranges.h's, which the view
+// their parameters); their ranges are app/scale/option_ranges.h's, which the view
 // script shares. Defaults live in the parameter structs (render::AoParams,
 // render::OutlineParams).
-#include "app/option_table.h"
+#include "app/scale/option_table.h"
 
 #include "render/frame_params.h"
 

@@ -5,9 +5,9 @@
 #include <stdexcept>
 
 #include "app/cli_common.h"
-#include "app/option_ranges.h"
-#include "io/format_table.h"
-#include "io/nifti_layouts.h"
+#include "app/scale/option_ranges.h"
+#include "io/core/format_table.h"
+#include "io/core/nifti_layouts.h"
 
 namespace tg::app {
 namespace {

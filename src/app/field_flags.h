@@ -4,9 +4,9 @@
 #include <optional>
 #include <string>
 
-#include "app/option_table.h"
+#include "app/scale/option_table.h"
 
-#include "io/readers.h"
+#include "io/core/readers.h"
 #include "tensor/glyph.h"
 #include "tensor/glyph_scale.h"
 

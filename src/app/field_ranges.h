@@ -9,7 +9,7 @@
 #include <optional>
 
 #include "app/render_options.h"
-#include "io/tensor_field.h"
+#include "io/field/tensor_field.h"
 #include "render/color_scalar.h"
 
 namespace tg::app {

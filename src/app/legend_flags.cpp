@@ -1,7 +1,7 @@
 #include "app/legend_flags.h"
 
-#include "app/cli_values.h"
-#include "app/option_ranges.h"
+#include "app/scale/cli_values.h"
+#include "app/scale/option_ranges.h"
 
 namespace tg::app {
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <string_view>
 
-#include "app/option_table.h"
+#include "app/scale/option_table.h"
 
 #include "render/legend_params.h"
 

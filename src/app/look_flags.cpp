@@ -2,7 +2,7 @@
 
 #include <string>
 
-#include "app/cli_values.h"
+#include "app/scale/cli_values.h"
 
 namespace tg::app {
 

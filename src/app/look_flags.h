@@ -8,7 +8,7 @@
 // stress field's (app/stress_defaults.h).
 #include <optional>
 
-#include "app/option_table.h"
+#include "app/scale/option_table.h"
 
 #include "render/frame_params.h"
 

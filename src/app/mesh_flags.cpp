@@ -2,10 +2,10 @@
 
 #include <cstdio>
 
-#include "app/option_table.h"
-#include "app/cli_values.h"
-#include "app/option_ranges.h"
-#include "io/format_table.h"
+#include "app/scale/option_table.h"
+#include "app/scale/cli_values.h"
+#include "app/scale/option_ranges.h"
+#include "io/core/format_table.h"
 
 namespace tg::app {
 std::optional<render::MeshMode> meshModeNamed(std::string_view name) {

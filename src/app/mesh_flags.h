@@ -8,11 +8,11 @@
 #include <string>
 #include <vector>
 
-#include "app/option_table.h"
+#include "app/scale/option_table.h"
 #include <glm/vec3.hpp>
 
 #include "app/output_check.h"
-#include "io/mesh_reader.h"
+#include "io/core/mesh_reader.h"
 #include "render/mesh_item.h"
 #include "render/renderer.h"
 

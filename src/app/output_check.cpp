@@ -1,8 +1,8 @@
 #include "app/output_check.h"
 
-#include "app/cli_values.h"
+#include "app/scale/cli_values.h"
 #include "app/scene_flags.h"
-#include "io/input_files.h"
+#include "io/core/input_files.h"
 
 namespace tg::app {
 

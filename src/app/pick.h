@@ -9,7 +9,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "io/tensor_field.h"
+#include "io/field/tensor_field.h"
 #include "view/camera.h"
 #include "render/gbuffer.h"
 #include "render/renderer.h"

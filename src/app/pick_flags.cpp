@@ -2,8 +2,8 @@
 
 #include <string>
 
-#include "app/cli_values.h"
-#include "app/frame_size.h"
+#include "app/scale/cli_values.h"
+#include "app/scale/frame_size.h"
 
 namespace tg::app {
 

@@ -3,7 +3,7 @@
 // Lines on stdout after the image is written (app/pick_json.h).
 #include <vector>
 
-#include "app/option_table.h"
+#include "app/scale/option_table.h"
 
 #include "app/pick.h"
 

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <stdexcept>
 
-#include "io/oiio_module.h"
-#include "io/png_writer.h"
+#include "io/core/oiio_module.h"
+#include "io/core/png_writer.h"
 
 namespace tg::app {
 namespace {

@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "io/plot_panels.h"
+#include "io/core/plot_panels.h"
 
 namespace tg::app {
 

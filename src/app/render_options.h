@@ -9,7 +9,7 @@
 #include <glm/vec3.hpp>
 #include <glm/vec4.hpp>
 
-#include "app/option_table.h"
+#include "app/scale/option_table.h"
 #include "app/pick_flags.h"
 #include "app/scene.h"
 #include "app/scene_flags.h"

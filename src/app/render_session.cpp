@@ -14,9 +14,9 @@
 #include "app/mesh_flags.h"
 #include "app/names.h"
 #include "app/slice_flags.h"
-#include "render/legend_pass.h"
-#include "render/legend_room.h"
-#include "render/orientation_pass.h"
+#include "render/legend/legend_pass.h"
+#include "render/legend/legend_room.h"
+#include "render/legend/orientation_pass.h"
 
 namespace tg::app {
 

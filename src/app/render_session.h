@@ -17,10 +17,10 @@
 #include "app/scene.h"
 #include "gl/context.h"
 #include "gl/shader_library.h"
-#include "io/mesh_reader.h"
+#include "io/core/mesh_reader.h"
 #include "view/frame_image.h"
 #include "render/gbuffer.h"
-#include "render/legend_room.h"
+#include "render/legend/legend_room.h"
 #include "render/renderer.h"
 #include "render/slice_plane.h"
 #include "tensor/glyph.h"
@@ -32,7 +32,7 @@ namespace tg::app {
 // the camera was chosen (no --eye, no --ortho, which are kept as given).
 bool leavesLegendRoom(const RenderOptions& o, const render::FrameParams& p);
 // `desc` moved so that the legend's panel covers none of the glyphs
-// (render/legend_room.h): `cells` of `set` (whose statistics the legend
+// (render/legend/legend_room.h): `cells` of `set` (whose statistics the legend
 // shows), the underlays' keys from `r`, and the scene box [lo, hi] for depth.
 // render, Python (RenderSession::frame) and view call it alike.
 render::CameraDesc withLegendRoom(const RenderOptions& o, const render::FrameParams& p, const render::CameraDesc& desc,

@@ -1,11 +1,11 @@
 #include "app/scene.h"
 
-#include "app/cli_values.h"
+#include "app/scale/cli_values.h"
 #include "app/field_flags.h"
 
 #include "data-synthetic/generators.h"
-#include "io/readers.h"
-#include "io/selection.h"
+#include "io/core/readers.h"
+#include "io/core/selection.h"
 
 #include <algorithm>
 #include <cmath>

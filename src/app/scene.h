@@ -4,11 +4,11 @@
 #include <optional>
 #include <string>
 
-#include "app/cli_values.h"
+#include "app/scale/cli_values.h"
 #include "app/look_flags.h"
 #include "app/stress_defaults.h"
-#include "io/readers.h"
-#include "io/selection.h"
+#include "io/core/readers.h"
+#include "io/core/selection.h"
 #include "tensor/field_stats.h"
 #include "tensor/glyph_scale.h"
 #include "view/camera.h"

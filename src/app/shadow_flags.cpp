@@ -2,8 +2,8 @@
 
 #include <cstdio>
 
-#include "app/cli_values.h"
-#include "app/option_ranges.h"
+#include "app/scale/cli_values.h"
+#include "app/scale/option_ranges.h"
 
 namespace tg::app {
 void ShadowFlags::addTo(OptionTable& ap) {

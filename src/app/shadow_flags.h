@@ -3,7 +3,7 @@
 // flags, whose help quotes the struct's defaults.
 #include <string>
 
-#include "app/option_table.h"
+#include "app/scale/option_table.h"
 
 #include "render/shadow_pass.h"
 

@@ -11,10 +11,10 @@
 #include <glm/mat3x3.hpp>
 #include <glm/matrix.hpp>
 
-#include "app/cli_values.h"
-#include "app/option_ranges.h"
-#include "io/format_table.h"
-#include "io/readers.h"
+#include "app/scale/cli_values.h"
+#include "app/scale/option_ranges.h"
+#include "io/core/format_table.h"
+#include "io/core/readers.h"
 #include "render/slice_plane.h"
 #include "tensor/anisotropy.h"
 #include "tensor/eigen.h"

@@ -5,9 +5,9 @@
 #include <string>
 #include <vector>
 
-#include "app/option_table.h"
+#include "app/scale/option_table.h"
 
-#include "io/tensor_field.h"
+#include "io/field/tensor_field.h"
 #include "render/renderer.h"
 #include "view/underlay.h"
 

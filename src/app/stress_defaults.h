@@ -10,7 +10,7 @@
 #include <string>
 
 #include "app/look_flags.h"
-#include "io/tensor_field.h"
+#include "io/field/tensor_field.h"
 #include "tensor/field_stats.h"
 #include "tensor/glyph_scale.h"
 

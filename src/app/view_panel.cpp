@@ -8,13 +8,13 @@
 #include <cmath>
 #include <string>
 
-#include "app/option_ranges.h"
+#include "app/scale/option_ranges.h"
 #include "render/color_scalar.h"
 
 namespace tg::app {
 namespace {
 
-// A slider over the range the option declares (app/option_ranges.h).
+// A slider over the range the option declares (app/scale/option_ranges.h).
 bool slider(const char* label, float* v, const NumberRange& r, const char* format = "%.3g", bool logarithmic = false) {
   return ImGui::SliderFloat(label, v, float(r.lo), float(r.hi), format,
                             logarithmic ? ImGuiSliderFlags_Logarithmic : ImGuiSliderFlags_None);

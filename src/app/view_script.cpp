@@ -10,12 +10,12 @@
 #include "app/cli_common.h"
 #include "app/legend_flags.h"
 #include "app/effect_flags.h"
-#include "app/frame_size.h"
+#include "app/scale/frame_size.h"
 #include "app/mesh_flags.h"
 #include "app/names.h"
-#include "app/option_ranges.h"
-#include "io/image_writer.h"
-#include "io/tensor_field.h"
+#include "app/scale/option_ranges.h"
+#include "io/core/image_writer.h"
+#include "io/field/tensor_field.h"
 #include "view/anatomy.h"
 
 namespace tg::app {
@@ -34,7 +34,7 @@ const std::map<std::string, int, std::less<>> kArity = {
 
 double number(const ScriptStep& s, std::size_t k) { return parseDouble(s.verb, s.args[k]); }
 
-// A value against the range its option declares (app/option_ranges.h), in
+// A value against the range its option declares (app/scale/option_ranges.h), in
 // the words render's flags use, naming the script's command.
 double ranged(const ScriptStep& s, std::size_t k, const NumberRange& r, const std::string& name = {}) {
   return checkedNumber(name.empty() ? s.verb : name, s.args[k], r);

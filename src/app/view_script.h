@@ -99,7 +99,7 @@ struct ScriptStep {
   std::string verb;
   std::vector<std::string> args;
   // Argument k as an integer, once parseScript has held it to its range
-  // (frames, pick: app/option_ranges.h), so the viewer reads it without a
+  // (frames, pick: app/scale/option_ranges.h), so the viewer reads it without a
   // second range of its own.
   int integer(std::size_t k) const;
 };

@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <functional>
 
-#include "io/atomic_file.h"
+#include "io/field/atomic_file.h"
 
 namespace tg::gl {
 namespace {

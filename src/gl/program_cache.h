@@ -3,7 +3,7 @@
 // GL 4.1): a program whose sources and driver match an entry is loaded from
 // it instead of compiled and linked. Entries live in
 // $XDG_CACHE_HOME/tensorglyph/programs (else ~/.cache/tensorglyph/programs),
-// one file each, written whole by io/atomic_file.h. An entry is used only
+// one file each, written whole by io/field/atomic_file.h. An entry is used only
 // when its stored key (the driver's strings and every stage's composed
 // source) equals the program's, its binary's checksum holds and the driver
 // links it; anything else is ignored and the program compiled as without a

@@ -140,7 +140,7 @@ struct FrameParams {
   glm::vec4 background{0.08f, 0.08f, 0.10f, 1.0f};
   Lighting light;
   LegendParams legend;
-  // R/L, A/P, S/I on the image's edges (render/orientation_pass.h), at the
+  // R/L, A/P, S/I on the image's edges (render/legend/orientation_pass.h), at the
   // legend's text size; off: no pass of theirs is built, run or allocated.
   bool orientationLetters = false;
   AoParams ao;            // deferred depth cues: off by default, and then

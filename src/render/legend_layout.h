@@ -1,6 +1,6 @@
 #pragma once
 // The legend's content and placement, GL-free: what the legend pass
-// (render/legend_pass.h) draws, and what tests measure it against.
+// (render/legend/legend_pass.h) draws, and what tests measure it against.
 // Coordinates are DC pixels with the origin at the image's top-left corner,
 // x right, y down (FrameImage rows); pixel (i, j) covers [i, i+1) x [j, j+1).
 #include <memory>

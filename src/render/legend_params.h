@@ -1,5 +1,5 @@
 #pragma once
-// What the legend shows (render/legend_pass.h draws it): one struct for the
+// What the legend shows (render/legend/legend_pass.h draws it): one struct for the
 // CLI (`render --legend`), the viewer's panel and script, and later Python.
 #include <string>
 

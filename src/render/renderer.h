@@ -28,8 +28,8 @@
 
 namespace tg::render {
 
-// The overlays that draw text, built by their factories (render/legend_pass.h,
-// render/orientation_pass.h), so that the renderer links no font library and
+// The overlays that draw text, built by their factories (render/legend/legend_pass.h,
+// render/legend/orientation_pass.h), so that the renderer links no font library and
 // the EGL-only GPU benchmark needs nothing but libEGL and the C library;
 // without one, a frame that asks for it throws.
 struct OverlayFactories {

@@ -4,7 +4,7 @@
 // "3,5" read as 3, "1.5abc" as 1.5 and "0x10" as 0 or 16, and files drew
 // with those values. Every text number the project reads from a file goes
 // through here, or through a check that the library's own reading of it
-// agrees (io/nrrd_numbers.h, io/mesh_text_checks.h).
+// agrees (io/modules/teem/nrrd_numbers.h, io/modules/vtk/mesh_text_checks.h).
 #include <charconv>
 #include <cmath>
 #include <cstdint>

@@ -8,8 +8,8 @@
 #include <glm/geometric.hpp>
 
 #include "app/view_script.h"
-#include "io/selection.h"
-#include "render/orientation_pass.h"
+#include "io/core/selection.h"
+#include "render/legend/orientation_pass.h"
 #include "view/anatomy.h"
 
 using namespace tg;

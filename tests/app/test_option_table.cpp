@@ -8,8 +8,8 @@
 
 #include <glm/geometric.hpp>
 
-#include "app/cli_values.h"
-#include "app/option_table.h"
+#include "app/scale/cli_values.h"
+#include "app/scale/option_table.h"
 #include "app/render_options.h"
 
 namespace tg::app {

@@ -10,10 +10,10 @@
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
 
-#include "app/cli_values.h"
+#include "app/scale/cli_values.h"
 #include "app/render_options.h"
 #include "app/view_script.h"
-#include "io/tensor_field.h"
+#include "io/field/tensor_field.h"
 
 using namespace tg;
 

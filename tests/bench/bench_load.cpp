@@ -14,8 +14,8 @@
 
 #include "data-synthetic/generators.h"
 #include "data-synthetic/random_tensors.h"
-#include "io/input_files.h"
-#include "io/readers.h"
+#include "io/core/input_files.h"
+#include "io/core/readers.h"
 #include "tensor/eigen.h"
 #include "tensor/glyph.h"
 
@@ -98,7 +98,7 @@ void loadAndEigen(benchmark::State& st) {
 }
 
 // The same through readTensorField: the read runs in a child process under
-// limits (io/read_guard.h) and its arrays are copied out of it. The
+// limits (io/core/read_guard.h) and its arrays are copied out of it. The
 // difference to loadAndEigen is the guard's cost.
 void loadAndEigenGuarded(benchmark::State& st) {
   const std::string& path = fileFor(st.range(0));
@@ -151,7 +151,7 @@ std::string mifFor(std::int64_t n, std::size_t layout) {
   const std::string name = nhdr.stem().string() + "-layout" + std::to_string(layout);
   const std::filesystem::path mih = nhdr.parent_path() / (name + ".mih");
   if (std::filesystem::exists(mih)) return mih.string();
-  // synth names its data file uniquely (io/atomic_file.h); the header says which.
+  // synth names its data file uniquely (io/field/atomic_file.h); the header says which.
   std::string raw = std::filesystem::path(io::nrrdDataFiles(nhdr.string()).at(0)).filename().string();
   if (layout > 0) {
     // Value (voxel v, component c) moves to its offset under the layout.

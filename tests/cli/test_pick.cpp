@@ -21,7 +21,7 @@
 #include <vector>
 
 #include "cli/cli_run.h"
-#include "io/writers.h"
+#include "io/core/writers.h"
 #include "real_data.h"
 #include "ref/ellipsoid_ref.h"
 #include "view/camera.h"

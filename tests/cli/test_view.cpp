@@ -103,7 +103,7 @@ TEST(View, ScriptedScreenshotsMatchTheHeadlessRenderer) {
 }
 
 // With a legend and no camera flags, the viewer's first view leaves the
-// legend the room render leaves it (render/legend_room.h): the same image.
+// legend the room render leaves it (render/legend/legend_room.h): the same image.
 TEST(View, LeavesTheLegendTheRoomRenderLeaves) {
   if (!haveDisplay()) GTEST_SKIP() << "no X display";
   const auto dir = tg::test::cliDir("view_legend");

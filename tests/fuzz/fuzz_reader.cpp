@@ -14,8 +14,8 @@
 #include <cstdio>
 #include <string>
 
-#include "io/input_files.h"
-#include "io/readers.h"
+#include "io/core/input_files.h"
+#include "io/core/readers.h"
 
 namespace {
 

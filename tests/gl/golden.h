@@ -14,7 +14,7 @@
 #include <string>
 #include <vector>
 
-#include "io/image_writer.h"
+#include "io/core/image_writer.h"
 #include "view/frame_image.h"
 
 namespace tg::test {

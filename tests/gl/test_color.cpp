@@ -13,12 +13,12 @@
 #include <vector>
 
 #include "data-synthetic/generators.h"
-#include "io/readers.h"
-#include "io/writers.h"
+#include "io/core/readers.h"
+#include "io/core/writers.h"
 #include "real_data.h"
 #include "render/color_scalar.h"
 #include "render/legend_layout.h"
-#include "render/legend_pass.h"
+#include "render/legend/legend_pass.h"
 #include "render/raster_glyphs.h"
 #include "app/render_session.h"
 #include "app/scene.h"

@@ -1,4 +1,4 @@
-// Tier 3: the legend pass (render/legend_pass.h) on OSMesa. Its colour bar
+// Tier 3: the legend pass (render/legend/legend_pass.h) on OSMesa. Its colour bar
 // against the glyphs' own colours, its text where the layout puts it, its
 // scale bar against the camera, and nothing at all when it is off.
 #include "render_fixture.h"
@@ -14,10 +14,10 @@
 #include <OpenImageIO/imageio.h>
 #include <glm/gtc/matrix_access.hpp>
 
-#include "io/image_writer.h"
+#include "io/core/image_writer.h"
 #include "render/legend_layout.h"
 #include "gl/golden.h"
-#include "render/legend_pass.h"
+#include "render/legend/legend_pass.h"
 
 using namespace tg;
 using test::GlFixture;

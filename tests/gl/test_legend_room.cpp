@@ -1,6 +1,6 @@
 // Tier 3: what the legend says and where it sits, through the session that
 // `render` and Python draw with (app/render_session.h): the default camera
-// leaves the panel free of glyphs (render/legend_room.h) and is untouched
+// leaves the panel free of glyphs (render/legend/legend_room.h) and is untouched
 // without a legend or with the user's camera; the DEC key's words against
 // the glyphs' colours; the underlay's key against its data.
 #include "real_data.h"
@@ -16,7 +16,7 @@
 #include "app/render_options.h"
 #include "app/render_session.h"
 #include "render/context_item.h"
-#include "render/legend_pass.h"
+#include "render/legend/legend_pass.h"
 #include "render/slice_plane.h"
 
 using namespace tg;

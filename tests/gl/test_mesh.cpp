@@ -12,7 +12,7 @@
 
 #include <glm/matrix.hpp>
 
-#include "io/image_writer.h"
+#include "io/core/image_writer.h"
 #include "ref/mesh_ref.h"
 #include "render/mesh_item.h"
 

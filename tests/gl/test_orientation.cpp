@@ -1,4 +1,4 @@
-// The orientation letters' pass (render/orientation_pass.h): built only by
+// The orientation letters' pass (render/legend/orientation_pass.h): built only by
 // frames that ask for it, drawing only where its layout puts the letters, in
 // the legend's text grey on a dark backing.
 #include "render_fixture.h"
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "render/orientation_pass.h"
+#include "render/legend/orientation_pass.h"
 #include "view/anatomy.h"
 
 using namespace tg;

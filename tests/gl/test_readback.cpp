@@ -9,7 +9,7 @@
 
 #include <unistd.h>
 
-#include "io/image_writer.h"
+#include "io/core/image_writer.h"
 #include "render/color_readback.h"
 
 using namespace tg;

@@ -16,7 +16,7 @@
 
 #include <glm/matrix.hpp>
 
-#include "io/image_writer.h"
+#include "io/core/image_writer.h"
 #include "gl/golden.h"
 #include "ref/shadow_ref.h"
 

@@ -11,7 +11,7 @@
 #include <glm/gtc/matrix_transform.hpp>
 
 #include "gl/render_fixture.h"
-#include "io/image_writer.h"
+#include "io/core/image_writer.h"
 #include "ref/plane_ref.h"
 #include "render/slice_plane.h"
 #include "gl/golden.h"

@@ -7,7 +7,7 @@
 #include <fstream>
 #include <string>
 
-#include "io/readers.h"
+#include "io/core/readers.h"
 
 namespace tg::test {
 

@@ -1,4 +1,4 @@
-// Tensor fields from arrays in memory (io/array_field.h), the Python module's
+// Tensor fields from arrays in memory (io/core/array_field.h), the Python module's
 // input: the same conventions as the file readers, and every bad array
 // refused with its argument named.
 #include <gtest/gtest.h>
@@ -12,9 +12,9 @@
 #include <stdexcept>
 #include <vector>
 
-#include "io/array_field.h"
+#include "io/core/array_field.h"
 #include "io/nifti_fixture.h"
-#include "io/readers.h"
+#include "io/core/readers.h"
 
 namespace {
 

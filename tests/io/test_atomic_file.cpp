@@ -1,4 +1,4 @@
-// AtomicFile (io/atomic_file.h) and the input-file list (io/input_files.h).
+// AtomicFile (io/field/atomic_file.h) and the input-file list (io/core/input_files.h).
 #include <gtest/gtest.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -9,9 +9,9 @@
 #include <set>
 #include <string>
 
-#include "io/atomic_file.h"
-#include "io/input_files.h"
-#include "io/tensor_field.h"
+#include "io/field/atomic_file.h"
+#include "io/core/input_files.h"
+#include "io/field/tensor_field.h"
 
 namespace fs = std::filesystem;
 using tg::io::AtomicFile;

@@ -14,8 +14,8 @@
 
 #include "io/io_test_util.h"
 #include "io/nifti_fixture.h"
-#include "io/readers.h"
-#include "io/writers.h"
+#include "io/core/readers.h"
+#include "io/core/writers.h"
 #include "tensor/glyph.h"
 
 using namespace tg;

@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "io/io_test_util.h"
-#include "io/readers.h"
+#include "io/core/readers.h"
 #include "tensor/eigen.h"
 
 namespace fs = std::filesystem;

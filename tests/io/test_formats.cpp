@@ -1,4 +1,4 @@
-// The table of input formats (io/format_table.h) walked row by row: every
+// The table of input formats (io/core/format_table.h) walked row by row: every
 // extension is accepted by the checks of the uses its row names and routed
 // to that row's reader, every other use refuses it, and every option a row
 // does not take is refused for it.
@@ -8,10 +8,10 @@
 #include <cctype>
 #include <filesystem>
 
-#include "io/format_table.h"
+#include "io/core/format_table.h"
 #include "io/io_test_util.h"
-#include "io/mesh_reader.h"
-#include "io/readers.h"
+#include "io/core/mesh_reader.h"
+#include "io/core/readers.h"
 
 using namespace tg;
 namespace fs = std::filesystem;

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "io/io_test_util.h"
-#include "io/mesh_reader.h"
-#include "io/readers.h"
+#include "io/core/mesh_reader.h"
+#include "io/core/readers.h"
 
 using namespace tg;
 namespace fs = std::filesystem;

@@ -13,7 +13,7 @@
 
 #include "io/io_test_util.h"
 #include "io/mif_fixture.h"
-#include "io/readers.h"
+#include "io/core/readers.h"
 
 using namespace tg;
 namespace fs = std::filesystem;

@@ -13,7 +13,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "io/readers.h"
+#include "io/core/readers.h"
 #include "io/io_test_util.h"
 
 using namespace tg;

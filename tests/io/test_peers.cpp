@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "io/io_test_util.h"
-#include "io/readers.h"
+#include "io/core/readers.h"
 
 using namespace tg;
 namespace fs = std::filesystem;

@@ -16,12 +16,12 @@
 #include <optional>
 
 #include "data-synthetic/generators.h"
-#include "io/guard_wire.h"
+#include "io/core/guard_wire.h"
 #include "io/io_test_util.h"
 #include "io/mif_fixture.h"
-#include "io/raw_samples.h"
-#include "io/readers.h"
-#include "io/writers.h"
+#include "io/core/raw_samples.h"
+#include "io/core/readers.h"
+#include "io/core/writers.h"
 
 using namespace tg;
 namespace fs = std::filesystem;
@@ -103,7 +103,7 @@ TEST(ReadGuard, AnEmptyFieldCrossesWithoutWaiting) {
   expectSame(guarded, io::readTensorFieldInProcess(p.string(), o), p.string());
 }
 
-// ---- Raw data read by the parent (io/raw_samples.h) ------------------------
+// ---- Raw data read by the parent (io/core/raw_samples.h) ------------------------
 
 namespace {
 

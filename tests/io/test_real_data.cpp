@@ -3,7 +3,7 @@
 
 #include <filesystem>
 
-#include "io/readers.h"
+#include "io/core/readers.h"
 #include "tensor/glyph.h"
 #include "real_data.h"
 

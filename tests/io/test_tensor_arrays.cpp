@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "io/io_test_util.h"
-#include "io/readers.h"
+#include "io/core/readers.h"
 #include "real_data.h"
 
 using namespace tg;

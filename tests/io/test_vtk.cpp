@@ -9,9 +9,9 @@
 #include <fstream>
 
 #include "data-synthetic/generators.h"
-#include "io/readers.h"
+#include "io/core/readers.h"
 #include "io/io_test_util.h"
-#include "io/writers.h"
+#include "io/core/writers.h"
 
 using namespace tg;
 namespace fs = std::filesystem;

@@ -8,7 +8,7 @@
 #include <string>
 
 #include "io/io_test_util.h"
-#include "io/readers.h"
+#include "io/core/readers.h"
 
 using namespace tg;
 namespace fs = std::filesystem;

@@ -1,5 +1,5 @@
 """Python's keywords refuse what the command line refuses, in the same words:
-the ranges are declared once (src/app/option_ranges.h), and the CLI, the
+the ranges are declared once (src/app/scale/option_ranges.h), and the CLI, the
 view script and the module read them (issue 29, item 4)."""
 import os
 import subprocess

@@ -10,7 +10,7 @@
 #include <vtkCommunicator.h>
 #include <vtkMultiProcessController.h>
 
-#include "io/tensor_field.h"
+#include "io/field/tensor_field.h"
 
 namespace tg::paraview {
 namespace {

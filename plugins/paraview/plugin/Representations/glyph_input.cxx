@@ -19,8 +19,8 @@
 #include <vtkTypeUInt32Array.h>
 
 #include "global_sample.h"
-#include "io/selection.h"
-#include "io/tensor_field.h"
+#include "io/core/selection.h"
+#include "io/field/tensor_field.h"
 
 namespace tg::paraview {
 namespace {
@@ -137,7 +137,7 @@ std::string readPiece(const Piece& piece, std::uint64_t firstId, const Selection
     }
     tensors->GetTuple(i, t);
     if (nc == 9) {
-      // As io/vtk_reader.cpp measures it, for the same warning.
+      // As io/modules/vtk/vtk_reader.cpp measures it, for the same warning.
       report.maxAsymmetry = std::max(report.maxAsymmetry, io::asymmetry(t));
       f.addFull(id, p, t);
     } else if (nc == 6) {

@@ -1,4 +1,4 @@
-// The command line's refusal of a value out of range (app/option_ranges.h),
+// The command line's refusal of a value out of range (app/scale/option_ranges.h),
 // in its words, with the property's name: ParaView's range domains bound the
 // GUI's widgets only, and Python sets any value, so the setter is where a
 // value is refused. The value held is kept.
@@ -8,7 +8,7 @@
 
 #include <vtkObject.h>
 
-#include "app/option_ranges.h"
+#include "app/scale/option_ranges.h"
 
 namespace tg::paraview {
 

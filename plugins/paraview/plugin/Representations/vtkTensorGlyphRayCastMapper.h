@@ -22,7 +22,7 @@ public:
   void PrintSelf(ostream& os, vtkIndent indent) override;
 
   // Every setter refuses a value the command line refuses (the ranges of
-  // src/app/option_ranges.h, the kinds of render/glyph_kind.h): it says so
+  // src/app/scale/option_ranges.h, the kinds of render/glyph_kind.h): it says so
   // in the command line's words (vtkErrorMacro: ParaView's output messages)
   // and keeps the value held. A NaN is refused too.
   // Glyph kind: the row of render::glyphKinds() (0 ellipsoid, 1 superquadric,

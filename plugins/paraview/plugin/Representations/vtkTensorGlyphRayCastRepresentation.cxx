@@ -22,7 +22,7 @@
 #include "color_legend.h"
 #include "glyph_input.h"
 #include "property_check.h"
-#include "io/tensor_field.h"
+#include "io/field/tensor_field.h"
 #include "vtkTensorGlyphRayCastMapper.h"
 
 vtkStandardNewMacro(vtkTensorGlyphRayCastRepresentation);
