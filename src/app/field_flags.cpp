@@ -34,10 +34,11 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
   ap.setGroup("input and selection");
   ap.arg("--array NAME").help("VTK: the point array holding the tensors (9, 6, 4 or 3 components)")
       .action([&](Args a) { read.arrayName = a[1]; });
-  ap.arg("--layout L").help(layoutHelp()).action([&](Args a) { read.layout = a[1]; });
+  ap.arg("--layout L").help(layoutHelp()).oneOf(io::layoutChoices(io::kNiftiInput | io::kVtkInput | io::kArrayInput))
+      .action([&](Args a) { read.layout = a[1]; });
   ap.arg("--frame F").help("NIfTI tensor axes: voxel, fsl (voxel, i reversed when det > 0) or world; default: the "
                            "layout's (fsl: fsl, mrtrix: world, else voxel)")
-      .action([&](Args a) { read.frame = a[1]; });
+      .oneOf(io::kTensorFrameChoices).action([&](Args a) { read.frame = a[1]; });
   ap.arg("--mask FILE").help("scalar volume on the same grid (" + io::extensionList(io::kScalarUse) + ")").action([&](Args a) {
     sel.maskPath = a[1];
   });
@@ -117,7 +118,7 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
       });
   ap.arg("--magnitude M").help("how a glyph's largest |eigenvalue| m sets its size, shape ratios and signs kept: "
                                "linear (default), log (lambda0 ln(1 + m/lambda0)) or shape (every glyph the same size)")
-      .action([&](Args a) {
+      .oneOf(tensor::kMagnitudeNames).action([&](Args a) {
         const auto m = tensor::magnitudeNamed(a[1]);
         if (!m) throw UsageError(std::string("--magnitude: unknown mapping \"") + a[1] + "\"; choose " +
                                  tensor::kMagnitudeNames);
