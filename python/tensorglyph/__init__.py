@@ -282,8 +282,8 @@ class Figure(np.ndarray):
     """A rendered frame: the (H, W, 4) uint8 image itself, a NumPy array that
     Jupyter shows as a picture. With channels=True, ``channels`` holds
     ``color`` (linear float RGBA), ``depth`` (view-axis distance, inf where
-    empty), ``normal`` (world-space) and ``id`` (input index, 0xFFFFFFFF
-    where empty); ``glyphs`` is the number of glyphs uploaded; ``inputs``
+    empty), ``normal`` (world-space) and ``id`` (input index: on a grid
+    i + X (j + Y k), i fastest; 0xFFFFFFFF where empty); ``glyphs`` is the number of glyphs uploaded; ``inputs``
     the (keyword, path) of each file it was drawn from, which ``save``
     refuses to write over; ``grid`` the input's voxel grid (X, Y, Z), None
     for points, on which ``voxel`` turns ids into voxels."""
