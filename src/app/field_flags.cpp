@@ -12,6 +12,9 @@
 namespace tg::app {
 namespace {
 
+constexpr const char* kSizesFromNames = "field or selection";
+constexpr const char* kScaleModeNames = "absolute, max or spacing";
+
 // From the one table of layouts: each name, its order and where it applies.
 std::string layoutHelp() {
   std::string h = "order of six components (NIfTI; 6-component VTK arrays): ";
@@ -92,10 +95,10 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
   ap.arg("--sizes-from W").help("field (default): sizes, the magnitude mapping and the clamp from the whole field, "
                                 "so a tensor is drawn at one size on every slice, ROI or stride; selection: from "
                                 "the selected tensors only")
-      .action([&](Args a) {
+      .oneOf(kSizesFromNames).action([&](Args a) {
         const std::string w = a[1];
         if (w != "field" && w != "selection")
-          throw UsageError("--sizes-from: unknown source \"" + w + "\"; choose field or selection");
+          throw UsageError("--sizes-from: unknown source \"" + w + "\"; choose " + kSizesFromNames);
         sizesFromSelection = w == "selection";
       });
   // Sizing is a frame parameter: the glyph records hold eigenvalues, not sizes.
@@ -109,12 +112,12 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
                                 std::to_string(std::lround(100 * tensor::ScaleParams{}.percentile)) +
                                 "th percentile of the whole field's non-zero tensors is S sample spacings across; "
                                 "max: the largest is; absolute: S is the diameter per eigenvalue unit")
-      .action([&](Args a) {
+      .oneOf(kScaleModeNames).action([&](Args a) {
         const std::string m = a[1];
         if (m == "absolute") scaleMode = tensor::ScaleMode::Absolute;
         else if (m == "max") scaleMode = tensor::ScaleMode::Max;
         else if (m == "spacing") scaleMode = tensor::ScaleMode::Spacing;
-        else throw UsageError("--scale-mode: unknown mode \"" + m + "\"; choose absolute, max or spacing");
+        else throw UsageError("--scale-mode: unknown mode \"" + m + "\"; choose " + kScaleModeNames);
       });
   ap.arg("--magnitude M").help("how a glyph's largest |eigenvalue| m sets its size, shape ratios and signs kept: "
                                "linear (default), log (lambda0 ln(1 + m/lambda0)) or shape (every glyph the same size)")

@@ -33,7 +33,7 @@ void addRenderOptions(OptionTable& ap, RenderOptions& o) {
                                  "as VTK's vtkTensorGlyph (needs --glyph superquadric)")
       .range(ranges::kTessellation).action([&](Args a) { o.tessellate = int(parseInt(a[0], a[1])); });
   ap.setGroup("output");
-  ap.arg("--backend NAME").reloads().help("osmesa (default), egl, glfw or auto").action([&](Args a) { o.backend = a[1]; });
+  ap.arg("--backend NAME").reloads().help("osmesa (default), egl, glfw or auto").oneOf(kBackendNames).action([&](Args a) { o.backend = a[1]; });
   o.pick.addTo(ap);
   ap.arg("--repeat N").commandLineOnly().help("render N more frames and report the median frame time")
       .range(ranges::kRepeat).action([&](Args a) { o.repeat = int(parseInt(a[0], a[1])); });

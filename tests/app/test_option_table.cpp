@@ -180,7 +180,8 @@ TEST(RenderOptions, DeclaredChoicesAreTheNamesEachOptionTakes) {
     }
   }
   EXPECT_GE(named, 9u);
-  for (const char* flag : {"--glyph", "--color", "--colormap", "--legend-corner", "--magnitude", "--mesh-mode"})
+  for (const char* flag : {"--glyph", "--color", "--colormap", "--legend-corner", "--magnitude", "--mesh-mode",
+                           "--scale-mode", "--sizes-from", "--backend"})
     EXPECT_FALSE(t.find(flag)->choices.empty()) << flag;
 }
 
