@@ -6,6 +6,8 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
+#include <climits>
 #include <cstring>
 #include <memory>
 #include <mutex>
@@ -39,15 +41,71 @@ using OptionList = std::vector<std::pair<std::string, std::vector<std::string>>>
 // (keyword, path) of each file a frame was drawn from.
 using InputList = std::vector<std::pair<std::string, std::string>>;
 
+// The keywords of the option table, as Python takes them.
+std::vector<std::string> keywords(const app::OptionTable& table) {
+  std::vector<std::string> out;
+  for (const auto& opt : table.options())
+    if (!opt.positional && !opt.cliOnly && !opt.isHidden) out.push_back(opt.keyword());
+  return out;
+}
+
 // Usage errors become ValueError, unknown keywords TypeError, as Python's own
 // calls report them; bad data (io::InputError) is ValueError too.
 void applyOptions(const app::OptionTable& table, const OptionList& given, const char* fn) {
   for (const auto& [kw, values] : given) {
     const app::OptionTable::Option* opt = table.find(kw);
-    if (!opt || opt->positional || opt->cliOnly || opt->isHidden || opt->keyword() != kw)
-      throw py::type_error(std::string(fn) + "() got an unexpected keyword argument '" + kw + "'");
+    if (!opt || opt->positional || opt->cliOnly || opt->isHidden || opt->keyword() != kw) {
+      const std::string near = app::nearestName(kw, keywords(table));
+      throw py::type_error(std::string(fn) + "() got an unexpected keyword argument '" + kw + "'" +
+                           (near.empty() ? "" : "; did you mean '" + near + "'?"));
+    }
     app::OptionTable::apply(*opt, values);
   }
+}
+
+// underlay= and mask= given in memory (an array, a nibabel image): the
+// values i fastest, the grid, and where it lies when an affine came with it
+// (none: on the tensors' grid).
+std::shared_ptr<const io::ScalarVolume> scalarVolume(const py::handle& given, const char* kw) {
+  if (given.is_none()) return nullptr;
+  const auto t = given.cast<py::tuple>();
+  auto values = t[0].cast<py::array_t<float, py::array::c_style | py::array::forcecast>>();
+  const auto dims = t[1].cast<std::vector<long long>>();
+  const auto affine = t[2].cast<std::optional<std::vector<double>>>();
+  auto v = std::make_shared<io::ScalarVolume>();
+  std::uint64_t voxels = 1;
+  if (dims.size() != 3) throw std::invalid_argument(std::string(kw) + ": a volume has 3 axes");
+  for (int k = 0; k < 3; ++k) {
+    if (dims[std::size_t(k)] < 1 || dims[std::size_t(k)] > INT32_MAX)
+      throw std::invalid_argument(std::string(kw) + ": an empty or too large axis");
+    v->dims[k] = int(dims[std::size_t(k)]);
+    voxels *= std::uint64_t(v->dims[k]);
+  }
+  if (std::uint64_t(values.size()) != voxels) throw std::invalid_argument(std::string(kw) + ": values and shape differ");
+  v->values.assign(values.data(), values.data() + values.size());
+  if (affine) {
+    if (affine->size() != 16) throw std::invalid_argument(std::string(kw) + "_affine: must be 4x4");
+    io::GridPlacement p;
+    for (int r = 0; r < 3; ++r) {
+      for (int c = 0; c < 3; ++c) p.axesWC[3 * r + c] = (*affine)[std::size_t(4 * r + c)];
+      p.originWC[r] = (*affine)[std::size_t(4 * r + 3)];
+    }
+    v->placement = p;
+  }
+  return v;
+}
+
+bool sameVolume(const std::shared_ptr<const io::ScalarVolume>& a, const std::shared_ptr<const io::ScalarVolume>& b) {
+  if (!a || !b) return a == b;
+  const auto placed = [](const io::ScalarVolume& v) {
+    std::vector<double> out;
+    if (v.placement) {
+      out.assign(v.placement->originWC, v.placement->originWC + 3);
+      out.insert(out.end(), v.placement->axesWC, v.placement->axesWC + 9);
+    }
+    return out;
+  };
+  return std::equal(a->dims, a->dims + 3, b->dims) && a->values == b->values && placed(*a) == placed(*b);
 }
 
 // The files a frame was drawn from, named by keyword ("tensors" for the
@@ -193,9 +251,11 @@ class CurrentFor {
 class Renderer {
  public:
   Renderer(Source source, OptionList options,
-           std::optional<py::array_t<float, py::array::c_style | py::array::forcecast>> colorValues)
+           std::optional<py::array_t<float, py::array::c_style | py::array::forcecast>> colorValues,
+           const py::dict& volumes)
       : source_(std::move(source)) {
     setColorValues(std::move(colorValues));
+    setVolumes(volumes);
     rebuild(options);
   }
 
@@ -215,9 +275,9 @@ class Renderer {
     app::OptionTable table;
     app::addRenderOptions(table, o);
     applyOptions(table, options, "render");
-    o.colorValuesGiven = colorValues_.has_value();
+    useVolumes(o);
     validateFor(source_, o);
-    if (!session_ || reloadKeys(table, options) != reloadKeys_) {
+    if (!session_ || volumesChanged_ || reloadKeys(table, options) != reloadKeys_) {
       {
         py::gil_scoped_release release;
         build(o, options, table);
@@ -261,7 +321,14 @@ class Renderer {
       out["id"] = id;
     }
     out["glyphs"] = session_->glyphCount();
-    out["inputs"] = inputsOf(table, app::sceneInputs(source_.path, o));
+    std::vector<app::NamedPath> files = app::sceneInputs(source_.path, o);
+    std::erase_if(files, [&](const app::NamedPath& p) {
+      return (p.flag == "--underlay" && underlay_) || (p.flag == "--mask" && mask_);
+    });
+    out["inputs"] = inputsOf(table, files);
+    // The voxel grid of a gridded input: the id channel's ids are voxel
+    // indices i + X (j + Y k) on it.
+    if (const auto& g = session_->scene().field.grid) out["grid"] = py::make_tuple(g->dims[0], g->dims[1], g->dims[2]);
     return out;
   }
 
@@ -271,8 +338,20 @@ class Renderer {
     app::OptionTable table;
     app::addRenderOptions(table, o);
     applyOptions(table, options, "set");
-    o.colorValuesGiven = colorValues_.has_value();
+    useVolumes(o);
     validateFor(source_, o);
+  }
+
+  // underlay= and mask= given in memory: {keyword: (values, shape, affine)};
+  // a keyword missing or None has none. A change loads again.
+  void setVolumes(const py::dict& volumes) {
+    const auto get = [&](const char* kw) {
+      return volumes.contains(kw) ? scalarVolume(volumes[kw], kw) : nullptr;
+    };
+    auto underlay = get("underlay"), mask = get("mask");
+    if (!sameVolume(underlay, underlay_) || !sameVolume(mask, mask_)) volumesChanged_ = true;
+    underlay_ = std::move(underlay);
+    mask_ = std::move(mask);
   }
 
   // color=array's values, one per input tensor (none: no array); the count
@@ -297,6 +376,13 @@ class Renderer {
   std::size_t glyphCount() const { return session_ ? session_->glyphCount() : 0; }
 
  private:
+  // What this Renderer holds for the options: colour values, volumes.
+  void useVolumes(app::RenderOptions& o) const {
+    o.colorValuesGiven = colorValues_.has_value();
+    if (underlay_) o.slices.underlayVolume = underlay_;
+    if (mask_) o.field.read.selection.maskVolume = mask_;
+  }
+
   // The values of every reloading option given, in order: equal lists mean
   // the loaded scene and the upload still hold.
   static OptionList reloadKeys(const app::OptionTable& table, const OptionList& options) {
@@ -311,7 +397,7 @@ class Renderer {
     app::OptionTable table;
     app::addRenderOptions(table, o);
     applyOptions(table, options, "Renderer");
-    o.colorValuesGiven = colorValues_.has_value();
+    useVolumes(o);
     validateFor(source_, o);
     {
       py::gil_scoped_release release;
@@ -356,6 +442,7 @@ class Renderer {
     session_->context().releaseCurrent();  // made current on this thread; the next call may come from another
     colorValuesSent_ = nullptr;  // a new session has no colour values yet
     reloadKeys_ = reloadKeys(table, options);
+    volumesChanged_ = false;
     source_.progress->rethrow();
   }
 
@@ -366,6 +453,8 @@ class Renderer {
   std::uint64_t previousUploads_ = 0;
   std::optional<std::vector<float>> colorValues_;
   const app::RenderSession* colorValuesSent_ = nullptr;  // the session holding colorValues_
+  std::shared_ptr<const io::ScalarVolume> underlay_, mask_;
+  bool volumesChanged_ = false;
   std::mutex mutex_;
 };
 
@@ -468,17 +557,20 @@ PYBIND11_MODULE(_core, m) {
       .def(py::init([](std::optional<py::array> tensors, std::optional<py::array> positions,
                        std::optional<std::vector<double>> affine, std::string layout, std::string frame,
                        std::string path, OptionList options, py::object progress,
-                       std::optional<py::array_t<float, py::array::c_style | py::array::forcecast>> colorValues) {
+                       std::optional<py::array_t<float, py::array::c_style | py::array::forcecast>> colorValues,
+                       const py::dict& volumes) {
              return std::make_unique<Renderer>(makeSource(std::move(tensors), std::move(positions), std::move(affine),
                                                           std::move(layout), std::move(frame), std::move(path),
                                                           std::move(progress)),
-                                               std::move(options), std::move(colorValues));
+                                               std::move(options), std::move(colorValues), volumes);
            }),
            py::arg("tensors"), py::arg("positions"), py::arg("affine"), py::arg("layout"), py::arg("frame"),
-           py::arg("path"), py::arg("options"), py::arg("progress"), py::arg("color_values") = py::none())
+           py::arg("path"), py::arg("options"), py::arg("progress"), py::arg("color_values") = py::none(),
+           py::arg("volumes") = py::dict())
       .def("render", &Renderer::render, py::arg("options"), py::arg("channels"))
       .def("check", &Renderer::check, py::arg("options"))
       .def("set_color_values", &Renderer::setColorValues, py::arg("values"))
+      .def("set_volumes", &Renderer::setVolumes, py::arg("volumes"))
       .def_property_readonly("uploads", &Renderer::uploads)
       .def_property_readonly("glyph_count", &Renderer::glyphCount);
   // The option table, for keyword checks, docstrings and the type stubs:
@@ -493,5 +585,19 @@ PYBIND11_MODULE(_core, m) {
         out.append(py::make_tuple(opt.keyword(), opt.flag, opt.metavars, opt.description(), opt.reload));
     return out;
   });
+  // {keyword: names} of the options that take a name from a fixed list.
+  m.def("choices", [] {
+    app::RenderOptions o;
+    app::OptionTable table;
+    app::addRenderOptions(table, o);
+    py::dict out;
+    for (const auto& opt : table.options())
+      if (!opt.positional && !opt.cliOnly && !opt.isHidden && !opt.choices.empty()) out[py::str(opt.keyword())] = opt.choices;
+    return out;
+  });
   m.def("save", &saveFrame, py::arg("frame"), py::arg("path"), py::arg("inputs"));
+  // The CLI's "did you mean": the name of `names` nearest `word`, or "".
+  m.def("nearest", [](const std::string& word, const std::vector<std::string>& names) {
+    return app::nearestName(word, names);
+  }, py::arg("word"), py::arg("names"));
 }

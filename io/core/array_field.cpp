@@ -181,7 +181,9 @@ TensorField fieldFromVolume(const ArrayRef& tensors, std::string_view layout, co
   } else if (l) {
     named = l->frame;
   } else {
-    fail("frame", "name the axes of (X, Y, Z, 3, 3) tensors: " + std::string(kTensorFrameChoices));
+    // (X, Y, Z, 3, 3) is how DIPY hands tensors over (fit.quadratic_form),
+    // in the array's own axes i, j, k, which the affine takes to the world.
+    named = TensorFrame::Voxel;
   }
   const FrameMap map = tensorFrameMap(*named, g.axesWC, true);
   g.tensorToWC = map.tensorToWC;

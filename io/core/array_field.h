@@ -40,8 +40,8 @@ TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, co
 // NIfTI file's default is: adviseLayout), or (X, Y, Z, 3, 3);
 // `affine` a row-major 4x4 from voxel index (i, j, k) to WC, as nibabel's
 // `img.affine`; `frame` the tensors' axes ("voxel", "fsl" or "world", as
-// --frame), by default the layout's (a (…, 3, 3) volume has none: it must be
-// named). Voxels are visited i fastest, as the file readers do, so ids are
+// --frame), by default the layout's; a (…, 3, 3) volume has none, and is
+// taken in the voxel axes, as DIPY's quadratic_form is. Voxels are visited i fastest, as the file readers do, so ids are
 // i + X (j + Y k).
 TensorField fieldFromVolume(const ArrayRef& tensors, std::string_view layout, const double affine[16],
                             std::string_view frame, const Selection& selection = {});

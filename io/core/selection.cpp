@@ -249,7 +249,7 @@ Selector::Selector(const Selection& sel, const std::string& path, const int* dim
     slabHi_ = s.index + s.thickness / 2;
   }
   if (!sel.maskPath.empty()) {
-    mask_ = readScalarVolume(sel.maskPath, dims_);
+    mask_ = sel.maskVolume ? *sel.maskVolume : readScalarVolume(sel.maskPath, dims_);
     const std::size_t voxels = std::size_t(dims_[0]) * std::size_t(dims_[1]) * std::size_t(dims_[2]);
     if (mask_.values.size() != voxels || !std::is_permutation(dims_, dims_ + 3, mask_.dims))
       throw InputError("Selector: " + sel.maskPath + ": mask grid " + gridText(mask_.dims) +

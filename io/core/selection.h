@@ -4,6 +4,7 @@
 // samples never take memory.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
@@ -40,6 +41,8 @@ class SliceOutOfRange : public InputError {
   int size;
 };
 
+struct ScalarVolume;
+
 struct Selection {
   std::optional<SliceSpec> slice;  // grids only
   // Grids: every stride-th voxel along each axis, but a slice's own (its
@@ -47,6 +50,9 @@ struct Selection {
   long long stride = 1;
   std::optional<std::array<double, 6>> roiWC;  // x0 y0 z0 x1 y1 z1, inclusive
   std::string maskPath;            // scalar volume on the same grid
+  // The mask itself when it was given in memory (Python's arrays): read
+  // instead of maskPath, which then only names it in messages.
+  std::shared_ptr<const ScalarVolume> maskVolume;
   double maskMin = 0.5;            // keep where mask >= maskMin
   double confidenceMin = 0.5;      // 3D-masked-symmetric-matrix NRRD: keep where confidence >= this
 

@@ -27,6 +27,11 @@ __all__ = ["render", "Renderer", "Figure", "save", "options"]
 
 # keyword -> (flag, value names, help, reloads)
 _OPTIONS = {kw: (flag, tuple(names), text, reloads) for kw, flag, names, text, reloads in _core.options()}
+# The module's own keywords, beside the option table's.
+_OWN = ("tensors", "positions", "affine", "layout", "frame", "progress", "channels", "underlay_affine", "mask_affine")
+# Options that take a volume in memory (an array, a nibabel image) as well as
+# a file: the keyword of each one's affine.
+_VOLUME_AFFINE = {"underlay": "underlay_affine", "mask": "mask_affine"}
 
 
 def options():
@@ -46,10 +51,16 @@ def _spell(kw, v):
     raise TypeError(f"{kw}: cannot use a {type(v).__name__} as a value")
 
 
+def _unexpected(kw):
+    """The TypeError for an unknown keyword, with the CLI's "did you mean"."""
+    near = _core.nearest(kw, list(_OPTIONS) + list(_OWN))
+    return TypeError(f"unexpected keyword argument '{kw}'" + (f"; did you mean '{near}'?" if near else ""))
+
+
 def _occurrences(kw, value):
     """A keyword's value as occurrences of its flag, each a list of strings."""
     if kw not in _OPTIONS:
-        raise TypeError(f"unexpected keyword argument '{kw}'")
+        raise _unexpected(kw)
     flag, names, _, _ = _OPTIONS[kw]
     if value is None:
         return []
@@ -85,14 +96,83 @@ def _color_values(opts):
     return np.ascontiguousarray(a.ravel(order="F" if a.ndim == 3 else "C"), dtype=np.float32)
 
 
+def _is_image(x):
+    return hasattr(x, "affine") and hasattr(x, "dataobj")
+
+
+def _is_volume(kw, value):
+    """underlay= or mask= given in memory: an array or a nibabel image."""
+    if kw not in _VOLUME_AFFINE or value is None or isinstance(value, (str, os.PathLike)):
+        return False
+    return _is_image(value) or np.ndim(value) >= 1
+
+
+def _affine16(kw, affine):
+    a = np.asarray(affine, dtype=np.float64)
+    if a.shape != (4, 4):
+        raise ValueError(f"{kw}: shape {a.shape} is not (4, 4)")
+    if not np.all(np.isfinite(a)):
+        raise ValueError(f"{kw}: has NaN or Inf")
+    return [float(x) for x in a.ravel()]
+
+
+def _volume(kw, value, affine):
+    """(values as float32 with i fastest, shape, 16 affine values or None) of
+    underlay= or mask= given in memory. With no affine (an array alone) the
+    core lays it on the tensors' grid, whose shape it must have."""
+    akw = _VOLUME_AFFINE[kw]
+    if _is_image(value):
+        if affine is not None:
+            raise ValueError(f"{akw}: the nibabel image given as {kw} has its own affine")
+        affine, _ = _nifti_placement(value, None)
+        value = np.asanyarray(value.dataobj)
+    a = np.asarray(value)
+    if a.dtype.kind not in "biuf":
+        raise TypeError(f"{kw}: an array of numbers, not of {a.dtype}")
+    while a.ndim > 3 and a.shape[-1] == 1:  # a NIfTI's (X, Y, Z, 1)
+        a = a[..., 0]
+    if a.ndim != 3:
+        hint = (f"; an integer index drops an axis: keep it with a range ({kw}[:, :, 5:6])" if a.ndim == 2 else "")
+        raise ValueError(f"{kw}: shape {a.shape} is not a volume (X, Y, Z){hint}")
+    values = np.ascontiguousarray(a.ravel(order="F"), dtype=np.float32)
+    return values, tuple(int(n) for n in a.shape), None if affine is None else _affine16(akw, affine)
+
+
+def _volumes(opts):
+    """{keyword: (values, shape, affine)} of the volumes given in memory, after
+    checking that each _affine keyword comes with one."""
+    out = {}
+    for kw, akw in _VOLUME_AFFINE.items():
+        value, affine = opts.get(kw), opts.get(akw)
+        if _is_volume(kw, value):
+            out[kw] = _volume(kw, value, affine)
+        elif affine is not None:
+            raise ValueError(f"{akw}: applies to {kw}= given as an array, not to " +
+                             ("no " + kw if value is None else repr(value)))
+    return out
+
+
 def _option_list(opts):
     out = []
     for kw, value in opts.items():
+        if kw in _VOLUME_AFFINE.values():
+            continue
         if _is_color_values(kw, value):
             out.append((kw, ["array"]))
             continue
+        if _is_volume(kw, value):
+            out.append((kw, [f"<{kw} array>"]))
+            continue
         out.extend((kw, occ) for occ in _occurrences(kw, value))
     return out
+
+
+def _check_keyword(kw, value):
+    """TypeError for an unknown keyword or a value of the wrong kind, before
+    anything is made."""
+    if kw in _VOLUME_AFFINE.values() or _is_color_values(kw, value) or _is_volume(kw, value):
+        return
+    _occurrences(kw, value)
 
 
 def _nifti_layout(img):
@@ -142,6 +222,14 @@ def _values(name, a):
     return a if a.dtype.isnative else a.astype(a.dtype.newbyteorder("="))
 
 
+def _refuse_dropped_axes(what, shape, dropped):
+    """The ValueError for a volume that an integer index cut down: a slice
+    keeps its axis as a range (5:6), or is chosen by slice=."""
+    raise ValueError(f"tensors: {what} of shape {tuple(shape)} has {3 - dropped} of a volume's 3 axes: an integer "
+                     "index drops its axis; keep it with a range, fit[:, :, 5:6] (not fit[:, :, 5]), or give "
+                     "the whole volume and slice=\"z:5\"")
+
+
 def _source(tensors, positions, affine, layout, frame):
     """(tensors array or None, positions, affine 16 floats, layout, frame, path)."""
     path = ""
@@ -154,7 +242,9 @@ def _source(tensors, positions, affine, layout, frame):
     elif hasattr(tensors, "quadratic_form"):  # a DIPY TensorFit: DIPY's axes are the voxel axes
         tensors = np.asarray(tensors.quadratic_form)
         frame = frame or "voxel"
-        if affine is None and tensors.ndim == 5:
+        if tensors.ndim < 5:
+            _refuse_dropped_axes("a DIPY TensorFit", tensors.shape, 5 - tensors.ndim)
+        if affine is None:
             raise ValueError("affine: a DIPY TensorFit needs the image's affine (img.affine)")
     elif hasattr(tensors, "affine") and hasattr(tensors, "dataobj"):  # a nibabel image
         img = tensors
@@ -166,6 +256,13 @@ def _source(tensors, positions, affine, layout, frame):
         layout = layout or _nifti_layout(img)
     if tensors is not None:
         tensors = _values("tensors", tensors)
+        if positions is None:
+            # A volume indexed with an integer: (X, Y, 3, 3) or (X, Y, 6),
+            # which no points are either.
+            full = tensors.ndim >= 2 and tensors.shape[-2:] == (3, 3)
+            rank = tensors.ndim - (2 if full else 1)
+            if (full or (tensors.ndim >= 1 and tensors.shape[-1] == 6)) and rank in (0, 2):
+                _refuse_dropped_axes("an array", tensors.shape, 3 - rank)
         if positions is None and affine is None:
             raise ValueError("positions: tensors (N, 3, 3) or (N, 6) need positions (N, 3); "
                              "a volume (X, Y, Z, 6 | 3, 3) needs an affine")
@@ -185,22 +282,40 @@ class Figure(np.ndarray):
     """A rendered frame: the (H, W, 4) uint8 image itself, a NumPy array that
     Jupyter shows as a picture. With channels=True, ``channels`` holds
     ``color`` (linear float RGBA), ``depth`` (view-axis distance, inf where
-    empty), ``normal`` (world-space) and ``id`` (input index, 0xFFFFFFFF
-    where empty); ``glyphs`` is the number of glyphs uploaded; ``inputs``
+    empty), ``normal`` (world-space) and ``id`` (input index: on a grid
+    i + X (j + Y k), i fastest; 0xFFFFFFFF where empty); ``glyphs`` is the number of glyphs uploaded; ``inputs``
     the (keyword, path) of each file it was drawn from, which ``save``
-    refuses to write over."""
+    refuses to write over; ``grid`` the input's voxel grid (X, Y, Z), None
+    for points, on which ``voxel`` turns ids into voxels."""
 
     def __new__(cls, frame):
         fig = np.asarray(frame["rgba"]).view(cls)
         fig.channels = {k: frame[k] for k in ("color", "depth", "normal", "id") if k in frame}
         fig.glyphs = frame["glyphs"]
         fig.inputs = tuple(frame.get("inputs", ()))
+        fig.grid = tuple(frame["grid"]) if frame.get("grid") is not None else None
         return fig
 
     def __array_finalize__(self, obj):
         self.channels = getattr(obj, "channels", {})
         self.glyphs = getattr(obj, "glyphs", 0)
         self.inputs = getattr(obj, "inputs", ())
+        self.grid = getattr(obj, "grid", None)
+
+    def voxel(self, ids):
+        """The voxel (i, j, k) of each input index in `ids` (the id channel's
+        values, or one of them) on the input's grid. Ids run i fastest,
+        id = i + X (j + Y k), NumPy's order="F": np.unravel_index(id, grid,
+        order="F"), not C order's default. An array of ids gives (..., 3),
+        with -1 where an id names no voxel (background, a context item)."""
+        if self.grid is None:
+            raise ValueError("Figure.voxel: the input has no voxel grid (points have input indices only)")
+        ids = np.asarray(ids, dtype=np.int64)
+        X, Y, Z = self.grid
+        ok = (ids >= 0) & (ids < X * Y * Z)
+        safe = np.where(ok, ids, 0)
+        ijk = np.stack([safe % X, safe // X % Y, safe // (X * Y)], axis=-1)
+        return np.where(ok[..., None], ijk, -1)
 
     @property
     def image(self):
@@ -338,15 +453,15 @@ class Renderer:
             options.update({k: v for k, v in (("layout", lay), ("frame", fr)) if v})
             lay = fr = ""
         for kw, value in options.items():
-            if not _is_color_values(kw, value):
-                _occurrences(kw, value)  # TypeError before anything is made
+            _check_keyword(kw, value)  # TypeError before anything is made
         self._options = {kw: value for kw, value in options.items() if value is not None}
         self._array_source = t is not None
+        volumes = _volumes(self._options)
         # The core checks every option against this source (as set() does)
         # before it loads anything.
         with _process.call("Renderer"):
             self._core = _core.Renderer(t, p, a, lay, fr, path, _option_list(self._options), progress,
-                                        _color_values(self._options))
+                                        _color_values(self._options), volumes)
 
     def set(self, **options):
         """Changes options (None: back to the default); returns self."""
@@ -358,8 +473,7 @@ class Renderer:
         # every later render.
         changed = dict(self._options)
         for kw, value in options.items():
-            if not _is_color_values(kw, value):
-                _occurrences(kw, value)  # TypeError now, not at render time
+            _check_keyword(kw, value)  # TypeError now, not at render time
             if self._array_source and kw in ("layout", "frame"):
                 raise TypeError(f"{kw}: an array's {kw} is given when the Renderer is made")
             if value is None:
@@ -368,11 +482,14 @@ class Renderer:
                 changed[kw] = value
         values = _color_values(changed)
         previous = _color_values(self._options)
+        volumes = _volumes(changed)
         self._core.set_color_values(values)
+        self._core.set_volumes(volumes)
         try:
             self._core.check(_option_list(changed))
         except Exception:
             self._core.set_color_values(previous)
+            self._core.set_volumes(_volumes(self._options))
             raise
         self._options = changed
         return self
@@ -401,7 +518,10 @@ class Renderer:
 def render(tensors=None, *, positions=None, affine=None, layout=None, frame=None, channels=False, progress=None,
            **options):
     """Renders tensors (an array, a nibabel image, a DIPY TensorFit or a file
-    path; None: the built-in scene) to a Figure. See the module's docstring."""
+    path; None: the built-in scene) to a Figure. See the module's docstring.
+    ``underlay`` and ``mask`` take a file, an (X, Y, Z) array (DIPY's fit.fa,
+    a mask) or a nibabel image; an array lies on the tensors' grid, or where
+    ``underlay_affine`` / ``mask_affine`` place it."""
     return Renderer(tensors, positions=positions, affine=affine, layout=layout, frame=frame, progress=progress,
                     **options).render(channels=channels)
 

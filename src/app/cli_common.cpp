@@ -8,7 +8,7 @@ namespace tg::app {
 
 void checkBackend(std::string_view backend) {
   if (backend != "osmesa" && backend != "egl" && backend != "glfw" && backend != "auto")
-    throw UsageError("--backend: unknown backend \"" + std::string(backend) + "\"; choose osmesa, egl, glfw or auto");
+    throw UsageError("--backend: unknown backend \"" + std::string(backend) + "\"; choose " + kBackendNames);
 }
 
 std::unique_ptr<gl::Context> createContext(std::string_view backend, int width, int height) {

@@ -13,6 +13,7 @@ namespace tg::app {
 // "osmesa", "egl", "glfw" or "auto" (a GPU through EGL if present, else OSMesa).
 // checkBackend throws UsageError for any other name, so commands can reject
 // it before loading anything.
+inline constexpr const char* kBackendNames = "osmesa, egl, glfw or auto";
 void checkBackend(std::string_view backend);
 std::unique_ptr<gl::Context> createContext(std::string_view backend, int width, int height);
 

@@ -12,6 +12,9 @@
 namespace tg::app {
 namespace {
 
+constexpr const char* kSizesFromNames = "field or selection";
+constexpr const char* kScaleModeNames = "absolute, max or spacing";
+
 // From the one table of layouts: each name, its order and where it applies.
 std::string layoutHelp() {
   std::string h = "order of six components (NIfTI; 6-component VTK arrays): ";
@@ -34,10 +37,11 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
   ap.setGroup("input and selection");
   ap.arg("--array NAME").help("VTK: the point array holding the tensors (9, 6, 4 or 3 components)")
       .action([&](Args a) { read.arrayName = a[1]; });
-  ap.arg("--layout L").help(layoutHelp()).action([&](Args a) { read.layout = a[1]; });
+  ap.arg("--layout L").help(layoutHelp()).oneOf(io::layoutChoices(io::kNiftiInput | io::kVtkInput | io::kArrayInput))
+      .action([&](Args a) { read.layout = a[1]; });
   ap.arg("--frame F").help("NIfTI tensor axes: voxel, fsl (voxel, i reversed when det > 0) or world; default: the "
                            "layout's (fsl: fsl, mrtrix: world, else voxel)")
-      .action([&](Args a) { read.frame = a[1]; });
+      .oneOf(io::kTensorFrameChoices).action([&](Args a) { read.frame = a[1]; });
   ap.arg("--mask FILE").help("scalar volume on the same grid (" + io::extensionList(io::kScalarUse) + ")").action([&](Args a) {
     sel.maskPath = a[1];
   });
@@ -91,10 +95,10 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
   ap.arg("--sizes-from W").help("field (default): sizes, the magnitude mapping and the clamp from the whole field, "
                                 "so a tensor is drawn at one size on every slice, ROI or stride; selection: from "
                                 "the selected tensors only")
-      .action([&](Args a) {
+      .oneOf(kSizesFromNames).action([&](Args a) {
         const std::string w = a[1];
         if (w != "field" && w != "selection")
-          throw UsageError("--sizes-from: unknown source \"" + w + "\"; choose field or selection");
+          throw UsageError("--sizes-from: unknown source \"" + w + "\"; choose " + kSizesFromNames);
         sizesFromSelection = w == "selection";
       });
   // Sizing is a frame parameter: the glyph records hold eigenvalues, not sizes.
@@ -108,16 +112,16 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
                                 std::to_string(std::lround(100 * tensor::ScaleParams{}.percentile)) +
                                 "th percentile of the whole field's non-zero tensors is S sample spacings across; "
                                 "max: the largest is; absolute: S is the diameter per eigenvalue unit")
-      .action([&](Args a) {
+      .oneOf(kScaleModeNames).action([&](Args a) {
         const std::string m = a[1];
         if (m == "absolute") scaleMode = tensor::ScaleMode::Absolute;
         else if (m == "max") scaleMode = tensor::ScaleMode::Max;
         else if (m == "spacing") scaleMode = tensor::ScaleMode::Spacing;
-        else throw UsageError("--scale-mode: unknown mode \"" + m + "\"; choose absolute, max or spacing");
+        else throw UsageError("--scale-mode: unknown mode \"" + m + "\"; choose " + kScaleModeNames);
       });
   ap.arg("--magnitude M").help("how a glyph's largest |eigenvalue| m sets its size, shape ratios and signs kept: "
                                "linear (default), log (lambda0 ln(1 + m/lambda0)) or shape (every glyph the same size)")
-      .action([&](Args a) {
+      .oneOf(tensor::kMagnitudeNames).action([&](Args a) {
         const auto m = tensor::magnitudeNamed(a[1]);
         if (!m) throw UsageError(std::string("--magnitude: unknown mapping \"") + a[1] + "\"; choose " +
                                  tensor::kMagnitudeNames);

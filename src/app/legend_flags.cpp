@@ -32,7 +32,7 @@ void LegendFlags::addTo(OptionTable& ap) {
   ap.setGroup("colour");
   ap.arg("--legend").help("draw a legend: the colour key (a bar, or for dec a sphere of directions) and a scale bar")
       .action([this](Args) { params.enabled = true; });
-  ap.arg("--legend-corner C").help(std::string("the legend's corner: ") + kLegendCornerNames)
+  ap.arg("--legend-corner C").help(std::string("the legend's corner: ") + kLegendCornerNames).oneOf(kLegendCornerNames)
       .byDefault(legendCornerName(render::LegendParams{}.corner))
       .action([this](Args a) {
         const auto c = legendCornerNamed(a[1]);

@@ -31,7 +31,7 @@ void MeshFlags::addTo(OptionTable& ap) {
   ap.arg("--mesh-mode MODE")
       .help("how meshes are drawn: opaque, see-through (the front layer blended over the glyphs) or edges (feature "
             "edges)")
-      .byDefault(render::meshModeName(d.mode))
+      .oneOf(kMeshModeNames).byDefault(render::meshModeName(d.mode))
       .action([this, given](Args a) {
         given("--mesh-mode");
         const auto m = meshModeNamed(a[1]);

@@ -50,6 +50,7 @@ PickTable::PickTable(io::TensorField& field, const tensor::GlyphOptions& opt)
       tensors_(std::move(field.tensors)),
       ids_(std::move(field.ids)),
       opt_(opt) {
+  if (field.grid) dims_ = std::array<int, 3>{field.grid->dims[0], field.grid->dims[1], field.grid->dims[2]};
   // Only the clamp changes a kept glyph's record; the shape filters decided
   // which glyphs exist, and a picked id did.
   opt_.clMin = opt_.cpMin = 0.0;
@@ -79,6 +80,10 @@ std::optional<GlyphPick> PickTable::glyph(std::uint32_t id) const {
   }
   GlyphPick g;
   g.index = id;
+  if (dims_) {
+    const std::uint32_t nx = std::uint32_t((*dims_)[0]), ny = std::uint32_t((*dims_)[1]);
+    g.voxel = std::array<int, 3>{int(id % nx), int(id / nx % ny), int(id / nx / ny)};
+  }
   const float* p = &positions_[3 * row];
   const float* t = &tensors_[6 * row];
   g.positionWC = glm::dvec3(p[0], p[1], p[2]);
@@ -149,6 +154,7 @@ std::string describePick(const Pick& p) {
     const GlyphPick& g = *p.glyph;
     const tensor::SymTensor& t = g.tensorWC;
     line("glyph: input index %u at (%.6g, %.6g, %.6g)", g.index, g.positionWC.x, g.positionWC.y, g.positionWC.z);
+    if (g.voxel) line("voxel (i, j, k) (%d, %d, %d)", (*g.voxel)[0], (*g.voxel)[1], (*g.voxel)[2]);
     line("tensor (WC): xx %.6g  xy %.6g  xz %.6g", t.xx, t.xy, t.xz);
     line("             yy %.6g  yz %.6g  zz %.6g", t.yy, t.yz, t.zz);
     for (int k = 0; k < 3; ++k) {

@@ -2,6 +2,7 @@
 // Picking: what a pixel of a rendered frame shows, read from the G-buffer's
 // id and depth channels (no CPU ray cast), shared by `render --pick`, the
 // viewer's click and its script's `pick` (and later Python).
+#include <array>
 #include <cstdint>
 #include <optional>
 #include <string>
@@ -32,6 +33,9 @@ const char* glyphGroupName(tensor::GlyphGroup g);  // "sphere", "definite", "mix
 
 struct GlyphPick {
   std::uint32_t index = 0;  // input index (the id channel)
+  // On a gridded input, the voxel (i, j, k) the index names: index =
+  // i + X (j + Y k), i fastest.
+  std::optional<std::array<int, 3>> voxel;
   glm::dvec3 positionWC{0.0};
   // As stored for drawing: read, carried into WC (measurement frame, voxel
   // axes), rounded to float once; before --scale, the size mapping and
@@ -79,6 +83,7 @@ class PickTable {
   util::MappedArray<std::uint32_t> ids_;
   std::vector<std::uint32_t> byId_;  // rows in ascending id order; empty when ids_ already ascend
   tensor::GlyphOptions opt_;
+  std::optional<std::array<int, 3>> dims_;  // the field's grid, when it has one
 };
 
 // The GL-free half: what id `id` at view depth `viewDepth` means at `pixel`.

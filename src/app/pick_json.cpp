@@ -14,6 +14,11 @@ Json::Value vec3(const glm::dvec3& v) {
 Json::Value glyphJson(const GlyphPick& g) {
   Json::Value o(Json::objectValue);
   o["index"] = Json::UInt(g.index);
+  if (g.voxel) {
+    Json::Value ijk(Json::arrayValue);
+    for (int k : *g.voxel) ijk.append(k);
+    o["voxel"] = ijk;
+  }
   o["position"] = vec3(g.positionWC);
   const tensor::SymTensor& t = g.tensorWC;
   Json::Value m(Json::arrayValue);

@@ -9,7 +9,8 @@ namespace tg::app {
 
 // Keys (docs/guide.md, "Picking"): "pixel" [I, J]; "hit" "glyph", "context" or
 // "background"; "id" (the id channel, absent for background); for a glyph
-// "index", "position" (WC), "tensor" (3x3 rows, WC), "eigenvalues"
+// "index" (the input index: on a grid i + X (j + Y k), i fastest), "voxel"
+// ([i, j, k], gridded inputs only), "position" (WC), "tensor" (3x3 rows, WC), "eigenvalues"
 // (descending), "eigenvectors" (rows, unit, ↔ eigenvalues), "fa", "md",
 // "cl", "cp", "sign", "glyph_group"; for context "label" and "value"
 // (null when the item has none); and for both "surface" (WC) and "depth"

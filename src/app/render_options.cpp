@@ -33,7 +33,7 @@ void addRenderOptions(OptionTable& ap, RenderOptions& o) {
                                  "as VTK's vtkTensorGlyph (needs --glyph superquadric)")
       .range(ranges::kTessellation).action([&](Args a) { o.tessellate = int(parseInt(a[0], a[1])); });
   ap.setGroup("output");
-  ap.arg("--backend NAME").reloads().help("osmesa (default), egl, glfw or auto").action([&](Args a) { o.backend = a[1]; });
+  ap.arg("--backend NAME").reloads().help("osmesa (default), egl, glfw or auto").oneOf(kBackendNames).action([&](Args a) { o.backend = a[1]; });
   o.pick.addTo(ap);
   ap.arg("--repeat N").commandLineOnly().help("render N more frames and report the median frame time")
       .range(ranges::kRepeat).action([&](Args a) { o.repeat = int(parseInt(a[0], a[1])); });
@@ -55,9 +55,10 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
   ap.setGroup("glyphs");
   ap.arg("--pipeline NAME").reloads().help("how glyphs are drawn: raster (default; a ray-cast sprite per glyph) or "
                                             "cpu (tiles cast on every core; ellipsoid glyphs only)")
+      .oneOf(render::glyphPathNames())
       .action([&](Args a) { o.pipeline = a[1]; });
   ap.arg("--glyph KIND").help("ellipsoid (default; the built-in scene: superquadric), superquadric, "
-                                  "or Teem's cylinder or box").action([&](Args a) {
+                                  "or Teem's cylinder or box").oneOf(kGlyphKindNames).action([&](Args a) {
     o.glyph = a[1];
     o.look.glyphGiven = true;
   });
@@ -135,6 +136,7 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
                                "sign (normal stress, saturated at the window's largest |value|: orange tension, blue "
                                "compression), vonmises, tresca (s1 - s3), pressure (-trace/3), s1, s2, s3 (principal "
                                "values, descending), trace; array (with --color-array)")
+      .oneOf(kColorModeNames)
       .action([&](Args a) {
         o.color = a[1];
         o.colorGiven = true;
@@ -150,6 +152,7 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
       });
   ap.arg("--colormap NAME").help("the scalar's map: viridis, gray or diverging (blue, white at 0, orange); default "
                                  "diverging for pressure, s1, s2, s3 and trace, else viridis")
+      .oneOf(render::kColormapNames)
       .action([&](Args a) { o.colormap = a[1]; });
   ap.arg("--color-range LO HI").help("the colour window: values at the map's ends, clamped beyond (sign: saturated at "
                                      "max(|LO|, |HI|)); default the whole field's range")

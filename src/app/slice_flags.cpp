@@ -1,5 +1,6 @@
 #include "app/slice_flags.h"
 
+#include <algorithm>
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
@@ -71,7 +72,7 @@ void SliceFlags::addTo(OptionTable& ap) {
         planes.push_back(p);
       });
   ap.arg("--underlay-colormap NAME")
-      .help(std::string("gray (default), viridis or diverging"))
+      .help(std::string("gray (default), viridis or diverging")).oneOf(render::kColormapNames)
       .action([this, param](Args a) {
         param("--underlay-colormap");
         const auto c = render::colormapNamed(a[1]);
@@ -146,15 +147,34 @@ std::vector<render::PlaneSpec> SliceFlags::planesFor(const render::UnderlayVolum
 
 render::UnderlayVolume loadUnderlay(const SliceFlags& f, const io::TensorField& field, const char* command) {
   render::UnderlayVolume v;
+  const std::string who = field.path.empty() ? "the built-in scene" : field.path;
+  const auto placeOnGrid = [&v](const io::GridInfo& g) {
+    for (int c = 0; c < 3; ++c)
+      for (int r = 0; r < 3; ++r) v.indexToWC[c][r] = g.directions[3 * r + c] * g.spacing[c];
+    v.indexToWC[3] = glm::dvec4(g.origin[0], g.origin[1], g.origin[2], 1.0);
+  };
   if (!f.fromField()) {
-    io::ScalarVolume s = io::readUnderlay(f.underlay);
+    io::ScalarVolume s = f.underlayVolume ? *f.underlayVolume : io::readUnderlay(f.underlay);
     v.name = f.underlay;
     std::copy(s.dims, s.dims + 3, v.dims);
     v.values = std::move(s.values);
-    const io::GridPlacement& p = *s.placement;
-    for (int c = 0; c < 3; ++c)
-      for (int r = 0; r < 3; ++r) v.indexToWC[c][r] = p.axesWC[3 * r + c];
-    v.indexToWC[3] = glm::dvec4(p.originWC[0], p.originWC[1], p.originWC[2], 1.0);
+    if (s.placement) {
+      const io::GridPlacement& p = *s.placement;
+      for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) v.indexToWC[c][r] = p.axesWC[3 * r + c];
+      v.indexToWC[3] = glm::dvec4(p.originWC[0], p.originWC[1], p.originWC[2], 1.0);
+    } else {
+      // An array given without an affine (files always place theirs): it
+      // takes the tensors' grid, which must be its own.
+      if (!field.grid)
+        throw io::InputError(std::string(command) + ": " + f.underlay + ": an array without an affine takes the "
+                             "tensors' grid, and " + who + " is a point set; give the array's affine (underlay_affine=)");
+      if (!std::equal(s.dims, s.dims + 3, field.grid->dims))
+        throw io::InputError(std::string(command) + ": " + f.underlay + ": shape " + io::gridText(s.dims) +
+                             " is not the tensor grid " + io::gridText(field.grid->dims) + " of " + who +
+                             ", whose affine it would take; give the array's own (underlay_affine=)");
+      placeOnGrid(*field.grid);
+    }
     // Voxel axes that span no volume (two alike, or a NaN that slipped into
     // the header) would draw the volume flattened somewhere.
     const glm::dmat3 axes(v.indexToWC);
@@ -166,16 +186,13 @@ render::UnderlayVolume loadUnderlay(const SliceFlags& f, const io::TensorField& 
     return v;
   }
   const std::string scalar = f.underlay.empty() ? "fa" : f.underlay;
-  const std::string who = field.path.empty() ? "the built-in scene" : field.path;
   if (!field.grid)
     throw io::InputError(std::string(command) + ": " + who + ": --underlay " + scalar +
                          " needs a field on a grid; this is a point set (give --underlay FILE)");
   const io::GridInfo& g = *field.grid;
   v.name = scalar;
   std::copy(g.dims, g.dims + 3, v.dims);
-  for (int c = 0; c < 3; ++c)
-    for (int r = 0; r < 3; ++r) v.indexToWC[c][r] = g.directions[3 * r + c] * g.spacing[c];
-  v.indexToWC[3] = glm::dvec4(g.origin[0], g.origin[1], g.origin[2], 1.0);
+  placeOnGrid(g);
   // Voxels without a kept tensor (masked, unselected, not finite) are holes.
   v.values.assign(v.voxels(), NAN);
   for (std::size_t k = 0; k < field.size(); ++k) {

@@ -2,11 +2,13 @@
 // The command-line face of slice planes (render/slice_plane.h): --underlay,
 // --plane, --plane-at and render::SliceParams' flags, whose help quotes the
 // struct's defaults.
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "app/scale/option_table.h"
 
+#include "io/core/selection.h"
 #include "io/field/tensor_field.h"
 #include "render/renderer.h"
 #include "view/underlay.h"
@@ -19,6 +21,10 @@ namespace tg::app {
 
 struct SliceFlags {
   std::string underlay;  // a file, or fa|md|cl|cp (the field's own); empty: fa when planes are given
+  // The underlay given in memory (Python's arrays), read instead of the file
+  // `underlay` then names; with no placement of its own it lies on the
+  // field's grid, whose shape it must have.
+  std::shared_ptr<const io::ScalarVolume> underlayVolume;
   std::vector<render::PlaneSpec> planes;
   render::SliceParams params;
   std::string firstParameterFlag;  // an --underlay-* flag given, for validate()

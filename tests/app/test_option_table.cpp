@@ -159,6 +159,40 @@ TEST(RenderOptions, DeclaredDefaultsAreValuesTheOptionTakesAndChangeNothing) {
   EXPECT_GE(withDefaults, 20u);
 }
 
+// The Python stubs' Literal types come from Option::choices: each name is
+// one the option takes, and the refusal of another lists exactly them.
+TEST(RenderOptions, DeclaredChoicesAreTheNamesEachOptionTakes) {
+  EXPECT_EQ(choiceWords("dec, fa or array"), (std::vector<std::string>{"dec", "fa", "array"}));
+  EXPECT_EQ(choiceWords("raster, cpu"), (std::vector<std::string>{"raster", "cpu"}));
+  RenderOptions o;
+  OptionTable t;
+  addRenderOptions(t, o);
+  std::size_t named = 0;
+  for (const OptionTable::Option& opt : t.options()) {
+    if (opt.choices.empty()) continue;
+    ++named;
+    ASSERT_EQ(opt.arity(), 1u) << opt.flag;
+    for (const std::string& c : opt.choices) {
+      RenderOptions given;
+      OptionTable g;
+      addRenderOptions(g, given);
+      EXPECT_NO_THROW(OptionTable::apply(*g.find(opt.flag), std::vector<std::string>{c})) << opt.flag << " " << c;
+    }
+  }
+  EXPECT_GE(named, 9u);
+  for (const char* flag : {"--glyph", "--color", "--colormap", "--legend-corner", "--magnitude", "--mesh-mode",
+                           "--scale-mode", "--sizes-from", "--backend"})
+    EXPECT_FALSE(t.find(flag)->choices.empty()) << flag;
+}
+
+// The CLI's and Python's "did you mean": within two edits, else nothing.
+TEST(OptionTable, NearestNameIsWithinTwoEdits) {
+  const std::vector<std::string> names = {"--glyph", "--gamma", "--fa-min"};
+  EXPECT_EQ(nearestName("--glpyh", names), "--glyph");
+  EXPECT_EQ(nearestName("--fa-mni", names), "--fa-min");
+  EXPECT_EQ(nearestName("--zzzzzz", names), "");
+}
+
 TEST(OptionTable, ARepeatedSingleValuedOptionIsRefusedAndRepeatableOnesAdd) {
   RenderOptions o;
   OptionTable t;

@@ -198,6 +198,7 @@ TEST(Pick, GlyphCentresReportTheirTensors) {
     EXPECT_EQ(g["pixel"][1].asInt(), pixels[std::size_t(k)][1]);
     ASSERT_EQ(g["hit"].asString(), "glyph");
     EXPECT_EQ(g["index"].asUInt(), std::uint32_t(k));
+    EXPECT_FALSE(g.isMember("voxel")) << "a point set has input indices, no voxels";
     EXPECT_EQ(g["id"].asUInt(), std::uint32_t(k));
     for (int c = 0; c < 3; ++c)
       EXPECT_EQ(g["position"][c].asDouble(), double(f.positions[3 * std::size_t(k) + std::size_t(c)]));
@@ -325,6 +326,12 @@ TEST(Pick, RealHelixTensorsMatchTheFile) {
     ++glyphs;
     const std::size_t v = p["index"].asUInt();
     ASSERT_LT(v, voxels);
+    // The voxel the index names on the file's 38 x 39 x 40 grid, i fastest.
+    ASSERT_EQ(p["voxel"].size(), 3u);
+    const std::size_t X = nin->axis[1].size, Y = nin->axis[2].size;
+    const std::size_t i = p["voxel"][0].asUInt(), j = p["voxel"][1].asUInt(), k = p["voxel"][2].asUInt();
+    EXPECT_TRUE(i < X && j < Y && k < nin->axis[3].size) << p["voxel"];
+    EXPECT_EQ(i + X * (j + Y * k), v) << p["voxel"];
     const float* t = data + 7 * v + 1;
     const int idx[3][3] = {{0, 1, 2}, {1, 3, 4}, {2, 4, 5}};
     for (int a = 0; a < 3; ++a)

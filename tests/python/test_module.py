@@ -601,7 +601,7 @@ class Stubs(unittest.TestCase):
         # Typed by what the value is, not every type at once.
         self.assertEqual(kwargs["iterations"], "int | None")
         self.assertEqual(kwargs["gamma"], "float | None")
-        self.assertEqual(kwargs["glyph"], "str | None")
+        self.assertTrue(kwargs["glyph"].startswith("Literal["), kwargs["glyph"])
         self.assertEqual(kwargs["size"], "Sequence[int] | None")
         self.assertEqual(kwargs["eye"], "Sequence[float] | None")
         self.assertEqual(kwargs["mesh"], "str | os.PathLike[str] | Sequence[str | os.PathLike[str]] | None")

@@ -86,21 +86,32 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
   return row[b.size()];
 }
 
+}  // namespace
+
+std::string nearestName(std::string_view word, std::span<const std::string> names) {
+  std::string best;
+  std::size_t bestDistance = 3;  // a suggestion within two edits
+  for (const std::string& n : names) {
+    const std::size_t d = editDistance(word, n);
+    if (d < bestDistance) {
+      bestDistance = d;
+      best = n;
+    }
+  }
+  return best;
+}
+
+namespace {
+
 // CLI11 says "The following arguments were not expected: box --glpyh" (its
 // words reversed) for a mistyped flag; a newcomer needs the flag named, and
 // the one meant.
 std::string unknownOption(const OptionTable& table, std::string_view word) {
   word = word.substr(0, word.find('='));
-  std::string best;
-  std::size_t bestDistance = 3;  // a suggestion within two edits
-  for (const OptionTable::Option& o : table.options()) {
-    if (o.positional || o.isHidden) continue;
-    const std::size_t d = editDistance(word, o.flag);
-    if (d < bestDistance) {
-      bestDistance = d;
-      best = o.flag;
-    }
-  }
+  std::vector<std::string> flags;
+  for (const OptionTable::Option& o : table.options())
+    if (!o.positional && !o.isHidden) flags.push_back(o.flag);
+  const std::string best = nearestName(word, flags);
   std::string msg = "unknown option " + std::string(word);
   return best.empty() ? msg + "; see --help" : msg + "; did you mean " + best + "?";
 }

@@ -16,6 +16,27 @@ const OptionGroup kOptionGroups[7] = {
     {"output", "tensorglyph render field.nrrd --size 1920 1080 -o frame.exr --verbose"},
 };
 
+std::vector<std::string> choiceWords(std::string_view list) {
+  std::vector<std::string> words;
+  std::string w;
+  const auto flush = [&] {
+    if (!w.empty()) words.push_back(w);
+    w.clear();
+  };
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    if (list.substr(k, 4) == " or ") {
+      flush();
+      k += 3;
+    } else if (list[k] == ',' || list[k] == ' ') {
+      flush();
+    } else {
+      w += list[k];
+    }
+  }
+  flush();
+  return words;
+}
+
 std::string OptionTable::Option::keyword() const {
   if (positional) return flag;
   std::string k = flag.substr(flag.find_first_not_of('-'));

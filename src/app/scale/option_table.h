@@ -18,6 +18,9 @@ namespace tg::app {
 
 using OptionArgs = std::span<const char* const>;  // [0] the flag, then its values
 
+// The names of a list as messages write it: "a, b or c" -> {a, b, c}.
+std::vector<std::string> choiceWords(std::string_view list);
+
 class OptionTable {
  public:
   struct Option {
@@ -46,6 +49,10 @@ class OptionTable {
     // where the table is built; "" where the default is not one value (it
     // follows the data or another option: the help text says how).
     std::string defaultText;
+    // The names its one value is one of ("ellipsoid", "superquadric", ...),
+    // where it takes a name from a fixed list: the Python stubs' Literal.
+    // The action still refuses another, in its own words.
+    std::vector<std::string> choices;
 
     Option& help(std::string h) {
       helpText = std::move(h);
@@ -82,6 +89,11 @@ class OptionTable {
     }
     Option& byDefault(std::string valueText) {
       defaultText = std::move(valueText);
+      return *this;
+    }
+    // The list as messages write it: "a, b or c" (the one home of the names).
+    Option& oneOf(std::string_view names) {
+      choices = choiceWords(names);
       return *this;
     }
     Option& inGroup(std::string g) {
@@ -147,6 +159,10 @@ std::string markdownReference(const OptionTable& table, const std::string& title
 // The --help text of one group's options (its example last); "" when the
 // table has none of that group.
 std::string groupHelp(const OptionTable& table, const std::string& group);
+
+// The name of `names` nearest `word` within two edits (the first of equals),
+// or "": the "did you mean" of the CLI's unknown flags and Python's keywords.
+std::string nearestName(std::string_view word, std::span<const std::string> names);
 
 // The hidden-from-Python positional INPUT; a second one is a usage error.
 void addInputArg(OptionTable& table, std::string& input);
