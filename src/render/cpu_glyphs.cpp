@@ -167,38 +167,67 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
   TileBins& bins = out.bins;
   binToTiles(std::span(rects.data(), count), w, h, threads, bins);
 
-  // Per tile, per pixel centre: the tile's glyphs nearest first, until the
-  // next one's nearest depth lies behind the hit. The depth test is the
-  // raster path's (reversed window depth, GL_GREATER: of equal depths the
-  // glyph drawn first, the lower record, stays; records run by group, in
-  // the order the raster path draws its programs).
+  // Per tile, its glyphs nearest first, each cast at the pixel centres of
+  // its rectangle where no hit so far lies nearer than the glyph can be; the
+  // tile stops at the first glyph behind every pixel's hit. Each pixel thus
+  // casts what a pixel-by-pixel walk of the sorted list would, in the same
+  // order, at the cost of the glyphs' rectangles rather than the tile's
+  // pixels times its glyphs. The depth test is the raster path's (reversed
+  // window depth, GL_GREATER: of equal depths the glyph drawn first, the
+  // lower record, stays; records run by group, in the order the raster path
+  // draws its programs).
+  constexpr int kTilePixels = kTilePx * kTilePx;
+  constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
   std::atomic<std::size_t> nextTile{0};
   runParts(threads, [&](int, int) {
-    std::vector<std::uint32_t> order;
+    struct Key {
+      float nearVC;
+      std::uint32_t k;
+    };
+    std::vector<Key> order;
+    float bestWin[kTilePixels], bestVC[kTilePixels];
+    std::uint32_t best[kTilePixels];
+    glsl::vec3 bestGC[kTilePixels], bestGrad[kTilePixels];
     for (std::size_t t; (t = nextTile.fetch_add(1)) < bins.tiles();) {
-      order.assign(bins.items.begin() + bins.start[t], bins.items.begin() + bins.start[t + 1]);
-      if (order.empty()) continue;
+      if (bins.start[t] == bins.start[t + 1]) continue;
+      order.clear();
+      for (std::uint32_t e = bins.start[t]; e < bins.start[t + 1]; ++e)
+        order.push_back({cands[bins.items[e]].nearVC, bins.items[e]});
       // Nearest first; of equal depths the lower record first, as drawn.
-      std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return cands[a].nearVC < cands[b].nearVC || (cands[a].nearVC == cands[b].nearVC && a < b);
-      });
+      std::sort(order.begin(), order.end(),
+                [](const Key& a, const Key& b) { return a.nearVC < b.nearVC || (a.nearVC == b.nearVC && a.k < b.k); });
       const int tx = int(t % std::size_t(bins.tilesX)), ty = int(t / std::size_t(bins.tilesX));
-      const int x1 = std::min(w, (tx + 1) * kTilePx), y1 = std::min(h, (ty + 1) * kTilePx);
-      for (int y = ty * kTilePx; y < y1; ++y)
-        for (int x = tx * kTilePx; x < x1; ++x) {
-          const glsl::vec2 fragDC(float(x) + 0.5f, float(y) + 0.5f);
-          float bestWin = 0.0f, bestVC = std::numeric_limits<float>::infinity();
-          std::uint32_t best = 0;
-          bool found = false;
-          glsl::vec3 bestGC(0.0f), bestGrad(0.0f);
-          for (const std::uint32_t k : order) {
-            const Candidate& c = cands[k];
-            if (c.nearVC > bestVC) break;
-            const PixelRect& r = rects[k];
-            if (x < r.x0 || x > r.x1 || y < r.y0 || y > r.y1) continue;
+      const int x0 = tx * kTilePx, y0 = ty * kTilePx;
+      const int x1 = std::min(w, x0 + kTilePx) - 1, y1 = std::min(h, y0 + kTilePx) - 1;
+      std::fill_n(bestWin, kTilePixels, 0.0f);
+      std::fill_n(bestVC, kTilePixels, std::numeric_limits<float>::infinity());
+      std::fill_n(best, kTilePixels, kNone);
+      // Pixels of the tile (within the viewport) with no hit yet, and the
+      // farthest hit once every one has one.
+      int open = (x1 - x0 + 1) * (y1 - y0 + 1);
+      float farVC = std::numeric_limits<float>::infinity();
+      bool farStale = true;
+      for (const Key& key : order) {
+        if (open == 0) {
+          if (farStale) {
+            farVC = 0.0f;
+            for (int y = y0; y <= y1; ++y)
+              for (int x = x0; x <= x1; ++x) farVC = std::max(farVC, bestVC[(y - y0) * kTilePx + (x - x0)]);
+            farStale = false;
+          }
+          if (key.nearVC > farVC) break;
+        }
+        const std::uint32_t k = key.k;
+        const Candidate& c = cands[k];
+        const PixelRect& r = rects[k];
+        const std::uint8_t kind = marching ? shapes[k].kind : kCastEllipsoid;
+        for (int y = std::max(r.y0, y0); y <= std::min(r.y1, y1); ++y)
+          for (int x = std::max(r.x0, x0); x <= std::min(r.x1, x1); ++x) {
+            const int q = (y - y0) * kTilePx + (x - x0);
+            if (c.nearVC > bestVC[q]) continue;
+            const glsl::vec2 fragDC(float(x) + 0.5f, float(y) + 0.5f);
             float depthVC;
-            glsl::vec3 pGC, grad;
-            const std::uint8_t kind = marching ? shapes[k].kind : kCastEllipsoid;
+            glsl::vec3 pGC, grad(0.0f);
             if (kind == kCastEllipsoid) {
               if (!sh.castEllipsoid(fragDC, c.centreVC, c.gcFromVC, depthVC, pGC)) continue;
             } else {
@@ -215,24 +244,30 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
               if (!hit) continue;
             }
             const float win = sh.windowDepthFromViewDepth(depthVC);
-            if (win > bestWin || (found && win == bestWin && c.record < cands[best].record)) {
-              bestWin = win;
-              bestVC = depthVC;
-              best = k;
-              found = true;
-              bestGC = pGC;
-              bestGrad = grad;
+            if (win > bestWin[q] || (best[q] != kNone && win == bestWin[q] && c.record < cands[best[q]].record)) {
+              open -= best[q] == kNone ? 1 : 0;
+              farStale = true;
+              bestWin[q] = win;
+              bestVC[q] = depthVC;
+              best[q] = k;
+              bestGC[q] = pGC;
+              bestGrad[q] = grad;
             }
           }
-          if (!found) continue;
-          const Candidate& c = cands[best];
+      }
+      for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+          const int q = (y - y0) * kTilePx + (x - x0);
+          if (best[q] == kNone) continue;
+          const Candidate& c = cands[best[q]];
           const std::size_t px = std::size_t(y) * std::size_t(w) + std::size_t(x);
-          out.windowDepth[px] = bestWin;
+          out.windowDepth[px] = bestWin[q];
           out.record[px] = c.record + 1;
-          const bool ellipsoid = !marching || shapes[best].kind == kCastEllipsoid;
-          out.normalWC[px] = glsl::vec4(ellipsoid ? sh.ellipsoidNormalWC(c.gcFromVC, bestGC)
-                                                  : general.superquadricNormalWC(c.gcFromVC, bestGrad), 0.0f);
-          if (hitGC) out.hitGC[px] = glsl::vec4(ellipsoid ? bestGC : ellipsoidOrderGC(bestGC, shapes[best].axis), 0.0f);
+          const bool ellipsoid = !marching || shapes[best[q]].kind == kCastEllipsoid;
+          out.normalWC[px] = glsl::vec4(ellipsoid ? sh.ellipsoidNormalWC(c.gcFromVC, bestGC[q])
+                                                  : general.superquadricNormalWC(c.gcFromVC, bestGrad[q]), 0.0f);
+          if (hitGC)
+            out.hitGC[px] = glsl::vec4(ellipsoid ? bestGC[q] : ellipsoidOrderGC(bestGC[q], shapes[best[q]].axis), 0.0f);
         }
     }
   });
