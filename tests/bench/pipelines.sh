@@ -31,17 +31,21 @@ ms() { sed -n "s/.*median of [0-9]* frames \([0-9.]*\) ms.*/\1/p" "$1"; }
 # The process's CPU time per frame over all threads: on a shared machine,
 # what the frame cost apart from waiting for a core.
 cpu() { sed -n "s/.*CPU, all threads: \([0-9.]*\) ms.*/\1/p" "$1"; }
-printf '| %-34s | %12s | %12s | %7s | %14s | %14s |\n' case "raster ms" "cpu ms" "ratio" "raster CPU ms" "cpu CPU ms"
+rss() { sed -n "s/.*peak RSS \([0-9.]*\) MiB.*/\1/p" "$1"; }
+printf '| %-40s | %10s | %10s | %6s | %13s | %10s | %6s | %10s | %10s |\n' case "raster ms" "cpu ms" "ratio" "raster CPU ms" "cpu CPU ms" \
+  "ratio" "raster MiB" "cpu MiB"
 run() {  # LABEL ARGS...
   local label=$1; shift
-  local t=() c=()
+  local t=() c=() m=()
   for p in raster cpu; do
     "$bin" render "$@" --pipeline "$p" -o "$dir/$p.png" --repeat "$repeat" --verbose 2>"$dir/$p.err" >/dev/null
     t+=("$(ms "$dir/$p.err")")
     c+=("$(cpu "$dir/$p.err")")
+    m+=("$(rss "$dir/$p.err")")
   done
-  printf '| %-34s | %12s | %12s | %6sx | %14s | %14s |\n' "$label" "${t[0]}" "${t[1]}" \
-    "$(awk -v a="${t[0]}" -v b="${t[1]}" 'BEGIN { printf "%.1f", a / b }')" "${c[0]}" "${c[1]}"
+  printf '| %-40s | %10s | %10s | %5sx | %13s | %10s | %5sx | %10s | %10s |\n' "$label" "${t[0]}" "${t[1]}" \
+    "$(awk -v a="${t[0]}" -v b="${t[1]}" 'BEGIN { printf "%.1f", a / b }')" "${c[0]}" "${c[1]}" \
+    "$(awk -v a="${c[0]}" -v b="${c[1]}" 'BEGIN { printf "%.1f", a / b }')" "${m[0]}" "${m[1]}"
 }
 run "synth random $n, 1920x1080" "$dir/random.vtk" --size 1920 1080
 helixView=(--size 512 512 --scale-mode absolute --scale 0.12 --eye 5.4 -9.6 7.5 --look-at 0 0 0 --up 0 0 1 --fov 30)
