@@ -288,6 +288,17 @@ TEST_F(CpuGlyphs, StressSuperquadricsMatchTheRasterPath) {
   expectAgree(both(set, cam, p), cam, "point load", 500, true);
 }
 
+// The key light's shadow map comes from the raster path's casters on both
+// paths, so that shadowed superquadrics light alike.
+TEST_F(CpuGlyphs, ShadowedSuperquadricsMatchTheRasterPath) {
+  const tensor::GlyphSet set = grid(3, 17);
+  const double scale = 0.5;
+  const auto cam = test::cameraFor(set, scale, test::oblique(set, 7.0, render::Projection::Perspective), 160, 120);
+  render::FrameParams p = test::superquadricParams(scale, 3.0);
+  p.shadow.enabled = true;
+  expectAgree(both(set, cam, p), cam, "shadows", 500, true);
+}
+
 TEST_F(CpuGlyphs, ClosedFormKindsAreRefused) {
   const tensor::GlyphSet set = grid(2, 3);
   ctx_->makeCurrent();
