@@ -15,12 +15,17 @@
 //    which superquadricConvex always holds: no grid search.
 //  TG_MARCH_MIXED: Schultz-Kindlmann shapes (b, c >= 2): rays that miss
 //    the double pyramid max(|x|, |y|) + |z| <= 1 holding them never march.
+//
+// In the GLSL/C++ subset (lib/glsl_cpp.h); C++ includes it once per variant
+// (render/glsl_cpp.h), with the variant's macro defined.
+#ifndef __cplusplus
 #pragma tg option TG_MARCH_CONVEX
 #pragma tg option TG_MARCH_MIXED
+#endif
 
 // Convex along every line when g is a norm (2/a, 2/b >= 1, c = b); it then
 // also contains the unit sphere when a, b <= 1.
-bool superquadricConvex(vec3 shape) { return shape.x <= 2.0 && shape.y <= 2.0 && shape.z == shape.y; }
+bool superquadricConvex(vec3 shape) { return shape.x <= 2.0f && shape.y <= 2.0f && shape.z == shape.y; }
 
 struct MarchResult {
   bool hit;
@@ -33,8 +38,8 @@ struct MarchResult {
 // Entry and exit of the ray o + s dir through the cube [-1, 1]^3 that holds
 // every shape (slabs); empty where x > y.
 vec2 unitCubeSpan(vec3 o, vec3 dir) {
-  vec3 inv = 1.0 / dir;
-  vec3 ta = (-1.0 - o) * inv, tb = (1.0 - o) * inv;
+  vec3 inv = 1.0f / dir;
+  vec3 ta = (-1.0f - o) * inv, tb = (1.0f - o) * inv;
   return vec2(max(max(min(ta.x, tb.x), min(ta.y, tb.y)), min(ta.z, tb.z)),
               min(min(max(ta.x, tb.x), max(ta.y, tb.y)), max(ta.z, tb.z)));
 }
@@ -48,11 +53,11 @@ vec2 bipyramidSpan(vec3 o, vec3 dir, float r) {
   vec4 po = vec4(o.x + o.z, o.x - o.z, o.y + o.z, o.y - o.z);
   vec4 pd = vec4(dir.x + dir.z, dir.x - dir.z, dir.y + dir.z, dir.y - dir.z);
   // Parallel to a slab: the whole line is inside it or none of it is.
-  bvec4 edgeOn = equal(pd, vec4(0.0));
-  if (any(bvec4(vec4(edgeOn) * vec4(greaterThan(abs(po), vec4(r)))))) return vec2(1e38, -1e38);
-  vec4 inv = 1.0 / mix(pd, vec4(1.0), edgeOn);
+  bvec4 edgeOn = equal(pd, vec4(0.0f));
+  if (any(bvec4(vec4(edgeOn) * vec4(greaterThan(abs(po), vec4(r)))))) return vec2(1e38f, -1e38f);
+  vec4 inv = 1.0f / mix(pd, vec4(1.0f), edgeOn);
   vec4 ta = (-r - po) * inv, tb = (r - po) * inv;
-  vec4 lo = mix(min(ta, tb), vec4(-1e38), edgeOn), hi = mix(max(ta, tb), vec4(1e38), edgeOn);
+  vec4 lo = mix(min(ta, tb), vec4(-1e38f), edgeOn), hi = mix(max(ta, tb), vec4(1e38f), edgeOn);
   return vec2(max(max(lo.x, lo.y), max(lo.z, lo.w)), min(min(hi.x, hi.y), min(hi.z, hi.w)));
 }
 
@@ -71,10 +76,10 @@ vec2 bipyramidSpan(vec3 o, vec3 dir, float r) {
 // before; so does a non-finite o.
 vec2 marchSearchSpan(vec3 shape, vec3 o, vec3 dir, float eps, float n) {
 #ifdef TG_MARCH_MIXED
-  float r = 1.0 + 1e-3 + 4.0 * eps + exp2(-19.0) * (n + 2.0);
-  if (min(shape.y, shape.z) >= 1.9999 && r < 1e30) return bipyramidSpan(o, dir, r);
+  float r = 1.0f + 1e-3f + 4.0f * eps + exp2(-19.0f) * (n + 2.0f);
+  if (min(shape.y, shape.z) >= 1.9999f && r < 1e30f) return bipyramidSpan(o, dir, r);
 #endif
-  return vec2(-1e38, 1e38);
+  return vec2(-1e38f, 1e38f);
 }
 
 const int kGridSamples = 24;
@@ -86,7 +91,7 @@ float gridSample(float s0, float s1, int k) { return s0 + (s1 - s0) * float(k) /
 // the last sample before its entry to the first after its exit. Outside it
 // every gauge exceeds 1, so the samples left out bracket nothing, and the
 // search from the first sample kept leaves the march as it was there.
-void gridRange(float s0, float s1, vec2 search, out int kFirst, out int kLast) {
+void gridRange(float s0, float s1, vec2 search, TG_OUT(int) kFirst, TG_OUT(int) kLast) {
   float step = (s1 - s0) / float(kGridSamples);
   kFirst = search.x > s0 ? clamp(int(floor((search.x - s0) / step)), 0, kGridSamples) : 0;
   if (kFirst > 0 && !(gridSample(s0, s1, kFirst) < search.x)) --kFirst;
@@ -101,13 +106,13 @@ void gridRange(float s0, float s1, vec2 search, out int kFirst, out int kLast) {
 // `rounding`, since every gauge grows with each of them. A margin proof
 // that the segment holds no root, for any point the march rounds onto it.
 vec3 segmentLowCorner(vec3 pa, vec3 pb, float rounding) {
-  vec3 least = mix(min(abs(pa), abs(pb)), vec3(0.0), lessThanEqual(pa * pb, vec3(0.0)));
-  return max(least - rounding, vec3(0.0));
+  vec3 least = mix(min(abs(pa), abs(pb)), vec3(0.0f), lessThanEqual(pa * pb, vec3(0.0f)));
+  return max(least - rounding, vec3(0.0f));
 }
 
 // How far above 1 a lower bound on the gauge must lie to rule out a root:
 // far more than the float gauge's relative error.
-const float kRootFreeMargin = 1e-2;
+const float kRootFreeMargin = 1e-2f;
 // Bisection steps between proofs: on the point load, loop passes per 8-lane
 // group were 1.181 M with a proof after every step, 1.161 M every second,
 // 1.160 M every third and 1.182 M with one at the start only.
@@ -122,7 +127,7 @@ const int kPhaseEntry = 0, kPhaseGrid = 1, kPhaseBisect = 2, kPhaseNewton = 3, k
 // regula falsi or bisection. The grid search of non-convex shapes covers
 // only `search` (marchSearchSpan), which holds every root.
 MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, vec2 search, int maxIter, float eps) {
-  MarchResult res = MarchResult(false, 0.0, vec3(0.0), 0, 0);
+  MarchResult res = MarchResult(false, 0.0f, vec3(0.0f), 0, 0);
   vec2 span = unitCubeSpan(o, dir);
   float s0 = span.x, s1 = span.y;
   bool fromNear = sNear > s0;
@@ -140,30 +145,30 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, vec2 se
   bool exiting = false, bracketed = false, knownHi = false, lastFalsi = false, done = false;
   float lo = s0, hi = s1;
   // h at the bracket's ends, where known, for regula falsi.
-  float hLo = 0.0, hHi = 0.0;
+  float hLo = 0.0f, hHi = 0.0f;
   // The grid: sample k at gridS, the sample before it at prev; a, b: the
   // derivative bisection's interval between them.
   int k = 0, j = 0, i = 0, finalIterations = 0;
-  float prev = s, prevH = 0.0, prevSlope = 0.0, gridS = 0.0, gridH = 0.0, gridSlope = 0.0, a = 0.0, b = 0.0;
+  float prev = s, prevH = 0.0f, prevSlope = 0.0f, gridS = 0.0f, gridH = 0.0f, gridSlope = 0.0f, a = 0.0f, b = 0.0f;
   // The derivative bisection first tries to prove its interval root-free:
   // the gauge at `corner` (segmentLowCorner), taken instead of the next
   // sample, ends a search that could only fail; 2^-20 (max|o_i| + 2) bounds
   // where the march rounds the segment's points to (marchSearchSpan).
   bool proving = false;
-  vec3 corner = vec3(0.0);
-  float rounding = exp2(-20.0) * (max(max(abs(o.x), abs(o.y)), abs(o.z)) + 2.0);
+  vec3 corner = vec3(0.0f);
+  float rounding = exp2(-20.0f) * (max(max(abs(o.x), abs(o.y)), abs(o.z)) + 2.0f);
   int calls = 0;
   while (!done) {
     ++calls;
     vec3 grad;
-    float h = superquadricGauge(shape, proving ? corner : o + s * dir, grad) - 1.0;
+    float h = superquadricGauge(shape, proving ? corner : o + s * dir, grad) - 1.0f;
     float slope = dot(grad, dir);
     bool nextSample = false;  // leave this grid sample for the next
     if (phase == kPhaseEntry) {
       hLo = h;
       if (isnan(h) || isinf(h)) {
         done = true;
-      } else if (h <= 0.0) {
+      } else if (h <= 0.0f) {
         if (!fromNear) {
           res = MarchResult(true, s0, grad, 0, 0);  // the glyph touches the cube face
           done = true;
@@ -190,7 +195,7 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, vec2 se
       } else {
         float q0, q1;
         // a, b <= 1: the glyph holds the unit sphere, so its entry bounds the root.
-        if (shape.x <= 1.0 && shape.y <= 1.0 && unitSphereRoots(o, dir, q0, q1) && q0 >= s0) {
+        if (shape.x <= 1.0f && shape.y <= 1.0f && unitSphereRoots(o, dir, q0, q1) && q0 >= s0) {
           hi = q0;
           bracketed = true;
         }
@@ -201,14 +206,14 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, vec2 se
       gridS = s;
       gridH = h;
       gridSlope = slope;
-      if (h <= 0.0) {
+      if (h <= 0.0f) {
         bracketed = true;
-      } else if (prevSlope < 0.0 && slope > 0.0 && s - prev > eps) {
+      } else if (prevSlope < 0.0f && slope > 0.0f && s - prev > eps) {
         a = prev;
         b = s;
         j = 0;
         phase = kPhaseBisect;
-        s = 0.5 * (a + b);
+        s = 0.5f * (a + b);
         proving = true;
         corner = segmentLowCorner(o + a * dir, o + b * dir, rounding);
       } else {
@@ -219,15 +224,15 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, vec2 se
         // No root in [a, b]: the bisection would end without one.
         proving = false;
         nextSample = h > kRootFreeMargin;
-      } else if (h <= 0.0) {
+      } else if (h <= 0.0f) {
         gridS = s;
         gridH = h;
         bracketed = true;
       } else {
-        if (slope < 0.0) a = s;
+        if (slope < 0.0f) a = s;
         else b = s;
         ++j;
-        if (j < kGridSamples && b - a > eps) s = 0.5 * (a + b);
+        if (j < kGridSamples && b - a > eps) s = 0.5f * (a + b);
         else nextSample = true;
         if (!nextSample && j % kBisectionsPerProof == 0) {
           proving = true;
@@ -243,7 +248,7 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, vec2 se
         done = true;
       } else {
         // Keep the bracket: the side with h > 0 is lo when entering, hi when exiting.
-        if ((h > 0.0) != exiting) {
+        if ((h > 0.0f) != exiting) {
           lo = s;
           hLo = h;
         } else {
@@ -251,7 +256,7 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, vec2 se
           hHi = h;
           knownHi = true;
         }
-        if (h <= 0.0) bracketed = true;
+        if (h <= 0.0f) bracketed = true;
         float next = s - h / slope;
         // Miss: outside a convex glyph and moving away from it (Hlawitschka's
         // test). Unbracketed means convex and outside, where Newton never
@@ -259,7 +264,7 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, vec2 se
         // past the cube exit proves there is no root. Bisecting there would
         // instead shrink an interval holding no root until the step
         // criterion took it for a hit.
-        if (!bracketed && ((h > 0.0 && slope >= 0.0) || !(next < hi))) {
+        if (!bracketed && ((h > 0.0f && slope >= 0.0f) || !(next < hi))) {
           done = true;
         } else {
           // Newton left the bracket: Blinn's fallback, regula falsi on the
@@ -268,9 +273,9 @@ MarchResult superquadricMarch(vec3 shape, vec3 o, vec3 dir, float sNear, vec2 se
           bool falsi = false;
           if (!(next > lo && next < hi)) {
             falsi = bracketed && knownHi && !lastFalsi && hLo != hHi;
-            next = falsi ? lo - hLo * (hi - lo) / (hHi - hLo) : 0.5 * (lo + hi);
+            next = falsi ? lo - hLo * (hi - lo) / (hHi - hLo) : 0.5f * (lo + hi);
             if (!(next > lo && next < hi)) {
-              next = 0.5 * (lo + hi);
+              next = 0.5f * (lo + hi);
               falsi = false;
             }
           }

@@ -54,7 +54,7 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
   });
   ap.setGroup("glyphs");
   ap.arg("--pipeline NAME").reloads().help("how glyphs are drawn: raster (default; a ray-cast sprite per glyph) or "
-                                            "cpu (tiles cast on every core; ellipsoid glyphs only)")
+                                            "cpu (tiles cast on every core; ellipsoids and superquadrics)")
       .oneOf(render::glyphPathNames())
       .action([&](Args a) { o.pipeline = a[1]; });
   ap.arg("--glyph KIND").help("ellipsoid (default; the built-in scene: superquadric), superquadric, "
@@ -194,12 +194,14 @@ void validateColorOptions(const RenderOptions& o) {
 
 namespace {
 
-// The options that need a kind of glyph: the cpu path draws ellipsoids, the
-// march's options (gamma among them) apply where the kind table says.
+// The options that need a kind of glyph: the cpu path casts ellipsoids and
+// superquadrics, the march's options (gamma among them) apply where the kind
+// table says.
 void checkKindOptions(const RenderOptions& o, render::GlyphKind kind, bool toFile) {
-  if (o.pipeline == "cpu" && (kind != render::GlyphKind::Ellipsoid || o.tessellate != 0))
-    throw UsageError("--pipeline cpu draws ellipsoid glyphs only; this render draws " +
-                     std::string(render::glyphKind(kind).name) + " glyphs (use --glyph ellipsoid)");
+  if (o.pipeline == "cpu" && o.tessellate != 0) throw UsageError("--pipeline cpu casts rays; --tessellate draws a mesh (use --pipeline raster)");
+  if (o.pipeline == "cpu" && render::glyphKind(kind).draw == render::KindDraw::ClosedForm)
+    throw UsageError("--pipeline cpu draws ellipsoid and superquadric glyphs only; this render draws " +
+                     std::string(render::glyphKind(kind).name) + " glyphs");
   if (toFile && !o.marchFlag.empty() && !render::glyphKind(kind).gamma)
     throw UsageError(o.marchFlag + " applies to --glyph superquadric only; this render draws " +
                      std::string(render::glyphKind(kind).name) + " glyphs");

@@ -5,10 +5,13 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <optional>
 #include <stdexcept>
 #include <string>
+#include <type_traits>
 
 #include "render/camera_uniforms.h"
+#include "render/glyph_kind.h"
 #include "render/glsl_cpp.h"
 #include "render/kind_programs.h"
 #include "render/raster_glyphs.h"
@@ -33,13 +36,74 @@ bool pixelsOf(const glsl::vec4& rectNDC, int width, int height, PixelRect& r) {
   return r.x0 <= r.x1 && r.y0 <= r.y1;
 }
 
+// CastShape::kind: the ellipsoid cast, or 1 + the march variant.
+constexpr std::uint8_t kCastEllipsoid = 0;
+std::uint8_t castKindOf(MarchVariant v) { return std::uint8_t(1 + int(v)); }
+MarchVariant variantOfKind(std::uint8_t kind) { return MarchVariant(int(kind) - 1); }
+
+// Which program the raster path draws each group with (RasterGlyphs::
+// drawGlyphs): superquadric frames march all but spheres (at gamma 0 all
+// but spheres and definite glyphs), definite glyphs by the convex variant
+// and mixed-sign ones by the mixed, or all by the general march.
+struct CastMarch {
+  int split = 3;  // groups below it are cast as ellipsoids
+  bool variants = true;
+  bool marches() const { return split < 3; }
+  std::optional<MarchVariant> variantOf(const tensor::GlyphRecord& g) const {
+    const int group = int(tensor::glyphGroup(g));
+    if (group >= split) {
+      if (!variants) return MarchVariant::General;
+      return group == int(tensor::GlyphGroup::Definite) ? MarchVariant::Convex : MarchVariant::Mixed;
+    }
+    return std::nullopt;
+  }
+};
+
+CastMarch castMarch(const FrameParams& p) {
+  CastMarch m;
+  if (glyphKind(p.glyph).draw == KindDraw::Superquadric) m.split = p.gamma > 0.0 ? 1 : 2;
+  m.variants = p.marchVariants;
+  return m;
+}
+
+// f(the variant's shaders): the march code is compiled once per variant.
+template <class F>
+bool withVariant(MarchVariant v, glsl::MarchGeneral& general, glsl::MarchConvex& convex, glsl::MarchMixed& mixed,
+                 F&& f) {
+  switch (v) {
+    case MarchVariant::Convex: return f(convex);
+    case MarchVariant::Mixed: return f(mixed);
+    default: return f(general);
+  }
+}
+
+// A superquadric's GC point in its ellipsoid's axis order, for the sign
+// colour (cpu_gbuffer.frag): GC axis k is eigenvector src[k], src the cyclic
+// permutation that ends with `axis` (lib/superquadric_sprite.glsl).
+glsl::vec3 ellipsoidOrderGC(const glsl::vec3& pGC, int axis) {
+  glsl::vec3 e(0.0f);
+  e[(axis + 1) % 3] = pGC.x;
+  e[(axis + 2) % 3] = pGC.y;
+  e[axis] = pGC.z;
+  return e;
+}
+
 }  // namespace
 
 std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Camera& cam, const FrameParams& p,
                          bool hitGC, int threads, CpuCasts& out) {
-  glsl::Shaders sh;
-  sh.setCamera(cam);
-  sh.setGlyph(p);
+  // One set of uniforms per march variant, as the raster path's programs.
+  glsl::MarchGeneral general;
+  glsl::MarchConvex convex;
+  glsl::MarchMixed mixed;
+  for (glsl::Shaders* v : std::initializer_list<glsl::Shaders*>{&general, &convex, &mixed}) {
+    v->setCamera(cam);
+    v->setGlyph(p);
+  }
+  glsl::Shaders& sh = general;
+  const CastMarch march = castMarch(p);
+  const float gamma = float(p.gamma), eps = float(p.march.epsilon);
+  const int maxIter = p.march.maxIterations;
   const int w = cam.width, h = cam.height;
   const std::size_t n = std::size_t(w) * std::size_t(h);
   out.width = w;
@@ -52,10 +116,12 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
   // Set-up, the vertex stage's: part k writes its glyphs, in record order,
   // from its first record's slot on; then the parts close up.
   const std::size_t m = records.size();
+  const bool marching = march.marches();
   if (out.candidates.size() < m) {
     out.candidates.resize(m);
     out.rects.resize(m);
   }
+  if (marching && out.shapes.size() < m) out.shapes.resize(m);
   std::vector<std::size_t> kept(static_cast<std::size_t>(threads), 0);
   runParts(threads, [&](int part, int parts) {
     const std::size_t begin = partBegin(m, part, parts);
@@ -63,71 +129,145 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
     for (std::size_t i = begin; i < partBegin(m, part + 1, parts); ++i) {
       glsl::GlyphRecord g;
       std::memcpy(&g, &records[i], sizeof g);
-      glsl::EllipsoidSprite s;
       PixelRect& r = out.rects[at];
-      if (!sh.ellipsoidSprite(g, s) || !pixelsOf(s.rectNDC, w, h, r)) continue;
-      out.candidates[at++] = {s.centreVC, sh.ellipsoidGcFromVC(s.rotVC, s.axes),
-                              std::max(s.dist - s.radius, sh.uNearVC), std::uint32_t(i)};
+      const std::optional<MarchVariant> v = march.variantOf(records[i]);
+      if (!v) {
+        glsl::EllipsoidSprite s;
+        if (!general.ellipsoidSprite(g, s) || !pixelsOf(s.rectNDC, w, h, r)) continue;
+        if (marching) out.shapes[at] = {glsl::vec3(1.0f), kCastEllipsoid, 0};
+        out.candidates[at++] = {s.centreVC, general.ellipsoidGcFromVC(s.rotVC, s.axes),
+                                std::max(s.dist - s.radius, general.uNearVC), std::uint32_t(i)};
+        continue;
+      }
+      const std::uint8_t kind = castKindOf(*v);
+      const bool ok = withVariant(*v, general, convex, mixed, [&](auto& sq) {
+        typename std::remove_reference_t<decltype(sq)>::SuperquadricSprite s;
+        if (!sq.superquadricSprite(g, gamma, eps, s) || !pixelsOf(s.rectNDC, w, h, r)) return false;
+        out.shapes[at] = {glsl::vec3(s.shape), kind, std::uint8_t(s.shape.w)};
+        out.candidates[at] = {s.centreVC, s.gcFromVC, s.nearVC, std::uint32_t(i)};
+        return true;
+      });
+      if (ok) ++at;
     }
     kept[std::size_t(part)] = at - begin;
   });
   std::size_t count = kept[0];
   for (int k = 1; k < threads; ++k) {
     const std::size_t begin = partBegin(m, k, threads), n_k = kept[std::size_t(k)];
-    std::copy_n(out.candidates.begin() + std::ptrdiff_t(begin), n_k, out.candidates.begin() + std::ptrdiff_t(count));
-    std::copy_n(out.rects.begin() + std::ptrdiff_t(begin), n_k, out.rects.begin() + std::ptrdiff_t(count));
+    const auto from = std::ptrdiff_t(begin), to = std::ptrdiff_t(count);
+    std::copy_n(out.candidates.begin() + from, n_k, out.candidates.begin() + to);
+    std::copy_n(out.rects.begin() + from, n_k, out.rects.begin() + to);
+    if (marching) std::copy_n(out.shapes.begin() + from, n_k, out.shapes.begin() + to);
     count += n_k;
   }
   out.count = count;
   const std::vector<Candidate>& cands = out.candidates;
   const std::vector<PixelRect>& rects = out.rects;
+  const std::vector<CastShape>& shapes = out.shapes;
   TileBins& bins = out.bins;
   binToTiles(std::span(rects.data(), count), w, h, threads, bins);
 
-  // Per tile, per pixel centre: the tile's glyphs nearest first, until the
-  // next one's nearest depth lies behind the hit. The depth test is the
-  // raster path's (reversed window depth, GL_GREATER: of equal depths the
-  // glyph drawn first, the lower record, stays).
+  // Per tile, its glyphs nearest first, each cast at the pixel centres of
+  // its rectangle where no hit so far lies nearer than the glyph can be; the
+  // tile stops at the first glyph behind every pixel's hit. Each pixel thus
+  // casts what a pixel-by-pixel walk of the sorted list would, in the same
+  // order, at the cost of the glyphs' rectangles rather than the tile's
+  // pixels times its glyphs. The depth test is the raster path's (reversed
+  // window depth, GL_GREATER: of equal depths the glyph drawn first, the
+  // lower record, stays; records run by group, in the order the raster path
+  // draws its programs).
+  constexpr int kTilePixels = kTilePx * kTilePx;
+  constexpr std::uint32_t kNone = std::numeric_limits<std::uint32_t>::max();
   std::atomic<std::size_t> nextTile{0};
   runParts(threads, [&](int, int) {
-    std::vector<std::uint32_t> order;
+    struct Key {
+      float nearVC;
+      std::uint32_t k;
+    };
+    std::vector<Key> order;
+    float bestWin[kTilePixels], bestVC[kTilePixels];
+    std::uint32_t best[kTilePixels];
+    glsl::vec3 bestGC[kTilePixels], bestGrad[kTilePixels];
     for (std::size_t t; (t = nextTile.fetch_add(1)) < bins.tiles();) {
-      order.assign(bins.items.begin() + bins.start[t], bins.items.begin() + bins.start[t + 1]);
-      if (order.empty()) continue;
+      if (bins.start[t] == bins.start[t + 1]) continue;
+      order.clear();
+      for (std::uint32_t e = bins.start[t]; e < bins.start[t + 1]; ++e)
+        order.push_back({cands[bins.items[e]].nearVC, bins.items[e]});
       // Nearest first; of equal depths the lower record first, as drawn.
-      std::sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
-        return cands[a].nearVC < cands[b].nearVC || (cands[a].nearVC == cands[b].nearVC && a < b);
-      });
+      std::sort(order.begin(), order.end(),
+                [](const Key& a, const Key& b) { return a.nearVC < b.nearVC || (a.nearVC == b.nearVC && a.k < b.k); });
       const int tx = int(t % std::size_t(bins.tilesX)), ty = int(t / std::size_t(bins.tilesX));
-      const int x1 = std::min(w, (tx + 1) * kTilePx), y1 = std::min(h, (ty + 1) * kTilePx);
-      for (int y = ty * kTilePx; y < y1; ++y)
-        for (int x = tx * kTilePx; x < x1; ++x) {
-          const glsl::vec2 fragDC(float(x) + 0.5f, float(y) + 0.5f);
-          float bestWin = 0.0f, bestVC = std::numeric_limits<float>::infinity();
-          const Candidate* best = nullptr;
-          glsl::vec3 bestGC(0.0f);
-          for (const std::uint32_t k : order) {
-            const Candidate& c = cands[k];
-            if (c.nearVC > bestVC) break;
-            const PixelRect& r = rects[k];
-            if (x < r.x0 || x > r.x1 || y < r.y0 || y > r.y1) continue;
+      const int x0 = tx * kTilePx, y0 = ty * kTilePx;
+      const int x1 = std::min(w, x0 + kTilePx) - 1, y1 = std::min(h, y0 + kTilePx) - 1;
+      std::fill_n(bestWin, kTilePixels, 0.0f);
+      std::fill_n(bestVC, kTilePixels, std::numeric_limits<float>::infinity());
+      std::fill_n(best, kTilePixels, kNone);
+      // Pixels of the tile (within the viewport) with no hit yet, and the
+      // farthest hit once every one has one.
+      int open = (x1 - x0 + 1) * (y1 - y0 + 1);
+      float farVC = std::numeric_limits<float>::infinity();
+      bool farStale = true;
+      for (const Key& key : order) {
+        if (open == 0) {
+          if (farStale) {
+            farVC = 0.0f;
+            for (int y = y0; y <= y1; ++y)
+              for (int x = x0; x <= x1; ++x) farVC = std::max(farVC, bestVC[(y - y0) * kTilePx + (x - x0)]);
+            farStale = false;
+          }
+          if (key.nearVC > farVC) break;
+        }
+        const std::uint32_t k = key.k;
+        const Candidate& c = cands[k];
+        const PixelRect& r = rects[k];
+        const std::uint8_t kind = marching ? shapes[k].kind : kCastEllipsoid;
+        for (int y = std::max(r.y0, y0); y <= std::min(r.y1, y1); ++y)
+          for (int x = std::max(r.x0, x0); x <= std::min(r.x1, x1); ++x) {
+            const int q = (y - y0) * kTilePx + (x - x0);
+            if (c.nearVC > bestVC[q]) continue;
+            const glsl::vec2 fragDC(float(x) + 0.5f, float(y) + 0.5f);
             float depthVC;
-            glsl::vec3 nGC;
-            if (!sh.castEllipsoid(fragDC, c.centreVC, c.gcFromVC, depthVC, nGC)) continue;
+            glsl::vec3 pGC, grad(0.0f);
+            if (kind == kCastEllipsoid) {
+              if (!sh.castEllipsoid(fragDC, c.centreVC, c.gcFromVC, depthVC, pGC)) continue;
+            } else {
+              const bool hit = withVariant(variantOfKind(kind), general, convex, mixed, [&](auto& sq) {
+                const glsl::vec3 shape = shapes[k].shape;
+                const auto ray = sq.superquadricRay(fragDC, c.centreVC, c.gcFromVC, shape, eps);
+                if (!ray.inReach) return false;
+                const auto hitM = sq.marchSuperquadricRay(ray, shape, maxIter, eps);
+                if (!sq.superquadricHitDepth(ray, hitM, depthVC)) return false;
+                grad = hitM.gradGC;
+                pGC = sq.superquadricHitGC(ray, hitM);
+                return true;
+              });
+              if (!hit) continue;
+            }
             const float win = sh.windowDepthFromViewDepth(depthVC);
-            if (win > bestWin || (best && win == bestWin && c.record < best->record)) {
-              bestWin = win;
-              bestVC = depthVC;
-              best = &c;
-              bestGC = nGC;
+            if (win > bestWin[q] || (best[q] != kNone && win == bestWin[q] && c.record < cands[best[q]].record)) {
+              open -= best[q] == kNone ? 1 : 0;
+              farStale = true;
+              bestWin[q] = win;
+              bestVC[q] = depthVC;
+              best[q] = k;
+              bestGC[q] = pGC;
+              bestGrad[q] = grad;
             }
           }
-          if (!best) continue;
+      }
+      for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+          const int q = (y - y0) * kTilePx + (x - x0);
+          if (best[q] == kNone) continue;
+          const Candidate& c = cands[best[q]];
           const std::size_t px = std::size_t(y) * std::size_t(w) + std::size_t(x);
-          out.windowDepth[px] = bestWin;
-          out.record[px] = best->record + 1;
-          out.normalWC[px] = glsl::vec4(sh.ellipsoidNormalWC(best->gcFromVC, bestGC), 0.0f);
-          if (hitGC) out.hitGC[px] = glsl::vec4(bestGC, 0.0f);
+          out.windowDepth[px] = bestWin[q];
+          out.record[px] = c.record + 1;
+          const bool ellipsoid = !marching || shapes[best[q]].kind == kCastEllipsoid;
+          out.normalWC[px] = glsl::vec4(ellipsoid ? sh.ellipsoidNormalWC(c.gcFromVC, bestGC[q])
+                                                  : general.superquadricNormalWC(c.gcFromVC, bestGrad[q]), 0.0f);
+          if (hitGC)
+            out.hitGC[px] = glsl::vec4(ellipsoid ? bestGC[q] : ellipsoidOrderGC(bestGC[q], shapes[best[q]].axis), 0.0f);
         }
     }
   });
@@ -204,8 +344,8 @@ void CpuGlyphs::allocate(int width, int height) {
 }
 
 void CpuGlyphs::drawView(const Camera& cam, const FrameParams& p, const GBuffer& target) {
-  if (glyphKind(p.glyph).kind != GlyphKind::Ellipsoid || p.tessellation > 0)
-    throw std::invalid_argument("GlyphRenderer::render: the cpu glyph path draws ellipsoid glyphs only (this frame: " +
+  if (glyphKind(p.glyph).draw == KindDraw::ClosedForm || p.tessellation > 0)
+    throw std::invalid_argument("GlyphRenderer::render: the cpu glyph path draws ellipsoids and superquadrics only (this frame: " +
                                 std::string(p.tessellation > 0 ? "tessellated " : "") +
                                 std::string(glyphKind(p.glyph).name) + "); use the raster path");
   if (target.width() != cam.width || target.height() != cam.height)

@@ -10,9 +10,12 @@
 // cpu_gbuffer.frag, which takes albedo and id from the record, so that the
 // deferred passes, context and picking run unchanged.
 //
-// Draws ellipsoid glyphs (spheres included); other kinds and the
-// tessellated baseline are refused. The key light's shadow map is drawn by
-// a raster path built on the first frame with shadows.
+// Superquadric frames cast each group as the raster path draws it: spheres
+// (at gamma 0 definite glyphs too) as ellipsoids, the rest by the Newton
+// march's variant for their group (lib/superquadric_sprite.glsl's set-up,
+// lib/superquadric_cast.glsl's cast). The closed-form kinds (cylinder,
+// box) and the tessellated baseline are refused. The key light's shadow
+// map is drawn by a raster path built on the first frame with shadows.
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -36,6 +39,14 @@ struct CastCandidate {
   std::uint32_t record;
 };
 
+// A marched glyph's shape (superquadricShape's a, b, c), which cast it takes
+// (0: the ellipsoid's, else 1 + MarchVariant) and its symmetry axis.
+struct CastShape {
+  glm::vec3 shape;
+  std::uint8_t kind;
+  std::uint8_t axis;
+};
+
 // One pixel's cast: what the CPU path uploads; and the set-up's buffers,
 // kept from frame to frame so that a frame allocates nothing.
 struct CpuCasts {
@@ -46,6 +57,7 @@ struct CpuCasts {
   std::vector<glm::vec4> hitGC;         // the GC hit point; filled only when asked
   std::vector<CastCandidate> candidates;  // the first `count` hold this frame's, in record order
   std::vector<PixelRect> rects;           // and their pixels
+  std::vector<CastShape> shapes;          // and, in frames that march, their shapes
   std::size_t count = 0;
   TileBins bins;
 };

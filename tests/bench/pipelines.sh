@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Glyph paths against each other (issue 33): median frame time of
 # `--pipeline raster` and `--pipeline cpu` on the same scenes, in one run,
-# with the load average before and after. The cpu path draws ellipsoids
-# only, so every case here draws ellipsoids (the dt-helix too).
+# with the load average before and after: the 2 M-tensor field, the dt-helix
+# as ellipsoids and as Kindlmann superquadrics (peers.sh's view), and the
+# point load's 64,000 superquadrics (peers.sh's view).
 #   bash tests/bench/pipelines.sh [-n N_TENSORS] [-r REPEAT] [-b BUILD_DIR]
 # Defaults: 2000000 tensors (synth random), 5 frames, build. LP_NUM_THREADS
 # is passed through: llvmpipe's threads and the cpu path's (every core)
@@ -24,24 +25,32 @@ helix=$(realpath "$here/../../../shared/data/real/kindlmann-dt-helix/dt-helix.nh
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 "$bin" synth random --n "$n" --seed 3 -o "$dir/random.vtk" >/dev/null
+"$bin" synth boussinesq --n 40 -o "$dir/load.vti" --quiet
 echo "cores $(nproc), LP_NUM_THREADS ${LP_NUM_THREADS:-unset}, load before: $(cut -d' ' -f1-3 /proc/loadavg)"
 ms() { sed -n "s/.*median of [0-9]* frames \([0-9.]*\) ms.*/\1/p" "$1"; }
 # The process's CPU time per frame over all threads: on a shared machine,
 # what the frame cost apart from waiting for a core.
 cpu() { sed -n "s/.*CPU, all threads: \([0-9.]*\) ms.*/\1/p" "$1"; }
-printf '| %-34s | %12s | %12s | %7s | %14s | %14s |\n' case "raster ms" "cpu ms" "ratio" "raster CPU ms" "cpu CPU ms"
+rss() { sed -n "s/.*peak RSS \([0-9.]*\) MiB.*/\1/p" "$1"; }
+printf '| %-40s | %10s | %10s | %6s | %13s | %10s | %6s | %10s | %10s |\n' case "raster ms" "cpu ms" "ratio" "raster CPU ms" "cpu CPU ms" \
+  "ratio" "raster MiB" "cpu MiB"
 run() {  # LABEL ARGS...
   local label=$1; shift
-  local t=() c=()
+  local t=() c=() m=()
   for p in raster cpu; do
     "$bin" render "$@" --pipeline "$p" -o "$dir/$p.png" --repeat "$repeat" --verbose 2>"$dir/$p.err" >/dev/null
     t+=("$(ms "$dir/$p.err")")
     c+=("$(cpu "$dir/$p.err")")
+    m+=("$(rss "$dir/$p.err")")
   done
-  printf '| %-34s | %12s | %12s | %6sx | %14s | %14s |\n' "$label" "${t[0]}" "${t[1]}" \
-    "$(awk -v a="${t[0]}" -v b="${t[1]}" 'BEGIN { printf "%.1f", a / b }')" "${c[0]}" "${c[1]}"
+  printf '| %-40s | %10s | %10s | %5sx | %13s | %10s | %5sx | %10s | %10s |\n' "$label" "${t[0]}" "${t[1]}" \
+    "$(awk -v a="${t[0]}" -v b="${t[1]}" 'BEGIN { printf "%.1f", a / b }')" "${c[0]}" "${c[1]}" \
+    "$(awk -v a="${c[0]}" -v b="${c[1]}" 'BEGIN { printf "%.1f", a / b }')" "${m[0]}" "${m[1]}"
 }
 run "synth random $n, 1920x1080" "$dir/random.vtk" --size 1920 1080
-run "dt-helix ellipsoids, 512x512" "$helix" --glyph ellipsoid --size 512 512 --scale-mode absolute --scale 0.12 \
-  --eye 5.4 -9.6 7.5 --look-at 0 0 0 --up 0 0 1 --fov 30
+helixView=(--size 512 512 --scale-mode absolute --scale 0.12 --eye 5.4 -9.6 7.5 --look-at 0 0 0 --up 0 0 1 --fov 30)
+run "dt-helix ellipsoids, 512x512" "$helix" --glyph ellipsoid "${helixView[@]}"
+run "dt-helix superquadrics g3, 512x512" "$helix" --glyph superquadric --gamma 3 "${helixView[@]}"
+run "point load 40^3 superquadrics, 1024x768" "$dir/load.vti" --glyph superquadric --gamma 3 --size 1024 768 \
+  --scale-mode absolute --scale 0.108 --clamp 2 --eye 2.0 -3.3 1.2 --look-at 0 0 -1 --up 0 0 1 --fov 30
 echo "load after: $(cut -d' ' -f1-3 /proc/loadavg)"

@@ -1,6 +1,6 @@
 // Tier 1: shaders/lib's intersection, bounds and normal code compiled as C++
 // (render/glsl_cpp.h), as the CPU glyph path runs it (render::castGlyphs),
-// against src/ref's double-precision ray caster. No GL: the same source
+// against src/ref's double-precision ray casters. No GL: the same source
 // the GPU runs is checked here in float against double, with test_render's
 // raster-path tolerances (tests/gl/test_render.cpp says why), but for the
 // normals, which here skip the G-buffer's RGBA16F storage.
@@ -12,9 +12,11 @@
 #include "data-synthetic/generators.h"
 #include "ref/ellipsoid_ref.h"
 #include "ref/image_diff.h"
+#include "ref/superquadric_ref.h"
 #include "render/cpu_glyphs.h"
 #include "render/glsl_cpp.h"
 #include "render/tile_binning.h"
+#include "thin_glyphs.h"
 
 using namespace tg;
 
@@ -31,6 +33,18 @@ render::Camera cameraFor(const tensor::GlyphSet& s, double scale, render::Projec
   d.orthoHeight = 0.9 * 12.0;
   const auto [lo, hi] = tensor::glyphBoxWC(s, scale);
   return render::makeCamera(d, w, h, lo, hi);
+}
+
+// test_superquadric.cpp's view of the extremes gallery.
+render::Camera galleryCamera(const tensor::GlyphSet& s, render::Projection proj) {
+  render::CameraDesc d;
+  d.lookAtWC = 0.5 * (s.boundsMinWC + s.boundsMaxWC);
+  d.eyeWC = d.lookAtWC + 40.0 * glm::normalize(glm::dvec3(0.7, -1.1, 0.9));
+  d.upWC = {0, 0, 1};
+  d.projection = proj;
+  d.orthoHeight = 0.9 * 40.0;
+  const auto [lo, hi] = tensor::glyphBoxWC(s, 1.0);
+  return render::makeCamera(d, 320, 160, lo, hi);
 }
 
 // The casts as a frame image (rows top first; view depth), for diffImages.
@@ -79,6 +93,46 @@ TEST(CpuCasts, SharedIntersectionMatchesTheReference) {
       EXPECT_LT(d.depth.max, 2e-5);
       EXPECT_LT(d.normalDeg.median, 0.01);
       EXPECT_LT(d.normalDeg.max, 2.0);
+    }
+  }
+}
+
+// The superquadric march compiled as C++, every variant, against the
+// bracketed double-precision reference at gamma 0 (definite glyphs cast as
+// ellipsoids), 3 and 20, with a tight march and test_superquadric.cpp's
+// tolerances (which say why): the shapes' maths is shared with the GLSL, so
+// that this checks the raster path's source too. On the random field and on
+// the extremes gallery without its glyphs of a zero (or 1e-6) eigenvalue:
+// those are 1e-7 of their size thick (kMinAxisRatio), the march's GC
+// coordinates reach 1e6 on them, where float resolves a quarter unit of a
+// glyph two units thick, and a few of their pixels go either way
+// (SuperquadricExtremesMatchTheRasterPath measures how many).
+TEST(CpuCasts, SharedSuperquadricMarchMatchesTheReference) {
+  const tensor::GlyphSet random = glyphsOf(synth::randomField(64, 21));
+  const tensor::GlyphSet extremes = test::withoutFlatGlyphs(synth::extremesGallery(1.0, 1.0));
+  for (const tensor::GlyphSet* set : {&random, &extremes}) {
+    const double scale = set == &random ? 0.6 : 1.0;
+    for (const auto proj : {render::Projection::Perspective, render::Projection::Orthographic}) {
+      const auto cam = set == &random ? cameraFor(*set, scale, proj, 200, 150) : galleryCamera(*set, proj);
+      for (const double gamma : {0.0, 3.0, 20.0}) {
+        SCOPED_TRACE(std::string(set == &random ? "random" : "extremes") + ", gamma " + std::to_string(gamma));
+        render::FrameParams p;
+        p.scale = scale;
+        p.glyph = render::GlyphKind::Superquadric;
+        p.gamma = gamma;
+        p.march = {30, 1e-6};
+        render::CpuCasts casts;
+        render::castGlyphs(set->glyphs, cam, p, false, 2, casts);
+        const ref::ImageDiff d = ref::diffImages(asFrame(casts, *set, cam),
+                                                 ref::renderSuperquadrics(cam, set->glyphs, {scale, 0.0}, gamma), cam);
+        EXPECT_GT(d.refCovered, 500u);
+        EXPECT_EQ(d.interiorMismatch, 0u);
+        EXPECT_LE(double(d.coverageMismatch), 0.01 * double(d.refCovered));
+        EXPECT_EQ(d.idMismatch, 0u);
+        EXPECT_LT(d.depth.max, 1e-5);
+        EXPECT_LT(d.normalDeg.median, 0.05);
+        EXPECT_LT(d.normalDeg.max, 0.5);
+      }
     }
   }
 }
