@@ -18,6 +18,7 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
+#include <vtkScalarsToColors.h>
 
 #include "color_legend.h"
 #include "glyph_input.h"
@@ -129,10 +130,15 @@ int vtkTensorGlyphRayCastRepresentation::ProcessViewRequest(
     this->Mapper->SetInputConnection(vtkPVRenderView::GetPieceProducer(inInfo, this));
     // Only the representation in use renders: said when the glyphs are drawn.
     auto* controller = vtkMultiProcessController::GetGlobalController();
-    if (!this->ColorArray.empty() && this->ColorArray != this->ColorArraySaid &&
+    const bool cells = this->ColorAssociation != vtkDataObject::FIELD_ASSOCIATION_POINTS;
+    vtkScalarsToColors* lut = this->Mapper->GetLookupTable();
+    const bool categorical = lut && lut->GetIndexedLookup();
+    if (!this->ColorArray.empty() && (cells || categorical) && this->ColorArray != this->ColorArraySaid &&
         (!controller || controller->GetLocalProcessId() == 0)) {
-      vtkWarningMacro(<< "ColorBy: the glyphs' colours follow TensorGlyphColorMode; colouring by '" << this->ColorArray
-                      << "' through ParaView's lookup table is not applied to them (docs/paraview.md)");
+      vtkWarningMacro(<< "ColorBy: '" << this->ColorArray << "' "
+                      << (cells ? "is not a point array; the glyphs stand for points"
+                                : "is coloured by categories (Interpret Values As Categories); the glyphs map a range")
+                      << ", and keep the colours of TensorGlyphColorMode");
       this->ColorArraySaid = this->ColorArray;
     }
   }
@@ -222,10 +228,17 @@ void vtkTensorGlyphRayCastRepresentation::SetOpacity(double v) {
                     << " is not applied to them (docs/paraview.md)");
 }
 
-void vtkTensorGlyphRayCastRepresentation::SetColorArrayName(int, int, int, int, const char* name) {
+void vtkTensorGlyphRayCastRepresentation::SetColorArrayName(int, int, int, int association, const char* name) {
   this->ColorArray = name ? name : "";
-  if (this->ColorArray.empty()) this->ColorArraySaid.clear();
+  this->ColorAssociation = association;
+  this->ColorArraySaid.clear();
+  const bool points = association == vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  this->Mapper->SetColorArray(points ? this->ColorArray.c_str() : "");
 }
+
+void vtkTensorGlyphRayCastRepresentation::SetLookupTable(vtkScalarsToColors* lut) { this->Mapper->SetLookupTable(lut); }
+
+int vtkTensorGlyphRayCastRepresentation::GetRecordUploads() { return this->Mapper->GetRecordUploads(); }
 
 // What is selected is new data: RequestData again.
 void vtkTensorGlyphRayCastRepresentation::SetStride(int v) {

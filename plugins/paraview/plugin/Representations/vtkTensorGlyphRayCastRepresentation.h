@@ -16,6 +16,7 @@ class vtkActor;
 class vtkDataArray;
 class vtkDataSet;
 class vtkPolyData;
+class vtkScalarsToColors;
 class vtkTensorGlyphRayCastMapper;
 
 class TENSORGLYPHRAYCASTREPRESENTATIONS_EXPORT vtkTensorGlyphRayCastRepresentation
@@ -55,10 +56,15 @@ public:
   // glyphs are drawn opaque, and a value below 1 is said to be ignored
   // (docs/paraview.md) rather than ignored in silence.
   void SetOpacity(double v);
-  // The GeometryRepresentation's ColorArrayName (ParaView's ColorBy), shared
-  // likewise: the glyphs' colours follow ColorMode, and an array chosen is
-  // said not to colour them when the glyphs are next drawn.
+  // The GeometryRepresentation's ColorArrayName (ParaView's ColorBy) and
+  // LookupTable, shared likewise: a point array colours the glyphs through
+  // that table (vtkTensorGlyphRayCastMapper::SetColorArray); none ("Solid
+  // Color") leaves them ColorMode's colours. A cell array or a categorical
+  // table is said not to apply.
   void SetColorArrayName(int idx, int port, int connection, int association, const char* name);
+  void SetLookupTable(vtkScalarsToColors* lut);
+  // Glyph record uploads of the mapper (for tests).
+  int GetRecordUploads();
 
   vtkTensorGlyphRayCastMapper* GetMapper();
 
@@ -92,6 +98,7 @@ protected:
   double MaskMin = 0.5;
   double Opacity = 1.0;
   std::string ColorArray;  // ParaView's ColorBy array, or empty
+  int ColorAssociation = 0;  // vtkDataObject::FIELD_ASSOCIATION_*
   std::string ColorArraySaid;  // the one last said not to apply
 
 private:
