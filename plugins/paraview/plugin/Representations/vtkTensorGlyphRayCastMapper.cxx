@@ -20,6 +20,8 @@
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkPolyData.h>
 #include <vtkPointData.h>
+#include <vtkProperty.h>
+#include <vtkActor.h>
 #include <vtkRenderer.h>
 #include <vtkScalarsToColors.h>
 
@@ -268,7 +270,7 @@ double* vtkTensorGlyphRayCastMapper::GetBounds() {
   return this->Bounds;
 }
 
-void vtkTensorGlyphRayCastMapper::Render(vtkRenderer* ren, vtkActor*) {
+void vtkTensorGlyphRayCastMapper::Render(vtkRenderer* ren, vtkActor* actor) {
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   auto* input = vtkPolyData::SafeDownCast(this->GetInputDataObject(0, 0));
   if (!window || !input) return;
@@ -306,6 +308,7 @@ void vtkTensorGlyphRayCastMapper::Render(vtkRenderer* ren, vtkActor*) {
                                       in.blocks.data(), 0);
       }
     }
+    if (!ren->GetSelector() && actor) selection.output().opacity = float(actor->GetProperty()->GetOpacity());
     selection.output().blocks = g.blocks;
     selection.output().blockCount = int(in.blocks.size() / 2);
     int width = 0, height = 0, x0 = 0, y0 = 0;
