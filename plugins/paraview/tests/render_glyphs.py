@@ -10,7 +10,7 @@ and the benchmark's one ParaView driver.
           [--scalar-bar] [--legend-out TXT] [--cell-tensors] [--nan-every K]
           [--multiblock] [--as-six] [--merge-blocks]
           [--set PROPERTY VALUE ...] [--view-set PROPERTY VALUE ...] [--mask-array NAME]
-          [--tensors NAME] [--color-by NAME] [--lut-points V R G B ...] [--lut-range LO HI]
+          [--tensors NAME] [--color-by NAME] [--color-by-cells NAME] [--lut-points V R G B ...] [--lut-range LO HI]
           [--rescale LO HI --rescaled-output PNG] [--uploads-out TXT]
           [--representations-out TXT]
   pvbatch render_glyphs.py --input FILE --write-blocks VTM [--second-without-tensors]
@@ -40,7 +40,8 @@ glyphs' mask reads (TensorGlyphMask), --tensors the point array of tensors,
 --color-by colours the display by a point array (ParaView's ColorBy);
 without it the display is Solid Color (ParaView colours a new display by
 the active scalars, which the glyphs would then follow), so that the glyphs
-show their own colours (TensorGlyphColorMode). --lut-points sets the lookup
+show their own colours (TensorGlyphColorMode); --color-by-cells colours by
+a cell array NAME made from the point array (PointDatatoCellData). --lut-points sets the lookup
 table's RGBPoints (RGB space, not discretised), --lut-range its range;
 --rescale rescales it after the first screenshot and saves another to
 --rescaled-output; --uploads-out writes the glyph record uploads after
@@ -105,6 +106,8 @@ def main():
     ap.add_argument("--mask-array")
     ap.add_argument("--tensors")
     ap.add_argument("--color-by")
+    ap.add_argument("--color-by-cells", metavar="NAME",
+                    help="give the point data as cell data too (PointDatatoCellData) and colour by cell array NAME")
     ap.add_argument("--lut-points", type=float, nargs="+")
     ap.add_argument("--lut-range", type=float, nargs=2)
     ap.add_argument("--rescale", type=float, nargs=2)
@@ -155,6 +158,9 @@ def main():
     if a.cell_tensors:
         reader = simple.PointDatatoCellData(Input=reader)
         reader.PassPointData = 0
+    if a.color_by_cells:
+        reader = simple.PointDatatoCellData(Input=reader)
+        reader.PassPointData = 1
     view = simple.CreateRenderView()
     view.ViewSize = a.size
     view.OrientationAxesVisibility = 0
@@ -169,7 +175,10 @@ def main():
     if not a.no_glyphs:
         disp = simple.Show(reader, view)
         # Before the glyphs update, as a user colours the surface first.
-        simple.ColorBy(disp, None if a.color_by in (None, "NONE") else ("POINTS", a.color_by))
+        if a.color_by_cells:
+            simple.ColorBy(disp, ("CELLS", a.color_by_cells))
+        else:
+            simple.ColorBy(disp, None if a.color_by in (None, "NONE") else ("POINTS", a.color_by))
         if a.color_by not in (None, "NONE"):
             lut = simple.GetColorTransferFunction(a.color_by)
             if a.lut_points:
