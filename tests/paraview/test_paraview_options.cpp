@@ -114,6 +114,28 @@ TEST_F(ParaViewPlugin, MagnitudeMappingAndClampMatchTheCli) {
   EXPECT_GT(differing(b, d, 1.0f / 255.0f), 1000) << "log mapping and clamp 0.5 must change the picture";
 }
 
+// The plugin does not choose the CLI's stress defaults for a stress field:
+// its defaults are the same for every field (kPluginLook). The CLI's stress
+// look is three properties away, and with them the plugin draws the CLI's
+// default picture of the kitten, a stress field (superquadrics, the sign
+// colour, log magnitudes; no legend below 480 rows).
+TEST_F(ParaViewPlugin, StressLookPropertiesDrawTheClisStressDefaults) {
+  TG_SKIP_WITHOUT_PARAVIEW();
+  const fs::path cli = dir / "cli.png", pv = dir / "pv.png";
+  const CmdResult c = tg::test::runBinary("render " + kKitten + " -o " + cli.string() + " " + kCamera + " --verbose", dir);
+  ASSERT_EQ(c.code, 0) << c.err;
+  ASSERT_NE(c.err.find("stress defaults"), std::string::npos) << "the CLI must take the kitten for stress: " << c.err;
+  const CmdResult r = runPvbatch("--output " + pv.string() + " " + kCamera +
+                                     " --glyph 1 --color 5 --set TensorGlyphMagnitude 1",
+                                 dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Image a = readImage(cli), b = readImage(pv);
+  ASSERT_EQ(a.width, 400);
+  ASSERT_EQ(b.width, a.width);
+  ASSERT_GT(glyphPixelsOf(a), 2000);
+  EXPECT_LE(differing(a, b, 1.0f / 255.0f), a.width * a.height / 1000);
+}
+
 // The glyphs' input domain (point tensors of 9 or 6 components) rejects a
 // dataset of scalars and accepts the kitten's stress tensors.
 TEST_F(ParaViewPlugin, InputDomainKeepsTheRepresentationToTensors) {

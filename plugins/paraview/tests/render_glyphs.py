@@ -177,8 +177,10 @@ def main():
         # Before the glyphs update, as a user colours the surface first.
         if a.color_by_cells:
             simple.ColorBy(disp, ("CELLS", a.color_by_cells))
-        else:
-            simple.ColorBy(disp, None if a.color_by in (None, "NONE") else ("POINTS", a.color_by))
+        elif a.color_by not in (None, "NONE"):
+            simple.ColorBy(disp, ("POINTS", a.color_by))
+        elif disp.ColorArrayName[1]:  # ColorBy None fails on a display coloured by nothing
+            simple.ColorBy(disp, None)
         if a.color_by not in (None, "NONE"):
             lut = simple.GetColorTransferFunction(a.color_by)
             if a.lut_points:
