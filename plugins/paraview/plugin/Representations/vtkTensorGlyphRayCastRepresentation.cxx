@@ -161,8 +161,8 @@ int vtkTensorGlyphRayCastRepresentation::ProcessViewRequest(
     // Only the representation in use renders: said when the glyphs are drawn.
     auto* controller = vtkMultiProcessController::GetGlobalController();
     const bool cells = this->ColorAssociation != vtkDataObject::FIELD_ASSOCIATION_POINTS;
-    vtkScalarsToColors* lut = this->Mapper->GetLookupTable();
-    const bool categorical = lut && lut->GetIndexedLookup();
+    // GetLookupTable makes a default table where ParaView set none: asked only with an array chosen.
+    const bool categorical = !this->ColorArray.empty() && this->Mapper->GetLookupTable()->GetIndexedLookup();
     if (!this->ColorArray.empty() && (cells || categorical) && this->ColorArray != this->ColorArraySaid &&
         (!controller || controller->GetLocalProcessId() == 0)) {
       vtkWarningMacro(<< "ColorBy: '" << this->ColorArray << "' "
