@@ -2,7 +2,8 @@
 // Copies the lit glyphs into a host application's framebuffer (the ParaView
 // plugin, plugins/paraview): the colour, and the depth re-projected into the
 // host's convention, so that the host's own geometry and the glyphs hide each
-// other correctly. Pixels without a glyph are discarded.
+// other correctly. Pixels without a glyph are discarded. Below an opacity of
+// 1 the host blends the colour over what it drew (uOpacity).
 //
 // In the host's selection passes (VTK's hardware selector) the colour is what
 // the pass reads back instead: a constant (the prop, composite or process id
@@ -25,6 +26,7 @@ uniform vec4 uHostWRow;
 uniform int uOutput;      // kOutput* below
 uniform vec3 uSelectColor;  // kOutputConstant's colour
 uniform int uBlockCount;    // 0: one dataset, the ids are its point ids
+uniform float uOpacity;     // kOutputLit's alpha: below 1 the host blends it over its frame
 
 layout(std430, binding = 0) readonly buffer BlockTable {
   uvec2 uBlocks[];  // (first glyph id, flat index), ascending ids
@@ -72,6 +74,6 @@ void main() {
   } else if (uOutput == kOutputIdHigh8) {
     oColor = vec4(float(pointId >> 24) / 255.0, 0.0, 0.0, 1.0);
   } else {
-    oColor = vec4(texelFetch(uColor, p, 0).rgb, 1.0);
+    oColor = vec4(texelFetch(uColor, p, 0).rgb, uOpacity);
   }
 }

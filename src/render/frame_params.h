@@ -134,6 +134,9 @@ struct FrameParams {
   ColorMode color = ColorMode::DEC;
   // A scalar mode's map; none: the quantity's own (render/color_scalar.h).
   std::optional<Colormap> colormap;
+  // ColorMode::Array through the colours GlyphRenderer::setColorTable took
+  // (a host's own map: ParaView's lookup table) instead of `colormap`.
+  bool colorTable = false;
   // The values at the map's ends (sign: M = max(|lo|, |hi|) saturates);
   // none: the uploaded field's range (GlyphRenderer::colorWindow).
   std::optional<glm::dvec2> colorWindow;

@@ -26,6 +26,7 @@ void setGlyphUniforms(const gl::Program& prog, const FrameParams& p, const Frame
   if (changed(&FrameParams::color)) prog.set("uColorMode", int(p.color));
   if (changed(&FrameParams::color) || changed(&FrameParams::colormap))
     prog.set("uColormap", int(p.colormap.value_or(defaultColormap(p.color))));
+  if (changed(&FrameParams::colorTable)) prog.set("uColorTable", p.colorTable ? 1 : 0);
 }
 
 const gl::Program& KindPrograms::program(GlyphKind k, const FrameParams& p) {

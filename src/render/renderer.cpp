@@ -10,6 +10,7 @@
 #include "render/outline_pass.h"
 #include "render/shadow_pass.h"
 #include "render/color_scalar.h"
+#include "shaders/lib/bindings.h"
 #include "tensor/glyph_scale.h"
 
 namespace tg::render {
@@ -44,7 +45,9 @@ GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib, Ov
   slots_[kLegend].decl = {"legend", [](const FrameParams& p) { return p.legend.enabled; }, overlays.legend};
 }
 
-GlyphRenderer::~GlyphRenderer() = default;
+GlyphRenderer::~GlyphRenderer() {
+  if (colorTable_) gl_.DeleteBuffers(1, &colorTable_);
+}
 
 void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   path_->upload(set);
@@ -71,6 +74,17 @@ void GlyphRenderer::setColorScalars(std::span<const float> byRecord, std::string
   ranges_.scalarName = std::move(name);
   hasScalars_ = true;
   if (params_) path_->setColorWindow(colorWindow(*params_));
+}
+
+void GlyphRenderer::setColorTable(std::span<const glm::vec4> table) {
+  if (table.size() < 4)
+    throw std::invalid_argument("GlyphRenderer::setColorTable: " + std::to_string(table.size()) +
+                                " colours; a table holds at least one, then those of NaN, below and above");
+  if (colorTable_) gl_.DeleteBuffers(1, &colorTable_);
+  colorTable_ = 0;
+  gl_.CreateBuffers(1, &colorTable_);
+  gl_.NamedBufferStorage(colorTable_, GLsizeiptr(table.size_bytes()), table.data(), 0);
+  gl::checkError(gl_, "GlyphRenderer::setColorTable");
 }
 
 void GlyphRenderer::setColorRanges(const ColorRanges& ranges) {
@@ -106,6 +120,8 @@ void GlyphRenderer::setParams(const FrameParams& p) {
   const FrameParams* old = params_ ? &*params_ : nullptr;
   if (p.color == ColorMode::Array && !hasScalars_)
     throw std::invalid_argument("GlyphRenderer::render: colour by array, but no per-glyph scalars were set");
+  if (p.colorTable && !colorTable_)
+    throw std::invalid_argument("GlyphRenderer::render: colour through a table, but no table was set");
   path_->setParams(p, old);
   path_->setColorWindow(colorWindow(p));
   lighting_.setParams(p, old);
@@ -171,6 +187,8 @@ bool GlyphRenderer::runSlot(Slot& s, const PassFrame& f) {
 void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffer& target) {
   if (!params_ || !(*params_ == p)) setParams(p);
   gl_.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
+  // Before the shadow map: its casters run the same vertex stages.
+  if (colorTable_) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_COLOR_TABLE, colorTable_);
   ranges_.underlays = p.legend.enabled ? legendKeys() : std::vector<UnderlayKey>{};
   PassFrame frame{cam, p, target, aoRadiusWC(p), ranges_, *path_, context_, nullptr};
   // The shadow map first, so that culling is left prepared for the view; a

@@ -64,6 +64,13 @@ class GlyphRenderer {
   // another count. NaN values draw mid grey; the window is of the finite ones.
   void setColorScalars(std::span<const float> byRecord, std::string name);
   bool hasColorScalars() const { return hasScalars_; }
+  // A host's own map for ColorMode::Array (FrameParams::colorTable; the
+  // ParaView plugin's lookup table): n colours for n equal parts of the
+  // window (nearest, as a discretised table maps), then the colours of NaN,
+  // of values below and of values above the window. Its own small buffer:
+  // a new table or window uploads no records and no scalars. Throws
+  // std::invalid_argument for fewer than 4 entries.
+  void setColorTable(std::span<const glm::vec4> table);
   // The automatic colour windows: by default each scalar's range over the
   // uploaded glyphs (render/color_scalar.h); a caller that knows the whole
   // field's (before a slice or threshold selected these glyphs, or over
@@ -136,6 +143,7 @@ class GlyphRenderer {
   std::uint64_t uploads_ = 0;
   UploadedRanges ranges_;  // less the underlays, which each frame reads from the context
   bool hasScalars_ = false;
+  GLuint colorTable_ = 0;  // setColorTable's buffer, or none
   double typicalDiameter_ = 1.0;  // in eigenvalue units
   std::optional<FrameParams> params_;  // as last set
   std::vector<std::unique_ptr<ContextItem>> context_;

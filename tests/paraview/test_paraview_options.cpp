@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <cmath>
 #include <fstream>
 #include <string>
 #include <vector>
@@ -111,6 +112,28 @@ TEST_F(ParaViewPlugin, MagnitudeMappingAndClampMatchTheCli) {
   ASSERT_GT(glyphPixelsOf(a), 2000);
   EXPECT_LE(differing(a, b, 1.0f / 255.0f), a.width * a.height / 1000);
   EXPECT_GT(differing(b, d, 1.0f / 255.0f), 1000) << "log mapping and clamp 0.5 must change the picture";
+}
+
+// The plugin does not choose the CLI's stress defaults for a stress field:
+// its defaults are the same for every field (kPluginLook). The CLI's stress
+// look is three properties away, and with them the plugin draws the CLI's
+// default picture of the kitten, a stress field (superquadrics, the sign
+// colour, log magnitudes; no legend below 480 rows).
+TEST_F(ParaViewPlugin, StressLookPropertiesDrawTheClisStressDefaults) {
+  TG_SKIP_WITHOUT_PARAVIEW();
+  const fs::path cli = dir / "cli.png", pv = dir / "pv.png";
+  const CmdResult c = tg::test::runBinary("render " + kKitten + " -o " + cli.string() + " " + kCamera + " --verbose", dir);
+  ASSERT_EQ(c.code, 0) << c.err;
+  ASSERT_NE(c.err.find("stress defaults"), std::string::npos) << "the CLI must take the kitten for stress: " << c.err;
+  const CmdResult r = runPvbatch("--output " + pv.string() + " " + kCamera +
+                                     " --glyph 1 --color 5 --set TensorGlyphMagnitude 1",
+                                 dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  const Image a = readImage(cli), b = readImage(pv);
+  ASSERT_EQ(a.width, 400);
+  ASSERT_EQ(b.width, a.width);
+  ASSERT_GT(glyphPixelsOf(a), 2000);
+  EXPECT_LE(differing(a, b, 1.0f / 255.0f), a.width * a.height / 1000);
 }
 
 // The glyphs' input domain (point tensors of 9 or 6 components) rejects a
@@ -259,26 +282,116 @@ TEST_F(ParaViewPlugin, LightKitKeyIntensityLightsTheGlyphs) {
   EXPECT_LT(lz, ly - 0.01) << ly << " " << lz;
 }
 
-// Opacity below 1 is not applied to the ray-cast glyphs, and said so.
-TEST_F(ParaViewPlugin, OpacityBelowOneIsSaidToBeIgnored) {
+// Opacity below 1 shows what lies behind the glyphs: with a ParaView slice
+// behind and in front of them, each pixel at Opacity 0.5 is the mean of the
+// opaque glyphs' picture and the slice's picture without glyphs (where the
+// slice is in front, both are the slice), within 8-bit rounding; and most
+// glyph pixels differ from the opaque ones. The glyphs stay where they were.
+TEST_F(ParaViewPlugin, OpacityShowsWhatLiesBehindTheGlyphs) {
   TG_SKIP_WITHOUT_PARAVIEW();
-  const fs::path png = dir / "o.png";
-  const CmdResult r = runPvbatch("--output " + png.string() + " " + kCamera + " --set Opacity 0.5", dir);
-  ASSERT_EQ(r.code, 0) << r.err;
-  EXPECT_NE(r.err.find("SetOpacity: the ray-cast glyphs are drawn opaque; Opacity 0.5 is not applied"),
-            std::string::npos)
-      << r.err;
+  const fs::path opaque = dir / "opaque.png", slice = dir / "slice.png", half = dir / "half.png";
+  const std::string plane = " --slice-normal 0 0 1 --slice-origin -1.5 41.8 5.6";
+  const CmdResult a = runPvbatch("--output " + opaque.string() + " " + kCamera + plane, dir);
+  ASSERT_EQ(a.code, 0) << a.err;
+  const CmdResult b = runPvbatch("--output " + slice.string() + " " + kCamera + plane + " --no-glyphs", dir);
+  ASSERT_EQ(b.code, 0) << b.err;
+  const CmdResult c = runPvbatch("--output " + half.string() + " " + kCamera + plane + " --set Opacity 0.5", dir);
+  ASSERT_EQ(c.code, 0) << c.err;
+  EXPECT_EQ(c.err.find("Opacity"), std::string::npos) << c.err;
+  const Image x = readImage(opaque), y = readImage(slice), z = readImage(half);
+  ASSERT_EQ(x.width, 400);
+  ASSERT_EQ(y.width, x.width);
+  ASSERT_EQ(z.width, x.width);
+  long glyphs = 0, seeThrough = 0, off = 0;
+  for (int i = 0; i < x.width * x.height; ++i) {
+    bool glyph = false, differs = false, wrong = false;
+    for (int k = 0; k < 3; ++k) {
+      const float g = x.at(i)[k], behind = y.at(i)[k], got = z.at(i)[k];
+      glyph |= std::abs(g - behind) > 4.0f / 255.0f;
+      differs |= std::abs(got - g) > 2.0f / 255.0f;
+      wrong |= std::abs(got - 0.5f * (g + behind)) > 1.5f / 255.0f;
+    }
+    glyphs += glyph;
+    seeThrough += glyph && differs;
+    off += wrong;
+  }
+  ASSERT_GT(glyphs, 1000) << "the glyphs must show in front of the slice and the background";
+  EXPECT_GT(seeThrough, glyphs * 9 / 10) << seeThrough << " of " << glyphs;
+  EXPECT_LE(off, x.width * x.height / 1000) << off << " pixels are not the mean of the two pictures";
 }
 
-// ParaView's ColorBy does not colour the glyphs (their colours follow
-// TensorGlyphColorMode): said once when they are drawn, rather than a scalar
-// bar of that array over glyphs coloured otherwise without a word. (Show
-// itself colours the kitten by its "fixed" array; ColorBy None says nothing.)
-TEST_F(ParaViewPlugin, ColorByAnArrayIsSaidNotToColourTheGlyphs) {
+// ParaView's ColorBy colours the glyphs through the display's lookup table:
+// a table of shaders/lib/color.glsl's viridis knots (or a grey ramp) over
+// 20..60 on a point array of heights draws the CLI's picture of that array
+// with that map and window, within one 8-bit step on 0.1% of the pixels (the
+// table is sampled 1024 times; the CLI maps the knots exactly). Rescaling the
+// table to 30..50 draws the CLI's picture of that window, with the glyph
+// records uploaded once for both frames. Without the table's window (the
+// CLI's 30..50 against the plugin's 20..60) most glyph pixels differ.
+class ParaViewColorBy : public ParaViewPlugin, public ::testing::WithParamInterface<bool> {};
+
+TEST_P(ParaViewColorBy, GlyphsShowTheLookupTablesColours) {
+  TG_SKIP_WITHOUT_PARAVIEW();
+  const bool gray = GetParam();
+  const fs::path field = dir / "height.vtu";
+  const CmdResult w = runPvbatch("--input " + kKitten + " --write-height " + field.string(), dir);
+  ASSERT_EQ(w.code, 0) << w.err;
+  const ShaderColormaps maps = readShaderColormaps();
+  ASSERT_EQ(maps.viridis.size(), 9u) << "viridis's knots not found in color.glsl";
+  std::string points;
+  const double lo = 20, hi = 60;
+  if (gray) {
+    points = "20 0 0 0 60 1 1 1";
+  } else {
+    for (std::size_t k = 0; k < maps.viridis.size(); ++k) {
+      points += " " + std::to_string(lo + (hi - lo) * double(k) / double(maps.viridis.size() - 1));
+      for (double c : maps.viridis[k]) points += " " + std::to_string(c);
+    }
+  }
+  const fs::path pv = dir / "pv.png", pv2 = dir / "pv2.png", cli = dir / "cli.png", cli2 = dir / "cli2.png",
+                 uploads = dir / "uploads.txt";
+  const CmdResult r = runPvbatch("--input " + field.string() + " --output " + pv.string() + " " + kCamera +
+                                     " --color-by height --lut-points " + points + " --lut-range 20 60 --rescale 30 50"
+                                     " --rescaled-output " + pv2.string() + " --uploads-out " + uploads.string(),
+                                 dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_EQ(r.err.find("ColorBy"), std::string::npos) << r.err;
+  // The plugin's look (kPluginLook) with the array's colour instead of DEC.
+  const std::string look = std::string(" --glyph ellipsoid --magnitude linear --color-array height --colormap ") +
+                           (gray ? "gray" : "viridis");
+  const CmdResult c = tg::test::runBinary("render " + field.string() + look + " --color-range 20 60 -o " +
+                                          cli.string() + " " + kCamera, dir);
+  ASSERT_EQ(c.code, 0) << c.err;
+  const CmdResult c2 = tg::test::runBinary("render " + field.string() + look + " --color-range 30 50 -o " +
+                                           cli2.string() + " " + kCamera, dir);
+  ASSERT_EQ(c2.code, 0) << c2.err;
+  const Image a = readImage(pv), a2 = readImage(pv2), b = readImage(cli), b2 = readImage(cli2);
+  ASSERT_EQ(a.width, 400);
+  ASSERT_EQ(a2.width, 400);
+  ASSERT_EQ(b.width, 400);
+  ASSERT_EQ(b2.width, 400);
+  const long glyphPixels = glyphPixelsOf(b);
+  ASSERT_GT(glyphPixels, 2000);
+  EXPECT_LE(differing(a, b, 1.0f / 255.0f), a.width * a.height / 1000);
+  EXPECT_LE(differing(a2, b2, 1.0f / 255.0f), a.width * a.height / 1000);
+  EXPECT_GT(differing(a, b2, 3.0f / 255.0f), glyphPixels / 4) << "the window must change the glyphs' colours";
+  std::ifstream in(uploads);
+  std::string line, all;
+  while (std::getline(in, line)) all += line + "\n";
+  EXPECT_EQ(all, "uploads 0 1\nuploads 1 1\n") << "a new colour window must upload no glyph records";
+}
+
+INSTANTIATE_TEST_SUITE_P(Maps, ParaViewColorBy, ::testing::Values(false, true),
+                         [](const ::testing::TestParamInfo<bool>& p) { return p.param ? "Gray" : "Viridis"; });
+
+// Solid Color (ColorBy None) leaves the glyphs TensorGlyphColorMode's
+// colours, and an array that is no point array is said not to colour them,
+// once, rather than a scalar bar over glyphs coloured otherwise.
+TEST_F(ParaViewPlugin, ColorByACellArrayIsSaidNotToColourTheGlyphs) {
   TG_SKIP_WITHOUT_PARAVIEW();
   const fs::path png = dir / "c.png";
-  const std::string said = "ColorBy: the glyphs' colours follow TensorGlyphColorMode; colouring by 'fixed'";
-  const CmdResult r = runPvbatch("--output " + png.string() + " " + kCamera + " --color-by fixed", dir);
+  const std::string said = "ColorBy: 'fixed' is not a point array";
+  const CmdResult r = runPvbatch("--output " + png.string() + " " + kCamera + " --color-by-cells fixed", dir);
   ASSERT_EQ(r.code, 0) << r.err;
   const std::size_t at = r.err.find(said);
   EXPECT_NE(at, std::string::npos) << r.err;

@@ -265,53 +265,6 @@ TEST_F(ParaViewPlugin, SelectionReturnsTheGlyphsPointIds) {
   EXPECT_EQ(picked[1], shown);
 }
 
-// The colour maps of shaders/lib/color.glsl, read from the file the glyph
-// shaders are built from: viridis's knots (linear in between) and the sign
-// ramp's compression and tension ends (white at 0).
-struct ShaderColormaps {
-  std::vector<std::array<double, 3>> viridis;
-  std::array<double, 3> tension{}, compression{};
-};
-
-ShaderColormaps readShaderColormaps() {
-  ShaderColormaps maps;
-  const fs::path glsl = fs::path(TG_PARAVIEW_SCRIPT).parent_path() / "../../../shaders/lib/color.glsl";
-  std::ifstream f(glsl);
-  std::stringstream text;
-  text << f.rdbuf();
-  const std::string src = text.str();
-  const std::regex vec3(R"(vec3\(([-0-9.]+), ([-0-9.]+), ([-0-9.]+)\))");
-  auto vecsIn = [&](const std::string& from, const std::string& to) {
-    std::vector<std::array<double, 3>> out;
-    const std::size_t a = src.find(from), b = src.find(to, a);
-    if (a == std::string::npos || b == std::string::npos) return out;
-    const std::string body = src.substr(a, b - a);
-    for (auto m = std::sregex_iterator(body.begin(), body.end(), vec3); m != std::sregex_iterator(); ++m)
-      out.push_back({std::stod((*m)[1]), std::stod((*m)[2]), std::stod((*m)[3])});
-    return out;
-  };
-  maps.viridis = vecsIn("vec3 viridis(float t)", "float x");
-  const auto sign = vecsIn("vec3 signRamp(float t)", "}");
-  if (sign.size() == 2) {
-    maps.tension = sign[0];
-    maps.compression = sign[1];
-  }
-  return maps;
-}
-
-std::array<double, 3> shaderColor(const ShaderColormaps& m, bool sign, double t) {
-  std::array<double, 3> c{};
-  if (sign) {  // t in -1..1
-    const auto& end = t >= 0 ? m.tension : m.compression;
-    for (int k = 0; k < 3; ++k) c[k] = 1.0 + (end[k] - 1.0) * std::abs(t);
-    return c;
-  }
-  const double x = std::clamp(t, 0.0, 1.0) * double(m.viridis.size() - 1);
-  const std::size_t i = std::min(std::size_t(x), m.viridis.size() - 2);
-  for (int k = 0; k < 3; ++k) c[k] = m.viridis[i][k] + (m.viridis[i + 1][k] - m.viridis[i][k]) * (x - double(i));
-  return c;
-}
-
 std::map<std::string, std::vector<double>> readLegend(const fs::path& p) {
   std::map<std::string, std::vector<double>> out;
   std::ifstream f(p);

@@ -10,9 +10,11 @@ and the benchmark's one ParaView driver.
           [--scalar-bar] [--legend-out TXT] [--cell-tensors] [--nan-every K]
           [--multiblock] [--as-six] [--merge-blocks]
           [--set PROPERTY VALUE ...] [--view-set PROPERTY VALUE ...] [--mask-array NAME]
-          [--tensors NAME] [--color-by NAME]
+          [--tensors NAME] [--color-by NAME] [--color-by-cells NAME] [--lut-points V R G B ...] [--lut-range LO HI]
+          [--rescale LO HI --rescaled-output PNG] [--uploads-out TXT]
           [--representations-out TXT]
   pvbatch render_glyphs.py --input FILE --write-blocks VTM [--second-without-tensors]
+  pvbatch render_glyphs.py --input FILE --write-height VTU
 
 Under mpiexec, --redistribute spreads the dataset over the ranks (or give a
 partitioned .pvtu); each rank draws its own glyphs and IceT composites the
@@ -35,8 +37,17 @@ Merge Blocks of the input instead of the input.
 --set sets a property of the representation (a number, after the options
 above), --view-set one of the view; --mask-array picks the point array the
 glyphs' mask reads (TensorGlyphMask), --tensors the point array of tensors,
---color-by colours the display by a point array (ParaView's ColorBy; NONE
-for none); --representations-out writes the
+--color-by colours the display by a point array (ParaView's ColorBy);
+without it the display is Solid Color (ParaView colours a new display by
+the active scalars, which the glyphs would then follow), so that the glyphs
+show their own colours (TensorGlyphColorMode); --color-by-cells colours by
+a cell array NAME made from the point array (PointDatatoCellData). --lut-points sets the lookup
+table's RGBPoints (RGB space, not discretised), --lut-range its range;
+--rescale rescales it after the first screenshot and saves another to
+--rescaled-output; --uploads-out writes the glyph record uploads after
+each screenshot ("uploads K N"). --write-height writes the input with a
+point array "height" (each point's y) added, for the CLI and pvbatch to
+colour by; nothing is drawn. --representations-out writes the
 representation types ParaView offers for the input ("offered NAME" per
 line) and whether the input passes the glyphs' input domain ("in_domain 0|1").
 
@@ -95,9 +106,20 @@ def main():
     ap.add_argument("--mask-array")
     ap.add_argument("--tensors")
     ap.add_argument("--color-by")
+    ap.add_argument("--color-by-cells", metavar="NAME",
+                    help="give the point data as cell data too (PointDatatoCellData) and colour by cell array NAME")
+    ap.add_argument("--lut-points", type=float, nargs="+")
+    ap.add_argument("--lut-range", type=float, nargs=2)
+    ap.add_argument("--rescale", type=float, nargs=2)
+    ap.add_argument("--rescaled-output")
+    ap.add_argument("--uploads-out")
+    ap.add_argument("--write-height", metavar="VTU")
     a = ap.parse_args()
     if a.write_blocks:
         write_blocks(a.input, a.write_blocks, a.second_without_tensors)
+        return
+    if a.write_height:
+        write_height(a.input, a.write_height)
         return
     if not a.plugin or not a.output:
         sys.exit("render_glyphs.py: --plugin and --output are required")
@@ -136,6 +158,9 @@ def main():
     if a.cell_tensors:
         reader = simple.PointDatatoCellData(Input=reader)
         reader.PassPointData = 0
+    if a.color_by_cells:
+        reader = simple.PointDatatoCellData(Input=reader)
+        reader.PassPointData = 1
     view = simple.CreateRenderView()
     view.ViewSize = a.size
     view.OrientationAxesVisibility = 0
@@ -149,8 +174,22 @@ def main():
         setattr(view, name, number(value))
     if not a.no_glyphs:
         disp = simple.Show(reader, view)
-        if a.color_by is not None:  # before the glyphs update, as a user colours the surface first
-            simple.ColorBy(disp, None if a.color_by == "NONE" else ("POINTS", a.color_by))
+        # Before the glyphs update, as a user colours the surface first.
+        if a.color_by_cells:
+            simple.ColorBy(disp, ("CELLS", a.color_by_cells))
+        elif a.color_by not in (None, "NONE"):
+            simple.ColorBy(disp, ("POINTS", a.color_by))
+        elif disp.ColorArrayName[1]:  # ColorBy None fails on a display coloured by nothing
+            simple.ColorBy(disp, None)
+        if a.color_by not in (None, "NONE"):
+            lut = simple.GetColorTransferFunction(a.color_by)
+            if a.lut_points:
+                lut.ColorSpace = "RGB"
+                lut.Discretize = 0
+                lut.RGBPoints = a.lut_points
+            if a.lut_range:
+                lut.AutomaticRescaleRangeMode = "Never"
+                lut.RescaleTransferFunction(a.lut_range[0], a.lut_range[1])
         disp.SetRepresentationType("Tensor Glyphs (ray cast)")
         disp.TensorGlyphKind = a.glyph
         disp.TensorGlyphGamma = a.gamma
@@ -192,6 +231,19 @@ def main():
         legend = show_legend(disp, view, a.scalar_bar)
         simple.Render(view)
     simple.SaveScreenshot(a.output, view, ImageResolution=a.size)
+    uploads = [record_uploads(disp)] if a.uploads_out else []
+    if a.rescale:
+        lut = simple.GetColorTransferFunction(a.color_by)
+        lut.AutomaticRescaleRangeMode = "Never"
+        lut.RescaleTransferFunction(a.rescale[0], a.rescale[1])
+        simple.Render(view)
+        simple.SaveScreenshot(a.rescaled_output, view, ImageResolution=a.size)
+        if a.uploads_out:
+            uploads.append(record_uploads(disp))
+    if a.uploads_out:
+        with open(a.uploads_out, "w") as f:
+            for k, n in enumerate(uploads):
+                f.write("uploads %d %d\n" % (k, n))
     if a.legend_out:
         legend["md_range_of_input"] = md_range(reader)
         with open(a.legend_out, "w") as f:
@@ -302,6 +354,30 @@ def select_ids(source, view, rect, kind):
         else:
             sys.exit("render_glyphs.py: unexpected selection %s" % node.GetXMLName())
     return sorted(set(ids), key=lambda t: (-1 if t[0] is None else t[0], t[1]))
+
+
+def record_uploads(disp):
+    """How many times the glyph records went to the GPU."""
+    disp.UpdatePropertyInformation()
+    return int(disp.GetPropertyValue("TensorGlyphRecordUploads"))
+
+
+def write_height(path, out):
+    """The input with a point array "height" (each point's y) added."""
+    from vtkmodules.vtkCommonCore import vtkDoubleArray
+    from vtkmodules.vtkIOXML import vtkXMLUnstructuredGridWriter
+    data = servermanager.Fetch(simple.OpenDataFile(path))
+    h = vtkDoubleArray()
+    h.SetName("height")
+    h.SetNumberOfTuples(data.GetNumberOfPoints())
+    for i in range(data.GetNumberOfPoints()):
+        h.SetValue(i, data.GetPoint(i)[1])
+    data.GetPointData().AddArray(h)
+    w = vtkXMLUnstructuredGridWriter()
+    w.SetFileName(out)
+    w.SetInputData(data)
+    if not w.Write():
+        sys.exit("render_glyphs.py: %s: could not be written" % out)
 
 
 def write_blocks(path, vtm, second_without_tensors=False):

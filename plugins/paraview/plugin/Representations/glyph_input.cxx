@@ -164,6 +164,52 @@ double piecesGridSpacing(std::span<const Piece> pieces) {
   return std::isfinite(s) ? s : 0.0;
 }
 
+// Where a piece's points are numbered from (its first glyph id).
+struct PieceStart {
+  std::uint64_t firstId;
+  const Piece* piece;
+};
+
+// Every numeric point array of the pieces, one tuple per kept glyph in the
+// prepared order (`keptIds`), under its own name: what ParaView's ColorBy
+// may pick, in the data delivered to whichever process renders, so that a
+// new pick takes no new RequestData and no new glyphs. A piece without the
+// array (or with another component count) gives NaN.
+void addPointArrays(std::span<const PieceStart> starts, std::span<const std::uint32_t> keptIds, vtkPolyData* out) {
+  std::vector<vtkDataArray*> first;  // the first piece's array of each name
+  for (const PieceStart& s : starts) {
+    vtkPointData* pd = s.piece->data->GetPointData();
+    for (int a = 0; a < pd->GetNumberOfArrays(); ++a) {
+      vtkDataArray* array = pd->GetArray(a);
+      const char* name = array ? array->GetName() : nullptr;
+      if (!name || out->GetPointData()->HasArray(name) ||
+          std::any_of(first.begin(), first.end(), [&](vtkDataArray* f) { return std::string(f->GetName()) == name; }))
+        continue;
+      first.push_back(array);
+    }
+  }
+  for (vtkDataArray* like : first) {
+    vtkSmartPointer<vtkDataArray> copy;
+    copy.TakeReference(like->NewInstance());
+    copy->SetName(like->GetName());
+    const int nc = like->GetNumberOfComponents();
+    copy->SetNumberOfComponents(nc);
+    copy->SetNumberOfTuples(vtkIdType(keptIds.size()));
+    for (std::size_t k = 0; k < keptIds.size(); ++k) {
+      const auto at = std::upper_bound(starts.begin(), starts.end(), std::uint64_t(keptIds[k]),
+                                       [](std::uint64_t id, const PieceStart& s) { return id < s.firstId; });
+      const PieceStart& s = *(at - 1);
+      vtkDataArray* src = s.piece->data->GetPointData()->GetArray(like->GetName());
+      const auto local = vtkIdType(std::uint64_t(keptIds[k]) - s.firstId);
+      if (src && src->GetNumberOfComponents() == nc && local < src->GetNumberOfTuples())
+        copy->SetTuple(vtkIdType(k), local, src);
+      else
+        for (int c = 0; c < nc; ++c) copy->SetComponent(vtkIdType(k), c, NAN);
+    }
+    out->GetPointData()->AddArray(copy);
+  }
+}
+
 }  // namespace
 
 vtkSmartPointer<vtkPolyData> prepareGlyphInput(std::span<const Piece> pieces, bool composite,
@@ -174,6 +220,7 @@ vtkSmartPointer<vtkPolyData> prepareGlyphInput(std::span<const Piece> pieces, bo
   std::string problem;
   std::vector<std::uint32_t> blocks;  // (first id, flat index)
   std::uint64_t nextId = 0;
+  std::vector<PieceStart> starts;
   for (const Piece& piece : pieces) {
     const vtkIdType n = piece.data ? piece.data->GetNumberOfPoints() : 0;
     if (composite && n > 0 && !piece.tensors) {
@@ -186,6 +233,7 @@ vtkSmartPointer<vtkPolyData> prepareGlyphInput(std::span<const Piece> pieces, bo
       if (problem.empty()) problem = std::move(p);
       continue;
     }
+    if (n > 0) starts.push_back({nextId, &piece});
     if (composite && n > 0) {
       blocks.push_back(std::uint32_t(nextId));
       blocks.push_back(piece.flatIndex);
@@ -258,6 +306,7 @@ vtkSmartPointer<vtkPolyData> prepareGlyphInput(std::span<const Piece> pieces, bo
   out->SetPoints(points);
   out->GetPointData()->AddArray(tensorOut);
   out->GetPointData()->AddArray(ids);
+  if (kept > 0) addPointArrays(starts, std::span(f.ids.data(), f.ids.size()), out);
   out->GetFieldData()->AddArray(doubles(kSampleArray, info.sample.sorted));
   const double scalars[6] = {info.sample.maxAbs, info.sample.spacing, info.mdMin, info.mdMax, info.eigenMin,
                              info.eigenMax};
@@ -305,6 +354,17 @@ std::vector<std::uint32_t> blockTable(vtkPolyData* prepared) {
   auto* table = prepared ? vtkTypeUInt32Array::SafeDownCast(prepared->GetFieldData()->GetArray(kBlockArray)) : nullptr;
   if (!table) return {};
   return {table->GetPointer(0), table->GetPointer(0) + table->GetNumberOfTuples()};
+}
+
+std::vector<std::uint32_t> pointOfRecord(vtkPolyData* prepared, const tensor::GlyphSet& glyphs) {
+  const vtkIdType n = prepared ? prepared->GetNumberOfPoints() : 0;
+  auto* ids = n ? vtkTypeUInt32Array::SafeDownCast(prepared->GetPointData()->GetArray(kIdArray)) : nullptr;
+  if (!ids) return {};
+  std::vector<std::uint32_t> pointOfId(std::size_t(largestId(prepared)) + 1, 0);
+  for (vtkIdType j = 0; j < n; ++j) pointOfId[ids->GetValue(j)] = std::uint32_t(j);
+  std::vector<std::uint32_t> out(glyphs.glyphs.size());
+  for (std::size_t i = 0; i < out.size(); ++i) out[i] = pointOfId[glyphs.glyphs[i].id];
+  return out;
 }
 
 vtkIdType largestId(vtkPolyData* prepared) {

@@ -95,6 +95,10 @@ std::vector<std::uint32_t> blockTable(vtkPolyData* prepared);
 tensor::GlyphSet buildGlyphSet(vtkPolyData* prepared);
 SizingInfo sizingInfo(vtkPolyData* prepared);
 
+// Each record's point of the prepared input (the point whose id it has):
+// where a prepared point array's value for the record is.
+std::vector<std::uint32_t> pointOfRecord(vtkPolyData* prepared, const tensor::GlyphSet& glyphs);
+
 // The largest glyph id among the prepared points; -1 when none.
 vtkIdType largestId(vtkPolyData* prepared);
 

@@ -142,7 +142,14 @@ void HostComposite::draw(const render::Camera& cam, const render::GBuffer& targe
   gl_.Enable(GL_DEPTH_TEST);
   gl_.DepthFunc(GL_LEQUAL);
   gl_.DepthMask(GL_TRUE);
-  gl_.Disable(GL_BLEND);
+  const bool blend = out.kind == CompositeOutput::Kind::Lit && out.opacity < 1.0f;
+  program_.set("uOpacity", blend ? out.opacity : 1.0f);
+  if (blend) {
+    gl_.Enable(GL_BLEND);
+    gl_.BlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ZERO, GL_ONE);
+  } else {
+    gl_.Disable(GL_BLEND);
+  }
   gl_.BindTextureUnit(0, target.color());
   gl_.BindTextureUnit(1, target.depth());
   gl_.BindTextureUnit(2, target.id());

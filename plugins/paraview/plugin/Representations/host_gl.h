@@ -64,6 +64,9 @@ struct CompositeOutput {
   glm::vec3 constant{0.0f};
   GLuint blocks = 0;
   int blockCount = 0;
+  // Lit only: below 1, blended over the framebuffer (source alpha), the
+  // framebuffer's alpha kept.
+  float opacity = 1.0f;
 };
 
 // Draws the glyphs of `target` into the bound host framebuffer: colour as

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include <vtkCamera.h>
+#include <vtkDataArray.h>
 #include <vtkDataObject.h>
 #include <vtkHardwareSelector.h>
 #include <vtkInformation.h>
@@ -18,10 +19,15 @@
 #include <vtkObjectFactory.h>
 #include <vtkOpenGLRenderWindow.h>
 #include <vtkPolyData.h>
+#include <vtkPointData.h>
+#include <vtkProperty.h>
+#include <vtkActor.h>
 #include <vtkRenderer.h>
+#include <vtkScalarsToColors.h>
 
 #include "glyph_input.h"
 #include "host_gl.h"
+#include "lookup_colors.h"
 #include "property_check.h"
 #include "render/glyph_kind.h"
 #include "render/renderer.h"
@@ -41,6 +47,12 @@ struct GLState {
   std::unique_ptr<paraview::HostComposite> composite;
   vtkMTimeType uploaded = 0;  // input time of the records on the GPU
   GLuint blocks = 0;          // the composite input's block table (blockTable), or none
+  // What the colour scalars and table on the GPU were made from.
+  std::string scalarsArray;
+  vtkMTimeType scalarsInput = 0, tableTime = 0;
+  paraview::LookupReading scalarsReading, tableReading;
+  vtkScalarsToColors* tableOf = nullptr;
+  glm::dvec2 tableWindow{0.0, 1.0};
   ~GLState() {
     if (blocks) host.api.DeleteBuffers(1, &blocks);
   }
@@ -60,6 +72,7 @@ struct vtkTensorGlyphRayCastMapper::Internals {
   std::size_t count = 0;
   vtkIdType maxId = -1;  // the largest glyph id
   std::vector<std::uint32_t> blocks;  // composite input: (first id, flat index) pairs
+  std::vector<std::uint32_t> pointOfRecord;  // each record's point of the prepared input
   vtkMTimeType built = 0;  // input time of `glyphs`
   vtkPolyData* builtFrom = nullptr;
 
@@ -84,8 +97,38 @@ struct vtkTensorGlyphRayCastMapper::Internals {
     count = glyphs.glyphs.size();
     maxId = paraview::largestId(input);
     blocks = paraview::blockTable(input);
+    pointOfRecord = paraview::pointOfRecord(input, glyphs);
     builtFrom = input;
     built = t;
+    return true;
+  }
+
+  // ParaView's ColorBy into `p`: the array's values on the records and the
+  // lookup table's colours and range, each sent again only when what it was
+  // made from changed. False (p as it was) without an array or table, or
+  // with a categorical table (IndexedLookup), which maps no range.
+  bool colorByArray(GLState& g, vtkScalarsToColors* lut, const std::string& name, vtkPolyData* input,
+                    render::FrameParams& p) const {
+    vtkDataArray* array = name.empty() ? nullptr : input->GetPointData()->GetArray(name.c_str());
+    if (!array || !lut || lut->GetIndexedLookup()) return false;
+    const paraview::LookupReading reading = paraview::lookupReading(lut);
+    if (g.scalarsArray != name || g.scalarsInput != built || !(g.scalarsReading == reading)) {
+      g.renderer->setColorScalars(paraview::lookupScalars(array, pointOfRecord, reading), name);
+      g.scalarsArray = name;
+      g.scalarsInput = built;
+      g.scalarsReading = reading;
+    }
+    if (g.tableOf != lut || g.tableTime != lut->GetMTime() || !(g.tableReading == reading)) {
+      const paraview::LookupTable table = paraview::sampleLookupTable(lut, reading);
+      g.renderer->setColorTable(table.colors);
+      g.tableWindow = table.window;
+      g.tableOf = lut;
+      g.tableTime = lut->GetMTime();  // after MapValue, which may build the table
+      g.tableReading = reading;
+    }
+    p.color = render::ColorMode::Array;
+    p.colorTable = true;
+    p.colorWindow = g.tableWindow;
     return true;
   }
 };
@@ -204,6 +247,18 @@ double keyLightFactor(vtkRenderer* ren) {
 
 }  // namespace
 
+void vtkTensorGlyphRayCastMapper::SetColorArray(const char* name) {
+  const std::string n = name ? name : "";
+  if (n == this->ColorArray) return;
+  this->ColorArray = n;
+  this->Modified();
+}
+
+int vtkTensorGlyphRayCastMapper::GetRecordUploads() {
+  const auto& g = this->Impl->gl;
+  return g && g->renderer ? int(g->renderer->uploadCount()) : 0;
+}
+
 double vtkTensorGlyphRayCastMapper::GetResolvedScale() {
   auto* input = vtkPolyData::SafeDownCast(this->GetInputDataObject(0, 0));
   return resolve(*this, paraview::sizingInfo(input)).scale;
@@ -215,7 +270,7 @@ double* vtkTensorGlyphRayCastMapper::GetBounds() {
   return this->Bounds;
 }
 
-void vtkTensorGlyphRayCastMapper::Render(vtkRenderer* ren, vtkActor*) {
+void vtkTensorGlyphRayCastMapper::Render(vtkRenderer* ren, vtkActor* actor) {
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
   auto* input = vtkPolyData::SafeDownCast(this->GetInputDataObject(0, 0));
   if (!window || !input) return;
@@ -243,6 +298,7 @@ void vtkTensorGlyphRayCastMapper::Render(vtkRenderer* ren, vtkActor*) {
     if (g.uploaded != in.built) {
       g.renderer->upload(in.glyphs);
       g.uploaded = in.built;
+      g.scalarsArray.clear();  // an upload drops the renderer's colour scalars
       in.glyphs.glyphs = {};  // on the GPU now
       if (g.blocks) g.host.api.DeleteBuffers(1, &g.blocks);
       g.blocks = 0;
@@ -252,6 +308,7 @@ void vtkTensorGlyphRayCastMapper::Render(vtkRenderer* ren, vtkActor*) {
                                       in.blocks.data(), 0);
       }
     }
+    if (!ren->GetSelector() && actor) selection.output().opacity = float(actor->GetProperty()->GetOpacity());
     selection.output().blocks = g.blocks;
     selection.output().blockCount = int(in.blocks.size() / 2);
     int width = 0, height = 0, x0 = 0, y0 = 0;
@@ -278,6 +335,7 @@ void vtkTensorGlyphRayCastMapper::Render(vtkRenderer* ren, vtkActor*) {
     p.gamma = this->Gamma;
     p.march = {this->MarchIterations, this->MarchEpsilon};
     p.color = render::ColorMode(this->ColorMode);
+    this->ColoredByArray = in.colorByArray(g, this->LookupTable, this->ColorArray, input, p);
     p.ao.enabled = this->AmbientOcclusion;
     p.outline.enabled = this->Outlines;
     p.shadow.enabled = this->Shadows;

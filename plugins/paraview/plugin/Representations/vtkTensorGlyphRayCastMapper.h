@@ -10,6 +10,7 @@
 #define vtkTensorGlyphRayCastMapper_h
 
 #include <memory>
+#include <string>
 
 #include "TensorGlyphRayCastRepresentationsModule.h"
 #include "vtkMapper.h"
@@ -67,6 +68,18 @@ public:
   vtkSetMacro(Shadows, bool);
   vtkGetMacro(Shadows, bool);
 
+  // ParaView's ColorBy: the point array (of the input's, by name; empty:
+  // none) coloured through the mapper's LookupTable (vtkMapper's, the
+  // display's), in place of ColorMode's colours: the table's own colours
+  // and range, so that the glyphs show the scalar bar's colours. A new
+  // array, range or preset uploads no glyph records.
+  void SetColorArray(const char* name);
+  const char* GetColorArray() { return this->ColorArray.c_str(); }
+  // Whether the last frame coloured by ColorArray through the lookup table.
+  vtkGetMacro(ColoredByArray, bool);
+  // Glyph record uploads since construction (for tests: a colour change must not add one).
+  int GetRecordUploads();
+
   void Render(vtkRenderer* ren, vtkActor* act) override;
   void ReleaseGraphicsResources(vtkWindow* win) override;
   // The glyph centres' bounds grown by the largest glyph's reach.
@@ -101,6 +114,8 @@ protected:
   bool Outlines = false;
   bool Shadows = false;
   double LastBuildMilliseconds = 0.0;
+  std::string ColorArray;
+  bool ColoredByArray = false;
 
 private:
   vtkTensorGlyphRayCastMapper(const vtkTensorGlyphRayCastMapper&) = delete;

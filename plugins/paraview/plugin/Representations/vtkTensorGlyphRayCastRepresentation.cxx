@@ -5,6 +5,8 @@
 #include <vector>
 
 #include <vtkActor.h>
+#include <vtkOpenGLActor.h>
+#include <vtkProperty.h>
 #include <vtkAlgorithmOutput.h>
 #include <vtkCompositeDataIterator.h>
 #include <vtkCompositeDataSet.h>
@@ -18,6 +20,7 @@
 #include <vtkPointData.h>
 #include <vtkPolyData.h>
 #include <vtkRenderer.h>
+#include <vtkScalarsToColors.h>
 
 #include "color_legend.h"
 #include "glyph_input.h"
@@ -27,7 +30,35 @@
 
 vtkStandardNewMacro(vtkTensorGlyphRayCastRepresentation);
 
-vtkTensorGlyphRayCastRepresentation::vtkTensorGlyphRayCastRepresentation() {
+namespace {
+
+// The glyphs' actor. Opaque, it draws in the opaque pass as any actor. Below
+// an Opacity of 1 it is drawn last, over the frame (the overlay stage, before
+// ParaView's 2-D annotations, which a renderer of their own draws), blended
+// over the opaque and translucent geometry drawn before it: ParaView's
+// translucent pass peels depth layers with shaders of VTK's own mappers,
+// which the ray-cast glyphs are not, so the actor keeps out of it. The
+// mapper draws the nearest glyph surface only (a glyph behind a glyph is
+// hidden), and keeps its depth, for the view's depth compositing.
+class GlyphActor : public vtkOpenGLActor {
+ public:
+  static GlyphActor* New();
+  vtkTypeMacro(GlyphActor, vtkOpenGLActor);
+  vtkTypeBool HasTranslucentPolygonalGeometry() override { return 0; }
+  int RenderTranslucentPolygonalGeometry(vtkViewport*) override { return 0; }
+  int RenderOverlay(vtkViewport* viewport) override {
+    auto* ren = vtkRenderer::SafeDownCast(viewport);
+    if (!ren || ren->GetSelector() || !this->Mapper || this->GetIsOpaque() || !(this->Property->GetOpacity() > 0.0))
+      return 0;
+    this->Render(ren, this->Mapper);
+    return 1;
+  }
+};
+vtkStandardNewMacro(GlyphActor);
+
+}  // namespace
+
+vtkTensorGlyphRayCastRepresentation::vtkTensorGlyphRayCastRepresentation() : Actor(vtkSmartPointer<GlyphActor>::New()) {
   this->Actor->SetMapper(this->Mapper);
   // The active tensors unless the user picks another point array; the mask
   // (used only with UseMask) the active scalars unless another is picked.
@@ -129,10 +160,15 @@ int vtkTensorGlyphRayCastRepresentation::ProcessViewRequest(
     this->Mapper->SetInputConnection(vtkPVRenderView::GetPieceProducer(inInfo, this));
     // Only the representation in use renders: said when the glyphs are drawn.
     auto* controller = vtkMultiProcessController::GetGlobalController();
-    if (!this->ColorArray.empty() && this->ColorArray != this->ColorArraySaid &&
+    const bool cells = this->ColorAssociation != vtkDataObject::FIELD_ASSOCIATION_POINTS;
+    // GetLookupTable makes a default table where ParaView set none: asked only with an array chosen.
+    const bool categorical = !this->ColorArray.empty() && this->Mapper->GetLookupTable()->GetIndexedLookup();
+    if (!this->ColorArray.empty() && (cells || categorical) && this->ColorArray != this->ColorArraySaid &&
         (!controller || controller->GetLocalProcessId() == 0)) {
-      vtkWarningMacro(<< "ColorBy: the glyphs' colours follow TensorGlyphColorMode; colouring by '" << this->ColorArray
-                      << "' through ParaView's lookup table is not applied to them (docs/paraview.md)");
+      vtkWarningMacro(<< "ColorBy: '" << this->ColorArray << "' "
+                      << (cells ? "is not a point array; the glyphs stand for points"
+                                : "is coloured by categories (Interpret Values As Categories); the glyphs map a range")
+                      << ", and keep the colours of TensorGlyphColorMode");
       this->ColorArraySaid = this->ColorArray;
     }
   }
@@ -215,17 +251,24 @@ TG_FORWARD_SIZE(Clamp, double)
 #undef TG_FORWARD_SIZE
 
 void vtkTensorGlyphRayCastRepresentation::SetOpacity(double v) {
-  if (v == this->Opacity) return;
-  this->Opacity = v;
-  if (v < 1.0)
-    vtkWarningMacro(<< "SetOpacity: the ray-cast glyphs are drawn opaque; Opacity " << v
-                    << " is not applied to them (docs/paraview.md)");
+  if (!(v >= 0.0 && v <= 1.0)) {
+    vtkErrorMacro(<< "SetOpacity: Opacity must be within [0, 1]; kept " << this->Actor->GetProperty()->GetOpacity());
+    return;
+  }
+  this->Actor->GetProperty()->SetOpacity(v);
 }
 
-void vtkTensorGlyphRayCastRepresentation::SetColorArrayName(int, int, int, int, const char* name) {
+void vtkTensorGlyphRayCastRepresentation::SetColorArrayName(int, int, int, int association, const char* name) {
   this->ColorArray = name ? name : "";
-  if (this->ColorArray.empty()) this->ColorArraySaid.clear();
+  this->ColorAssociation = association;
+  this->ColorArraySaid.clear();
+  const bool points = association == vtkDataObject::FIELD_ASSOCIATION_POINTS;
+  this->Mapper->SetColorArray(points ? this->ColorArray.c_str() : "");
 }
+
+void vtkTensorGlyphRayCastRepresentation::SetLookupTable(vtkScalarsToColors* lut) { this->Mapper->SetLookupTable(lut); }
+
+int vtkTensorGlyphRayCastRepresentation::GetRecordUploads() { return this->Mapper->GetRecordUploads(); }
 
 // What is selected is new data: RequestData again.
 void vtkTensorGlyphRayCastRepresentation::SetStride(int v) {

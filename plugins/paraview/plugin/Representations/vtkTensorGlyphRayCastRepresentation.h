@@ -10,12 +10,14 @@
 #include "TensorGlyphRayCastRepresentationsModule.h"
 #include "vtkDoubleArray.h"
 #include "vtkNew.h"
+#include "vtkSmartPointer.h"
 #include "vtkPVDataRepresentation.h"
 
 class vtkActor;
 class vtkDataArray;
 class vtkDataSet;
 class vtkPolyData;
+class vtkScalarsToColors;
 class vtkTensorGlyphRayCastMapper;
 
 class TENSORGLYPHRAYCASTREPRESENTATIONS_EXPORT vtkTensorGlyphRayCastRepresentation
@@ -51,14 +53,19 @@ public:
   void SetAmbientOcclusion(bool v);
   void SetOutlines(bool v);
   void SetShadows(bool v);
-  // The GeometryRepresentation's Opacity, forwarded to every subproxy: the
-  // glyphs are drawn opaque, and a value below 1 is said to be ignored
-  // (docs/paraview.md) rather than ignored in silence.
+  // The GeometryRepresentation's Opacity, forwarded to every subproxy: below
+  // 1 the glyphs' nearest surface is blended over what ParaView drew behind
+  // it, after its opaque and translucent passes (GlyphActor in the .cxx).
   void SetOpacity(double v);
-  // The GeometryRepresentation's ColorArrayName (ParaView's ColorBy), shared
-  // likewise: the glyphs' colours follow ColorMode, and an array chosen is
-  // said not to colour them when the glyphs are next drawn.
+  // The GeometryRepresentation's ColorArrayName (ParaView's ColorBy) and
+  // LookupTable, shared likewise: a point array colours the glyphs through
+  // that table (vtkTensorGlyphRayCastMapper::SetColorArray); none ("Solid
+  // Color") leaves them ColorMode's colours. A cell array or a categorical
+  // table is said not to apply.
   void SetColorArrayName(int idx, int port, int connection, int association, const char* name);
+  void SetLookupTable(vtkScalarsToColors* lut);
+  // Glyph record uploads of the mapper (for tests).
+  int GetRecordUploads();
 
   vtkTensorGlyphRayCastMapper* GetMapper();
 
@@ -82,7 +89,7 @@ protected:
   vtkDataArray* MaskOf(vtkDataSet* piece);
 
   vtkNew<vtkTensorGlyphRayCastMapper> Mapper;
-  vtkNew<vtkActor> Actor;
+  vtkSmartPointer<vtkActor> Actor;
   vtkNew<vtkPolyData> Prepared;
   std::string LegendTitle;
   double LegendRange[2] = {0.0, 1.0};
@@ -90,8 +97,8 @@ protected:
   int Stride = 1;
   bool UseMask = false;
   double MaskMin = 0.5;
-  double Opacity = 1.0;
   std::string ColorArray;  // ParaView's ColorBy array, or empty
+  int ColorAssociation = 0;  // vtkDataObject::FIELD_ASSOCIATION_*
   std::string ColorArraySaid;  // the one last said not to apply
 
 private:
