@@ -430,15 +430,9 @@ class Renderer {
     // Freed before the next is made (peak memory): if making it throws, the
     // next render builds again instead of drawing with no session.
     session_.reset();
-    app::SessionHooks hooks;
-    hooks.loadWhole = [this, &o](const io::ReadOptions& read) {
-      app::RenderOptions whole = o;
-      whole.field.read = read;
-      return loadSource(source_, whole).field;
-    };
     session_ = std::make_unique<app::RenderSession>(o, std::move(scene), std::move(meshes), true, "python",
                                                     [](io::TensorField& f) { f.releaseSamples(); },
-                                                    source_.progress->sink(), hooks);
+                                                    source_.progress->sink());
     session_->context().releaseCurrent();  // made current on this thread; the next call may come from another
     colorValuesSent_ = nullptr;  // a new session has no colour values yet
     reloadKeys_ = reloadKeys(table, options);

@@ -106,6 +106,15 @@ int cmdRender(int argc, const char** argv) {
                  "the camera may be inside the glyphs and see none; a smaller --scale draws them\n",
                  typicalPx, o.width, o.height);
   }
+  // An automatic sign window pinned by one peak (app/stress_defaults.h).
+  if (params.color == render::ColorMode::Sign && !params.colorWindow) {
+    if (const std::string hint = signWindowHint(renderer.colorWindow(params).y, session.magnitudes().sorted,
+                                                params.legend.units);
+        !hint.empty()) {
+      if (sink) sink({}, 0, 0, {});
+      std::fprintf(stderr, "tensorglyph render: %s\n", hint.c_str());
+    }
+  }
   const double frames = 1.0 + o.repeat;
   if (sink) sink("rendering", 0, frames, "frames");
   const auto t3 = Clock::now();

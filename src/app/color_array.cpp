@@ -12,7 +12,7 @@
 namespace tg::app {
 
 std::optional<ColorValues> colorArrayValues(const std::string& name, const io::TensorField& field,
-                                            const tensor::GlyphSet& set) {
+                                            const tensor::GlyphSet& set, std::optional<io::ScalarVolume>& volume) {
   if (name.empty()) return std::nullopt;
   if (!field.pointArrays.empty())
     throw UsageError("--color-array: " + field.path + " has no point array named \"" + name + "\"; its point arrays: " +
@@ -31,12 +31,14 @@ std::optional<ColorValues> colorArrayValues(const std::string& name, const io::T
   if (!field.grid)
     throw UsageError("--color-array: " + field.path + " has no point arrays; a VTK input names one, a volume input "
                      "gives a scalar volume file on its grid");
-  std::error_code ec;
-  if (!std::filesystem::is_regular_file(name, ec))
-    throw UsageError("--color-array: \"" + name + "\" is no file; for this volume input give a scalar volume on its " +
-                     "grid (a VTK input names a point array)");
-  const io::ScalarVolume v = io::readScalarVolume(name, field.grid->dims);
-  return ColorValues{render::scalarsByRecord(std::span(set.glyphs.data(), set.glyphs.size()), v.values),
+  if (!volume) {
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(name, ec))
+      throw UsageError("--color-array: \"" + name + "\" is no file; for this volume input give a scalar volume on " +
+                       "its grid (a VTK input names a point array)");
+    volume = io::readScalarVolume(name, field.grid->dims);
+  }
+  return ColorValues{render::scalarsByRecord(std::span(set.glyphs.data(), set.glyphs.size()), volume->values),
                      std::filesystem::path(name).filename().string()};
 }
 

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "io/core/selection.h"
 #include "io/field/tensor_field.h"
 #include "tensor/glyph.h"
 
@@ -21,12 +22,14 @@ struct ColorValues {
 };
 
 // --color-array `name` for `set`, built from `field` (before its samples are
-// released); none for an empty name. UsageError naming --color-array and the
-// file's point arrays when it has none of that name, or when `name` is no
-// file for an input without point arrays; io::InputError for a volume file
-// that is not on the tensors' grid.
+// released); none for an empty name. A scalar volume file is read into
+// `volume` when that is empty, and taken from it when not: the whole field's
+// range and the drawn glyphs' values come from one read (app::attachWholeField).
+// UsageError naming --color-array and the file's point arrays when it has
+// none of that name, or when `name` is no file for an input without point
+// arrays; io::InputError for a volume file that is not on the tensors' grid.
 std::optional<ColorValues> colorArrayValues(const std::string& name, const io::TensorField& field,
-                                            const tensor::GlyphSet& set);
+                                            const tensor::GlyphSet& set, std::optional<io::ScalarVolume>& volume);
 
 // Values given one per input tensor (Python's color=array): `inputs` is the
 // field's tensor count before any selection (TensorField::totalPoints).

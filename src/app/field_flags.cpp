@@ -92,9 +92,9 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
     return;
   }
   // Reloads: the whole field is read again for it.
-  ap.arg("--sizes-from W").help("field (default): sizes, the magnitude mapping and the clamp from the whole field, "
-                                "so a tensor is drawn at one size on every slice, ROI or stride; selection: from "
-                                "the selected tensors only")
+  ap.arg("--sizes-from W").help("field (default): sizes, the magnitude mapping, the clamp and the colour windows "
+                                "from the whole field, so a tensor is drawn at one size and in one colour on every "
+                                "slice, ROI or stride; selection: all from the selected tensors only")
       .oneOf(kSizesFromNames).action([&](Args a) {
         const std::string w = a[1];
         if (w != "field" && w != "selection")

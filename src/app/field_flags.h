@@ -20,7 +20,7 @@ struct FieldFlags {
   tensor::ScaleParams sizing;  // --magnitude, --lambda0, --clamp; mode and factor from the two above
   bool maskMinGiven = false;   // --mask-min needs --mask
   bool magnitudeGiven = false;      // --magnitude: a stress field's default does not apply
-  bool sizesFromSelection = false;  // --sizes-from selection: ranges from the selection, not the whole field
+  bool sizesFromSelection = false;  // --sizes-from selection: sizes and colour ranges from the selection, not the whole field
 
   // --array --layout --frame --mask --mask-min --confidence-min --slice --stride
   // --roi --cl-min --cp-min --min-eigenvalue, and with `scaling` also

@@ -9,7 +9,6 @@
 
 #include "app/cli_common.h"
 #include "app/color_array.h"
-#include "app/field_ranges.h"
 #include "app/field_flags.h"
 #include "app/mesh_flags.h"
 #include "app/names.h"
@@ -41,7 +40,9 @@ RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io
   const auto t0 = Clock::now();
   glyphs_ = tensor::buildGlyphs(scene_.field.positions, scene_.field.tensors, scene_.field.ids, 0, o.field.glyph, progress);
   checkDrawable(glyphs_, scene_.field.path);
-  const std::optional<ColorValues> colors = colorArrayValues(o.field.read.colorArray, scene_.field, glyphs_);
+  const std::optional<ColorValues> colors =
+      colorArrayValues(o.field.read.colorArray, scene_.field, glyphs_, scene_.colorVolume);
+  scene_.colorVolume.reset();
   buildMs_ = msSince(t0);
   if (progress) progress("preparing", 0, 0, {});
   const tensor::FieldStats stats = sizingStats(scene_, glyphs_);
@@ -75,9 +76,7 @@ RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io
   const auto t1 = Clock::now();
   renderer_->upload(glyphs_);
   if (colors) renderer_->setColorScalars(colors->byRecord, colors->name);
-  const std::function<io::TensorField(const io::ReadOptions&)> whole =
-      hooks.loadWhole ? hooks.loadWhole : [&o](const io::ReadOptions& r) { return loadScene(o.input, r).field; };
-  if (const auto ranges = wholeFieldColorRanges(o, whole)) renderer_->setColorRanges(*ranges);
+  if (scene_.wholeField) renderer_->setColorRanges(scene_.wholeField->colors);
   addMeshes(*renderer_, ctx_->api(), *lib_, meshes, o.mesh.params);
   meshes.clear();
   ctx_->api().Finish();

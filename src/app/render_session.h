@@ -47,15 +47,13 @@ struct SessionHooks {
   std::function<void(const render::UnderlayVolume&)> underlayLoaded;
   // Default: an offscreen context of o.backend at o.width x o.height.
   std::function<std::unique_ptr<gl::Context>(const RenderOptions&)> makeContext;
-  // Reads the whole field for its colour ranges when the load selected part
-  // of it (app/field_ranges.h). Default: loadScene(o.input, read).
-  std::function<io::TensorField(const io::ReadOptions&)> loadWhole;
 };
 
 class RenderSession {
  public:
   // Builds the glyphs from `scene` (checkDrawable), reads the underlay and
-  // uploads everything. `keepGlyphs`: keep the records on the CPU, which a
+  // uploads everything. The colour ranges are the scene's whole field's where
+  // it has them (attachWholeField), else the loaded glyphs'. `keepGlyphs`: keep the records on the CPU, which a
   // change of scale needs to refit the camera's depth range; `render` drops
   // them to hold peak memory down. `beforeUpload` may take the field's
   // samples (a pick table) or free them before the GPU copy is made.

@@ -1,6 +1,7 @@
 #include "app/scene.h"
 
 #include "app/scale/cli_values.h"
+#include "app/color_array.h"
 #include "app/field_flags.h"
 
 #include "data-synthetic/generators.h"
@@ -9,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
 #include <glm/geometric.hpp>
 #include <glm/trigonometric.hpp>
@@ -57,22 +59,20 @@ Scene loadScene(const std::string& input, const io::ReadOptions& opt) {
 
 namespace {
 
-// The options that left tensors of the loaded field out, " --slice --mask": "" when none did.
-std::string leftOutBy(const io::TensorField& f, const FieldFlags& flags) {
-  const io::Selection& sel = flags.read.selection;
+// The options of the load that left tensors of `f` out, " --slice --mask": "" when none did.
+std::string loadLeftOutBy(const io::TensorField& f, const io::Selection& sel) {
   std::string by = std::string(sel.slice ? " --slice" : "") + (sel.stride > 1 ? " --stride" : "") +
                    (sel.roiWC ? " --roi" : "");
   if (!sel.maskPath.empty() && f.masked > 0) by += " --mask";
-  if (flags.glyph.clMin > 0) by += " --cl-min";
-  if (flags.glyph.cpMin > 0) by += " --cp-min";
-  return f.unselected > 0 || !by.empty() ? by : std::string();
+  return by;
 }
 
 }  // namespace
 
 void attachWholeField(Scene& s, const FieldFlags& flags, const std::function<io::TensorField()>& whole) {
   s.wholeField.reset();
-  const std::string by = leftOutBy(s.field, flags);
+  const std::string byLoad = loadLeftOutBy(s.field, flags.read.selection);
+  const std::string by = byLoad + (flags.glyph.clMin > 0 ? " --cl-min" : "") + (flags.glyph.cpMin > 0 ? " --cp-min" : "");
   if (by.empty()) {
     s.sizesFrom = "the whole field (" + std::to_string(s.field.size()) + " tensors)";
     return;
@@ -81,7 +81,9 @@ void attachWholeField(Scene& s, const FieldFlags& flags, const std::function<io:
     s.sizesFrom = "the selection (" + by.substr(1) + "; --sizes-from selection)";
     return;
   }
-  io::TensorField f = whole();
+  // A shape filter alone leaves every tensor loaded: no second read.
+  const io::TensorField read = byLoad.empty() ? io::TensorField{} : whole();
+  const io::TensorField& f = byLoad.empty() ? s.field : read;
   // The shape filters are a selection too: every tensor counts.
   tensor::GlyphOptions g = flags.glyph;
   g.clMin = g.cpMin = 0;
@@ -90,7 +92,11 @@ void attachWholeField(Scene& s, const FieldFlags& flags, const std::function<io:
   // samples drawn, which depends on the grid, the stride and the slice's
   // axis but not on which slice: a thinned slice's glyphs grow to the
   // thinned spacing (io::Selector::keptSpacing).
-  s.wholeField = WholeField{tensor::fieldStats(set), s.field.sampleSpacing};
+  WholeField w{tensor::fieldStats(set), s.field.sampleSpacing, render::colorRanges(set)};
+  if (const auto values = colorArrayValues(flags.read.colorArray, f, set, s.colorVolume))
+    w.colors.of[std::size_t(render::ColorMode::Array)] =
+        render::finiteRange(std::span(values->byRecord.data(), values->byRecord.size()));
+  s.wholeField = std::move(w);
   s.sizesFrom = "the whole field (" + std::to_string(set.glyphs.size()) + " tensors, before" + by +
                 "; --sizes-from selection for the selection's own)";
 }

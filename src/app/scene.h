@@ -9,6 +9,7 @@
 #include "app/stress_defaults.h"
 #include "io/core/readers.h"
 #include "io/core/selection.h"
+#include "render/color_scalar.h"
 #include "tensor/field_stats.h"
 #include "tensor/glyph_scale.h"
 #include "view/camera.h"
@@ -17,17 +18,26 @@ namespace tg::app {
 
 struct FieldFlags;
 
-// The statistics sizes are worked out from (tensor/field_stats.h) when they
-// are not those of the loaded glyphs: the whole field's, loaded again
-// without the selection that left some of it out.
+// The ranges sizes and colours are worked out from when they are not those
+// of the loaded glyphs: the whole field's, before the selection that left
+// some of it out (slice, stride, ROI, mask, --cl-min/--cp-min; an FA
+// threshold is a frame parameter and never leaves glyphs out). A selection
+// chooses which glyphs are drawn, not their sizes or what their colours
+// mean, so two slices of a field, or a slice beside the whole, share one
+// scale and one window. Both come from one pass over the same glyphs
+// (attachWholeField), so they cannot disagree on what the field is.
 struct WholeField {
   tensor::FieldStats stats;
   double sampleSpacing = 0;
+  render::ColorRanges colors;  // every colour source's range, --color-array's included
 };
 
 struct Scene {
   io::TensorField field;
-  std::optional<WholeField> wholeField;  // none: the loaded glyphs are what sizes come from
+  std::optional<WholeField> wholeField;  // none: the loaded glyphs are what the ranges come from
+  // --color-array's scalar volume, once read for the whole field's range:
+  // the session colours the glyphs from it instead of reading it again.
+  std::optional<io::ScalarVolume> colorVolume;
   std::string sizesFrom;                 // where they come from, for info and --verbose
   std::optional<StressDefaults> stress;  // set by decideStressDefaults
   std::optional<render::CameraDesc> preferredCamera;  // used when no camera flag is given
@@ -46,10 +56,13 @@ Scene defaultScene();
 // is a UsageError naming the valid range.
 Scene loadScene(const std::string& input, const io::ReadOptions& opt);
 
-// Field-wide size ranges: unless `flags` asks --sizes-from selection, and
-// when the selection (slice, stride, ROI, mask) or --cl-min/--cp-min left
-// tensors out of s, the statistics of `whole()` (the field loaded again
-// without them) are attached. Sets s.sizesFrom either way.
+// Field-wide ranges (WholeField): unless `flags` asks --sizes-from
+// selection, and when the selection (slice, stride, ROI, mask) or
+// --cl-min/--cp-min left tensors out of s, the sizes' statistics and the
+// colour ranges of the whole field are attached, from one build of its
+// glyphs: of `whole()` (the field read again without the selection) when
+// the load left tensors out, else of s.field itself, whose tensors a shape
+// filter leaves all loaded. Sets s.sizesFrom either way.
 void attachWholeField(Scene& s, const FieldFlags& flags, const std::function<io::TensorField()>& whole);
 // The same for `input` (a file, or "" for the built-in scene), read again with `read` less its selection.
 void attachWholeField(Scene& s, const FieldFlags& flags, const std::string& input, io::ReadOptions read);

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
 
 namespace tg::app {
 
@@ -30,6 +31,19 @@ SceneLook stressLook() {
 std::string stressDefaultsLine(const StressDefaults& d) {
   return "stress defaults (" + d.why + "): superquadric glyphs, --color sign with a legend, --magnitude log; " +
          "--glyph, --color, --no-legend and --magnitude override them";
+}
+
+std::string signWindowHint(double peak, const std::vector<double>& sorted, const std::string& units) {
+  const double typical = tensor::quantile(sorted, kSignHintPercentile);
+  if (!(typical > 0.0) || !(peak > kSignPeakRatio * typical)) return {};
+  char buf[400];
+  const std::string unit = units.empty() ? "" : " " + units;
+  std::snprintf(buf, sizeof buf,
+                "--color sign: the window is the peak |normal stress| %.4g%s, %.0fx the %.0fth percentile %.3g, so "
+                "most glyphs are drawn nearly white; --color-range %.3g %.3g colours them (stronger ones then "
+                "saturate), or --color vonmises",
+                peak, unit.c_str(), peak / typical, 100.0 * kSignHintPercentile, typical, -typical, typical);
+  return buf;
 }
 
 }  // namespace tg::app

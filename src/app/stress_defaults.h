@@ -8,6 +8,7 @@
 // Kirsch plate 64^2 0.2% vs 0%). Explicit options always win.
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/look_flags.h"
 #include "io/field/tensor_field.h"
@@ -30,5 +31,16 @@ SceneLook stressLook();
 inline constexpr tensor::Magnitude kStressMagnitude = tensor::Magnitude::Log;
 // One line for `info` and --verbose: what was chosen and why.
 std::string stressDefaultsLine(const StressDefaults& d);
+
+// The sign colour's automatic window is -M..M, M the field's largest
+// |eigenvalue|, and stays so: the legend states it, and the concentration
+// it came from keeps its full colour. Where that peak stands far above the
+// body (a load point or fixed node: the kitten's 1030 against a 95th
+// percentile of 64), nearly every glyph is drawn pale, so `render` says so
+// in one line naming a window to fix (--color-range, at the percentile)
+// and --color vonmises. "" where the peak is within kSignPeakRatio of the
+// percentile. `sorted`: the whole field's magnitudes (tensor::MagnitudeSample).
+inline constexpr double kSignHintPercentile = 0.95, kSignPeakRatio = 4.0;
+std::string signWindowHint(double peak, const std::vector<double>& sorted, const std::string& units);
 
 }  // namespace tg::app

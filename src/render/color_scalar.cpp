@@ -139,6 +139,13 @@ ColorRanges colorRanges(std::span<const tensor::GlyphRecord> glyphs) {
   return parts[0];
 }
 
+ColorRanges colorRanges(const tensor::GlyphSet& set) {
+  ColorRanges r = colorRanges(std::span(set.glyphs.data(), set.glyphs.size()));
+  r.of[std::size_t(ColorMode::MD)] = glm::dvec2(set.mdMin, set.mdMax);
+  r.maxAbsEigenvalue = set.maxAbsEigenvalue;
+  return r;
+}
+
 glm::dvec2 finiteRange(std::span<const float> values) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   glm::dvec2 r(inf, -inf);

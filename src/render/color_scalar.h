@@ -44,6 +44,9 @@ struct ColorRanges {
   void add(const ColorRanges& o);  // the union: of pieces, of ranks
 };
 ColorRanges colorRanges(std::span<const tensor::GlyphRecord> glyphs);
+// The same over a set's records, with the set's MD range and largest
+// |eigenvalue|: what an upload takes, and the whole field's ranges.
+ColorRanges colorRanges(const tensor::GlyphSet& set);
 // The finite values' (min, max); (+inf, -inf) for none.
 glm::dvec2 finiteRange(std::span<const float> values);
 

@@ -58,9 +58,7 @@ void GlyphRenderer::upload(const tensor::GlyphSet& set) {
   ranges_.eigenMax = set.eigenvalueMax;
   // MD and the largest |eigenvalue| as the set gives them (a caller may set
   // them field-wide there, as the ParaView plugin does across ranks).
-  ranges_.color = render::colorRanges(std::span(set.glyphs.data(), set.glyphs.size()));
-  ranges_.color.of[std::size_t(ColorMode::MD)] = glm::dvec2(set.mdMin, set.mdMax);
-  ranges_.color.maxAbsEigenvalue = set.maxAbsEigenvalue;
+  ranges_.color = render::colorRanges(set);
   ranges_.scalarName.clear();
   hasScalars_ = false;
   if (params_) path_->setColorWindow(colorWindow(*params_));

@@ -15,13 +15,6 @@ double magnitudeOf(const GlyphRecord& g) {
   return std::max(std::abs(double(g.eigenvalues[0])), std::abs(double(g.eigenvalues[2])));
 }
 
-// The value at fraction q of a sorted sample (nearest rank).
-double quantile(const std::vector<double>& sorted, double q) {
-  if (sorted.empty()) return 0.0;
-  const auto k = std::size_t(std::clamp(q, 0.0, 1.0) * double(sorted.size() - 1) + 0.5);
-  return sorted[std::min(k, sorted.size() - 1)];
-}
-
 std::string format(const char* fmt, auto... args) {
   char buf[512];
   std::snprintf(buf, sizeof buf, fmt, args...);
@@ -79,6 +72,12 @@ MagnitudeSample magnitudeSample(const FieldStats& stats, double spacing, std::st
 
 MagnitudeSample sampleMagnitudes(const GlyphSet& set, double spacing) {
   return magnitudeSample(fieldStats(set), spacing);
+}
+
+double quantile(const std::vector<double>& sorted, double q) {
+  if (sorted.empty()) return 0.0;
+  const auto k = std::size_t(std::clamp(q, 0.0, 1.0) * double(sorted.size() - 1) + 0.5);
+  return sorted[std::min(k, sorted.size() - 1)];
 }
 
 ResolvedScale resolveScale(const ScaleParams& p, const MagnitudeSample& sample) {

@@ -96,6 +96,8 @@ struct ResolvedScale {
   std::string why;             // one line for --verbose and info
 };
 ResolvedScale resolveScale(const ScaleParams& p, const MagnitudeSample& sample);
+// The value at fraction q of a sorted sample (nearest rank); 0 for none.
+double quantile(const std::vector<double>& sorted, double q);
 
 // The default ScaleParams' scale: the glyph at the 90th percentile of sizes
 // is one sample spacing across. 1 when undefined.

@@ -140,7 +140,9 @@ TEST(Sizes, ScaleIsRelativeAloneAndParaViewsDiameterWhenAbsolute) {
 // stderr line naming the option; the defaults draw neither.
 TEST(Sizes, SubPixelAndClampWarnings) {
   const std::string in = pointLoad().string();
-  const std::string render = "render " + in + " -o " + (dir() / "w.png").string() + " --size 96 64";
+  // The point load's singular peak pins the sign window, which render says
+  // (Sizes.ASignWindowPinnedByAPeakSaysSo): a fixed one keeps that line out.
+  const std::string render = "render " + in + " -o " + (dir() / "w.png").string() + " --size 96 64 --color-range -1 1";
   const CmdResult quiet = run(render + " --glyph ellipsoid");
   ASSERT_EQ(quiet.code, 0) << quiet.err;
   EXPECT_EQ(quiet.err, "");
@@ -242,4 +244,41 @@ TEST(Sizes, StressDefaultsOnStressFieldsOnly) {
   const CmdResult x = run(render + " --color dec --magnitude linear --no-legend");
   ASSERT_EQ(x.code, 0) << x.err;
   EXPECT_NE(x.err.find("magnitude linear"), std::string::npos) << x.err;
+}
+
+// The kitten under stress defaults: the sign window is its peak |stress|
+// (1030, at the fixed nodes), so the body is drawn nearly white. The window
+// stays the peak, and render says so in one line with the window that
+// colours the body; that window does colour it (many times the orange and
+// blue pixels), and neither it, --color vonmises nor the Kirsch plate (whose
+// 3S peak is no outlier) draws the line.
+TEST(Sizes, ASignWindowPinnedByAPeakSaysSo) {
+  TG_REQUIRE_REAL_DATA();
+  const std::string kitten = tg::test::realData("tsv-kitten-stress/kitten-stress.vtu");
+  const fs::path png = dir() / "kitten.png";
+  const std::string render = "render " + kitten + " -o " + png.string() + " --size 320 240";
+  const CmdResult pale = run(render);
+  ASSERT_EQ(pale.code, 0) << pale.err;
+  std::smatch m;
+  const std::regex hint("--color sign: the window is the peak \\|normal stress\\| ([0-9.e+]+), [0-9]+x the 95th "
+                        "percentile ([0-9.e+]+), .*; --color-range (-[0-9.e+]+) ([0-9.e+]+) colours them.*--color "
+                        "vonmises\n");
+  ASSERT_TRUE(std::regex_search(pale.err, m, hint)) << pale.err;
+  EXPECT_NEAR(std::stod(m[1]), 1027.14, 0.5);  // the largest |eigenvalue| (info: eigenvalue 3 down to -1027.14)
+  EXPECT_LT(4.0 * std::stod(m[2]), std::stod(m[1]));
+  EXPECT_EQ(std::count(pale.err.begin(), pale.err.end(), '\n'), 1) << pale.err;
+  const auto [paleOrange, paleBlue] = signPixels(png);
+  const CmdResult fixed = run(render + " --color-range " + m[3].str() + " " + m[4].str());
+  ASSERT_EQ(fixed.code, 0) << fixed.err;
+  EXPECT_EQ(fixed.err, "");
+  const auto [orange, blue] = signPixels(png);
+  EXPECT_GT(orange + blue, 3 * (paleOrange + paleBlue)) << paleOrange << " " << paleBlue << " / " << orange << " " << blue;
+  const CmdResult vm = run(render + " --color vonmises");
+  ASSERT_EQ(vm.code, 0) << vm.err;
+  EXPECT_EQ(vm.err, "");
+  const fs::path plate = dir() / "kirsch-hint.vti";
+  ASSERT_EQ(run("synth kirsch --n 48 -o " + plate.string()).code, 0);
+  const CmdResult k = run("render " + plate.string() + " -o " + png.string() + " --size 96 64");
+  ASSERT_EQ(k.code, 0) << k.err;
+  EXPECT_EQ(k.err.find("--color sign"), std::string::npos) << k.err;
 }

@@ -277,7 +277,7 @@ TEST_F(ColorBy, AFixedWindowShowsOnTheLegend) {
 }
 
 // Two slices of one field, and the whole of it, share one colour window:
-// the ranges come from the whole field before the slice (app/field_ranges.h).
+// the ranges come from the whole field before the slice (app::attachWholeField).
 // The point load's stress concentrates under the load, so each slice's own
 // range differs from the field's.
 TEST_F(ColorBy, TwoSlicesShareTheFieldsWindow) {
@@ -289,7 +289,9 @@ TEST_F(ColorBy, TwoSlicesShareTheFieldsWindow) {
     o.input = path;
     o.width = 64, o.height = 48;
     if (z >= 0) o.field.read.selection.slice = io::SliceSpec{2, z, 1};
-    app::RenderSession s(o, app::loadScene(o.input, o.field.read), {}, true, "test");
+    app::Scene scene = app::loadScene(o.input, o.field.read);
+    app::attachWholeField(scene, o.field, o.input, o.field.read);
+    app::RenderSession s(o, std::move(scene), {}, true, "test");
     render::FrameParams p;
     p.color = render::ColorMode::MD;
     md.push_back(s.renderer().colorWindow(p));

@@ -275,13 +275,19 @@ TEST(LegendLayout, ScaleBarReadsThroughTheMagnitudeMapping) {
   tensor::SizeMapping shape = lin;
   shape.magnitude = tensor::Magnitude::Shape;
   shape.lambda0 = 2.0;
-  EXPECT_NE(last(shape, 0.5).first.find("shape only: every glyph 2 across"), std::string::npos)
+  EXPECT_NE(last(shape, 0.5).first.find("shape only: every glyph 2 world units across"), std::string::npos)
       << last(shape, 0.5).first;
 
   tensor::SizeMapping clamped = lin;
   clamped.maxRadiusWC = 1e-6;  // far below a pixel: the bar keeps its length and says so
-  EXPECT_NE(last(clamped, 0.5).first.find("glyphs at most 2e-06 across"), std::string::npos)
+  EXPECT_NE(last(clamped, 0.5).first.find("glyphs at most 2e-06 world units across"), std::string::npos)
       << last(clamped, 0.5).first;
+  // Lengths are in the positions' units where the file names them, as the bar's own line.
+  p.lengthUnits = "mm";
+  EXPECT_NE(last(clamped, 0.5).first.find("glyphs at most 2e-06 mm across"), std::string::npos)
+      << last(clamped, 0.5).first;
+  EXPECT_NE(last(shape, 0.5).first.find("shape only: every glyph 2 mm across"), std::string::npos)
+      << last(shape, 0.5).first;
 }
 
 // Off: no pass, no bytes, and the frame bit-identical to one that never had a

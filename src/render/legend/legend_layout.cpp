@@ -281,12 +281,19 @@ void underlayBar(Builder& b, LegendLayout& out, const UnderlayKey& key, const Le
   tickLabels(b, font, out.underlayValues.back(), barLen);
 }
 
+// A world length in the positions' units: "2.28 mm", "2.28 world units".
+std::string lengthText(double lengthWC, const LegendParams& p) {
+  const std::string unit = p.lengthUnits.empty() ? (lengthWC == 1.0 ? "world unit" : "world units") : p.lengthUnits;
+  return number(lengthWC) + " " + unit;
+}
+
 // What the bar's length means for the glyphs, under the magnitude mapping
 // (tensor::mappedMagnitude, inverted) and the clamp.
-std::string barMeaning(const ScaleBarChoice& c, const LegendInputs& in, const std::string& units) {
+std::string barMeaning(const ScaleBarChoice& c, const LegendInputs& in, const LegendParams& p) {
   const tensor::SizeMapping& s = in.sizing;
+  const std::string& units = p.units;
   if (s.maxRadiusWC > 0.0 && 0.5 * c.lengthWC > s.maxRadiusWC)
-    return "glyphs at most " + number(2.0 * s.maxRadiusWC) + " across";  // the clamp
+    return "glyphs at most " + lengthText(2.0 * s.maxRadiusWC, p) + " across";  // the clamp
   const double mapped = c.eigenvalue;  // the mapped size f(m) whose glyph is the bar
   switch (s.magnitude) {
     case tensor::Magnitude::Linear: break;
@@ -296,7 +303,7 @@ std::string barMeaning(const ScaleBarChoice& c, const LegendInputs& in, const st
       return withUnits("bar = glyph of eigenvalue " + number(m) + " (log sizes)", units);
     }
     case tensor::Magnitude::Shape:
-      return "shape only: every glyph " + number(2.0 * in.scale * s.lambda0) + " across";
+      return "shape only: every glyph " + lengthText(2.0 * in.scale * s.lambda0, p) + " across";
   }
   return withUnits("bar = glyph of eigenvalue " + number(mapped), units);
 }
@@ -311,15 +318,14 @@ void scaleBar(Builder& b, LegendLayout& out, const LegendParams& p, const Legend
   const ScaleBarChoice c = chooseScaleBar(cam, in.scale, len);
   if (!(c.lengthWC > 0.0)) return;
   const float k = b.k();
-  const std::string unit = c.lengthWC == 1.0 ? "world unit" : "world units";
-  b.line(number(c.lengthWC) + " " + (p.lengthUnits.empty() ? unit : p.lengthUnits));
+  b.line(lengthText(c.lengthWC, p));
   b.skip(3 * k);
   out.hasScaleBar = true;
   out.scale = c;
   out.scaleBar = {0, b.y(), float(std::round(c.pixels)), b.y() + 8 * k};
   b.widen(out.scaleBar.x1);
   b.skip(out.scaleBar.height() + 3 * k);
-  b.line(barMeaning(c, in, p.units));
+  b.line(barMeaning(c, in, p));
 }
 
 }  // namespace
