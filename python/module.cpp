@@ -19,6 +19,7 @@
 
 #include "app/scale/cli_values.h"
 #include "app/field_flags.h"
+#include "app/frame_check.h"
 #include "app/scale/option_table.h"
 #include "app/output_check.h"
 #include "app/render_options.h"
@@ -425,6 +426,8 @@ class Renderer {
     if (loaded.skippedOverflow)
       loadWarnings_.push_back(loaded.path + ": skipped " + std::to_string(loaded.skippedOverflow) +
                               " tensors whose values overflow single precision (beyond 3.4e38)");
+    if (const std::string w = app::frameWarning(app::checkFrame(loaded, o.field.read)); !w.empty())
+      loadWarnings_.push_back(loaded.path + ": " + w);
     std::vector<io::MeshData> meshes = o.mesh.read(source_.path, "python");
     if (session_) previousUploads_ += session_->renderer().uploadCount();
     // Freed before the next is made (peak memory): if making it throws, the

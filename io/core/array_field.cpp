@@ -195,6 +195,7 @@ TensorField fieldFromVolume(const ArrayRef& tensors, std::string_view layout, co
   // A voxel-to-world affine as nibabel and DIPY hand it: NIfTI's, RAS+.
   f.space = "RAS (the affine's, as NIfTI's)";
   f.tensorToWC = map.tensorToWC;
+  f.otherFrames = otherFrames(*named, g.axesWC, true);
   f.frame = std::string(tensorFrameName(*named)) + ": " + map.description;
   ComponentLayout cl;
   cl.count = six ? 6 : 9;
@@ -229,6 +230,7 @@ TensorField fieldFromVolume(const ArrayRef& tensors, std::string_view layout, co
 std::string inapplicableArrayOption(const ReadOptions& opt) {
   if (!opt.arrayName.empty()) return "--array";
   if (opt.confidenceGiven) return "--confidence-min";
+  if (!opt.tensorAxes.empty()) return "--tensor-axes";  // arrays are reordered in NumPy
   return "";
 }
 

@@ -261,4 +261,13 @@ FrameMap tensorFrameMap(TensorFrame frame, const double axesWC[9], bool fromAffi
   return m;
 }
 
+std::vector<FrameChoice> otherFrames(TensorFrame applied, const double axesWC[9], bool fromAffine) {
+  const auto mapOf = [&](TensorFrame f) { return tensorFrameMap(f, axesWC, fromAffine).tensorToWC; };
+  const auto own = mapOf(applied);
+  std::vector<FrameChoice> out;
+  for (TensorFrame f : {TensorFrame::Voxel, TensorFrame::Fsl, TensorFrame::World})
+    if (auto m = mapOf(f); m != own) out.push_back({tensorFrameName(f), m});
+  return out;
+}
+
 }  // namespace tg::io

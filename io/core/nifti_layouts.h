@@ -10,6 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include "io/field/tensor_field.h"
+
 namespace tg::io {
 
 // The axes the stored tensors are expressed in.
@@ -54,6 +56,9 @@ struct FrameMap {
   std::string description;
 };
 FrameMap tensorFrameMap(TensorFrame frame, const double axesWC[9], bool fromAffine);
+// The frames other than `applied` whose map differs from its map here (fsl
+// and voxel agree where det < 0), for TensorField::otherFrames.
+std::vector<FrameChoice> otherFrames(TensorFrame applied, const double axesWC[9], bool fromAffine);
 
 // Whether a reading of the six stored values is plausible. A reading is
 // the tensors one layout makes of them. Two criteria, each applying to some

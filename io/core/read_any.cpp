@@ -36,7 +36,9 @@ void promiseData(const char* who, const std::string& path, const ReadOptions& op
 
 TensorField readTensorFieldInProcess(const std::string& path, const ReadOptions& opt) {
   checkInputFile("readTensorField", path);
-  return formatOf(path).readTensors(path, opt);
+  TensorField f = formatOf(path).readTensors(path, opt);
+  applyTensorAxes(f, opt.tensorAxes);
+  return f;
 }
 
 TensorField readTensorField(const std::string& path, const ReadOptions& opt) {
@@ -70,6 +72,7 @@ TensorField readTensorField(const std::string& path, const ReadOptions& opt) {
     guarded.onPromise = nullptr;
     readRawSamples(format.tensorReader, path, *raw, guarded, field, raw->dataFd.get());
   }
+  applyTensorAxes(field, opt.tensorAxes);
   return field;
 }
 

@@ -35,7 +35,7 @@ using Clock = std::chrono::steady_clock;
 constexpr std::uint32_t kWireMagic = 0x54474631;  // "TGF1"
 // Every member of TensorField crosses the process boundary in writeField and
 // readField; a new member changes this size and must be carried there too.
-static_assert(sizeof(TensorField) == 648 + sizeof(util::MappedArray<float>) + 3 * sizeof(std::string), "TensorField changed: carry the new member in writeField/readField");
+static_assert(sizeof(TensorField) == 648 + sizeof(util::MappedArray<float>) + 3 * sizeof(std::string) + sizeof(std::vector<FrameChoice>), "TensorField changed: carry the new member in writeField/readField");
 
 void writeField(WireOut& w, const TensorField& f) {
   w.pod(kWireMagic);
@@ -45,6 +45,12 @@ void writeField(WireOut& w, const TensorField& f) {
   for (const auto* m : {&f.measurementFrame, &f.tensorToWC}) {
     w.pod(m->has_value());
     if (*m) w.pod(**m);
+  }
+  w.pod(std::uint64_t(f.otherFrames.size()));
+  for (const FrameChoice& c : f.otherFrames) {
+    w.str(c.name);
+    w.pod(c.tensorToWC.has_value());
+    if (c.tensorToWC) w.pod(*c.tensorToWC);
   }
   w.pod(f.hasConfidence);
   w.pod(std::uint64_t(f.warnings.size()));
@@ -68,6 +74,12 @@ TensorField readField(WireIn& r) {
     *s = r.str();
   for (auto* m : {&f.measurementFrame, &f.tensorToWC})
     if (r.pod<bool>()) *m = r.pod<std::array<double, 9>>();
+  const auto frames = r.pod<std::uint64_t>();
+  for (std::uint64_t k = 0; k < frames && k < 8; ++k) {
+    FrameChoice c{r.str(), {}};
+    if (r.pod<bool>()) c.tensorToWC = r.pod<std::array<double, 9>>();
+    f.otherFrames.push_back(std::move(c));
+  }
   f.hasConfidence = r.pod<bool>();
   const auto warnings = r.pod<std::uint64_t>();
   for (std::uint64_t k = 0; k < warnings && k < 1000; ++k) f.warnings.push_back(r.str());

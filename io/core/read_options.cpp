@@ -19,6 +19,8 @@ std::string inapplicableOption(InputFormat format, const ReadOptions& opt) {
   unsigned takes = 0;
   for (const InputFormatRow& row : inputFormats())
     if (row.format == format && format != InputFormat::Unknown) takes |= row.options;
+  // Every tensor format takes it; only the built-in scene has no stored axes.
+  if (format == InputFormat::Unknown && !opt.tensorAxes.empty()) return "--tensor-axes";
   if (!(takes & kLayoutOption) && !opt.layout.empty()) return "--layout";
   if (!(takes & kFrameOption) && !opt.frame.empty()) return "--frame";
   if (!(takes & kArrayOption) && !opt.arrayName.empty()) return "--array";

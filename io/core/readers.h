@@ -29,6 +29,9 @@ struct ReadOptions {
   std::string layout;
   // NIfTI tensor frame: "" (the layout's own), "voxel", "fsl" or "world".
   std::string frame;
+  // --tensor-axes: the stored tensors' axes as a signed permutation
+  // ("-x,y,z"; tensor/axis_map.h), for every format; "": as stored.
+  std::string tensorAxes;
   Selection selection;
   // Memory the load may take (0: no limit); readers refuse a header whose
   // promised data would exceed it before allocating anything.

@@ -6,6 +6,8 @@
 #include <numeric>
 #include <tuple>
 
+#include "tensor/axis_map.h"
+
 namespace tg::io {
 
 void TensorField::addFull(std::uint32_t id, const double p[3], const double t[9]) {
@@ -48,6 +50,38 @@ void congruence(const double t[9], const double s[6], double out[6]) {
   auto tdt = [&](int r, int c) { return td[3 * r] * t[3 * c] + td[3 * r + 1] * t[3 * c + 1] + td[3 * r + 2] * t[3 * c + 2]; };
   const double w[6] = {tdt(0, 0), tdt(0, 1), tdt(0, 2), tdt(1, 1), tdt(1, 2), tdt(2, 2)};
   std::copy(w, w + 6, out);
+}
+
+void applyTensorAxes(TensorField& f, const std::string& axes) {
+  const std::optional<tensor::AxisMap> map = axes.empty() ? std::nullopt : tensor::axisMapNamed(axes);
+  if (!map || *map == tensor::AxisMap{}) return;
+  // D_WC = T P D Pᵀ Tᵀ = M D_WC Mᵀ with M = T P Tᵀ, for the orthogonal T the
+  // readers apply (none: the identity).
+  const std::array<double, 9> p = tensor::axisMatrix(*map);
+  const std::array<double, 9> t = f.tensorToWC.value_or(std::array<double, 9>{1, 0, 0, 0, 1, 0, 0, 0, 1});
+  std::array<double, 9> tp{}, m{};
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c)
+      for (int k = 0; k < 3; ++k) tp[std::size_t(3 * r + c)] += t[std::size_t(3 * r + k)] * p[std::size_t(3 * k + c)];
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c)
+      for (int k = 0; k < 3; ++k) m[std::size_t(3 * r + c)] += tp[std::size_t(3 * r + k)] * t[std::size_t(3 * c + k)];
+  for (std::size_t s = 0; s < f.size(); ++s) {
+    float* x = &f.tensors[6 * s];
+    double d[6] = {x[0], x[1], x[2], x[3], x[4], x[5]};
+    congruence(m.data(), d, d);
+    for (int k = 0; k < 6; ++k) x[k] = float(d[k]);
+  }
+  f.tensorToWC = tp;
+  for (FrameChoice& c : f.otherFrames) {
+    std::array<double, 9> cp{};
+    const std::array<double, 9> ct = c.tensorToWC.value_or(std::array<double, 9>{1, 0, 0, 0, 1, 0, 0, 0, 1});
+    for (int r = 0; r < 3; ++r)
+      for (int cc = 0; cc < 3; ++cc)
+        for (int k = 0; k < 3; ++k) cp[std::size_t(3 * r + cc)] += ct[std::size_t(3 * r + k)] * p[std::size_t(3 * k + cc)];
+    c.tensorToWC = cp;
+  }
+  f.frame += (f.frame.empty() ? "" : "; ") + std::string("stored axes read as ") + axes + " (--tensor-axes)";
 }
 
 bool tensorLikeArray(int nc, const std::string& name) {

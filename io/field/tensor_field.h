@@ -34,6 +34,13 @@ struct GridInfo {
   double directions[9] = {1, 0, 0, 0, 1, 0, 0, 0, 1};  // row-major: column k is axis k in WC
 };
 
+// A frame --frame could name for a volume, and the map it would apply (none:
+// the identity), for the frame check (app/frame_check.h).
+struct FrameChoice {
+  std::string name;
+  std::optional<std::array<double, 9>> tensorToWC;
+};
+
 struct TensorField {
   std::string path;
   std::string description;  // dataset type and size, for `info`
@@ -47,6 +54,9 @@ struct TensorField {
   // D_WC = T D Tᵀ (none: the identity; tensors were stored in WC).
   std::string frame;
   std::optional<std::array<double, 9>> tensorToWC;  // row-major T
+  // Volumes whose frame --frame chooses (NIfTI, arrays): the other frames
+  // whose T differs from this one's.
+  std::vector<FrameChoice> otherFrames;
   bool hasConfidence = false;  // the format gives each tensor a confidence (masked NRRD)
   std::vector<std::string> warnings;  // one line each, without the file name
   // Huge-page storage that grows without copies (util::MappedArray).
@@ -139,6 +149,11 @@ bool tensorLikeArray(int components, const std::string& name);
 // A 2-D tensor as a full row-major 3x3: 4 components XX YY ZZ XY (as
 // OpenGeoSys writes them), or 3 XX YY XY (ZZ = 0); XZ = YZ = 0.
 void planarTensor(int components, const double* t, double full[9]);
+
+// --tensor-axes (tensor/fibre_coherence.h, AxisMap): the stored tensors'
+// axes read as `axes` ("-x,y,z"), composed into tensorToWC and the
+// tensors; "" or "x,y,z" changes nothing. The caller has checked the name.
+void applyTensorAxes(TensorField& f, const std::string& axes);
 
 // Median nearest-neighbour distance over a sample of up to 512 points.
 double estimateSampleSpacing(std::span<const float> positions);

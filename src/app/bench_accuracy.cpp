@@ -161,7 +161,7 @@ int benchAccuracy(int argc, const char** argv) {
   o.field.read.progress = sink;
   Scene scene = loadScene(o.input, o.field.read);
   if (sink) sink({}, 0, 0, {});
-  reportLoad(scene.field, "bench accuracy");
+  reportLoad(scene.field, "bench accuracy", o.field.read);
   const tensor::GlyphSet glyphs =
       tensor::buildGlyphs(scene.field.positions, scene.field.tensors, scene.field.ids, 0, o.field.glyph, sink);
   if (sink) sink("reference", 0, 0, {});

@@ -43,7 +43,7 @@ int cmdInfo(int argc, const char** argv) {
   const io::TensorField& f = scene.field;
   checkLoaded(f, flags.read);
   if (flags.read.progress) flags.read.progress({}, 0, 0, {});
-  reportLoad(f, "info");
+  const FrameCheck frameCheck = reportLoad(f, "info", flags.read);
   const tensor::GlyphSet g = tensor::buildGlyphs(f.positions, f.tensors, f.ids, 0, flags.glyph, flags.read.progress);
   attachWholeField(scene, flags, input, flags.read);
   const tensor::FieldStats stats = sizingStats(scene, g);
@@ -121,6 +121,7 @@ int cmdInfo(int argc, const char** argv) {
     const tensor::FramingBox frame = tensor::framingBox(g, !f.grid, sized.typicalRadiusWC);
     std::printf("size: %s\nframing: %s\n", sized.why.c_str(), frame.why.c_str());
   }
+  std::printf("%s", frameCheckReport(frameCheck).c_str());
   // Every kind of the table reads the eigen-decomposed record these tensors made.
   std::printf("glyph kinds: %s\n", render::glyphKindNames().c_str());
   // Load and eigen-decomposition both done, both buffers alive: the

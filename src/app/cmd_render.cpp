@@ -48,7 +48,7 @@ int cmdRender(int argc, const char** argv) {
   attachWholeField(loaded, o.field, o.input, read);
   const double loadMs = msSince(t0);
   if (sink) sink({}, 0, 0, {});  // before the load's warnings
-  reportLoad(loaded.field, "render");
+  reportLoad(loaded.field, "render", read);
   std::vector<io::MeshData> meshes = o.mesh.read(o.input, "render");
   // --pick keeps the samples (app/pick.h): 40 bytes a tensor; else they go
   // before the upload.

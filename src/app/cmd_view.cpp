@@ -109,7 +109,7 @@ int cmdView(int argc, const char** argv) {
   refuseOutputsOverInputs(scriptShots, inputs);
   Scene scene = loadScene(o.input, o.field.read);
   attachWholeField(scene, o.field, o.input, o.field.read);
-  reportLoad(scene.field, "view");
+  reportLoad(scene.field, "view", o.field.read);
   std::vector<io::MeshData> meshes = o.mesh.read(o.input, "view");
   checkScriptMeshes(script, meshes.size(), o.script);
   const std::size_t meshCount = meshes.size();

@@ -5,9 +5,11 @@
 #include <stdexcept>
 
 #include "app/cli_common.h"
+#include "app/frame_check.h"
 #include "app/scale/option_ranges.h"
 #include "io/core/format_table.h"
 #include "io/core/nifti_layouts.h"
+#include "tensor/axis_map.h"
 
 namespace tg::app {
 namespace {
@@ -42,6 +44,10 @@ void FieldFlags::addTo(OptionTable& ap, bool scaling) {
   ap.arg("--frame F").help("NIfTI tensor axes: voxel, fsl (voxel, i reversed when det > 0) or world; default: the "
                            "layout's (fsl: fsl, mrtrix: world, else voxel)")
       .oneOf(io::kTensorFrameChoices).action([&](Args a) { read.frame = a[1]; });
+  ap.arg("--tensor-axes A,B,C").help("read the stored tensors' axes as these: a signed permutation of x, y, z (the "
+                                     "components' axes), e.g. -x,y,z mirrors x (a b-table fitted with x flipped), "
+                                     "y,x,z swaps x and y; the frame check suggests one when fibres cohere better")
+      .action([&](Args a) { read.tensorAxes = a[1]; });
   ap.arg("--mask FILE").help("scalar volume on the same grid (" + io::extensionList(io::kScalarUse) + ")").action([&](Args a) {
     sel.maskPath = a[1];
   });
@@ -146,6 +152,9 @@ void FieldFlags::validate() const {
                      io::layoutChoices(io::kNiftiInput | io::kVtkInput | io::kArrayInput));
   if (!read.frame.empty() && !io::tensorFrameNamed(read.frame))
     throw UsageError("--frame: unknown frame \"" + read.frame + "\"; choose " + io::kTensorFrameChoices);
+  if (!read.tensorAxes.empty() && !tensor::axisMapNamed(read.tensorAxes))
+    throw UsageError("--tensor-axes: \"" + read.tensorAxes + "\" is not a signed permutation of x, y, z; e.g. -x,y,z "
+                     "or y,x,z");
   if (sizing.lambda0 && sizing.magnitude == tensor::Magnitude::Linear)
     throw UsageError("--lambda0 applies to --magnitude log or shape only");
 }
@@ -202,7 +211,7 @@ void checkDrawable(const tensor::GlyphSet& g, const std::string& path) {
                          " of them, after single-precision rounding): no glyph has a size to draw");
 }
 
-void reportLoad(const io::TensorField& f, const char* command) {
+FrameCheck reportLoad(const io::TensorField& f, const char* command, const io::ReadOptions& read) {
   const std::string path = printable(f.path);
   for (const std::string& w : f.warnings)
     std::fprintf(stderr, "tensorglyph %s: %s: %s\n", command, path.c_str(), printable(w).c_str());
@@ -213,6 +222,10 @@ void reportLoad(const io::TensorField& f, const char* command) {
     std::fprintf(stderr,
                  "tensorglyph %s: %s: skipped %zu tensors whose values overflow single precision (beyond 3.4e38)\n",
                  command, path.c_str(), f.skippedOverflow);
+  FrameCheck check = checkFrame(f, read);
+  if (const std::string w = frameWarning(check); !w.empty())
+    std::fprintf(stderr, "tensorglyph %s: %s: %s\n", command, path.c_str(), w.c_str());
+  return check;
 }
 
 }  // namespace tg::app

@@ -4,6 +4,7 @@
 #include <optional>
 #include <string>
 
+#include "app/frame_check.h"
 #include "app/scale/option_table.h"
 
 #include "io/core/readers.h"
@@ -46,7 +47,8 @@ void checkLoaded(const io::TensorField& f, const io::ReadOptions& opt);
 void checkDrawable(const tensor::GlyphSet& g, const std::string& path);
 
 // Prints a loaded field's warnings and skipped count on stderr,
-// "tensorglyph COMMAND: FILE: ...", one line each.
-void reportLoad(const io::TensorField& f, const char* command);
+// "tensorglyph COMMAND: FILE: ...", one line each, and the frame check's
+// warning (app/frame_check.h) for a field read with `read`; returns the check.
+FrameCheck reportLoad(const io::TensorField& f, const char* command, const io::ReadOptions& read);
 
 }  // namespace tg::app

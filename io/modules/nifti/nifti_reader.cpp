@@ -427,6 +427,7 @@ TensorField impl::readNifti(const std::string& path, const ReadOptions& opt) {
   const FrameMap map = tensorFrameMap(conv.frame, a, affine);
   g.tensorToWC = map.tensorToWC;
   f.tensorToWC = map.tensorToWC;
+  f.otherFrames = otherFrames(conv.frame, a, affine);
   f.frame = std::string(tensorFrameName(conv.frame)) + " (" + conv.frameSource + "): " + map.description;
   f.description = "NIfTI-" + std::to_string(niftiVersion(path)) + " volume, " + std::to_string(g.dims[0]) +
                   "x" + std::to_string(g.dims[1]) + "x" + std::to_string(g.dims[2]) + ", " +
