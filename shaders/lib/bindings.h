@@ -42,5 +42,6 @@
 #define TG_SSBO_LEGEND_VERTICES 7    // not 0: the records stay bound for the next frame
 #define TG_SSBO_COLOR_SCALARS 8      // lib/glyph_color.glsl: per-glyph scalars, indexed like the records
 #define TG_SSBO_MESH_VERTICES 9
+#define TG_SSBO_TRACT_POINTS 10      // tract.vert: streamlines, separated by w = 0
 
 #endif
