@@ -53,13 +53,16 @@ std::vector<io::TractData> TractFlags::read(const char* command) const {
   std::vector<io::TractData> tracts;
   for (const std::string& f : files) {
     io::TractData t = io::readTracts(f);
+    if (render::drawableStreamlines(t.starts) == 0)
+      throw io::InputError("readTracts: " + t.path + ": nothing to draw: no streamline has two or more points" +
+                           (t.skippedNonFinite ? " (" + std::to_string(t.skippedNonFinite) +
+                                                     " skipped for a NaN/Inf point)"
+                                               : std::string()));
     if (!t.warning.empty())
       std::fprintf(stderr, "tensorglyph %s: %s: %s\n", command, printable(t.path).c_str(), printable(t.warning).c_str());
     if (t.skippedNonFinite)
       std::fprintf(stderr, "tensorglyph %s: %s: %zu streamlines skipped: a point is NaN/Inf or beyond single precision\n",
                    command, printable(t.path).c_str(), t.skippedNonFinite);
-    if (render::drawableStreamlines(t.starts) == 0)
-      throw io::InputError("readTracts: " + t.path + ": nothing to draw: no streamline has two or more points");
     tracts.push_back(std::move(t));
   }
   return tracts;
