@@ -30,7 +30,7 @@ void TractFlags::addTo(OptionTable& ap) {
       });
   ap.arg("--tract-width W")
       .help("tube diameter in world units (mm for DTI); never thinner than a pixel on screen")
-      .range(ranges::kPositiveFloat).byDefault(formatNumber(d.widthWC)).action([this, given](Args a) {
+      .range(ranges::kTractWidth).byDefault(formatNumber(d.widthWC)).action([this, given](Args a) {
         given("--tract-width");
         params.widthWC = float(parseDouble(a[0], a[1]));
       });
