@@ -167,6 +167,11 @@ TEST(TractsCli, HostileTractFilesFailInOneLine) {
   const CmdResult warned = run("render " + kFibres + " --tracts " + tck("mixed.tck", mixed).string() + " -o " + out.string());
   EXPECT_EQ(warned.code, 0) << warned.err;
   EXPECT_NE(warned.err.find("1 streamlines skipped: a point is NaN/Inf"), std::string::npos) << warned.err;
+  // A tract file as the tensor input says where it belongs.
+  const CmdResult asInput = run("render " + tck("input.tck", good).string() + " -o " + out.string());
+  EXPECT_EQ(asInput.code, 1) << asInput.err;
+  EXPECT_NE(asInput.err.find("MRtrix tracks holds streamlines, not tensors: give it with --tracts"), std::string::npos)
+      << asInput.err;
   // Misuse of the flags: exit 2 before anything is read.
   for (const auto& [args, what] :
        {std::pair<std::string, std::string>{"--tract-width 2", "--tract-width needs --tracts"},
