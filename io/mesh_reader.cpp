@@ -407,7 +407,13 @@ TractData impl::readPolylines(const std::string& path, std::uint64_t budget, con
   if (!pd) failTracts(std::string("a ") + read.data->GetClassName() + " holds no polylines (tracts are POLYDATA LINES)");
   vtkCellArray* lines = pd->GetLines();
   if (!lines || lines->GetNumberOfCells() == 0) failTracts("no polylines (LINES) to draw as tracts");
-  checkCellPoints(pd, path);
+  try {
+    checkCellPoints(pd, path);
+  } catch (const InputError& e) {  // in this reader's words
+    const std::string what = e.what();
+    if (what.rfind("readMesh: ", 0) != 0) throw;
+    throw InputError("readTracts" + what.substr(8));
+  }
   if (std::uint64_t(lines->GetNumberOfConnectivityIds()) > kMaxTractPoints)
     failTracts(std::to_string(lines->GetNumberOfConnectivityIds()) + " points on its lines, more than the limit of " +
                std::to_string(kMaxTractPoints));
