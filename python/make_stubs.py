@@ -11,7 +11,7 @@ STR = {"glyph", "color", "array", "slice", "scale_mode", "magnitude", "underlay_
        "legend_corner", "units", "length_units", "backend", "colormap", "color_array"}
 INT = {"iterations", "stride", "ao_samples", "shadow_map_size", "tessellate"}
 # Repeatable on the command line: a list gives one value each.
-REPEATABLE = {"plane": "str", "mesh": PATH, "plane_at": "Sequence[float]"}
+REPEATABLE = {"plane": "str", "mesh": PATH, "tracts": PATH, "plane_at": "Sequence[float]"}
 # The module's own arguments (SOURCE below) already take these names.
 OWN = {"layout", "frame"}
 # Options whose value is a name from a fixed list, with the names: Literal.

@@ -18,6 +18,7 @@ void checkVtkLegacyHeader(const std::string& path);
 void checkVtkXmlHeader(const std::string& path);
 ScalarVolume readVtiScalar(const std::string& path, const int* dims);
 MeshData readMesh(const std::string& path, MeshSource source, std::uint64_t memoryBudget, const PromiseFn& promise);
+TractData readPolylines(const std::string& path, std::uint64_t memoryBudget, const PromiseFn& promise);
 std::string encodeVtk(const TensorField& f, const std::string& path);
 
 // tensorglyph-teem.so: io/modules/teem/nrrd_reader.cpp, io/modules/teem/nrrd_files.cpp, io/modules/teem/nrrd_writer.cpp.

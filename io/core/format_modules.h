@@ -19,11 +19,12 @@
 #include "io/core/mesh_reader.h"
 #include "io/core/read_guard.h"
 #include "io/core/readers.h"
+#include "io/core/tract_reader.h"
 
 namespace tg::io {
 
 struct VtkFormats {
-  static constexpr int kVersion = 2;
+  static constexpr int kVersion = 3;
   int version;
   TensorField (*readVtk)(const std::string& path, const ReadOptions& opt);
   void (*checkLegacyHeader)(const std::string& path);
@@ -32,6 +33,8 @@ struct VtkFormats {
   // readMesh's work, in whichever process calls it; `promise` may be empty.
   MeshData (*readMesh)(const std::string& path, MeshSource source, std::uint64_t memoryBudget,
                        const PromiseFn& promise);
+  // readTracts's work on a .vtk or .vtp's polylines; `promise` may be empty.
+  TractData (*readTracts)(const std::string& path, std::uint64_t memoryBudget, const PromiseFn& promise);
   // The bytes writeVtk puts in `path` (its extension chooses the format).
   std::string (*encodeVtk)(const TensorField& f, const std::string& path);
 };

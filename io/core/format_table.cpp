@@ -40,19 +40,21 @@ const std::vector<InputFormatRow>& inputFormats() {
        "nifti", readNifti, "readNifti", readNiftiScalar, nullptr},
       {InputFormat::Mif, "MRtrix", {".mif", ".mih"}, kTensorUse | kScalarUse, 0, "", readMif, "readMif",
        readMifScalar, mifDataFiles},
-      {InputFormat::Vtk, "VTK", {".vtk"}, kTensorUse | kSurfaceUse | kFemUse, kLayoutOption | kArrayOption, "vtk",
+      {InputFormat::Vtk, "VTK", {".vtk"}, kTensorUse | kSurfaceUse | kFemUse | kTractUse, kLayoutOption | kArrayOption, "vtk",
        readVtk, "readVtk", nullptr, nullptr},
       {InputFormat::Vtk, "VTK", {".vti"}, kTensorUse | kScalarUse, kLayoutOption | kArrayOption, "vtk", readVtk,
        "readVtk", readVtiScalar, nullptr},
       {InputFormat::Vtk, "VTK", {".vtu"}, kTensorUse | kVolumeMeshUse | kFemUse, kLayoutOption | kArrayOption, "vtk",
        readVtk, "readVtk", nullptr, nullptr},
-      {InputFormat::Vtk, "VTK", {".vtp"}, kTensorUse | kSurfaceUse, kLayoutOption | kArrayOption, "vtk", readVtk,
+      {InputFormat::Vtk, "VTK", {".vtp"}, kTensorUse | kSurfaceUse | kTractUse, kLayoutOption | kArrayOption, "vtk", readVtk,
        "readVtk", nullptr, nullptr},
       {InputFormat::Vtk, "VTK", {".vts"}, kTensorUse | kVolumeMeshUse, kLayoutOption | kArrayOption, "vtk", readVtk,
        "readVtk", nullptr, nullptr},
       {InputFormat::Unknown, "STL", {".stl"}, kSurfaceUse, 0, "vtk"},
       {InputFormat::Unknown, "OBJ", {".obj"}, kSurfaceUse, 0, "vtk"},
       {InputFormat::Unknown, "PLY", {".ply"}, kSurfaceUse, 0, "vtk"},
+      {InputFormat::Unknown, "MRtrix tracks", {".tck"}, kTractUse, 0, ""},
+      {InputFormat::Unknown, "TrackVis", {".trk"}, kTractUse, 0, ""},
   };
   return rows;
 }

@@ -29,6 +29,7 @@ enum FormatUse : unsigned {
   kSurfaceUse = 4,     // --mesh, drawn as it is
   kVolumeMeshUse = 8,  // --mesh, its outer surface
   kFemUse = 16,        // --mesh-from-input: an unstructured grid with cells
+  kTractUse = 32,      // --tracts: streamlines (polylines)
 };
 
 struct InputFormatRow {

@@ -16,6 +16,9 @@ namespace {
 const InputFormatRow& formatOf(const std::string& path) {
   const InputFormatRow* row = inputFormatRowOf(path);
   if (row && row->readTensors) return *row;
+  if (row && row->uses & kTractUse)
+    throw InputError("readTensorField: " + path + ": " + row->name + " holds streamlines, not tensors: give it with "
+                     "--tracts beside a tensor input");
   throw InputError("readTensorField: " + path + ": unknown extension \"" + shownExtension(path) +
                    "\"; supported: " + extensionList(kTensorUse));
 }

@@ -43,5 +43,6 @@
 #define TG_SSBO_COLOR_SCALARS 8      // lib/glyph_color.glsl: per-glyph scalars, indexed like the records
 #define TG_SSBO_MESH_VERTICES 9
 #define TG_SSBO_COLOR_TABLE 10       // lib/glyph_color.glsl: a host's colour table (GlyphRenderer::setColorTable)
+#define TG_SSBO_TRACT_POINTS 11      // tract.vert: streamlines, separated by w = 0
 
 #endif

@@ -41,7 +41,8 @@ std::string formatsHelp() {
                                                            {io::kScalarUse, "--mask/--underlay"},
                                                            {io::kSurfaceUse, "--mesh"},
                                                            {io::kVolumeMeshUse, "--mesh (outer surface)"},
-                                                           {io::kFemUse, "--mesh-from-input"}};
+                                                           {io::kFemUse, "--mesh-from-input"},
+                                                           {io::kTractUse, "--tracts"}};
   static const std::pair<unsigned, const char*> kOptions[] = {{io::kLayoutOption, "--layout"},
                                                               {io::kFrameOption, "--frame"},
                                                               {io::kArrayOption, "--array"},

@@ -22,6 +22,7 @@
 #include "io/core/image_writer.h"
 #include "render/legend/legend_pass.h"
 #include "render/mesh_item.h"
+#include "render/tract_item.h"
 
 namespace tg::app {
 namespace {
@@ -203,6 +204,11 @@ int cmdRender(int argc, const char** argv) {
       if (const auto* m = dynamic_cast<const render::MeshItem*>(item.get()))
         std::fprintf(stderr, "  %s: %zu triangles, %s, %.1f MiB of GPU memory\n", printable(m->label()).c_str(), m->triangleCount(),
                      render::meshModeName(m->params().mode), double(m->gpuBytes()) / (1024.0 * 1024.0));
+      else if (const auto* t = dynamic_cast<const render::TractItem*>(item.get()))
+        std::fprintf(stderr, "  %s: %zu streamlines, %zu segments, %s, %.1f MiB of GPU memory\n",
+                     printable(t->label()).c_str(), t->streamlineCount(), t->segmentCount(),
+                     t->params().byDirection ? "coloured by direction" : "one colour",
+                     double(t->gpuBytes()) / (1024.0 * 1024.0));
     if (params.shadow.enabled)
       std::fprintf(stderr, "  shadows: map %d x %d texels, penumbra %.3g, %.1f MiB of GPU memory in all\n",
                    renderer.shadowMapSize(), renderer.shadowMapSize(), double(params.shadow.penumbra),

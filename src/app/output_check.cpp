@@ -10,6 +10,7 @@ std::vector<NamedPath> sceneInputs(const std::string& input, const SceneFlags& f
   std::vector<NamedPath> inputs = {{"INPUT", input}, {"--mask", flags.field.read.selection.maskPath},
                                    {"--underlay", flags.slices.fromField() ? "" : flags.slices.underlay}};
   for (const NamedPath& m : flags.mesh.inputs()) inputs.push_back(m);
+  for (const NamedPath& t : flags.tracts.inputs()) inputs.push_back(t);
   return inputs;
 }
 

@@ -13,6 +13,7 @@
 #include "app/mesh_flags.h"
 #include "app/names.h"
 #include "app/slice_flags.h"
+#include "app/tract_flags.h"
 #include "render/legend/legend_pass.h"
 #include "render/legend/legend_room.h"
 #include "render/legend/orientation_pass.h"
@@ -62,6 +63,8 @@ RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io
     if (hooks.underlayLoaded) hooks.underlayLoaded(*underlay);
   }
   growByMeshes(meshes, meshLoWC_, meshHiWC_);
+  std::vector<io::TractData> tracts = o.tracts.read(command_);
+  growByTracts(tracts, meshLoWC_, meshHiWC_);
   // Each stage frees what the next no longer needs, so that peak memory
   // holds at most two copies of the glyphs (the records and the GL buffer).
   if (beforeUpload) beforeUpload(scene_.field);
@@ -77,6 +80,9 @@ RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io
   renderer_->upload(glyphs_);
   if (colors) renderer_->setColorScalars(colors->byRecord, colors->name);
   if (scene_.wholeField) renderer_->setColorRanges(scene_.wholeField->colors);
+  // Before the meshes: the viewer finds its meshes as the last items.
+  addTracts(*renderer_, ctx_->api(), *lib_, tracts, o.tracts.params);
+  tracts.clear();
   addMeshes(*renderer_, ctx_->api(), *lib_, meshes, o.mesh.params);
   meshes.clear();
   ctx_->api().Finish();

@@ -119,7 +119,7 @@ class RenderSession {
   tensor::MagnitudeSample magnitudes_;
   std::size_t glyphCount_ = 0;
   glm::dvec3 underlayLoWC_{INFINITY}, underlayHiWC_{-INFINITY};
-  glm::dvec3 meshLoWC_{INFINITY}, meshHiWC_{-INFINITY};
+  glm::dvec3 meshLoWC_{INFINITY}, meshHiWC_{-INFINITY};  // the meshes and tracts
   mutable std::optional<Boxes> last_;  // for the last scale asked; all that is left once the records go
   mutable std::optional<std::vector<render::GlyphCell>> cells_;
   // The last room left for the legend and what it was worked out from: a

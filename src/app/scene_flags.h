@@ -1,7 +1,7 @@
 #pragma once
 // The flag groups `render` and `view` share, registered and checked in one
 // place so that the two commands cannot drift: the field and its selection,
-// legend, depth cues, shadows, slice planes, meshes and the built-in look.
+// legend, depth cues, shadows, slice planes, meshes, tracts and the built-in look.
 #include <string>
 
 #include "app/effect_flags.h"
@@ -11,6 +11,7 @@
 #include "app/mesh_flags.h"
 #include "app/shadow_flags.h"
 #include "app/slice_flags.h"
+#include "app/tract_flags.h"
 
 namespace tg::app {
 
@@ -21,6 +22,7 @@ struct SceneFlags {
   ShadowFlags shadow;
   SliceFlags slices;
   MeshFlags mesh;
+  TractFlags tracts;
   LookFlags look;
 
   // The field's selection, the slice planes and the meshes are loaded and
@@ -31,6 +33,7 @@ struct SceneFlags {
     field.addTo(ap, true);
     slices.addTo(ap);
     mesh.addTo(ap);
+    tracts.addTo(ap);
     ap.setReloadsDefault(reloads);
     legend.addTo(ap);
     effects.addTo(ap);
@@ -46,6 +49,7 @@ struct SceneFlags {
     shadow.validate();
     slices.validate();
     mesh.validate(input);
+    tracts.validate();
     look.validate(shadow.params.enabled, effects.ao.enabled, effects.outline.enabled, legend.params.enabled);
   }
 };

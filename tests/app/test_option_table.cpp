@@ -105,7 +105,7 @@ TEST(RenderOptions, EveryNumericOptionDeclaresARange) {
   const std::set<std::string> words = {"INPUT", "-o", "--glyph", "--color", "--array", "--layout", "--frame",
                                        "--mask", "--slice", "--scale-mode", "--sizes-from", "--magnitude", "--legend-corner",
                                        "--units", "--length-units", "--underlay", "--plane", "--underlay-colormap",
-                                       "--mesh", "--mesh-mode", "--backend", "--color-array", "--colormap",
+                                       "--mesh", "--mesh-mode", "--tracts", "--backend", "--color-array", "--colormap",
                                        "--view", "--orientation-letters", "--pipeline", "--sizes-from"};
   for (const OptionTable::Option& opt : t.options()) {
     if (opt.arity() == 0 && !opt.positional) continue;

@@ -525,3 +525,38 @@ TEST(Hostile, SingularOrNonFiniteGridsAreRefusedByName) {
   write(dir() / "origininf.vtk", points("1 1 1", "inf 0 0"));
   expectRefused("origininf.vtk", "ORIGIN: inf is not finite");
 }
+
+// Tract files (issue 32): polylines that name points the file lacks, a .tck
+// cut inside its points, a .trk whose counts promise 2^31 - 1 streamlines of
+// 2^31 - 1 points, all refused before anything is sized from them.
+TEST(Hostile, TractFilesThatLieAreRefused) {
+  write(dir() / "tensor.nrrd", "NRRD0004\ntype: float\ndimension: 4\nsizes: 6 1 1 1\n" + kNrrdTensor + "\n" +
+                                   bin({1, 0, 0, 2, 0, 3}));
+  write(dir() / "farline.vtk", "# vtk DataFile Version 3.0\nx\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n"
+                               "0 0 0 1 0 0 0 1 0\nLINES 1 4\n3 0 1 9\n");
+  const std::string head = "mrtrix tracks\ndatatype: Float32LE\nfile: . 50\nEND\n";
+  write(dir() / "cut.tck", head + std::string(50 - head.size(), ' ') + bin({0, 0, 0, 1, 1, 1, 2, 2}));
+  std::string trk(1004, '\0');
+  std::memcpy(trk.data(), "TRACK", 5);
+  const float one = 1.0f;
+  for (int k = 0; k < 3; ++k) {
+    const std::int16_t d = 10;
+    std::memcpy(trk.data() + 6 + 2 * k, &d, 2);
+    std::memcpy(trk.data() + 12 + 4 * k, &one, 4);
+  }
+  for (int k = 0; k < 4; ++k) std::memcpy(trk.data() + 440 + 20 * k, &one, 4);
+  std::memcpy(trk.data() + 948, "RAS", 3);
+  const std::int32_t huge = 0x7fffffff, version = 2, size = 1000;
+  std::memcpy(trk.data() + 988, &huge, 4);
+  std::memcpy(trk.data() + 992, &version, 4);
+  std::memcpy(trk.data() + 996, &size, 4);
+  std::memcpy(trk.data() + 1000, &huge, 4);
+  write(dir() / "huge.trk", trk);
+  for (const auto& [file, what] : {std::pair{"farline.vtk", "a cell refers to point 9, but the file has 3 points"},
+                                   {"cut.tck", "not a whole number of 12-byte points: truncated"},
+                                   {"huge.trk", "truncated, or the count is wrong"}})
+    expectRefused("tensor.nrrd", what, 20, " --tracts " + (dir() / file).string(), {"render"}, file);
+  // VTK's cell checks speak as the tract reader.
+  expectRefused("tensor.nrrd", "readTracts: " + (dir() / "farline.vtk").string() + ": a cell refers", 20,
+                " --tracts " + (dir() / "farline.vtk").string(), {"render"}, "farline.vtk");
+}

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <map>
 #include <set>
 #include <sstream>
@@ -86,6 +87,8 @@ const std::vector<NumericCase>& numericCases() {
       {"--mesh-color", "{} {} {}", "--mesh MESH"},
       {"--mesh-opacity", "{}", "--mesh MESH --mesh-mode see-through"},
       {"--mesh-feature-angle", "{}", "--mesh MESH --mesh-mode edges"},
+      {"--tract-color", "{} {} {}", "--tracts TRACTS"},
+      {"--tract-width", "{}", "--tracts TRACTS"},
       {"--ao-radius", "{}", "--ao"},
       {"--ao-strength", "{}", "--ao"},
       {"--ao-samples", "{}", "--ao"},
@@ -116,8 +119,15 @@ std::string replaced(std::string s, const std::string& from, const std::string& 
 // or draws something, or says on stderr, naming it, why nothing shows.
 TEST(Options, EveryNumericOptionAtItsExtremesIsRefusedOrDraws) {
   const fs::path mesh = dir() / "tri.obj", mask = dir() / "mask.nrrd", out = dir() / "extreme.png";
+  const fs::path tracts = dir() / "line.tck";
   {
     std::ofstream(mesh) << "v 0 0 0\nv 2 0 0\nv 0 2 0\nf 1 2 3\n";
+    // One streamline across the mesh's triangle: MRtrix's header, float32 points, NaN and Inf ends.
+    const std::string head = "mrtrix tracks\ndatatype: Float32LE\nfile: . 50\nEND\n";
+    const float nan = std::numeric_limits<float>::quiet_NaN(), inf = std::numeric_limits<float>::infinity();
+    const float points[] = {0, 0, 0, 1, 1, 0, 2, 2, 0, nan, nan, nan, inf, inf, inf};
+    std::ofstream(tracts, std::ios::binary) << head << std::string(50 - head.size(), ' ')
+                                            << std::string(reinterpret_cast<const char*>(points), sizeof points);
     std::ofstream m(mask);
     m << "NRRD0004\ntype: float\ndimension: 3\nsizes: 3 3 2\nencoding: ascii\n\n";
     for (int k = 0; k < 18; ++k) m << "1\n";
@@ -125,7 +135,8 @@ TEST(Options, EveryNumericOptionAtItsExtremesIsRefusedOrDraws) {
   for (const NumericCase& c : numericCases())
     for (const std::string v : {"0", "-1", "1e-40", "1e300", "nan", "inf", "1e-20", "1e20"}) {
       fs::remove(out);
-      const std::string needs = replaced(replaced(c.needs, "MESH", mesh.string()), "MASK", mask.string());
+      const std::string needs =
+          replaced(replaced(replaced(c.needs, "MESH", mesh.string()), "MASK", mask.string()), "TRACTS", tracts.string());
       // --size is the option under test there; elsewhere a small image.
       const std::string size = c.flag == "--size" ? "" : " --size 64 48";
       const std::string args = "render " + field().string() + " -o " + out.string() + size + " " + needs + " " +

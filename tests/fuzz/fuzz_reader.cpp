@@ -3,7 +3,8 @@
 // data, and the data-file list outputs are checked against), 2 (legacy VTK:
 // our count checks and VTK's header read), 3 (MRtrix .mif: header and data,
 // as a tensor image and as a mask), 4 (XML .vtu: VTK's parse of the
-// structure and our checks of it: extents, piece counts, inline lengths).
+// structure and our checks of it: extents, piece counts, inline lengths),
+// 5 (MRtrix .tck) and 6 (TrackVis .trk): the tract readers, header and data.
 // Any input must end in a result or an InputError: never a crash, a hang,
 // a sanitizer report or an allocation sized by an unchecked header.
 //   build-fuzz/fuzz_nrrd CORPUS_COPY tests/fuzz/corpus/nrrd -max_total_time=30
@@ -16,6 +17,7 @@
 
 #include "io/core/input_files.h"
 #include "io/core/readers.h"
+#include "io/core/tract_reader.h"
 
 namespace {
 
@@ -25,7 +27,9 @@ std::string scratchPath(const std::uint8_t* data, std::size_t size) {
                     : TG_FUZZ_FORMAT == 1 ? (gz ? ".nii.gz" : ".nii")
                     : TG_FUZZ_FORMAT == 2 ? ".vtk"
                     : TG_FUZZ_FORMAT == 3 ? ".mif"
-                                          : ".vtu";
+                    : TG_FUZZ_FORMAT == 4 ? ".vtu"
+                    : TG_FUZZ_FORMAT == 5 ? ".tck"
+                                          : ".trk";
   return "/tmp/tg_fuzz_" + std::to_string(::getpid()) + ext;
 }
 
@@ -48,7 +52,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     else if (TG_FUZZ_FORMAT == 1) tg::io::readNifti(path, {});
     else if (TG_FUZZ_FORMAT == 2) tg::io::checkVtkLegacyHeader(path);  // VTK's body parser is not ours; see README
     else if (TG_FUZZ_FORMAT == 3) tg::io::readMif(path, {});
-    else tg::io::checkVtkXmlHeader(path);  // VTK's data decoders run only in the guarded child
+    else if (TG_FUZZ_FORMAT == 4) tg::io::checkVtkXmlHeader(path);  // VTK's data decoders run only in the guarded child
+    else tg::io::readTractsInProcess(path, std::uint64_t(256) << 20);
   } catch (const tg::io::InputError&) {
   }
   if (TG_FUZZ_FORMAT == 3) {

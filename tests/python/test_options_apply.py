@@ -18,6 +18,7 @@ SIZE = (96, 72)
 SQ = {"glyph": "superquadric"}
 UNDERLAY = {"underlay": "@underlay"}
 MESH = {"mesh": "@mesh"}
+TRACTS = {"tracts": "@tracts"}
 CASES = {
     "size": ((64, 48), {}),
     "glyph": ("superquadric", {}),
@@ -71,6 +72,9 @@ CASES = {
     "mesh_color": ((1.0, 0.0, 0.0), MESH),
     "mesh_opacity": (0.1, {"mesh": "@mesh", "mesh_mode": "see-through"}),
     "mesh_feature_angle": (120.0, {"mesh": "@mesh", "mesh_mode": "edges"}),
+    "tracts": ("@tracts", {}),
+    "tract_color": ((1.0, 0.0, 0.0), TRACTS),
+    "tract_width": (1.5, TRACTS),
     "legend": (True, {}),
     "legend_corner": ("top-left", {"legend": True}),
     "units": ("MPa", {"legend": True, "color": "md", "size": (320, 240)}),
@@ -122,7 +126,7 @@ def _flag_args(kw, value):
 
 class Data:
     """One field as a NIfTI volume (and its array), one point set as a .vtu
-    (and its arrays), a mask and an underlay on the volume's grid, a mesh."""
+    (and its arrays), a mask and an underlay on the volume's grid, a mesh, tracts."""
 
     def __init__(self, d):
         import nibabel as nib
@@ -139,11 +143,16 @@ class Data:
         nib.save(nib.Nifti1Image(self.volume, self.affine), self.nifti)
         grid = np.indices((4, 4, 3)).transpose(1, 2, 3, 0).astype(np.float32)
         self.files = {"@mask": os.path.join(d, "mask.nii"), "@underlay": os.path.join(d, "underlay.nii"),
-                      "@mesh": os.path.join(d, "mesh.obj")}
+                      "@mesh": os.path.join(d, "mesh.obj"), "@tracts": os.path.join(d, "tracts.tck")}
         nib.save(nib.Nifti1Image((grid[..., 0] + grid[..., 1]) / 6.0, self.affine), self.files["@mask"])
         nib.save(nib.Nifti1Image(grid[..., 0] * 0.1 + grid[..., 2] * 0.05 + grid[..., 1] * 0.02, self.affine),
                  self.files["@underlay"])
         self._write_mesh(self.files["@mesh"])
+        # Two streamlines across the field, in its world (RAS+ mm).
+        t = np.linspace(0.0, 1.0, 20)[:, None]
+        lines = [(np.array([0.0, 1.0, 2.0]) + t * [6.0, 4.0, 0.0]).astype(np.float32),
+                 (np.array([3.0, 0.0, 1.0]) + t * [0.0, 6.0, 3.0]).astype(np.float32)]
+        nib.streamlines.save(nib.streamlines.Tractogram(lines, affine_to_rasmm=np.eye(4)), self.files["@tracts"])
         n = 40
         M = rng.normal(size=(n, 3, 3)) * 0.5 + np.eye(3) * [1.5, 0.8, 0.3]
         self.tensors = (M @ np.swapaxes(M, 1, 2)).astype(np.float32)

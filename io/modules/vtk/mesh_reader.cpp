@@ -36,6 +36,7 @@
 #include "io/core/format_impl.h"
 #include "io/modules/vtk/mesh_text_checks.h"
 #include "io/core/readers.h"
+#include "io/core/tract_builder.h"
 #include "io/modules/vtk/vtk_capture.h"
 #include "io/modules/vtk/vtk_dataset.h"
 
@@ -383,6 +384,59 @@ MeshData impl::readMesh(const std::string& path, MeshSource source, std::uint64_
   }
   m.description += ", " + std::to_string(m.triangleCount()) + " triangles";
   return m;
+}
+
+// A .vtk or .vtp's polylines (Slicer's and DIPY's fibre files): each LINES
+// cell one streamline, its points in world coordinates as the file gives them.
+TractData impl::readPolylines(const std::string& path, std::uint64_t budget, const PromiseFn& promise) {
+  auto failTracts = [&](const std::string& what) { throw InputError("readTracts: " + path + ": " + what); };
+  ReadOptions opt;
+  opt.memoryBudget = budget;
+  opt.onPromise = promise;
+  const ReadResult read = [&] {
+    try {
+      return readDataSet(path, opt);
+    } catch (const InputError& e) {
+      const std::string what = e.what();
+      if (what.rfind("readVtk: ", 0) != 0) throw;
+      throw InputError("readTracts" + what.substr(7));
+    }
+  }();
+  if (!read.vtkSaid.empty()) failTracts(read.vtkSaid);
+  auto* pd = vtkPolyData::SafeDownCast(read.data);
+  if (!pd) failTracts(std::string("a ") + read.data->GetClassName() + " holds no polylines (tracts are POLYDATA LINES)");
+  vtkCellArray* lines = pd->GetLines();
+  if (!lines || lines->GetNumberOfCells() == 0) failTracts("no polylines (LINES) to draw as tracts");
+  try {
+    checkCellPoints(pd, path);
+  } catch (const InputError& e) {  // in this reader's words
+    const std::string what = e.what();
+    if (what.rfind("readMesh: ", 0) != 0) throw;
+    throw InputError("readTracts" + what.substr(8));
+  }
+  if (std::uint64_t(lines->GetNumberOfConnectivityIds()) > kMaxTractPoints)
+    failTracts(std::to_string(lines->GetNumberOfConnectivityIds()) + " points on its lines, more than the limit of " +
+               std::to_string(kMaxTractPoints));
+  const NonFiniteText* nonFinite = read.nonFinite.empty() ? nullptr : &read.nonFinite;
+  TractData out;
+  out.path = path;
+  TractBuilder build(out, "readTracts: " + path);
+  vtkIdType n = 0;
+  const vtkIdType* ids = nullptr;
+  for (lines->InitTraversal(); lines->GetNextCell(n, ids);) {
+    for (vtkIdType k = 0; k < n; ++k) {
+      double raw[3];
+      pd->GetPoint(ids[k], raw);
+      for (double& v : raw) v = nonFinite ? nonFinite->restore(v) : v;
+      build.point(raw[0], raw[1], raw[2]);
+    }
+    build.end(false);
+  }
+  if (out.pointCount() == 0)
+    failTracts("nothing to draw: every polyline has a NaN/Inf point (" + std::to_string(out.skippedNonFinite) + ")");
+  out.description = std::string(pd->GetClassName()) + ", " + std::to_string(out.streamlineCount()) + " polylines, " +
+                    std::to_string(out.pointCount()) + " points";
+  return out;
 }
 
 }  // namespace tg::io

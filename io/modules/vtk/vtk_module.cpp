@@ -4,6 +4,6 @@
 extern "C" __attribute__((visibility("default"))) const tg::io::VtkFormats* tg_vtk_formats() {
   namespace i = tg::io::impl;
   static constexpr tg::io::VtkFormats table{tg::io::VtkFormats::kVersion, i::readVtk, i::checkVtkLegacyHeader,
-                                            i::checkVtkXmlHeader, i::readVtiScalar, i::readMesh, i::encodeVtk};
+                                            i::checkVtkXmlHeader, i::readVtiScalar, i::readMesh, i::readPolylines, i::encodeVtk};
   return &table;
 }

@@ -61,6 +61,7 @@ inline constexpr NumberRange kPixelIndex{0, kMaxFrameSide - 1, true};
 inline constexpr NumberRange kPercent{0.0, 100.0};
 inline constexpr NumberRange kPlaneOffsetRadii{0.0, 100.0};
 inline constexpr NumberRange kFeatureAngleDeg{0.0, 180.0};
+inline constexpr NumberRange kTractWidth{1e-9, 1e9};  // world units: a tube wider than any scene is a mistake
 inline constexpr NumberRange kCreaseDeg{1.0, 179.0};
 inline constexpr NumberRange kTessellation{render::TessellatedGlyphs::kMinResolution,
                                           render::TessellatedGlyphs::kMaxResolution, true, true};
