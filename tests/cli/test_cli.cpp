@@ -283,7 +283,9 @@ TEST(Cli, ViewRejectsABadScriptBeforeOpeningAWindow) {
       {"zoom 2\nspin 30\n", ":2: unknown command \"spin\""},
       {"gamma -1\n", ":1: gamma must be within 0..10000"},
       {"orbit 10\n", ":1: orbit: wrong number of arguments"},
-      {"slab w 1 2\n", ":1: slab: axis must be x, y or z"},
+      {"slab w:1\n", ":1: slab: unknown axis \"w\""},
+      // Against the built-in scene's 40 x 40 x 20 grid, once it is loaded.
+      {"slab k:20\n", ":1: slab k:20: index 20 is outside 0..19 along voxel axis k of the glyphs' grid"},
       {"color rainbow\n", ":1: color: unknown mode"},
       {"fa-min nan\n", ":1: fa-min"},
       {"screenshot shot.bogus\n", ":1: screenshot: no image format for \"shot.bogus\""},
