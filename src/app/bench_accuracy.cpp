@@ -250,14 +250,23 @@ int benchAccuracy(int argc, const char** argv) {
     throw io::InputError("bench accuracy: " + scene.field.path +
                          ": no glyph covers a pixel at this scale and size, so there is nothing to compare (try a "
                          "larger --scale, or --scale-mode spacing)");
-  std::fprintf(stderr, "bench accuracy: %s, %zu glyphs, gamma %g, %dx%d, %s (%s); reference %.0f ms, %zu glyph pixels\n",
+  // One summary line, with how to read the table: a failure's own line follows it alone.
+  const render::MarchParams defaults;
+  bool defaultSwept = false;
+  for (double eps : o.epsilons)
+    for (int it : o.iterations) defaultSwept |= it == defaults.maxIterations && eps == defaults.epsilon;
+  std::fprintf(stderr,
+               "bench accuracy: %s, %zu glyphs, gamma %g, %dx%d, %s (%s); reference %.0f ms, %zu glyph pixels; frame "
+               "time: the median of %d rounds (each the median of %d frames), with their min-max; depth in glyph "
+               "sizes (the largest semi-axis, epsilon's unit); %s (%d iterations, epsilon %g)\n",
                scene.field.path.c_str(), glyphs.glyphs.size(), o.gamma, o.width, o.height, ctx->backendName(),
-               ctx->describe().c_str(), refMs, refPixels);
+               ctx->describe().c_str(), refMs, refPixels, o.repeats, o.frames,
+               defaultSwept ? "* marks the default setting" : "the default setting is not swept",
+               defaults.maxIterations, defaults.epsilon);
 
   // Round 0 measures the errors and the iteration counts (the same in every
   // round); every round times each setting, alternate rounds in reverse order.
   std::vector<Row> rows;
-  const render::MarchParams defaults;
   for (double eps : o.epsilons)
     for (int it : o.iterations) rows.push_back({it, eps, {}, {}, {}, it == defaults.maxIterations && eps == defaults.epsilon});
   const double total = double(rows.size()) * o.repeats;
@@ -289,12 +298,6 @@ int benchAccuracy(int argc, const char** argv) {
       if (r.diff.nonFinite) std::fprintf(stderr, "bench accuracy: %zu non-finite GPU values\n", r.diff.nonFinite);
     }
   if (sink) sink({}, 0, 0, {});  // the table goes to stdout, often the same terminal
-  const bool defaultSwept = std::any_of(rows.begin(), rows.end(), [](const Row& r) { return r.isDefault; });
-  std::fprintf(stderr,
-               "bench accuracy: frame time: the median of %d rounds (each the median of %d frames), with their "
-               "min-max; depth in glyph sizes (the largest semi-axis, epsilon's unit); %s (%d iterations, epsilon %g)\n",
-               o.repeats, o.frames, defaultSwept ? "* marks the default setting" : "the default setting is not swept",
-               defaults.maxIterations, defaults.epsilon);
   printTable(rows);
   progress.finish();
   // The CSV is committed after the plot, so that a failure leaves neither.
