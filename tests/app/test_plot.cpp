@@ -1,13 +1,14 @@
-// Tier 2: benchmark plots (io/plot_panels.h, drawn as the OpenImageIO
-// module draws them, io/plot_draw.cpp): a point's label, its spread bar and the default's mark each put
-// ink where they belong, beside that point and nowhere near the others.
+// Tier 2: benchmark plots (io/core/plot_panels.h, drawn as the OpenImageIO
+// module draws them, io/modules/oiio/plot_draw.cpp): a point's label, its
+// spread bar and the default's mark each put ink where they belong, beside
+// that point and nowhere near the others.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstddef>
 #include <vector>
 
-#include "io/plot_panels.h"
+#include "io/core/plot_panels.h"
 
 using tg::io::PlotPanel;
 using tg::io::PlotSeries;
@@ -48,7 +49,7 @@ TEST(Plot, LabelsSpreadsAndTheMarkDrawBesideTheirPoint) {
   PlotSeries bare{"s", {0.2f, 0.3f, 0.85f}, {{1, 1}, {2, 2}, {3, 3}}, {}, {}, -1, ""};
   bool fonts = false;
   const std::vector<float> plain = draw(bare, &fonts);
-  // The plot area (io/plot_draw.cpp: 78 px left, 150 right, 36 top, 56
+  // The plot area (io/modules/oiio/plot_draw.cpp: 78 px left, 150 right, 36 top, 56
   // below) spans x 1..3 padded by 5%, y 1..3 exactly.
   const double px = 78 + (2 - 0.9) / 2.2 * (kW - 78 - 150), py = kH - 56 - 0.5 * (kH - 56 - 36);
 
