@@ -298,9 +298,15 @@ class Renderer {
       const CurrentFor current(session_->context());
       const app::RenderSession::Frame f = session_->frame(o);
       marches = f.params.glyph == render::GlyphKind::Superquadric;
-      session_->draw(f);
+      // The render stage, as the CLI's: the frame's passes as they finish.
+      const util::ProgressSink sink = source_.progress->sink();
+      if (sink) sink("rendering", 0, 0, util::kPassesUnit);
+      session_->draw(f, sink ? render::PassProgress([&sink](std::string_view, int done, int total) {
+        sink("rendering", done, total, util::kPassesUnit);
+      }) : render::PassProgress{});
       img = session_->readback(f, channels ? render::Channels::All : render::Channels::Rgba8);
     }
+    source_.progress->rethrow();
     // `render` refuses a march option for glyphs that do not march; a
     // Renderer keeps it for a later glyph="superquadric", and says so.
     if (!o.marchFlag.empty() && !marches) {

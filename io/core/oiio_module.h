@@ -25,7 +25,7 @@ struct OiioImage {
 
 // The module's entry points; a version mismatch is refused at load.
 struct OiioModule {
-  static constexpr int kVersion = 1;
+  static constexpr int kVersion = 2;  // 2: PlotSeries' point labels, spreads and mark
   int version;
   // Whether OIIO has a writer for `path`'s extension.
   bool (*canWrite)(const std::string& path);

@@ -13,6 +13,12 @@ struct PlotSeries {
   std::string label;
   std::array<float, 3> rgb{};
   std::vector<glm::dvec2> points;  // drawn in this order, joined by lines
+  // Optional, one per point: its label, drawn beside it; its spread along x
+  // (lo, hi), drawn as a bar through it.
+  std::vector<std::string> pointLabels;
+  std::vector<glm::dvec2> xSpread;
+  int marked = -1;  // a point drawn boxed, with markLabel beside it (a default setting)
+  std::string markLabel;
 };
 
 struct PlotPanel {

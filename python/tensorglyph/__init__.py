@@ -436,7 +436,9 @@ class Renderer:
     def __init__(self, tensors=None, *, positions=None, affine=None, layout=None, frame=None, progress=None,
                  **options):
         """`progress`: None, or f(stage, done, total, unit), called while a
-        file loads and the tensors are decomposed (total 0: not known)."""
+        file loads ("loading"), the tensors are decomposed ("eigen") and each
+        frame is drawn ("rendering", in "passes" as each finishes; total 0:
+        not known)."""
         self._options = {}
         self._lock = threading.RLock()
         self._callback_threads = set()

@@ -35,7 +35,7 @@ namespace {
 struct Options {
   std::string input, csv, plot, backend = "osmesa";
   FieldFlags field;
-  int width = 640, height = 480, frames = 5;
+  int width = 640, height = 480, frames = 5, repeats = 3;
   double gamma = 3.0;
   bool quiet = false;
   std::optional<double> faMin;
@@ -72,6 +72,12 @@ Options parse(int argc, const char** argv) {
   ap.arg("--frames N").help("timed frames per setting; the median is reported").range(ranges::kFrames)
       .byDefault(std::to_string(o.frames))
       .action([&](Args a) { o.frames = int(parseInt(a[0], a[1])); });
+  ap.arg("--repeats N")
+      .help("times each setting is measured, in rounds over all settings (each round in the reverse order of the "
+            "last, so that drift falls on every setting alike); the frame time reported is the median of the rounds' "
+            "medians, with their minimum and maximum")
+      .range(ranges::kRepeats).byDefault(std::to_string(o.repeats))
+      .action([&](Args a) { o.repeats = int(parseInt(a[0], a[1])); });
   ap.arg("--fa-min F").help("hide glyphs with FA below F").range(ranges::kUnit).action([&](Args a) {
     o.faMin = parseDouble(a[0], a[1]);
   });
@@ -102,47 +108,87 @@ void validate(Options& o) {
 
 struct Row {
   int iterations;
-  double epsilon, frameMs;
+  double epsilon;
+  std::vector<double> roundMs;  // each round's median frame time
   render::IterationStats stats;
   ref::ImageDiff diff;
+  bool isDefault = false;  // render's default march (render::MarchParams)
+  // The median of the rounds (the mean of the middle two for an even count), and their range.
+  double frameMs() const {
+    std::vector<double> t = roundMs;
+    std::sort(t.begin(), t.end());
+    const std::size_t n = t.size();
+    return n == 0 ? 0.0 : n % 2 ? t[n / 2] : 0.5 * (t[n / 2 - 1] + t[n / 2]);
+  }
+  double minMs() const { return roundMs.empty() ? 0.0 : *std::min_element(roundMs.begin(), roundMs.end()); }
+  double maxMs() const { return roundMs.empty() ? 0.0 : *std::max_element(roundMs.begin(), roundMs.end()); }
   // Percentages of the reference's glyph pixels.
   double percent(std::size_t n) const { return 100.0 * double(n) / double(std::max<std::size_t>(diff.refCovered, 1)); }
   double coveragePct() const { return percent(diff.coverageMismatch); }
   double interiorPct() const { return percent(diff.interiorMismatch); }
 };
 
-// The CSV's bytes into `out`, not yet committed.
+// The CSV's bytes into `out`, not yet committed. Units in the names: depth
+// errors in glyph sizes (each glyph's largest semi-axis, the unit of epsilon).
 void writeCsv(const std::vector<Row>& rows, io::AtomicFile& out) {
   std::string f =
       "iterations,epsilon,frame_ms,mean_iterations,max_iterations,coverage_error_pct,interior_error_pct,"
-      "depth_err_median,depth_err_p99,depth_err_max,normal_err_median_deg,normal_err_p99_deg,normal_err_max_deg\n";
-  char line[512];
+      "depth_err_median_sizes,depth_err_p99_sizes,depth_err_max_sizes,normal_err_median_deg,normal_err_p99_deg,"
+      "normal_err_max_deg,frame_ms_min,frame_ms_max,repeats,default\n";
+  char line[600];
   for (const Row& r : rows) {
-    std::snprintf(line, sizeof line, "%d,%g,%.3f,%.3f,%u,%.4f,%.4f,%.3g,%.3g,%.3g,%.3g,%.3g,%.3g\n", r.iterations,
-                  r.epsilon, r.frameMs, r.stats.mean, r.stats.max, r.coveragePct(), r.interiorPct(), r.diff.depth.median,
-                  r.diff.depth.p99, r.diff.depth.max, r.diff.normalDeg.median, r.diff.normalDeg.p99,
-                  r.diff.normalDeg.max);
+    std::snprintf(line, sizeof line, "%d,%g,%.3f,%.3f,%u,%.4f,%.4f,%.3g,%.3g,%.3g,%.3g,%.3g,%.3g,%.3f,%.3f,%zu,%d\n",
+                  r.iterations, r.epsilon, r.frameMs(), r.stats.mean, r.stats.max, r.coveragePct(), r.interiorPct(),
+                  r.diff.depth.median, r.diff.depth.p99, r.diff.depth.max, r.diff.normalDeg.median,
+                  r.diff.normalDeg.p99, r.diff.normalDeg.max, r.minMs(), r.maxMs(), r.roundMs.size(),
+                  int(r.isDefault));
     f += line;
   }
   out.write(f.data(), f.size());
 }
 
-bool plot(const std::vector<Row>& rows, const std::vector<double>& epsilons, const std::string& path) {
-  // One series per epsilon, its points in order of maximum iterations.
-  PlotPanel cover{"Coverage error vs frame time", "frame time (ms)", "% glyph pixels", true, {}};
-  PlotPanel depth{"Depth error (p99) vs frame time", "frame time (ms)", "glyph sizes", true, {}};
-  PlotPanel normal{"Normal error (p99) vs frame time", "frame time (ms)", "degrees", true, {}};
+// The table on stdout: units in a second header line, * on the default row.
+void printTable(const std::vector<Row>& rows) {
+  std::printf("%5s %8s %9s %17s %6s %4s %9s %10s %10s %9s %7s\n", "iter", "eps", "frame", "frame min-max", "mean",
+              "max", "cover", "depth_p99", "depth_max", "norm_p99", "default");
+  std::printf("%5s %8s %9s %17s %6s %4s %9s %10s %10s %9s %7s\n", "", "[sizes]", "[ms]", "[ms]", "[iter]", "[it]",
+              "[%]", "[sizes]", "[sizes]", "[deg]", "");
+  for (const Row& r : rows) {
+    char range[40];
+    std::snprintf(range, sizeof range, "%.2f-%.2f", r.minMs(), r.maxMs());
+    std::printf("%5d %8.0e %9.2f %17s %6.2f %4u %9.4f %10.2e %10.2e %9.3f %7s\n", r.iterations, r.epsilon,
+                r.frameMs(), range, r.stats.mean, r.stats.max, r.coveragePct(), r.diff.depth.p99, r.diff.depth.max,
+                r.diff.normalDeg.p99, r.isDefault ? "*" : "");
+  }
+  std::fflush(stdout);
+}
+
+bool plot(const std::vector<Row>& rows, const std::vector<double>& epsilons, int repeats, const std::string& path) {
+  // One series per epsilon, its points in order of maximum iterations, each
+  // labelled with its iterations and barred with its rounds' range.
+  const std::string x = "frame time (ms): median of " + std::to_string(repeats) + " rounds, bars min-max; labels: iterations";
+  PlotPanel cover{"Coverage error vs frame time", x, "% glyph pixels", true, {}};
+  PlotPanel depth{"Depth error (p99) vs frame time", x, "glyph sizes", true, {}};
+  PlotPanel normal{"Normal error (p99) vs frame time", x, "degrees", true, {}};
   const std::array<float, 3> palette[] = {{0.85f, 0.1f, 0.1f}, {0.9f, 0.55f, 0.0f}, {0.2f, 0.65f, 0.2f},
                                           {0.1f, 0.6f, 0.8f},  {0.2f, 0.3f, 0.85f}, {0.6f, 0.2f, 0.7f}};
   for (std::size_t k = 0; k < epsilons.size(); ++k) {
     char label[32];
     std::snprintf(label, sizeof label, "eps %g", epsilons[k]);
-    PlotSeries c{label, palette[k % 6], {}}, d = c, n = c;
+    PlotSeries c{label, palette[k % 6], {}, {}, {}, -1, "default"};
     for (const Row& r : rows)
       if (r.epsilon == epsilons[k]) {
-        c.points.push_back({r.frameMs, r.coveragePct()});
-        d.points.push_back({r.frameMs, r.diff.depth.p99});
-        n.points.push_back({r.frameMs, r.diff.normalDeg.p99});
+        if (r.isDefault) c.marked = int(c.points.size());
+        c.points.push_back({r.frameMs(), r.coveragePct()});
+        c.pointLabels.push_back(std::to_string(r.iterations));
+        c.xSpread.push_back({r.minMs(), r.maxMs()});
+      }
+    PlotSeries d = c, n = c;
+    std::size_t j = 0;
+    for (const Row& r : rows)
+      if (r.epsilon == epsilons[k]) {
+        d.points[j] = {r.frameMs(), r.diff.depth.p99};
+        n.points[j++] = {r.frameMs(), r.diff.normalDeg.p99};
       }
     cover.series.push_back(c);
     depth.series.push_back(d);
@@ -204,19 +250,32 @@ int benchAccuracy(int argc, const char** argv) {
     throw io::InputError("bench accuracy: " + scene.field.path +
                          ": no glyph covers a pixel at this scale and size, so there is nothing to compare (try a "
                          "larger --scale, or --scale-mode spacing)");
-  std::fprintf(stderr, "bench accuracy: %s, %zu glyphs, gamma %g, %dx%d, %s (%s); reference %.0f ms, %zu glyph pixels\n",
-               scene.field.path.c_str(), glyphs.glyphs.size(), o.gamma, o.width, o.height, ctx->backendName(),
-               ctx->describe().c_str(), refMs, refPixels);
-
-  std::vector<Row> rows;
-  if (sink) sink({}, 0, 0, {});  // the table goes to stdout, often the same terminal
-  std::printf("%5s %8s %9s %6s %4s %9s %10s %10s %9s\n", "iter", "eps", "frame_ms", "mean", "max", "cover_%",
-              "depth_p99", "depth_max", "norm_p99");
-  const double settings = double(o.epsilons.size() * o.iterations.size());
+  // One summary line, with how to read the table: a failure's own line follows it alone.
+  const render::MarchParams defaults;
+  bool defaultSwept = false;
   for (double eps : o.epsilons)
-    for (int it : o.iterations) {
-      if (sink) sink("settings", double(rows.size()), settings, "settings");
-      params.march = {it, eps};
+    for (int it : o.iterations) defaultSwept |= it == defaults.maxIterations && eps == defaults.epsilon;
+  std::fprintf(stderr,
+               "bench accuracy: %s, %zu glyphs, gamma %g, %dx%d, %s (%s); reference %.0f ms, %zu glyph pixels; frame "
+               "time: the median of %d rounds (each the median of %d frames), with their min-max; depth in glyph "
+               "sizes (the largest semi-axis, epsilon's unit); %s (%d iterations, epsilon %g)\n",
+               scene.field.path.c_str(), glyphs.glyphs.size(), o.gamma, o.width, o.height, ctx->backendName(),
+               ctx->describe().c_str(), refMs, refPixels, o.repeats, o.frames,
+               defaultSwept ? "* marks the default setting" : "the default setting is not swept",
+               defaults.maxIterations, defaults.epsilon);
+
+  // Round 0 measures the errors and the iteration counts (the same in every
+  // round); every round times each setting, alternate rounds in reverse order.
+  std::vector<Row> rows;
+  for (double eps : o.epsilons)
+    for (int it : o.iterations) rows.push_back({it, eps, {}, {}, {}, it == defaults.maxIterations && eps == defaults.epsilon});
+  const double total = double(rows.size()) * o.repeats;
+  double done = 0;
+  for (int round = 0; round < o.repeats; ++round)
+    for (std::size_t j = 0; j < rows.size(); ++j) {
+      Row& r = rows[round % 2 ? rows.size() - 1 - j : j];
+      if (sink) sink("settings", done++, total, "settings");
+      params.march = {r.iterations, r.epsilon};
       params.iterationStats = false;
       renderer.render(cam, params, target);  // warm-up: compiles and caches state
       ctx->api().Finish();
@@ -228,23 +287,23 @@ int benchAccuracy(int argc, const char** argv) {
         times.push_back(msSince(t0));
       }
       std::sort(times.begin(), times.end());
+      r.roundMs.push_back(times[times.size() / 2]);
+      if (round > 0) continue;
       const render::FrameImage img = renderer.readback(cam, target, render::Channels::All);
       params.iterationStats = true;  // a separate frame: the counters cost time
       renderer.render(cam, params, target);
-      const Row r{it, eps, times[times.size() / 2], renderer.iterationStats(), ref::diffImages(img, reference, cam, diffOpt)};
-      if (sink) sink({}, 0, 0, {});
-      std::printf("%5d %8.0e %9.2f %6.2f %4u %9.4f %10.2e %10.2e %9.3f\n", it, eps, r.frameMs, r.stats.mean,
-                  r.stats.max, r.coveragePct(), r.diff.depth.p99, r.diff.depth.max, r.diff.normalDeg.p99);
-      std::fflush(stdout);
+      r.stats = renderer.iterationStats();
+      r.diff = ref::diffImages(img, reference, cam, diffOpt);
       if (r.diff.nonFinite && sink) sink({}, 0, 0, {});
       if (r.diff.nonFinite) std::fprintf(stderr, "bench accuracy: %zu non-finite GPU values\n", r.diff.nonFinite);
-      rows.push_back(r);
     }
+  if (sink) sink({}, 0, 0, {});  // the table goes to stdout, often the same terminal
+  printTable(rows);
   progress.finish();
   // The CSV is committed after the plot, so that a failure leaves neither.
   io::AtomicFile csv(o.csv);
   writeCsv(rows, csv);
-  if (!plot(rows, o.epsilons, o.plot))
+  if (!plot(rows, o.epsilons, o.repeats, o.plot))
     std::fprintf(stderr, "bench accuracy: %s: no font found, so the plot has no labels\n", printable(o.plot).c_str());
   csv.commit(std::int64_t(csv.bytesWritten()));
   std::fprintf(stderr, "bench accuracy: wrote %s and %s\n", printable(o.csv).c_str(), printable(o.plot).c_str());

@@ -9,6 +9,7 @@
 #include "app/commands.h"
 #include "app/scale/option_table.h"
 #include "app/render_options.h"
+#include "app/script_commands.h"
 #include "io/core/format_table.h"
 
 namespace tg::app {
@@ -30,6 +31,7 @@ std::string topics() {
   std::string s = "topics (the groups of 'tensorglyph render --help'):\n";
   for (const OptionGroup& g : kOptionGroups) s += std::string("  ") + g.name + "\n";
   return s + "formats: the input formats, what each is read as, and whether its module loads here\n" +
+         "script: the viewer's script language (view --script; --markdown: as docs/script.md)\n" +
          "or a command: render, view, info, synth, bench; docs/cli.md has them all\n";
 }
 
@@ -74,8 +76,12 @@ int cmdHelp(int argc, const char** argv, int (*command)(const std::string&, int,
     std::fputs(topics().c_str(), stdout);
     return 0;
   }
-  if (argc > 2) throw UsageError("give one topic; " + topics().substr(0, topics().find('\n')));
   const std::string topic = argv[1];
+  if (topic == "script" && (argc == 2 || (argc == 3 && std::string_view(argv[2]) == "--markdown"))) {
+    std::fputs(scriptReference(argc == 3).c_str(), stdout);
+    return 0;
+  }
+  if (argc > 2) throw UsageError("give one topic; " + topics().substr(0, topics().find('\n')));
   if (topic == "formats") {
     std::fputs(formatsHelp().c_str(), stdout);
     return 0;

@@ -116,12 +116,17 @@ int cmdRender(int argc, const char** argv) {
       std::fprintf(stderr, "tensorglyph render: %s\n", hint.c_str());
     }
   }
-  const double frames = 1.0 + o.repeat;
-  if (sink) sink("rendering", 0, frames, "frames");
+  // The first frame by its passes (one of many seconds on a large field
+  // draws no line otherwise); the timed repeats by frames, unperturbed by
+  // the waits a pass's report makes.
+  if (sink) sink("rendering", 0, 0, util::kPassesUnit);
+  const render::PassProgress passes = sink ? render::PassProgress([&sink](std::string_view, int done, int total) {
+    sink("rendering", done, total, util::kPassesUnit);
+  }) : render::PassProgress{};
   const auto t3 = Clock::now();
-  session.draw(fr);
+  session.draw(fr, passes);
   const double frameMs = msSince(t3);
-  if (sink) sink("rendering", 1, frames, "frames");
+  if (sink && o.repeat > 0) sink("timing", 0, o.repeat, "frames");
   if (const auto* legend = static_cast<const render::LegendPass*>(renderer.legendPass())) {
     const render::LegendRect& r = legend->layout().panel;
     if (sink && (r.x1 > float(o.width) || r.y1 > float(o.height))) sink({}, 0, 0, {});
@@ -140,7 +145,7 @@ int cmdRender(int argc, const char** argv) {
     session.draw(fr);
     times.push_back(msSince(tk));
     cpuTimes.push_back(processCpuMs() - cpuK);
-    if (sink) sink("rendering", 2.0 + k, frames, "frames");
+    if (sink) sink("timing", 1.0 + k, o.repeat, "frames");
   }
   progress.finish();
   if (o.stats) {

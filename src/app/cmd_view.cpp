@@ -119,14 +119,17 @@ int cmdView(int argc, const char** argv) {
   // bytes a tensor, taken after the field's own scalar underlay read them.
   std::optional<PickTable> pickTable;
   ViewState v{render::FrameParams{}, OrbitCamera(render::CameraDesc{}), 1.0, 1.0, o.field.scaleParams(), {}};
+  if (scene.field.grid) v.fieldGrid = sliceGridOf(*scene.field.grid);
+  checkSlabSteps(script, v.fieldGrid, o.script);
   SessionHooks hooks;
   hooks.underlayLoaded = [&](const render::UnderlayVolume& underlay) {
     for (const render::PlaneSpec& spec : o.slices.planesFor(underlay))
       v.planes.push_back({spec, true, spec.axis >= 0 ? underlay.dims[spec.axis] : 0});
+    v.underlayGrid = sliceGridOf(underlay);
   };
   hooks.makeContext = [&](const RenderOptions&) {
     // The script's plane steps are checked before the window opens.
-    checkPlaneSteps(script, v.planes, o.script);
+    checkPlaneSteps(script, v.planes, o.script, v.underlayGrid);
     try {
       return gl::createGlfwContext({o.width, o.height, true, "tensorglyph"});
     } catch (const std::runtime_error& e) {

@@ -41,9 +41,15 @@ std::string duration(double s) {
 
 std::string TerminalProgress::line(std::string_view stage, double done, double total, std::string_view unit,
                                    double seconds) {
+  // The time so far: to a tenth of a second while it is short.
+  auto soFar = [seconds] {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.1f s", seconds);
+    return seconds < 10 ? std::string(buf) : duration(seconds);
+  };
   std::string s(stage);
   s += ": ";
-  const double rate = seconds > 0 ? done / seconds : 0;
+  const double rate = seconds > 0 && unit != util::kPassesUnit ? done / seconds : 0;
   if (total > 0) {
     char pct[16];
     std::snprintf(pct, sizeof pct, "%.0f%%", std::min(100.0, 100.0 * done / total));
@@ -53,16 +59,13 @@ std::string TerminalProgress::line(std::string_view stage, double done, double t
     const Scaled d = scaleFor(done, unit);
     s += number(done, d) + d.suffix;
   } else {
-    // Only the time so far: to a tenth of a second while it is short.
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.1f s", seconds);
-    return s + (seconds < 10 ? std::string(buf) : duration(seconds));
+    return s + soFar();
   }
-  if (rate > 0) {
-    const Scaled r = scaleFor(rate, unit);
-    s += ", " + number(rate, r) + r.suffix + "/s";
-    if (total > done) s += ", " + duration((total - done) / rate) + " left";
-  }
+  // Nothing done yet, or work in uneven passes: a line that still moves.
+  if (!(rate > 0)) return s + ", " + soFar();
+  const Scaled r = scaleFor(rate, unit);
+  s += ", " + number(rate, r) + r.suffix + "/s";
+  if (total > done) s += ", " + duration((total - done) / rate) + " left";
   return s;
 }
 

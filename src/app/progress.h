@@ -30,7 +30,9 @@ class TerminalProgress {
   util::ProgressSink sink();
 
   // The text of one state, `seconds` into its stage:
-  // "loading: 42% (120.5 of 286.1 MB), 95.3 MB/s, 2 s left".
+  // "loading: 42% (120.5 of 286.1 MB), 95.3 MB/s, 2 s left"; without a
+  // rate (nothing done yet, or util::kPassesUnit) the time so far:
+  // "rendering: 33% (2 of 6 passes), 8.2 s".
   static std::string line(std::string_view stage, double done, double total, std::string_view unit, double seconds);
 
  private:

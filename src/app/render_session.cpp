@@ -191,8 +191,8 @@ RenderSession::Frame RenderSession::frame(const RenderOptions& o) const {
   return f;
 }
 
-void RenderSession::draw(const Frame& f) {
-  renderer_->render(f.camera, f.params, *target_);
+void RenderSession::draw(const Frame& f, const render::PassProgress& progress) {
+  renderer_->render(f.camera, f.params, *target_, progress);
   ctx_->api().Finish();
 }
 

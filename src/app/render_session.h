@@ -75,7 +75,8 @@ class RenderSession {
     tensor::FramingBox framing;
   };
   Frame frame(const RenderOptions& o) const;
-  void draw(const Frame& f);
+  // `progress`: told as each pass finishes (render::PassProgress).
+  void draw(const Frame& f, const render::PassProgress& progress = {});
   render::FrameImage readback(const Frame& f, render::Channels channels);
 
   const Scene& scene() const { return scene_; }

@@ -105,6 +105,7 @@ void controls(ViewState& v, const tensor::GlyphSet& meta) {
   int axis = p.slab.axis + 1;
   if (ImGui::Combo("slab", &axis, "off\0x\0y\0z\0")) {
     p.slab.axis = axis - 1;
+    p.slab.normalWC = glm::dvec3(0.0);  // the panel's slabs lie across world axes
     if (p.slab.axis >= 0) {
       // Start as one sample thick, at the middle of the centres' range.
       const double lo = meta.boundsMinWC[p.slab.axis], hi = meta.boundsMaxWC[p.slab.axis];

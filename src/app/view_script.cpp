@@ -4,8 +4,15 @@
 
 #include <algorithm>
 #include <fstream>
-#include <map>
+#include <cmath>
 #include <sstream>
+#include <stdexcept>
+#include <tuple>
+#include <utility>
+
+#include <glm/geometric.hpp>
+#include <glm/mat3x3.hpp>
+#include <glm/matrix.hpp>
 
 #include "app/cli_common.h"
 #include "app/legend_flags.h"
@@ -14,23 +21,13 @@
 #include "app/mesh_flags.h"
 #include "app/names.h"
 #include "app/scale/option_ranges.h"
+#include "app/script_commands.h"
 #include "io/core/image_writer.h"
 #include "io/field/tensor_field.h"
 #include "view/anatomy.h"
 
 namespace tg::app {
 namespace {
-
-// Argument counts; -1 for slab, which takes one or three; -2 for magnitude, one or two;
-// -3 for plane, two or three.
-const std::map<std::string, int, std::less<>> kArity = {
-    {"orbit", 2},  {"pan", 2},    {"zoom", 1},       {"reset", 0},   {"glyph", 1},  {"gamma", 1},
-    {"fa-min", 1}, {"scale", 1},  {"color", 1},      {"slab", -1},   {"light", 2},  {"iterations", 1},
-    {"epsilon", 1}, {"stats", 1}, {"frames", 1},     {"screenshot", 1}, {"magnitude", -2}, {"clamp", 1},
-    {"legend", 1},  {"legend-corner", 1}, {"units", 1}, {"length-units", 1},
-    {"ao", 1},      {"ao-radius", 1}, {"ao-strength", 1}, {"outlines", 1}, {"outline-width", 1},
-    {"shadows", 1}, {"shadow", 2}, {"pick", 2}, {"plane", -3}, {"mesh", 2}, {"mesh-opacity", 2},
-    {"colormap", 1}, {"color-range", -2}, {"view", 1}, {"convention", 1}, {"letters", 1}};
 
 double number(const ScriptStep& s, std::size_t k) { return parseDouble(s.verb, s.args[k]); }
 
@@ -40,23 +37,35 @@ double ranged(const ScriptStep& s, std::size_t k, const NumberRange& r, const st
   return checkedNumber(name.empty() ? s.verb : name, s.args[k], r);
 }
 
-// `plane N on|off` or `plane N index I`: N counts from 1; the plane's own
-// range is checked once the underlay is known (checkPlaneSteps).
+// `plane N on|off`, `plane N SLICE` or `plane N index I`: N counts from 1;
+// the plane's own range is checked once the underlay is known (checkPlaneSteps).
 std::size_t planeNumber(const ScriptStep& s) {
   return std::size_t(parseInt("plane", s.args[0], 1, static_cast<long long>(render::kMaxContextItems)));
 }
 long long planeIndex(const ScriptStep& s) { return parseInt("plane index", s.args[2], 0, 1LL << 31); }
+bool planeToggles(const ScriptStep& s) { return s.args.size() == 2 && (s.args[1] == "on" || s.args[1] == "off"); }
+// A slice as --slice takes it, through its own parser: the script has no grammar of its own for one.
+io::SliceSpec sliceArg(const std::string& verb, const std::string& text) {
+  try {
+    return io::parseSlice(text);
+  } catch (const std::invalid_argument& e) {
+    throw UsageError(verb + ": " + e.what() + " (a slice as --slice takes it: i|j|k:INDEX[:THICKNESS], "
+                     "axial|coronal|sagittal:INDEX[:THICKNESS] or x|y|z=POSITION[mm][:THICKNESS])");
+  }
+}
 void checkPlaneSyntax(const ScriptStep& s) {
   planeNumber(s);
-  if (s.args.size() == 2 && s.args[1] != "on" && s.args[1] != "off")
-    throw UsageError("plane: give N on|off or N index I");
+  if (s.args.size() == 2 && !planeToggles(s)) {
+    if (s.args[1].find_first_of(":=") == std::string::npos)
+      throw UsageError("plane: give N on|off, N SLICE or N index I");
+    if (sliceArg("plane", s.args[1]).thickness != 1)
+      throw UsageError("plane: " + s.args[1] + ": a plane is one slice; give no :THICKNESS");
+  }
   if (s.args.size() == 3) {
-    if (s.args[1] != "index") throw UsageError("plane: give N on|off or N index I");
+    if (s.args[1] != "index") throw UsageError("plane: give N on|off, N SLICE or N index I");
     planeIndex(s);
   }
 }
-
-int axisNamed(const std::string& a) { return a == "x" ? 0 : a == "y" ? 1 : a == "z" ? 2 : -1; }
 
 // `shadow TERM V`, range-checked as render's --shadow-* flags are.
 double shadowValue(const ScriptStep& s) {
@@ -70,14 +79,14 @@ double shadowValue(const ScriptStep& s) {
 
 // Every value check, so that applyStep cannot fail.
 void check(const ScriptStep& s) {
-  const auto it = kArity.find(s.verb);
-  if (it == kArity.end()) throw UsageError("unknown command \"" + s.verb + "\"");
+  const ScriptCommand* c = scriptCommand(s.verb);
+  if (!c) throw UsageError("unknown command \"" + s.verb + "\"");
   const std::size_t n = s.args.size();
-  const bool countOk = it->second >= 0 ? n == std::size_t(it->second)
-                       : it->second == -1 ? (n == 1 || n == 3)
-                       : it->second == -2 ? (n == 1 || n == 2)
-                                          : (n == 2 || n == 3);
-  if (!countOk)
+  // The world range `slab x LO HI` of old reads x as world x where --slice's x is voxel i.
+  if (s.verb == "slab" && n == 3)
+    throw UsageError("slab: give a slice as --slice takes it, or off (slab x LO HI is gone: x there was the world "
+                     "axis, in --slice the voxel axis i; for a world position give z=POSITION[:THICKNESS])");
+  if (n < std::size_t(c->minArgs) || n > std::size_t(c->maxArgs))
     throw UsageError(s.verb + ": wrong number of arguments");
   const std::string& v = s.verb;
   if (v == "orbit" || v == "pan") ranged(s, 0, ranges::kAnyFloat), ranged(s, 1, ranges::kAnyFloat);
@@ -95,12 +104,7 @@ void check(const ScriptStep& s) {
     if (n == 2) ranged(s, 0, ranges::kAnyFloat, "color-range"), ranged(s, 1, ranges::kAnyFloat, "color-range");
     if (n == 2 && !(number(s, 0) < number(s, 1))) throw UsageError("color-range: LO must be below HI");
   }
-  if (v == "slab") {
-    if (n == 1 && s.args[0] != "off") throw UsageError("slab: give x|y|z LO HI, or off");
-    if (n == 3 && axisNamed(s.args[0]) < 0) throw UsageError("slab: axis must be x, y or z");
-    if (n == 3) ranged(s, 1, ranges::kAnyFloat), ranged(s, 2, ranges::kAnyFloat);
-    if (n == 3 && !(number(s, 1) <= number(s, 2))) throw UsageError("slab: LO must not exceed HI");
-  }
+  if (v == "slab" && s.args[0] != "off") sliceArg("slab", s.args[0]);
   if (v == "light") {
     const std::string& w = s.args[0];
     if (w != "ambient" && w != "head" && w != "key" && w != "specular" && w != "shininess")
@@ -180,7 +184,7 @@ std::vector<ScriptStep> parseScript(const std::string& path) {
 }
 
 void checkPlaneSteps(const std::vector<ScriptStep>& steps, const std::vector<PlaneView>& planes,
-                     const std::string& path) {
+                     const std::string& path, const std::optional<SliceGrid>& underlay) {
   for (const ScriptStep& s : steps) {
     if (s.verb != "plane") continue;
     const std::string where = path + ":" + std::to_string(s.line) + ": plane " + s.args[0] + ": ";
@@ -190,12 +194,91 @@ void checkPlaneSteps(const std::vector<ScriptStep>& steps, const std::vector<Pla
                                                    : "the view has " + std::to_string(planes.size()) +
                                                          " slice plane(s), numbered from 1 in the order of --plane and --plane-at"));
     const PlaneView& p = planes[n - 1];
-    if (s.args.size() < 3) continue;
+    if (planeToggles(s)) continue;
     if (p.slices <= 0) throw io::InputError(where + "an oblique plane (--plane-at) can only be switched on or off");
+    if (s.args.size() == 2) {
+      if (!underlay) throw io::InputError(where + "the view has no underlay grid to place " + s.args[1] + " on");
+      try {
+        resolveOn("plane " + s.args[0] + " " + s.args[1], sliceArg("plane", s.args[1]), *underlay);
+      } catch (const UsageError& e) {
+        throw io::InputError(path + ":" + std::to_string(s.line) + ": " + e.what() + " of the underlay's grid");
+      }
+      continue;
+    }
     if (planeIndex(s) >= p.slices)
       throw io::InputError(where + "index " + s.args[2] + " is outside 0.." + std::to_string(p.slices - 1) + " along " +
                            std::string(1, "xyz"[p.spec.axis]));
   }
+}
+
+void checkSlabSteps(const std::vector<ScriptStep>& steps, const std::optional<SliceGrid>& field,
+                    const std::string& path) {
+  for (const ScriptStep& s : steps) {
+    if (s.verb != "slab" || s.args[0] == "off") continue;
+    const std::string where = path + ":" + std::to_string(s.line) + ": ";
+    if (!field)
+      throw io::InputError(where + "slab " + s.args[0] + ": the glyphs are a point set, with no grid to slice");
+    try {
+      resolveOn("slab " + s.args[0], sliceArg("slab", s.args[0]), *field);
+    } catch (const UsageError& e) {
+      throw io::InputError(where + e.what() + " of the glyphs' grid");
+    }
+  }
+}
+
+SliceGrid sliceGridOf(const io::GridInfo& g) {
+  SliceGrid out;
+  std::copy(g.dims, g.dims + 3, out.dims);
+  std::copy(g.origin, g.origin + 3, out.placement.originWC);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) out.placement.axesWC[3 * r + c] = g.directions[3 * r + c] * g.spacing[c];
+  return out;
+}
+
+SliceGrid sliceGridOf(const render::UnderlayVolume& v) {
+  SliceGrid out;
+  std::copy(v.dims, v.dims + 3, out.dims);
+  for (int r = 0; r < 3; ++r) {
+    out.placement.originWC[r] = v.indexToWC[3][r];
+    for (int c = 0; c < 3; ++c) out.placement.axesWC[3 * r + c] = v.indexToWC[c][r];
+  }
+  return out;
+}
+
+io::SliceSpec resolveOn(const std::string& what, const io::SliceSpec& spec, const SliceGrid& g) {
+  const io::SliceSpec r = io::resolveSlice(spec, g.placement, g.dims);
+  const int size = g.dims[r.axis];
+  if (r.index < 0 || r.index >= size)
+    throw UsageError(what + ": " +
+                     (spec.positionWC ? "the position falls at index " : "index ") + std::to_string(r.index) +
+                     (spec.positionWC ? ", outside 0.." + std::to_string(size - 1) + " along voxel axis " + "ijk"[r.axis]
+                                      : " is outside 0.." + std::to_string(size - 1) + " along voxel axis " + "ijk"[r.axis]));
+  return r;
+}
+
+render::Slab slabOf(const io::SliceSpec& r, const SliceGrid& g) {
+  // Voxel coordinate a of a point p is row a of the axes' inverse applied to
+  // p - origin: the slab is the band of that coordinate the slice's voxels
+  // fill (io::Selector's), a quarter voxel wider each side.
+  glm::dmat3 m;
+  for (int row = 0; row < 3; ++row)
+    for (int c = 0; c < 3; ++c) m[c][row] = g.placement.axesWC[3 * row + c];
+  const glm::dmat3 inv = glm::inverse(m);
+  const glm::dvec3 row(inv[0][r.axis], inv[1][r.axis], inv[2][r.axis]);
+  const double len = glm::length(row);
+  const glm::dvec3 n = row / len;
+  const glm::dvec3 origin(g.placement.originWC[0], g.placement.originWC[1], g.placement.originWC[2]);
+  const double at = glm::dot(n, origin);
+  double lo = at + (double(r.index - (r.thickness - 1) / 2) - 0.25) / len;
+  double hi = at + (double(r.index + r.thickness / 2) + 0.25) / len;
+  // Across a world axis (a grid whose axes are the world's): the axis form,
+  // exact in the shaders and cutting the shadow casters' box.
+  for (int w = 0; w < 3; ++w)
+    if (n[(w + 1) % 3] == 0.0 && n[(w + 2) % 3] == 0.0) {
+      if (n[w] < 0) std::tie(lo, hi) = std::pair(-hi, -lo);
+      return render::Slab{w, lo, hi};
+    }
+  return render::Slab{r.axis, lo, hi, n};
 }
 
 void resize(ViewState& v) {
@@ -264,8 +347,16 @@ void applyStep(const ScriptStep& s, ViewState& v) {
     const std::size_t n = planeNumber(s);
     if (n > v.planes.size()) return;
     PlaneView& plane = v.planes[n - 1];
-    if (s.args.size() == 2) plane.visible = s.args[1] == "on";
-    else if (plane.slices > 0) plane.spec.index = std::min(planeIndex(s), plane.slices - 1);
+    if (planeToggles(s)) {
+      plane.visible = s.args[1] == "on";
+    } else if (s.args.size() == 2 && plane.slices > 0 && v.underlayGrid) {
+      const io::SliceSpec r = io::resolveSlice(io::parseSlice(s.args[1]), v.underlayGrid->placement, v.underlayGrid->dims);
+      plane.slices = v.underlayGrid->dims[r.axis];
+      plane.spec.axis = r.axis;
+      plane.spec.index = std::clamp(r.index, 0LL, plane.slices - 1);
+    } else if (s.args.size() == 3 && plane.slices > 0) {
+      plane.spec.index = std::min(planeIndex(s), plane.slices - 1);
+    }
   }
   else if (w == "scale") {
     v.scaleFactor = number(s, 0);
@@ -279,7 +370,10 @@ void applyStep(const ScriptStep& s, ViewState& v) {
     }
     resize(v);
   } else if (w == "slab") {
-    p.slab = s.args.size() == 1 ? render::Slab{} : render::Slab{axisNamed(s.args[0]), number(s, 1), number(s, 2)};
+    // checkSlabSteps has held the slice to the glyphs' grid.
+    if (s.args[0] == "off") p.slab = render::Slab{};
+    else if (v.fieldGrid)
+      p.slab = slabOf(io::resolveSlice(io::parseSlice(s.args[0]), v.fieldGrid->placement, v.fieldGrid->dims), *v.fieldGrid);
   } else if (w == "light") {
     const auto value = float(number(s, 1));
     const std::string& t = s.args[0];

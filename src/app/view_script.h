@@ -1,55 +1,16 @@
 #pragma once
 // The viewer's state and its script language (`tensorglyph view --script`):
-// one command per line, '#' starts a comment. A script is parsed and checked
-// whole before the window opens, so a mistake on line 40 costs no run.
-//
-//   orbit YAW PITCH        degrees (turntable about the world up axis)
-//   pan DX DY              move the scene by view heights, right and up
-//   zoom F                 F times closer
-//   reset                  the initial view
-//   view NAME              look from an anatomical side, look-at and distance kept: axial,
-//                          coronal, sagittal, superior, inferior, anterior, posterior, left,
-//                          right (render --view; keys 1, 2, 3: axial, coronal, sagittal)
-//   convention radiological|neurological   which side axial and coronal look from
-//                          (render --radiological, --neurological; key V swaps them)
-//   letters on|off         R/L, A/P, S/I on the image's edges (render --orientation-letters; key L)
-//   glyph ellipsoid|superquadric
-//   gamma G                superquadric sharpness, >= 0
-//   fa-min F               hide glyphs with FA below F
-//   scale F                glyph size, F times the initial scale
-//   magnitude linear|log|shape [LAMBDA0]   size mapping (tensor/glyph_scale.h); LAMBDA0 default: the median
-//   clamp N                no glyph wider than N sample spacings; 0: off
-//   color dec|fa|md|cl|cp|sign
-//   slab x|y|z LO HI       only glyphs with centres in [LO, HI] along the axis (WC)
-//   slab off
-//   light ambient|head|key|specular|shininess V
-//   iterations N           superquadric Newton iterations at most
-//   epsilon E              superquadric hit tolerance
-//   stats on|off           count Newton iterations (status line)
-//   legend on|off          the colour key and scale bar (render --legend)
-//   legend-corner top-left|top-right|bottom-left|bottom-right
-//   units TEXT             units of the tensor values in the legend (one word)
-//   length-units TEXT      units of positions for the scale bar (one word)
-//   ao on|off              screen-space ambient occlusion
-//   ao-radius R            its radius in world units (> 0)
-//   ao-strength S          its weight, 0..4
-//   outlines on|off        silhouette and crease lines
-//   outline-width W        their width in pixels, 0.25..8
-//   shadows on|off         soft shadows from the key light
-//   shadow penumbra|strength|bias|map-size V   (render's --shadow-* flags and ranges)
-//   plane N on|off         show or hide slice plane N (1: the first --plane or --plane-at)
-//   plane N index I        move index plane N to slice I of its axis (0-based, as --plane)
-//   mesh N on|off|opaque|see-through|edges   the N-th mesh (--mesh-from-input first, then
-//                          each --mesh; from 1): shown, hidden, or drawn so (render's --mesh-mode)
-//   mesh-opacity N A       the N-th mesh's see-through opacity, 0..1
-//   frames N               render N frames unchanged (for timing)
-//   screenshot FILE        save the rendered view (without the panel)
-//   pick I J               print what pixel (I, J) shows as one line of JSON on
-//                          stdout, as render --pick (column I, row J from the top)
+// one command per line, '#' starts a comment, each a row of the command
+// table (app/script_commands.h; `tensorglyph help script`, docs/script.md).
+// A script is parsed and checked whole before the window opens, so that a
+// mistake on line 40 costs no run. Slices (`slab`, `plane N SLICE`) are
+// written as --slice takes them and parsed by the same code (io::parseSlice).
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "app/orbit_camera.h"
+#include "io/core/selection.h"
 #include "render/mesh_item.h"
 #include "render/frame_params.h"
 #include "view/underlay.h"
@@ -72,6 +33,25 @@ struct MeshView {
   render::MeshParams params;
 };
 
+// A grid that a script's slice is resolved on (io::resolveSlice): the
+// glyphs' field's for `slab`, the underlay's for `plane N SLICE`.
+struct SliceGrid {
+  io::GridPlacement placement;
+  int dims[3] = {0, 0, 0};
+};
+SliceGrid sliceGridOf(const io::GridInfo& g);
+SliceGrid sliceGridOf(const render::UnderlayVolume& v);
+
+// `spec` on grid `g` (io::resolveSlice), held to it: throws UsageError
+// "WHAT: ..." (the step as written, "slab axial:40") for an index outside
+// the grid along its voxel axis.
+io::SliceSpec resolveOn(const std::string& what, const io::SliceSpec& spec, const SliceGrid& g);
+// The glyph centres of a resolved slice as render's slab: the voxels a
+// --slice of it keeps, and no others, on any grid (across a world axis
+// where the grid's axes are the world's; across the slice's own normal on
+// an oblique grid).
+render::Slab slabOf(const io::SliceSpec& resolved, const SliceGrid& g);
+
 struct ViewState {
   render::FrameParams params;
   OrbitCamera camera;
@@ -85,6 +65,7 @@ struct ViewState {
   std::vector<MeshView> meshes{};
   bool radiological = false;  // the convention `view axial` and `view coronal` follow
   std::string view{};         // the last view named, which a change of convention turns again
+  std::optional<SliceGrid> fieldGrid{}, underlayGrid{};  // none: a point set, no underlay
 };
 
 // Turns the camera to the named view (render::namedView) in v's convention.
@@ -110,10 +91,15 @@ std::vector<ScriptStep> parseScript(const std::string& path);
 
 // The `plane` steps against the planes the view has, once the underlay is
 // known and before the window opens: throws io::InputError "PATH:LINE: ..."
-// for a plane that does not exist, an index outside its axis or an index for
-// an oblique plane.
+// for a plane that does not exist, an index or SLICE outside its grid (the
+// underlay's, `underlay`) or either for an oblique plane.
 void checkPlaneSteps(const std::vector<ScriptStep>& steps, const std::vector<PlaneView>& planes,
-                     const std::string& path);
+                     const std::string& path, const std::optional<SliceGrid>& underlay = std::nullopt);
+// The `slab` steps against the glyphs' grid (none: a point set), once the
+// field is loaded: io::InputError "PATH:LINE: slab ..." for a slice outside
+// it, or any slice of a point set.
+void checkSlabSteps(const std::vector<ScriptStep>& steps, const std::optional<SliceGrid>& field,
+                    const std::string& path);
 // io::InputError "PATH:LINE: mesh: ..." for a mesh step naming a mesh beyond
 // the `meshes` loaded; run once they are, before the window opens.
 void checkScriptMeshes(const std::vector<ScriptStep>& steps, std::size_t meshes, const std::string& path);

@@ -96,10 +96,19 @@ inline constexpr int kMinShadowMapSize = 64, kMaxShadowMapSize = 8192;
 inline constexpr float kMaxShadowPenumbra = 0.1f, kMaxShadowBias = 64.0f;
 
 // Glyphs whose centre lies in [lo, hi] along a WC axis (ParaView's and
-// Slicer's slice of a glyph volume, as thick as asked).
+// Slicer's slice of a glyph volume, as thick as asked), or along normalWC
+// where it is given: a slice of an oblique grid (the viewer's `slab`).
 struct Slab {
   int axis = -1;  // 0, 1, 2; -1: off
   double lo = 0, hi = 0;
+  glm::dvec3 normalWC{0.0};  // unit; zero: along `axis`
+  // The direction lo and hi are measured along.
+  glm::dvec3 direction() const {
+    if (normalWC != glm::dvec3(0.0) || axis < 0) return normalWC;
+    glm::dvec3 e(0.0);
+    e[axis] = 1.0;
+    return e;
+  }
   bool operator==(const Slab&) const = default;
 };
 

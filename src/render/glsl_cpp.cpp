@@ -23,6 +23,7 @@ void Shaders::setGlyph(const FrameParams& p) {
   uMaxRadiusWC = float(p.sizing.maxRadiusWC);
   uFaMin = float(p.faMin);
   uSlabAxis = p.slab.axis;
+  uSlabNormal = vec3(p.slab.direction());
   uSlabWC = vec2(float(p.slab.lo), float(p.slab.hi));
 }
 

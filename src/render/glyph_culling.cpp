@@ -113,10 +113,9 @@ void GlyphCulling::prepare(const Camera& cam, double scale, const tensor::SizeMa
   planes.fill(glm::vec4(0, 0, 0, 1));
   for (std::size_t k = 0; k < 6 && cullRanges; ++k) planes[k] = glm::vec4(f[k]);
   if (slabbed) {
-    planes[6][slab.axis] = 1.0f;
-    planes[6].w = -float(slab.lo);
-    planes[7][slab.axis] = -1.0f;
-    planes[7].w = float(slab.hi);
+    const glm::vec3 across(slab.direction());
+    planes[6] = glm::vec4(across, -float(slab.lo));
+    planes[7] = glm::vec4(-across, float(slab.hi));
   }
   const GLuint zero = 0;
   gl_.NamedBufferSubData(visible_, 0, sizeof(zero), &zero);
@@ -157,6 +156,7 @@ void GlyphCulling::cullPixels(const Camera& cam, double scale, const tensor::Siz
   prog.set("uMaxRadiusWC", float(sizing.maxRadiusWC));
   prog.set("uFaMin", faMin);
   prog.set("uSlabAxis", slab.axis);
+  prog.set("uSlabNormal", glm::vec3(slab.direction()));
   prog.set("uSlabWC", glm::vec2(float(slab.lo), float(slab.hi)));
   const std::size_t n = table_.ranges.size();
   prog.set("uRangeCount", int(n));

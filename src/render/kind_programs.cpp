@@ -21,6 +21,7 @@ void setGlyphUniforms(const gl::Program& prog, const FrameParams& p, const Frame
   if (changed(&FrameParams::faMin)) prog.set("uFaMin", float(p.faMin));
   if (changed(&FrameParams::slab)) {
     prog.set("uSlabAxis", p.slab.axis);
+    prog.set("uSlabNormal", glm::vec3(p.slab.direction()));
     prog.set("uSlabWC", glm::vec2(float(p.slab.lo), float(p.slab.hi)));
   }
   if (changed(&FrameParams::color)) prog.set("uColorMode", int(p.color));

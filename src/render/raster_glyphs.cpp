@@ -185,7 +185,8 @@ std::pair<glm::dvec3, glm::dvec3> castersBoxWC(const glm::dvec3& centresLoWC, co
   // The selected centres, grown by the largest glyph box's half diagonal (a
   // superquadric reaches its box's corners).
   glm::dvec3 lo = centresLoWC, hi = centresHiWC;
-  if (p.slab.axis >= 0) {
+  // A slab across a world axis cuts the box; an oblique one leaves it whole.
+  if (p.slab.axis >= 0 && p.slab.normalWC == glm::dvec3(0.0)) {
     const int a = p.slab.axis;
     lo[a] = std::max(lo[a], p.slab.lo);
     hi[a] = std::max(lo[a], std::min(hi[a], p.slab.hi));

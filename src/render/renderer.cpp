@@ -182,30 +182,48 @@ bool GlyphRenderer::runSlot(Slot& s, const PassFrame& f) {
   return true;
 }
 
-void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffer& target) {
+void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffer& target,
+                           const PassProgress& progress) {
   if (!params_ || !(*params_ == p)) setParams(p);
   gl_.ClipControl(GL_LOWER_LEFT, GL_ZERO_TO_ONE);
   // Before the shadow map: its casters run the same vertex stages.
   if (colorTable_) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_COLOR_TABLE, colorTable_);
   ranges_.underlays = p.legend.enabled ? legendKeys() : std::vector<UnderlayKey>{};
   PassFrame frame{cam, p, target, aoRadiusWC(p), ranges_, *path_, context_, nullptr};
+  Slot& shadow = slots_[kShadow];
+  const bool casts = shadow.decl.enabled(p) && (glyphCount_ > 0 || !context_.empty());
+  // The passes this frame runs, for `progress`: the glyphs (with the opaque
+  // context) and the lighting (with the translucent context) always.
+  int total = 2 + int(casts), done = 0;
+  for (const SlotIndex s : {kAo, kOutline, kOrientation, kLegend}) total += int(slots_[s].decl.enabled(p));
+  auto finished = [&](std::string_view pass) {
+    if (!progress) return;
+    gl_.Finish();
+    progress(pass, ++done, total);
+  };
+  auto slot = [&](SlotIndex s) {
+    if (runSlot(slots_[s], frame)) finished(slots_[s].decl.name);
+  };
   // The shadow map first, so that culling is left prepared for the view; a
   // scene with nothing to cast keeps the pass as it is and draws no map.
-  Slot& shadow = slots_[kShadow];
   if (!shadow.decl.enabled(p)) shadow.pass.reset();
-  else if ((glyphCount_ > 0 || !context_.empty()) && runSlot(shadow, frame))
+  else if (casts && runSlot(shadow, frame)) {
     frame.shadow = static_cast<const ShadowPass*>(shadow.pass.get());
+    finished("shadow");
+  }
   path_->drawView(cam, p, target);
   drawContextOpaque(gl_, context_, cam, p, ContextTarget::View);
+  finished("glyphs");
   gl_.Disable(GL_DEPTH_TEST);
-  runSlot(slots_[kAo], frame);
+  slot(kAo);
   lighting_.run(frame);
   for (const auto& item : context_)
     if (item->visible() && item->translucent()) item->drawTranslucent(cam, p, target);
-  runSlot(slots_[kOutline], frame);
-  runSlot(slots_[kOrientation], frame);
+  finished("lighting");
+  slot(kOutline);
+  slot(kOrientation);
   // Last before readback: the legend draws over every effect.
-  runSlot(slots_[kLegend], frame);
+  slot(kLegend);
   gl::checkError(gl_, "GlyphRenderer::render");
 }
 

@@ -6,6 +6,7 @@
 // outlines and the legend.
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -38,6 +39,12 @@ struct OverlayFactories {
   PassFactory legend;       // FrameParams::legend
   PassFactory orientation;  // FrameParams::orientationLetters
 };
+
+// Told after each pass of a frame ("shadow", "glyphs", "ao", "lighting",
+// "outline", "orientation", "legend": those the frame runs) that the GPU
+// has finished it: the pass, passes done and passes in the frame. The wait
+// (a glFinish per pass) is made only when someone listens.
+using PassProgress = std::function<void(std::string_view pass, int done, int total)>;
 
 class GlyphRenderer {
  public:
@@ -87,7 +94,7 @@ class GlyphRenderer {
   // `p` differs from the last parameters.
   void setParams(const FrameParams& p);
   // Not const: culling caches its compaction between frames.
-  void render(const Camera& cam, const FrameParams& p, const GBuffer& target);
+  void render(const Camera& cam, const FrameParams& p, const GBuffer& target, const PassProgress& progress = {});
   FrameImage readback(const Camera& cam, const GBuffer& target, Channels channels = Channels::All) const;
   // Of the last frame rendered with iterationStats on.
   IterationStats iterationStats() const { return path_->iterationStats(); }

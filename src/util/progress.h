@@ -18,4 +18,9 @@ namespace tg::util {
 using ProgressSink =
     std::function<void(std::string_view stage, double done, double total, std::string_view unit)>;
 
+// The render stage's unit: a frame's passes (render::PassProgress), which
+// differ in cost (the glyphs' is most of a frame), so that no rate or time
+// left is made of them; the time so far is shown instead.
+inline constexpr std::string_view kPassesUnit = "passes";
+
 }  // namespace tg::util

@@ -28,6 +28,20 @@ TEST(ProgressLine, ShowsFractionRateAndTimeLeft) {
   EXPECT_EQ(TerminalProgress::line("preparing", 0, 0, "", 0.64), "preparing: 0.6 s");
 }
 
+TEST(ProgressLine, PassesAndWorkNotYetBegunShowTheTimeSoFarNotARate) {
+  // A frame's passes differ in cost: a rate of them would promise a time left
+  // that the glyphs' pass alone outlasts.
+  const std::string passes = TerminalProgress::line("rendering", 2, 6, tg::util::kPassesUnit, 8.24);
+  EXPECT_EQ(passes, "rendering: 33% (2 of 6 passes), 8.2 s");
+  EXPECT_EQ(passes.find("/s"), std::string::npos);
+  EXPECT_EQ(passes.find("left"), std::string::npos);
+  EXPECT_EQ(TerminalProgress::line("rendering", 5, 6, tg::util::kPassesUnit, 75.0),
+            "rendering: 83% (5 of 6 passes), 1 min 15 s");
+  // Nothing done yet of a known total: the line still moves.
+  EXPECT_EQ(TerminalProgress::line("rendering", 0, 1, "frames", 12.0), "rendering: 0% (0 of 1 frames), 12 s");
+  EXPECT_NE(TerminalProgress::line("rendering", 0, 1, "frames", 3.0), TerminalProgress::line("rendering", 0, 1, "frames", 4.0));
+}
+
 TEST(ProgressLine, DrawsOnATerminalOnlyAndClearsItself) {
   int pipeFds[2];
   ASSERT_EQ(::pipe(pipeFds), 0);

@@ -12,6 +12,7 @@
 
 #include "app/scale/cli_values.h"
 #include "app/render_options.h"
+#include "app/script_commands.h"
 #include "app/view_script.h"
 #include "io/field/tensor_field.h"
 
@@ -97,17 +98,19 @@ TEST(OrbitCamera, PanKeepsTheViewDirectionAndZoomTheDirection) {
 }
 
 TEST_F(ViewScript, ParsesAppliesAndNamesTheLineOfAMistake) {
-  std::ofstream(path) << "# comment\n\nscale 2   # twice\nslab y -1 3\nlight key 0.7\nglyph superquadric\n"
+  std::ofstream(path) << "# comment\n\nscale 2   # twice\nslab j:2\nlight key 0.7\nglyph superquadric\n"
                          "stats on\nfa-min 0.4\nslab off\n";
   const auto steps = app::parseScript(path);
   ASSERT_EQ(steps.size(), 7u);
   EXPECT_EQ(steps[0].line, 3);
   app::ViewState v{{}, app::OrbitCamera(start()), 0.5, 1.0};
+  v.fieldGrid = app::SliceGrid{{}, {5, 5, 5}};  // unit voxels at 0..4
   for (std::size_t k = 0; k < 6; ++k) app::applyStep(steps[k], v);
   EXPECT_DOUBLE_EQ(v.params.scale, 1.0);
   EXPECT_EQ(v.params.slab.axis, 1);
-  EXPECT_EQ(v.params.slab.lo, -1.0);
-  EXPECT_EQ(v.params.slab.hi, 3.0);
+  EXPECT_EQ(v.params.slab.lo, 1.75);  // the slice's centres, a quarter voxel wider each side
+  EXPECT_EQ(v.params.slab.hi, 2.25);
+  EXPECT_EQ(v.params.slab.normalWC, glm::dvec3(0.0)) << "across a world axis: the axis form";
   EXPECT_FLOAT_EQ(v.params.light.key, 0.7f);
   EXPECT_EQ(v.params.glyph, render::GlyphKind::Superquadric);
   EXPECT_TRUE(v.params.iterationStats);
@@ -115,7 +118,8 @@ TEST_F(ViewScript, ParsesAppliesAndNamesTheLineOfAMistake) {
   app::applyStep(steps[6], v);
   EXPECT_EQ(v.params.slab.axis, -1);
 
-  EXPECT_EQ(scriptError("zoom 2\n\nslab z 3 1\n"), path + ":3: slab: LO must not exceed HI");
+  EXPECT_PRED_FORMAT2(testing::IsSubstring, path + ":3: slab: give a slice as --slice takes it, or off",
+                      scriptError("zoom 2\n\nslab z 3 1\n"));
 }
 
 TEST_F(ViewScript, MagnitudeAndClampResolveTheSizeAgainWithoutTheRecords) {
@@ -234,6 +238,7 @@ TEST_F(ViewScript, PlaneStepsToggleAndMoveOnlyThePlanesTheViewHas) {
   const auto steps = app::parseScript(path);
   ASSERT_EQ(steps.size(), 5u);
   app::ViewState v{{}, app::OrbitCamera(start()), 1.0, 1.0};
+  v.underlayGrid = app::SliceGrid{{}, {40, 30, 20}};
   render::PlaneSpec z, x, oblique;
   z.axis = 2;
   z.index = 3;
@@ -275,11 +280,95 @@ TEST_F(ViewScript, PlaneStepsToggleAndMoveOnlyThePlanesTheViewHas) {
   // Malformed steps: refused by parseScript itself.
   const std::pair<const char*, const char*> bad[] = {
       {"plane 0 on\n", ":1: plane: \"0\" is not an integer within 1..255"},
-      {"plane 1 maybe\n", ":1: plane: give N on|off or N index I"},
-      {"plane 1 move 3\n", ":1: plane: give N on|off or N index I"},
+      {"plane 1 maybe\n", ":1: plane: give N on|off, N SLICE or N index I"},
+      {"plane 1 move 3\n", ":1: plane: give N on|off, N SLICE or N index I"},
+      {"plane 1 k:3:2\n", ":1: plane: k:3:2: a plane is one slice; give no :THICKNESS"},
+      {"plane 1 q:3\n", ":1: plane: unknown axis \"q\""},
       {"plane 1 index -1\n", ":1: plane index: \"-1\" is not an integer within 0..2147483648"},
       {"plane 1\n", ":1: plane: wrong number of arguments"}};
-  for (const auto& [text, message] : bad) EXPECT_EQ(scriptError(text), path + message) << text;
+  for (const auto& [text, message] : bad)
+    EXPECT_PRED_FORMAT2(testing::IsSubstring, path + message, scriptError(text)) << text;
+
+  // A SLICE as --slice takes it, on the underlay's grid: the plane turns to
+  // the voxel axis it names.
+  std::ofstream(path) << "plane 2 k:4\nplane 1 sagittal:12\nplane 2 z=7.2\n";
+  const auto slices = app::parseScript(path);
+  EXPECT_NO_THROW(app::checkPlaneSteps(slices, v.planes, path, v.underlayGrid));
+  app::applyStep(slices[0], v);
+  EXPECT_EQ(v.planes[1].spec.axis, 2);
+  EXPECT_EQ(v.planes[1].spec.index, 4);
+  EXPECT_EQ(v.planes[1].slices, 20);
+  app::applyStep(slices[1], v);
+  EXPECT_EQ(v.planes[0].spec.axis, 0);
+  EXPECT_EQ(v.planes[0].spec.index, 12);
+  EXPECT_EQ(v.planes[0].slices, 40);
+  app::applyStep(slices[2], v);
+  EXPECT_EQ(v.planes[1].spec.index, 7);
+  for (const auto& [text, message] : std::vector<std::pair<std::string, std::string>>{
+           {"plane 1 k:20\n", ":1: plane 1 k:20: index 20 is outside 0..19 along voxel axis k of the underlay's grid"},
+           {"plane 1 z=-3\n", ":1: plane 1 z=-3: the position falls at index -3, outside 0..19 along voxel axis k"},
+           {"plane 3 k:2\n", ":1: plane 3: an oblique plane (--plane-at) can only be switched on or off"}}) {
+    std::ofstream(path) << text;
+    const auto s = app::parseScript(path);
+    EXPECT_PRED_FORMAT2(testing::IsSubstring, path + message,
+                        inputErrorOf([&] { app::checkPlaneSteps(s, v.planes, path, v.underlayGrid); }, text));
+  }
+}
+
+// `slab SLICE` keeps exactly the glyphs that --slice SLICE would load
+// (io::Selector's voxels), on a grid whose axes are permuted and flipped and
+// on small_64D's oblique one, in every form --slice takes.
+TEST_F(ViewScript, SlabKeepsTheGlyphsASliceWouldLoadOnAnyGrid) {
+  app::SliceGrid permuted{{}, {6, 7, 8}};
+  const double flips[9] = {0, 0, -1.5, 2, 0, 0, 0, -1, 0};  // i along +y, j along -z, k along -x
+  std::copy(flips, flips + 9, permuted.placement.axesWC);
+  permuted.placement.originWC[0] = 10;
+  app::SliceGrid oblique{{}, {10, 9, 8}};
+  const double tilted[9] = {0, -2, 0, -1.94, 0, -0.487, -0.487, 0, 1.94};
+  std::copy(tilted, tilted + 9, oblique.placement.axesWC);
+  oblique.placement.originWC[0] = 20, oblique.placement.originWC[1] = 25.171, oblique.placement.originWC[2] = 12.32;
+  for (const app::SliceGrid* g : {&permuted, &oblique})
+    for (const std::string spec : {"i:2", "k:0:3", "j:6:2", "axial:3", "coronal:4:3", "sagittal:1", "x=9.5:2", "z=12"}) {
+      std::ofstream(path) << "slab " << spec << "\n";
+      const auto steps = app::parseScript(path);
+      app::ViewState v{{}, app::OrbitCamera(start()), 1.0, 1.0};
+      v.fieldGrid = *g;
+      try {
+        app::checkSlabSteps(steps, v.fieldGrid, path);
+      } catch (const io::InputError&) {
+        continue;  // a position outside this grid: refused, as --slice refuses it
+      }
+      app::applyStep(steps[0], v);
+      const render::Slab& slab = v.params.slab;
+      ASSERT_GE(slab.axis, 0) << spec;
+      io::Selection sel;
+      sel.slice = io::parseSlice(spec);
+      const io::Selector selector(sel, "grid", g->dims, &g->placement);
+      const glm::dvec3 dir = slab.direction();
+      std::size_t kept = 0;
+      for (int k = 0; k < g->dims[2]; ++k)
+        for (int j = 0; j < g->dims[1]; ++j)
+          for (int i = 0; i < g->dims[0]; ++i) {
+            const double* m = g->placement.axesWC;
+            double p[3];
+            for (int r = 0; r < 3; ++r) p[r] = g->placement.originWC[r] + m[3 * r] * i + m[3 * r + 1] * j + m[3 * r + 2] * k;
+            const std::uint64_t index = std::uint64_t(i) + std::uint64_t(g->dims[0]) * (j + std::uint64_t(g->dims[1]) * k);
+            const bool slice = selector.judge(index, p) == io::Selector::Verdict::Keep;
+            const double d = glm::dot(glm::dvec3(p[0], p[1], p[2]), dir);
+            EXPECT_EQ(d >= slab.lo && d <= slab.hi, slice) << spec << " voxel " << i << " " << j << " " << k;
+            kept += slice;
+          }
+      EXPECT_GT(kept, 0u) << spec;
+    }
+  // Errors name the line and the slice, and a point set has no slices.
+  std::ofstream(path) << "zoom 2\nslab k:8\n";
+  EXPECT_PRED_FORMAT2(testing::IsSubstring, path + ":2: slab k:8: index 8 is outside 0..7 along voxel axis k of the glyphs' grid",
+                      inputErrorOf([&] { app::checkSlabSteps(app::parseScript(path), permuted, path); }, "k:8"));
+  std::ofstream(path) << "slab axial:2\n";
+  EXPECT_PRED_FORMAT2(testing::IsSubstring, path + ":1: slab axial:2: the glyphs are a point set",
+                      inputErrorOf([&] { app::checkSlabSteps(app::parseScript(path), std::nullopt, path); }, "points"));
+  EXPECT_PRED_FORMAT2(testing::IsSubstring, path + ":1: slab: unknown axis \"w\"", scriptError("slab w:1\n"));
+  EXPECT_PRED_FORMAT2(testing::IsSubstring, path + ":1: slab: thickness must be at least 1", scriptError("slab k:1:0\n"));
 }
 
 TEST_F(ViewScript, MeshCommandsToggleAndSetTheModeOfOneMesh) {
@@ -341,7 +430,7 @@ TEST_F(ViewScript, ValuesAreHeldToTheRangesRenderDeclares) {
     }
   }
   for (const std::string line : {"light key 1e300", "light ambient -1", "light specular 2", "light shininess 0",
-                                 "zoom 1e-40", "scale 1e300", "slab z 1e300 2e300", "frames 0", "frames 100001",
+                                 "zoom 1e-40", "scale 1e300", "frames 0", "frames 100001",
                                  "pick -1 3", "pick 3 16384"})
     EXPECT_PRED_FORMAT2(testing::IsSubstring, "must be within", scriptError(line + "\n")) << line;
   std::ofstream(path) << "fa-min 1\nlight key 1\nlight shininess 200\nframes 100000\npick 16383 0\n";
@@ -353,6 +442,26 @@ TEST_F(ViewScript, ValuesAreHeldToTheRangesRenderDeclares) {
 
 }  // namespace
 }  // namespace tg::app
+
+// The command table is the parser's: each row's verb is known, held to the
+// row's argument counts, and in the reference that `help script` prints.
+TEST_F(ViewScript, TheCommandTableIsWhatTheParserTakes) {
+  const std::string reference = app::scriptReference(false), markdown = app::scriptReference(true);
+  for (const app::ScriptCommand& c : app::scriptCommands()) {
+    for (const int n : {c.minArgs - 1, c.maxArgs + 1}) {
+      if (n < 0) continue;
+      std::string line = c.verb;
+      for (int k = 0; k < n; ++k) line += " 1";
+      const std::string err = scriptError(line + "\n");
+      EXPECT_EQ(err.find("unknown command"), std::string::npos) << line;
+      EXPECT_PRED_FORMAT2(testing::IsSubstring, "arguments", err) << line;
+    }
+    EXPECT_NE(reference.find("\n  " + c.verb + (c.args.empty() ? "\n" : " ")), std::string::npos) << c.verb;
+    EXPECT_NE(markdown.find("| `" + c.verb + "` |"), std::string::npos) << c.verb;
+  }
+  EXPECT_EQ(app::scriptCommand("spin"), nullptr);
+  EXPECT_PRED_FORMAT2(testing::IsSubstring, "unknown command \"spin\"", scriptError("spin 3\n"));
+}
 
 TEST_F(ViewScript, ColourModeMapAndWindow) {
   std::ofstream(path) << "color vonmises\ncolormap gray\ncolor-range -2 5.5\ncolormap auto\ncolor-range auto\n";

@@ -210,23 +210,27 @@ TEST(Cli, BuiltInSceneHasItsLookAndFilesDoNot) {
 }
 
 // `bench accuracy` on the built-in scene, two settings: one row per setting
-// with every column, error that falls as iterations rise, and the plot.
+// with every column, error that falls as iterations rise, the frame time's
+// median within its rounds' range, the default setting marked (render's
+// 10 iterations and 1e-4), units under the table's header, and the plot.
 TEST(Cli, BenchAccuracyWritesCsvAndPlot) {
   const fs::path csv = dir() / "acc.csv", png = dir() / "acc.png";
   fs::remove(csv);
   fs::remove(png);
-  const CmdResult r = run("bench accuracy -o " + csv.string() + " --size 160 120 --iterations 1,10 --epsilon 1e-4 --frames 1");
+  const CmdResult r =
+      run("bench accuracy -o " + csv.string() + " --size 160 120 --iterations 1,10 --epsilon 1e-4 --frames 1 --repeats 3");
   ASSERT_EQ(r.code, 0) << r.err;
   std::ifstream in(csv);
   std::string header, line;
   ASSERT_TRUE(std::getline(in, header));
-  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 12);
+  EXPECT_EQ(std::count(header.begin(), header.end(), ','), 16);
+  EXPECT_EQ(header.substr(header.rfind(",frame_ms_min")), ",frame_ms_min,frame_ms_max,repeats,default");
   std::vector<std::vector<double>> rows;
   while (std::getline(in, line)) {
     std::vector<double> v;
     std::stringstream ss(line);
     for (std::string cell; std::getline(ss, cell, ',');) v.push_back(std::stod(cell));
-    ASSERT_EQ(v.size(), 13u) << line;
+    ASSERT_EQ(v.size(), 17u) << line;
     rows.push_back(v);
   }
   ASSERT_EQ(rows.size(), 2u);
@@ -236,6 +240,23 @@ TEST(Cli, BenchAccuracyWritesCsvAndPlot) {
   EXPECT_GT(rows[0][5], 1.0);      // a single Newton step leaves many pixels unresolved
   EXPECT_LT(rows[1][5], 0.5);      // ten resolve them: coverage error in %
   EXPECT_GT(rows[1][2], 0.0);      // frame time
+  for (const auto& row : rows) {
+    EXPECT_LE(row[13], row[2]);  // min <= median <= max of the rounds
+    EXPECT_LE(row[2], row[14]);
+    EXPECT_EQ(row[15], 3);
+  }
+  EXPECT_EQ(rows[0][16], 0);  // 1 iteration: not the default
+  EXPECT_EQ(rows[1][16], 1);  // 10 iterations, 1e-4: render's default
+  // stdout: the header, its units, then one row per setting, the default's with a *.
+  std::vector<std::string> table;
+  std::stringstream out(r.out);
+  for (std::string l; std::getline(out, l);) table.push_back(l);
+  ASSERT_EQ(table.size(), 4u) << r.out;
+  EXPECT_NE(table[1].find("[ms]"), std::string::npos) << r.out;
+  EXPECT_NE(table[1].find("[deg]"), std::string::npos) << r.out;
+  EXPECT_EQ(table[2].find('*'), std::string::npos) << r.out;
+  EXPECT_EQ(table[3].back(), '*') << r.out;
+  EXPECT_NE(r.err.find("median of 3 rounds"), std::string::npos) << r.err;
   auto plot = OIIO::ImageInput::open(png.string());
   ASSERT_TRUE(plot) << "no plot at " << png;
   EXPECT_EQ(plot->spec().width, 3 * 640);
@@ -244,7 +265,8 @@ TEST(Cli, BenchAccuracyWritesCsvAndPlot) {
 TEST(Cli, BenchAccuracyRejectsBadSettingsBeforeWriting) {
   const fs::path csv = dir() / "bad.csv";
   fs::remove(csv);
-  for (const char* args : {"--iterations 0", "--iterations 3,x", "--epsilon 1", "--gamma 0", "--frames 0"}) {
+  for (const char* args : {"--iterations 0", "--iterations 3,x", "--epsilon 1", "--gamma 0", "--frames 0", "--repeats 0",
+                           "--repeats 101"}) {
     const CmdResult r = run("bench accuracy -o " + csv.string() + " " + args);
     EXPECT_EQ(r.code, 2) << args;
     EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
@@ -262,7 +284,9 @@ TEST(Cli, ViewRejectsABadScriptBeforeOpeningAWindow) {
       {"zoom 2\nspin 30\n", ":2: unknown command \"spin\""},
       {"gamma -1\n", ":1: gamma must be within 0..10000"},
       {"orbit 10\n", ":1: orbit: wrong number of arguments"},
-      {"slab w 1 2\n", ":1: slab: axis must be x, y or z"},
+      {"slab w:1\n", ":1: slab: unknown axis \"w\""},
+      // Against the built-in scene's 40 x 40 x 20 grid, once it is loaded.
+      {"slab k:20\n", ":1: slab k:20: index 20 is outside 0..19 along voxel axis k of the glyphs' grid"},
       {"color rainbow\n", ":1: color: unknown mode"},
       {"fa-min nan\n", ":1: fa-min"},
       {"screenshot shot.bogus\n", ":1: screenshot: no image format for \"shot.bogus\""},

@@ -323,3 +323,19 @@ TEST(Options, CommittedCommandReferenceIsTheGeneratedOne) {
   EXPECT_NE(generated.find("| `--gamma` | `G` | 0..10000 |"), std::string::npos);
   EXPECT_TRUE(committed == generated) << "docs/cli.md is stale: copy " << TG_CLI_REFERENCE << " over it";
 }
+
+// docs/script.md likewise, from the script's command table; `help script`
+// prints the same commands.
+TEST(Options, CommittedScriptReferenceIsTheGeneratedOne) {
+  const std::string committed = tg::test::slurp(fs::path(TG_SOURCE_DIR) / "docs" / "script.md");
+  const std::string generated = tg::test::slurp(TG_SCRIPT_REFERENCE);
+  ASSERT_FALSE(generated.empty()) << TG_SCRIPT_REFERENCE;
+  EXPECT_TRUE(committed == generated) << "docs/script.md is stale: copy " << TG_SCRIPT_REFERENCE << " over it";
+  const tg::test::CmdResult help = tg::test::runBinary("help script", tg::test::cliDir("help_script"));
+  ASSERT_EQ(help.code, 0) << help.err;
+  for (const char* verb : {"orbit", "slab", "plane", "view", "screenshot", "pick"}) {
+    EXPECT_NE(generated.find(std::string("| `") + verb + "` |"), std::string::npos) << verb;
+    EXPECT_NE(help.out.find(std::string("\n  ") + verb + " "), std::string::npos) << verb;
+  }
+  EXPECT_NE(help.out.find("i|j|k:INDEX[:THICKNESS]"), std::string::npos) << "slab's slices, as --slice's";
+}

@@ -65,7 +65,7 @@ TEST(View, ScriptedScreenshotsMatchTheHeadlessRenderer) {
       << "screenshot " << shot(2).string() << "\n"
       << "reset\nfa-min 0.25\nglyph ellipsoid\ngamma 3\ncolor dec  # back to the start\n"
       << "screenshot " << shot(3).string() << "\n"
-      << "slab z 2 4\n"
+      << "slab k:10:2\n"
       << "screenshot " << shot(4).string() << "\n";
   }
   // The built-in scene without its look (superquadrics, depth cues, legend),

@@ -4,6 +4,8 @@
 #include "render_fixture.h"
 
 #include <algorithm>
+#include <string>
+#include <string_view>
 #include <vector>
 
 using namespace tg;
@@ -95,6 +97,45 @@ TEST_F(DepthCues, OffAllocatesNothingAndLeavesTheFrameBitIdentical) {
   EXPECT_EQ(after.rgba, before.rgba);
   EXPECT_EQ(after.id, before.id);
   EXPECT_EQ(after.depth, before.depth);
+}
+
+// The render stage's progress (render::PassProgress): each pass the frame
+// runs, once, in order, counted against the frame's total, and a frame told
+// of its passes is the same bits as one that is not.
+TEST_F(DepthCues, PassProgressCountsTheFramesPassesAndChangesNoPixel) {
+  const auto set = test::glyphsOf(synth::randomField(216, 3));
+  const double scale = 0.6;
+  const auto cam = test::cameraFor(set, scale, test::oblique(set, 12.0, render::Projection::Perspective), 160, 120);
+  ctx_->makeCurrent();
+  render::GlyphRenderer r(ctx_->api(), *lib_);
+  render::GBuffer target(ctx_->api(), cam.width, cam.height);
+  r.upload(set);
+  render::FrameParams plain;
+  plain.scale = scale;
+  render::FrameParams all = plain;
+  all.ao.enabled = all.outline.enabled = all.shadow.enabled = true;
+  for (const render::FrameParams& p : {plain, all}) {
+    r.render(cam, p, target);
+    const auto silent = r.readback(cam, target);
+    std::vector<std::string> names;
+    std::vector<int> done, totals;
+    r.render(cam, p, target, [&](std::string_view pass, int d, int t) {
+      names.emplace_back(pass);
+      done.push_back(d);
+      totals.push_back(t);
+    });
+    const auto told = r.readback(cam, target);
+    const std::vector<std::string> want = p.ao.enabled
+                                              ? std::vector<std::string>{"shadow", "glyphs", "ao", "lighting", "outline"}
+                                              : std::vector<std::string>{"glyphs", "lighting"};
+    EXPECT_EQ(names, want);
+    for (std::size_t k = 0; k < done.size(); ++k) {
+      EXPECT_EQ(done[k], int(k) + 1);
+      EXPECT_EQ(totals[k], int(want.size()));
+    }
+    EXPECT_EQ(told.rgba, silent.rgba);
+    EXPECT_EQ(told.id, silent.id);
+  }
 }
 
 // A 5 x 5 x 5 lattice of nearly touching spheres and one sphere far from it,

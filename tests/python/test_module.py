@@ -518,6 +518,21 @@ class Interactive(unittest.TestCase):
             nib.save(nib.Nifti1Image(fsl, np.eye(4)), path)
             tg.render(path, size=(32, 24), progress=lambda *a: calls.append(a))
             self.assertIn(("eigen", 80000.0, 80000.0, "tensors"), calls)
+            # Then the frame, pass by pass: counted up to its total, after the load.
+            drawn = [c for c in calls if c[0] == "rendering"]
+            self.assertGreater(calls.index(drawn[0]), calls.index(("eigen", 80000.0, 80000.0, "tensors")))
+            self.assertEqual({c[3] for c in drawn}, {"passes"})
+            self.assertEqual([c[1] for c in drawn], list(range(len(drawn))))
+            self.assertGreaterEqual(drawn[-1][2], 2)
+            self.assertEqual(drawn[-1][1], drawn[-1][2])
+            # A Renderer's later frame, with no reload, reports its passes too.
+            calls.clear()
+            r = tg.Renderer(path, size=(32, 24), progress=lambda *a: calls.append(a))
+            r.render()
+            calls.clear()
+            r.render(gamma=2.0)
+            self.assertTrue(calls)
+            self.assertEqual({c[0] for c in calls}, {"rendering"})
 
             def fail(*a):
                 raise KeyError("from the callback")

@@ -67,11 +67,13 @@ void drawPanel(Canvas& c, const PlotPanel& p, int ox, int w, int h) {
   using AY = IBA::TextAlignY;
   const double x0 = ox + kLeft, x1 = ox + w - kRight, y0 = kTop, y1 = h - kBottom;
   double xl = INFINITY, xh = -INFINITY, yl = INFINITY, yh = -INFINITY;
-  for (const auto& s : p.series)
+  for (const auto& s : p.series) {
     for (const auto& q : s.points) {
       xl = std::min(xl, q.x), xh = std::max(xh, q.x);
       if (!p.logY || q.y > 0) yl = std::min(yl, q.y), yh = std::max(yh, q.y);
     }
+    for (const auto& r : s.xSpread) xl = std::min(xl, r.x), xh = std::max(xh, r.y);
+  }
   if (!(xl <= xh)) xl = 0, xh = 1;
   if (xh - xl < 1e-12 * std::max(1.0, std::abs(xh))) xl -= 0.5, xh += 0.5;
   const double xpad = 0.05 * (xh - xl);
@@ -107,6 +109,18 @@ void drawPanel(Canvas& c, const PlotPanel& p, int ox, int w, int h) {
       const double px = X(s.points[k].x), py = Y(s.points[k].y);
       c.box(px - 2, py - 2, px + 2, py + 2, s.rgb.data(), true);
       if (k > 0) c.line(X(s.points[k - 1].x), Y(s.points[k - 1].y), px, py, s.rgb.data());
+      if (k < s.xSpread.size() && s.xSpread[k].y > s.xSpread[k].x) {
+        // The spread: a bar with end ticks (none where there is no spread).
+        const double a = X(s.xSpread[k].x), b = X(s.xSpread[k].y);
+        c.line(a, py, b, py, s.rgb.data());
+        c.line(a, py - 3, a, py + 3, s.rgb.data());
+        c.line(b, py - 3, b, py + 3, s.rgb.data());
+      }
+      if (k < s.pointLabels.size()) c.text(px + 4, py - 4, s.pointLabels[k], 10, AX::Left, AY::Bottom);
+      if (int(k) == s.marked) {
+        c.box(px - 6, py - 6, px + 6, py + 6, kInk, false);
+        c.text(px + 8, py + 4, s.markLabel, 12, AX::Left, AY::Top);
+      }
     }
   }
   c.text(0.5 * (x0 + x1), y0 - 12, p.title, 15, AX::Center, AY::Baseline);

@@ -19,7 +19,8 @@ constexpr const char* kUsage =
     "  synth KIND -o OUT       write a synthetic field (helix, boussinesq, extremes, random, ...)\n"
     "  bench accuracy [INPUT]  superquadric march: error against the reference vs frame time\n"
     "  bench scale             frame time against glyph count, ray casting vs a tessellated mesh\n"
-    "  help [TOPIC]            one task's options (input, glyphs, colour, camera, context, depth, output)\n"
+    "  help [TOPIC]            one task's options (input, glyphs, colour, camera, context, depth, output),\n"
+    "                          formats, or script (the viewer's script language)\n"
     "Run 'tensorglyph <command> --help' for a command's options; docs/cli.md has them all.\n";
 
 // The subcommand `cmd`, or -1 where there is none.

@@ -55,6 +55,7 @@ inline constexpr NumberRange kStride{1, 1000000, true};
 inline constexpr NumberRange kClampSpacings{0.01, 1e6, false, true};
 inline constexpr NumberRange kRepeat{0, 10000, true};
 inline constexpr NumberRange kFrames{1, 1000, true};
+inline constexpr NumberRange kRepeats{1, 100, true};
 // The view script: frames to wait, and a pixel of the window to pick.
 inline constexpr NumberRange kScriptFrames{1, 100000, true};
 inline constexpr NumberRange kPixelIndex{0, kMaxFrameSide - 1, true};
