@@ -9,16 +9,10 @@ namespace tg::app {
 namespace {
 
 using tensor::Mat3;
+using tensor::multiply;
 
 constexpr Mat3 kIdentity{1, 0, 0, 0, 1, 0, 0, 0, 1};
 
-Mat3 multiply(const Mat3& a, const Mat3& b) {
-  Mat3 c{};
-  for (std::size_t r = 0; r < 3; ++r)
-    for (std::size_t k = 0; k < 3; ++k)
-      for (std::size_t j = 0; j < 3; ++j) c[3 * r + k] += a[3 * r + j] * b[3 * j + k];
-  return c;
-}
 
 Mat3 transpose(const Mat3& a) { return {a[0], a[3], a[6], a[1], a[4], a[7], a[2], a[5], a[8]}; }
 

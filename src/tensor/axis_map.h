@@ -57,6 +57,15 @@ inline std::string axisMapName(const AxisMap& m) {
   return s;
 }
 
+// The matrix product a b.
+inline Mat3 multiply(const Mat3& a, const Mat3& b) {
+  Mat3 c{};
+  for (std::size_t r = 0; r < 3; ++r)
+    for (std::size_t k = 0; k < 3; ++k)
+      for (std::size_t j = 0; j < 3; ++j) c[3 * r + k] += a[3 * r + j] * b[3 * j + k];
+  return c;
+}
+
 inline Mat3 axisMatrix(const AxisMap& m) {
   Mat3 p{};
   for (std::size_t r = 0; r < 3; ++r) p[3 * r + std::size_t(m.from[r])] = m.sign[r];

@@ -50,13 +50,6 @@ V apply(const Mat3& m, const V& v) {
   return {m[0] * v.x + m[1] * v.y + m[2] * v.z, m[3] * v.x + m[4] * v.y + m[5] * v.z,
           m[6] * v.x + m[7] * v.y + m[8] * v.z};
 }
-Mat3 multiply(const Mat3& a, const Mat3& b) {
-  Mat3 c{};
-  for (std::size_t r = 0; r < 3; ++r)
-    for (std::size_t k = 0; k < 3; ++k)
-      for (std::size_t j = 0; j < 3; ++j) c[3 * r + k] += a[3 * r + j] * b[3 * j + k];
-  return c;
-}
 std::optional<Mat3> inverse(const Mat3& a) {
   const double det = a[0] * (a[4] * a[8] - a[5] * a[7]) - a[1] * (a[3] * a[8] - a[5] * a[6]) +
                      a[2] * (a[3] * a[7] - a[4] * a[6]);

@@ -302,6 +302,21 @@ MeshData toMesh(vtkPolyData* pd, const std::string& path, const NonFiniteText* n
   return m;
 }
 
+// readVtk's read and checks, its errors in the words of `reader`.
+ReadResult readDataSetAs(const char* reader, const std::string& path, std::uint64_t budget,
+                         const PromiseFn& promise) {
+  ReadOptions opt;
+  opt.memoryBudget = budget;
+  opt.onPromise = promise;
+  try {
+    return readDataSet(path, opt);
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    if (what.rfind("readVtk: ", 0) != 0) throw;
+    throw InputError(std::string(reader).append(what.substr(7)));
+  }
+}
+
 }  // namespace
 
 MeshData impl::readMesh(const std::string& path, MeshSource source, std::uint64_t budget, const PromiseFn& promise) {
@@ -347,19 +362,7 @@ MeshData impl::readMesh(const std::string& path, MeshSource source, std::uint64_
     m = toMesh(triangulate(ds, path), path, nullptr, bad, skipped);
     m.description = std::string(ds->GetClassName()) + ", " + std::to_string(ds->GetNumberOfCells()) + " cells";
   } else {
-    ReadOptions opt;
-    opt.memoryBudget = budget;
-    opt.onPromise = promise;
-    // readVtk's checks, in the words of this reader.
-    const ReadResult read = [&] {
-      try {
-        return readDataSet(path, opt);
-      } catch (const InputError& e) {
-        const std::string what = e.what();
-        if (what.rfind("readVtk: ", 0) != 0) throw;
-        throw InputError("readMesh" + what.substr(7));
-      }
-    }();
+    const ReadResult read = readDataSetAs("readMesh", path, budget, promise);
     // As readVtk: VTK stops, with a warning, at a 3D-TSV stress trailer,
     // after the geometry; any other word from VTK is refused.
     if (!read.vtkSaid.empty() && read.vtkSaid.find("Unsupported point attribute type") == std::string::npos)
@@ -390,18 +393,7 @@ MeshData impl::readMesh(const std::string& path, MeshSource source, std::uint64_
 // cell one streamline, its points in world coordinates as the file gives them.
 TractData impl::readPolylines(const std::string& path, std::uint64_t budget, const PromiseFn& promise) {
   auto failTracts = [&](const std::string& what) { throw InputError("readTracts: " + path + ": " + what); };
-  ReadOptions opt;
-  opt.memoryBudget = budget;
-  opt.onPromise = promise;
-  const ReadResult read = [&] {
-    try {
-      return readDataSet(path, opt);
-    } catch (const InputError& e) {
-      const std::string what = e.what();
-      if (what.rfind("readVtk: ", 0) != 0) throw;
-      throw InputError("readTracts" + what.substr(7));
-    }
-  }();
+  const ReadResult read = readDataSetAs("readTracts", path, budget, promise);
   if (!read.vtkSaid.empty()) failTracts(read.vtkSaid);
   auto* pd = vtkPolyData::SafeDownCast(read.data);
   if (!pd) failTracts(std::string("a ") + read.data->GetClassName() + " holds no polylines (tracts are POLYDATA LINES)");
