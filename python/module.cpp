@@ -208,21 +208,19 @@ app::Scene loadSource(const Source& s, const app::RenderOptions& o) {
     app::attachWholeField(scene, o.field, s.path, read);
     return scene;
   }
-  app::Scene scene;
   const io::ArrayRef& t = *s.tensorsRef;
-  if (s.positionsRef) {
-    scene.field = io::fieldFromPoints(t, s.layout, *s.positionsRef, o.field.read.selection);
-  } else {
-    if (!s.affine) throw std::invalid_argument("affine: a volume needs its 4x4 voxel-to-world affine");
-    scene.field = io::fieldFromVolume(t, s.layout, s.affine->data(), s.frame,
-                                      o.field.read.selection);
-  }
+  if (!s.positionsRef && !s.affine) throw std::invalid_argument("affine: a volume needs its 4x4 voxel-to-world affine");
+  // --tensor-axes as a file's reader applies it, so the frame check's advice holds for arrays too.
+  const auto field = [&](const io::Selection& sel) {
+    io::TensorField f = s.positionsRef ? io::fieldFromPoints(t, s.layout, *s.positionsRef, sel)
+                                       : io::fieldFromVolume(t, s.layout, s.affine->data(), s.frame, sel);
+    io::applyTensorAxes(f, o.field.read.tensorAxes);
+    return f;
+  };
+  app::Scene scene;
+  scene.field = field(o.field.read.selection);
   app::checkLoaded(scene.field, o.field.read);
-  app::attachWholeField(scene, o.field, [&] {
-    const io::Selection all;
-    return s.positionsRef ? io::fieldFromPoints(t, s.layout, *s.positionsRef, all)
-                          : io::fieldFromVolume(t, s.layout, s.affine->data(), s.frame, all);
-  });
+  app::attachWholeField(scene, o.field, [&] { return field(io::Selection{}); });
   return scene;
 }
 

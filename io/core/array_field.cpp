@@ -230,7 +230,6 @@ TensorField fieldFromVolume(const ArrayRef& tensors, std::string_view layout, co
 std::string inapplicableArrayOption(const ReadOptions& opt) {
   if (!opt.arrayName.empty()) return "--array";
   if (opt.confidenceGiven) return "--confidence-min";
-  if (!opt.tensorAxes.empty()) return "--tensor-axes";  // arrays are reordered in NumPy
   return "";
 }
 

@@ -106,7 +106,7 @@ TEST(RenderOptions, EveryNumericOptionDeclaresARange) {
                                        "--mask", "--slice", "--scale-mode", "--sizes-from", "--magnitude", "--legend-corner",
                                        "--units", "--length-units", "--underlay", "--plane", "--underlay-colormap",
                                        "--mesh", "--mesh-mode", "--tracts", "--backend", "--color-array", "--colormap",
-                                       "--view", "--orientation-letters", "--pipeline", "--sizes-from"};
+                                       "--view", "--orientation-letters", "--pipeline", "--sizes-from", "--tensor-axes"};
   for (const OptionTable::Option& opt : t.options()) {
     if (opt.arity() == 0 && !opt.positional) continue;
     if (words.count(opt.flag)) {

@@ -58,8 +58,11 @@ const render::ColorMode kModes[] = {render::ColorMode::MD,       render::ColorMo
 Ranges rangesOf(app::RenderOptions o, const DisposableCopy& copy, bool countReads = true) {
   Ranges r;
   int loaded = 0;
+  bool open = false;  // a read begun and not yet counted: its end may be reported twice (the poller and the finish)
   o.field.read.progress = [&](std::string_view stage, double done, double total, std::string_view) {
-    if (stage == "loading" && total > 0 && done == total) ++loaded;
+    if (stage != "loading" || total <= 0) return;
+    if (done < total) open = true;
+    else if (open) ++loaded, open = false;
   };
   app::Scene scene = app::loadScene(o.input, o.field.read);
   const int before = loaded;

@@ -44,6 +44,7 @@ CASES = {
     "array": ("other", {}),
     "layout": ("mrtrix", {}),
     "frame": ("world", {}),
+    "tensor_axes": ("-x,y,z", {}),
     "mask": ("@mask", {}),
     "mask_min": (0.8, {"mask": "@mask"}),
     "confidence_min": (0.3, {}),
