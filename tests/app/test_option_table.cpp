@@ -106,7 +106,7 @@ TEST(RenderOptions, EveryNumericOptionDeclaresARange) {
                                        "--mask", "--slice", "--scale-mode", "--sizes-from", "--magnitude", "--legend-corner",
                                        "--units", "--length-units", "--underlay", "--plane", "--underlay-colormap",
                                        "--mesh", "--mesh-mode", "--tracts", "--backend", "--color-array", "--colormap",
-                                       "--view", "--orientation-letters", "--pipeline", "--sizes-from"};
+                                       "--view", "--orientation-letters", "--pipeline", "--sizes-from", "--tensor-axes"};
   for (const OptionTable::Option& opt : t.options()) {
     if (opt.arity() == 0 && !opt.positional) continue;
     if (words.count(opt.flag)) {
@@ -121,6 +121,34 @@ TEST(RenderOptions, EveryNumericOptionDeclaresARange) {
     EXPECT_LE(opt.numbers->hi, kFloatMax) << opt.flag;
     EXPECT_GE(opt.numbers->lo, -kFloatMax) << opt.flag;
   }
+}
+
+// An empty value ("$UNSET" in a script) is refused, never taken as "not
+// given": --mask "" would otherwise draw unmasked. Free text may be empty.
+TEST(RenderOptions, EveryValueButFreeTextRefusesAnEmptyOne) {
+  RenderOptions o;
+  OptionTable t;
+  addRenderOptions(t, o);
+  bool sawText = false;
+  for (const OptionTable::Option& opt : t.options()) {
+    const std::size_t n = opt.positional ? 1 : opt.arity();
+    for (std::size_t k = 0; k < n; ++k) {
+      std::vector<std::string> values(n, "1");
+      values[k] = "";
+      if (!opt.positional && opt.metavars[k] == "TEXT") {
+        sawText = true;
+        EXPECT_NO_THROW(OptionTable::apply(opt, values)) << opt.flag;
+        continue;
+      }
+      try {
+        OptionTable::apply(opt, values);
+        ADD_FAILURE() << opt.flag << " took an empty value " << k;
+      } catch (const UsageError& e) {
+        EXPECT_NE(std::string(e.what()).find(opt.flag + ": an empty value"), std::string::npos) << e.what();
+      }
+    }
+  }
+  EXPECT_TRUE(sawText);
 }
 
 // A declared default is one the option itself takes: as many values as it
