@@ -289,6 +289,10 @@ TEST(NumberRange, TextAndChecksAgree) {
 TEST(Printable, ControlCharactersAreEscapedAndTheRestKept) {
   EXPECT_EQ(printable("a\nb\x1b[31m\t\r\x7f.nrrd"), "a\\nb\\x1b[31m\\t\\r\\x7f.nrrd");
   EXPECT_EQ(printable("caf\xc3\xa9 dir/x.vtk"), "caf\xc3\xa9 dir/x.vtk");  // UTF-8 stays
+  // Bytes that are no UTF-8 (a binary header's, as a .trk's voxel order) are escaped.
+  EXPECT_EQ(printable("order \"\xff\xfe\""), "order \"\\xff\\xfe\"");
+  EXPECT_EQ(printable("\xc3(\xe2\x82\xac\xed\xa0\x80\xf0\x9f\x98\x80\xe2\x82"),
+            "\\xc3(\xe2\x82\xac\\xed\\xa0\\x80\xf0\x9f\x98\x80\\xe2\\x82");
 }
 
 }  // namespace
