@@ -86,12 +86,7 @@ std::shared_ptr<const io::ScalarVolume> scalarVolume(const py::handle& given, co
   v->values.assign(values.data(), values.data() + values.size());
   if (affine) {
     if (affine->size() != 16) throw std::invalid_argument(std::string(kw) + "_affine: must be 4x4");
-    io::GridPlacement p;
-    for (int r = 0; r < 3; ++r) {
-      for (int c = 0; c < 3; ++c) p.axesWC[3 * r + c] = (*affine)[std::size_t(4 * r + c)];
-      p.originWC[r] = (*affine)[std::size_t(4 * r + 3)];
-    }
-    v->placement = p;
+    v->placement = io::placementFromAffine(std::string(kw) + "_affine", affine->data());
   }
   return v;
 }

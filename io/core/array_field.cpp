@@ -144,6 +144,24 @@ TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, co
   return f;
 }
 
+GridPlacement placementFromAffine(std::string_view arg, const double affine[16]) {
+  for (int k = 0; k < 16; ++k)
+    if (!std::isfinite(affine[k])) fail(arg, "non-finite value");
+  // A transposed affine (translation in the last row) is the usual slip.
+  if (affine[12] != 0 || affine[13] != 0 || affine[14] != 0 || affine[15] != 1)
+    fail(arg, "the last row must be 0 0 0 1");
+  GridPlacement p;
+  for (int r = 0; r < 3; ++r) {
+    for (int c = 0; c < 3; ++c) p.axesWC[3 * r + c] = affine[4 * r + c];
+    p.originWC[r] = affine[4 * r + 3];
+  }
+  const double det = determinant3(p.axesWC);
+  // A scale near 1e300 is not singular: its determinant overflows.
+  if (!std::isfinite(det)) fail(arg, "too large: its determinant overflows double precision");
+  if (!(std::abs(det) > 0)) fail(arg, "singular");
+  return p;
+}
+
 TensorField fieldFromVolume(const ArrayRef& tensors, std::string_view layout, const double affine[16],
                             std::string_view frame, const Selection& selection) {
   checkView("tensors", tensors);
@@ -161,18 +179,9 @@ TensorField fieldFromVolume(const ArrayRef& tensors, std::string_view layout, co
     voxels *= std::uint64_t(g.dims[k]);
   }
   if (voxels > kMaxInputs) fail("tensors", "more than 2^32-256 voxels");
-  for (int k = 0; k < 16; ++k)
-    if (!std::isfinite(affine[k])) fail("affine", "non-finite value");
-  if (affine[12] != 0 || affine[13] != 0 || affine[14] != 0 || affine[15] != 1)
-    fail("affine", "the last row must be 0 0 0 1");
-  for (int r = 0; r < 3; ++r) {
-    for (int c = 0; c < 3; ++c) g.axesWC[3 * r + c] = affine[4 * r + c];
-    g.originWC[r] = affine[4 * r + 3];
-  }
-  const double det = determinant3(g.axesWC);
-  // A scale near 1e300 is not singular: its determinant overflows.
-  if (!std::isfinite(det)) fail("affine", "too large: its determinant overflows double precision");
-  if (!(std::abs(det) > 0)) fail("affine", "singular");
+  const GridPlacement fromAffine = placementFromAffine("affine", affine);
+  std::copy(fromAffine.axesWC, fromAffine.axesWC + 9, g.axesWC);
+  std::copy(fromAffine.originWC, fromAffine.originWC + 3, g.originWC);
   const NiftiLayout* l = six ? &layoutNamed(layout) : nullptr;
   std::optional<TensorFrame> named;
   if (!frame.empty()) {

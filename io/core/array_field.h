@@ -36,6 +36,11 @@ struct ArrayRef {
 TensorField fieldFromPoints(const ArrayRef& tensors, std::string_view layout, const ArrayRef& positions,
                             const Selection& selection = {});
 
+// The grid placement of a row-major 4x4 (nibabel's `img.affine`), refused
+// (std::invalid_argument naming `arg`) unless finite, affine (last row
+// 0 0 0 1) and invertible.
+GridPlacement placementFromAffine(std::string_view arg, const double affine[16]);
+
 // A volume: `tensors` (X, Y, Z, 6) in `layout` ("" FSL's, refused as a
 // NIfTI file's default is: adviseLayout), or (X, Y, Z, 3, 3);
 // `affine` a row-major 4x4 from voxel index (i, j, k) to WC, as nibabel's

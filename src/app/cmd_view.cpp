@@ -103,9 +103,8 @@ int cmdView(int argc, const char** argv) {
     if (s.verb == "pick" && (s.integer(0) >= o.width || s.integer(1) >= o.height))
       throw io::InputError(o.script + ":" + std::to_string(s.line) + ": pick: the pixel is outside the " +
                            std::to_string(o.width) + " x " + std::to_string(o.height) + " window");
-  std::vector<NamedPath> inputs = {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath}, {"--script", o.script},
-                                   {"--underlay", o.slices.fromField() ? "" : o.slices.underlay}};
-  for (const NamedPath& m : o.mesh.inputs()) inputs.push_back(m);
+  std::vector<NamedPath> inputs = sceneInputs(o.input, o);
+  inputs.push_back({"--script", o.script});
   refuseOutputsOverInputs(scriptShots, inputs);
   Scene scene = loadScene(o.input, o.field.read);
   attachWholeField(scene, o.field, o.input, o.field.read);

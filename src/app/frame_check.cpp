@@ -1,9 +1,9 @@
 #include "app/frame_check.h"
 
 #include <algorithm>
-#include <ctime>
 #include <cmath>
 #include <cstdio>
+#include <ctime>
 
 namespace tg::app {
 namespace {
@@ -131,8 +131,9 @@ std::string frameCheckReport(const FrameCheck& c) {
     all += (all.empty() ? "" : ", ") + label(r.option) + " " + score(r.score);
   out += "  others (--tensor-axes AXES, --frame NAME): " + all + "\n";
   char z[96];
-  std::snprintf(z, sizeof z, "  best other: %.2f standard errors above as read (paired by voxel)\n",
-                c.alternatives.front().z);
+  const double bestZ = c.alternatives.front().z;
+  std::snprintf(z, sizeof z, "  best other: %.2f standard errors %s as read (paired by voxel)\n", std::abs(bestZ),
+                bestZ < 0 ? "below" : "above");
   out += z;
   if (c.better) out += "  verdict: " + c.better->option + " reads the fibres clearly better (" + c.better->what + ")\n";
   else if (c.fibreVoxels < kMinFibreVoxels) out += "  verdict: too few fibre voxels to tell\n";

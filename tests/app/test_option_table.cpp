@@ -123,6 +123,34 @@ TEST(RenderOptions, EveryNumericOptionDeclaresARange) {
   }
 }
 
+// An empty value ("$UNSET" in a script) is refused, never taken as "not
+// given": --mask "" would otherwise draw unmasked. Free text may be empty.
+TEST(RenderOptions, EveryValueButFreeTextRefusesAnEmptyOne) {
+  RenderOptions o;
+  OptionTable t;
+  addRenderOptions(t, o);
+  bool sawText = false;
+  for (const OptionTable::Option& opt : t.options()) {
+    const std::size_t n = opt.positional ? 1 : opt.arity();
+    for (std::size_t k = 0; k < n; ++k) {
+      std::vector<std::string> values(n, "1");
+      values[k] = "";
+      if (!opt.positional && opt.metavars[k] == "TEXT") {
+        sawText = true;
+        EXPECT_NO_THROW(OptionTable::apply(opt, values)) << opt.flag;
+        continue;
+      }
+      try {
+        OptionTable::apply(opt, values);
+        ADD_FAILURE() << opt.flag << " took an empty value " << k;
+      } catch (const UsageError& e) {
+        EXPECT_NE(std::string(e.what()).find(opt.flag + ": an empty value"), std::string::npos) << e.what();
+      }
+    }
+  }
+  EXPECT_TRUE(sawText);
+}
+
 // A declared default is one the option itself takes: as many values as it
 // names, each within its range, and applying it leaves the frame as it was.
 TEST(RenderOptions, DeclaredDefaultsAreValuesTheOptionTakesAndChangeNothing) {
@@ -261,6 +289,10 @@ TEST(NumberRange, TextAndChecksAgree) {
 TEST(Printable, ControlCharactersAreEscapedAndTheRestKept) {
   EXPECT_EQ(printable("a\nb\x1b[31m\t\r\x7f.nrrd"), "a\\nb\\x1b[31m\\t\\r\\x7f.nrrd");
   EXPECT_EQ(printable("caf\xc3\xa9 dir/x.vtk"), "caf\xc3\xa9 dir/x.vtk");  // UTF-8 stays
+  // Bytes that are no UTF-8 (a binary header's, as a .trk's voxel order) are escaped.
+  EXPECT_EQ(printable("order \"\xff\xfe\""), "order \"\\xff\\xfe\"");
+  EXPECT_EQ(printable("\xc3(\xe2\x82\xac\xed\xa0\x80\xf0\x9f\x98\x80\xe2\x82"),
+            "\\xc3(\xe2\x82\xac\\xed\\xa0\\x80\xf0\x9f\x98\x80\\xe2\\x82");
 }
 
 }  // namespace

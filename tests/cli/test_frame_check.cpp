@@ -43,6 +43,9 @@ TEST(FrameCheck, RealHelicesAreSilentAsReadAndEachMirrorIsUndone) {
     EXPECT_NE(asRead.out.find("frame check: fibre coherence over"), std::string::npos) << asRead.out;
     EXPECT_NE(asRead.out.find("verdict: no alternative reads the fibres clearly better"), std::string::npos)
         << asRead.out;
+    // Every other reading scores below the file's own: said so, not as a negative "above".
+    EXPECT_NE(asRead.out.find("standard errors below as read"), std::string::npos) << asRead.out;
+    EXPECT_EQ(asRead.out.find("best other: -"), std::string::npos) << asRead.out;
     for (const char* m : kMirrors) {
       const CmdResult r = run("info -q " + f + " --tensor-axes " + m);
       ASSERT_EQ(r.code, 0) << r.err;
@@ -117,6 +120,14 @@ TEST(FrameCheck, ASelectionSkipsItAndBadAxesAreRefused) {
   r = run("info -q " + f + " --tensor-axes x,x,z");
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("--tensor-axes: \"x,x,z\" is not a signed permutation of x, y, z"), std::string::npos) << r.err;
+  for (const char* bad : {"-", "x,y", "x,y,z,w", "X,Y,Z", "x, y, z", "\xc3\xa9,y,z"}) {
+    r = run("info -q " + f + " --tensor-axes '" + bad + "'");
+    EXPECT_EQ(r.code, 2) << bad;
+    EXPECT_NE(r.err.find("is not a signed permutation of x, y, z"), std::string::npos) << r.err;
+  }
+  r = run("info -q " + f + " --tensor-axes ''");
+  EXPECT_EQ(r.code, 2);
+  EXPECT_NE(r.err.find("--tensor-axes: an empty value"), std::string::npos) << r.err;
   r = run("render -q --tensor-axes -x,y,z -o " + (dir() / "builtin.png").string());
   EXPECT_EQ(r.code, 2);
   EXPECT_NE(r.err.find("--tensor-axes does not apply to the built-in scene"), std::string::npos) << r.err;

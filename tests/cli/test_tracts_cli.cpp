@@ -172,6 +172,21 @@ TEST(TractsCli, HostileTractFilesFailInOneLine) {
   EXPECT_EQ(asInput.code, 1) << asInput.err;
   EXPECT_NE(asInput.err.find("MRtrix tracks holds streamlines, not tensors: give it with --tracts"), std::string::npos)
       << asInput.err;
+  // An output that is a --tracts input (a hard link under an image's name)
+  // is refused by render's -o and by the viewer's screenshot alike, before
+  // anything is read or written.
+  const fs::path input = tck("linked.tck", good), linked = dir() / "linked.png", script = dir() / "shot.tgs";
+  fs::remove(linked);
+  fs::create_hard_link(input, linked);
+  std::ofstream(script) << "screenshot " << linked.string() << "\n";
+  const auto before = fs::file_size(input);
+  for (const std::string& cmd : {"render " + kFibres + " --tracts " + input.string() + " -o " + linked.string(),
+                                 "view " + kFibres + " --tracts " + input.string() + " --script " + script.string()}) {
+    const CmdResult r = run(cmd);
+    EXPECT_EQ(r.code, 2) << cmd << " -> " << r.err;
+    EXPECT_NE(r.err.find("is the --tracts file; it would be overwritten"), std::string::npos) << cmd << " -> " << r.err;
+    EXPECT_EQ(fs::file_size(input), before);
+  }
   // Misuse of the flags: exit 2 before anything is read.
   for (const auto& [args, what] :
        {std::pair<std::string, std::string>{"--tract-width 2", "--tract-width needs --tracts"},

@@ -174,6 +174,9 @@ TEST(Tracts, EveryTruncationIsRefused) {
   }
 }
 
+const std::string kPolyHead =
+    "# vtk DataFile Version 4.2\nx\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 1 1 2 2 2\n";
+
 TEST(Tracts, HostileHeadersAreRefusedInOneLine) {
   const fs::path dir = test::scratchDir("tracts");
   const std::string good = slurp(peers() / "oblique.trk");
@@ -198,6 +201,11 @@ TEST(Tracts, HostileHeadersAreRefusedInOneLine) {
       {"no-delimiter.tck", tck({0, 0, 0, 1, 1, 1, kInf, kInf, kInf}), "no NaN delimiter"},
       {"huge-count.tck", tck(kTwoLines, "count: 999999999999\n"), ""},  // count is never trusted: read
       {"empty.trk", std::string(999, 'T'), "too short for a TrackVis file"},
+      // Legacy cell lists whose counts do not fill the header's size: VTK
+      // imported them trusting each count, reading ids past its buffer.
+      {"overrun.vtk", kPolyHead + "LINES 1 4\n9 0 1 2\n", "cell 0's point count 9 runs past the list's size"},
+      {"short-list.vtk", kPolyHead + "LINES 2 4\n3 0 1 2\n", "its size holds 1 of the cells"},
+      {"negative-count.vtk", kPolyHead + "LINES 1 4\n-3 0 1 2\n", "point count -3 runs past"},
   };
   auto trk = [&](const std::string& name, auto edit, const std::string& what) {
     std::string b = good;

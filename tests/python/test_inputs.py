@@ -109,6 +109,13 @@ class Underlays(unittest.TestCase):
             (ValueError, r"underlay_affine: shape \(3, 3\)", dict(underlay=self.fit.fa, underlay_affine=np.eye(3))),
             (ValueError, r"mask_affine: the nibabel image", dict(mask=nib().Nifti1Image(self.fit.fa, self.affine),
                                                                  mask_affine=self.affine)),
+            # Transposed (its translation in the last row), or no affine at
+            # all: refused, not drawn with the last row ignored.
+            (ValueError, r"underlay_affine: the last row must be 0 0 0 1",
+             dict(underlay=self.fit.fa, underlay_affine=self.affine.T)),
+            (ValueError, r"mask_affine: the last row must be 0 0 0 1",
+             dict(mask=self.fit.fa > 0.3, mask_affine=np.diag([2.0, 2.0, 2.0, 0.0]))),
+            (ValueError, r"underlay_affine: singular", dict(underlay=self.fit.fa, underlay_affine=np.diag([1.0, 0, 1, 1]))),
         ]
         for error, message, opts in cases:
             with self.subTest(message), self.assertRaisesRegex(error, message):

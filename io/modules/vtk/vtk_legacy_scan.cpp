@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <optional>
 #include <sstream>
 #include <vector>
 
@@ -117,6 +118,49 @@ void checkAsciiNumbers(const std::string& path, const std::string& line, int lin
     if (!util::parseNumber(w[k]) && !util::outOfRange(w[k])) refuse(w[k]);
 }
 
+// An ASCII legacy (< 5.0) cell list, "count id..." per cell, walked as it is
+// read: VTK imports it trusting each count, so "LINES 1 4 / 9 0 1 2" read
+// five ids past its buffer and drew them as points (vtkCellArray::
+// ImportLegacyFormat). The counts must fill the header's size exactly.
+class LegacyCellList {
+ public:
+  void begin(const std::string& key, long double cells, long double size) {
+    key_ = key;
+    cells_ = std::uint64_t(cells);
+    size_ = valuesLeft_ = std::uint64_t(size);
+    cellsLeft_ = cells_;
+    idsLeft_ = 0;
+  }
+  bool active() const { return valuesLeft_ > 0; }
+  // The line's values; false when the line is no part of the list.
+  bool line(const std::string& path, const std::string& text) {
+    if (!active()) return false;
+    std::istringstream ls(text);
+    for (std::string word; valuesLeft_ > 0 && ls >> word; --valuesLeft_) {
+      const std::optional<long long> v = util::parseInteger(word);
+      if (!v) fail(path, "\"" + key_ + "\": \"" + word + "\" is not a point count or id");
+      if (idsLeft_ > 0) {
+        --idsLeft_;
+        continue;
+      }
+      if (cellsLeft_ == 0 || *v < 0 || std::uint64_t(*v) >= valuesLeft_)
+        fail(path, "\"" + key_ + "\" " + std::to_string(cells_) + " " + std::to_string(size_) + ": cell " +
+                       std::to_string(cells_ - cellsLeft_) + "'s point count " + word +
+                       (cellsLeft_ == 0 ? " lies beyond its cells" : " runs past the list's size"));
+      --cellsLeft_;
+      idsLeft_ = std::uint64_t(*v);
+    }
+    if (valuesLeft_ == 0 && cellsLeft_ > 0)
+      fail(path, "\"" + key_ + "\" " + std::to_string(cells_) + " " + std::to_string(size_) + ": its size holds " +
+                     std::to_string(cells_ - cellsLeft_) + " of the cells");
+    return true;
+  }
+
+ private:
+  std::string key_;
+  std::uint64_t cells_ = 0, size_ = 0, cellsLeft_ = 0, valuesLeft_ = 0, idsLeft_ = 0;
+};
+
 }  // namespace
 
 // Every value takes at least one byte (ASCII) or its binary size, so a
@@ -134,6 +178,7 @@ std::uint64_t checkLegacyCounts(const std::string& path, std::uint64_t fileSize)
     if (values > (long double)fileSize) fail(path, key + " count exceeds the file size");
   };
   SpaceRunAfterNumbers spaces;
+  LegacyCellList cellList;
   for (int lineNo = 0; std::getline(in, line); ++lineNo) {
     if (lineNo == 0) newCellFormat = line.find("Version 5") != std::string::npos;
     if (lineNo == 2) binary = line.rfind("BINARY", 0) == 0;
@@ -141,6 +186,7 @@ std::uint64_t checkLegacyCounts(const std::string& path, std::uint64_t fileSize)
     // 3D-TSV's stress trailer is read, strictly, by io/core/tsv_trailer.cpp.
     trailer |= line.rfind("Cartesian Stress:", 0) == 0;
     if (!binary && lineNo > 2 && !trailer) checkAsciiNumbers(path, line, lineNo);
+    if (!binary && cellList.line(path, line)) continue;
     // A binary file's arrays are read as lines too, and their bytes can spell
     // a keyword and numbers; header lines are printable text.
     if (binary && lineNo > 2 && !std::all_of(line.begin(), line.end(), [](unsigned char ch) {
@@ -193,6 +239,7 @@ std::uint64_t checkLegacyCounts(const std::string& path, std::uint64_t fileSize)
       if (newCellFormat ? (a > 1 && b < a - 1) : b < 2 * a)
         fail(path, "\"" + key + "\" size " + std::to_string((long long)b) + " is too small for " +
                        std::to_string((long long)a) + " cells");
+      if (!binary && !newCellFormat) cellList.begin(key, a, b);
     } else if (key == "SPACING" || key == "ORIGIN" || key == "ASPECT_RATIO") {
       // VTK's stream stops at "nan" or "inf" and reads no arrays at all, which
       // was then reported as a file without tensors.

@@ -64,13 +64,40 @@ glm::dvec3 parseVec3(std::string_view flag, std::span<const char* const> a) {
 
 std::string formatNumber(double v) { return util::numberText(v); }
 
+namespace {
+
+// The length of the well-formed UTF-8 sequence (of a character from U+0080)
+// that `s` begins with; 0 if none: stray bytes from a binary header would
+// reach the terminal as they are.
+std::size_t utf8Length(std::string_view s) {
+  const auto b = [&](std::size_t k) { return static_cast<unsigned char>(s[k]); };
+  const unsigned char c = b(0);
+  const std::size_t n = c >= 0xc2 && c <= 0xdf ? 2 : c >= 0xe0 && c <= 0xef ? 3 : c >= 0xf0 && c <= 0xf4 ? 4 : 0;
+  if (n == 0 || s.size() < n) return 0;
+  for (std::size_t k = 1; k < n; ++k)
+    if ((b(k) & 0xc0) != 0x80) return 0;
+  // Overlong forms, UTF-16 surrogates and beyond U+10FFFF.
+  if ((c == 0xe0 && b(1) < 0xa0) || (c == 0xed && b(1) > 0x9f) || (c == 0xf0 && b(1) < 0x90) ||
+      (c == 0xf4 && b(1) > 0x8f))
+    return 0;
+  return n;
+}
+
+}  // namespace
+
 std::string printable(std::string_view text) {
   std::string out;
   out.reserve(text.size());
-  for (const char ch : text) {
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char ch = text[i];
     const auto c = static_cast<unsigned char>(ch);
-    if (c >= 0x20 && c != 0x7f) {
+    if (c >= 0x20 && c < 0x7f) {
       out += ch;
+      continue;
+    }
+    if (const std::size_t n = utf8Length(text.substr(i)); n) {  // a name in UTF-8 stays as it is
+      out += text.substr(i, n);
+      i += n - 1;
       continue;
     }
     char esc[8];

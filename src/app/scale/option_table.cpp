@@ -1,5 +1,6 @@
 #include "app/scale/option_table.h"
 
+#include <algorithm>
 #include <stdexcept>
 
 #include "app/scale/cli_values.h"
@@ -88,6 +89,15 @@ void OptionTable::apply(const Option& opt, std::span<const std::string> values) 
     std::string want = std::to_string(opt.arity()) + (opt.arity() == 1 ? " value" : " values");
     if (opt.arity() == 0) want = "no value";
     throw UsageError(opt.flag + " takes " + want + " (" + std::to_string(values.size()) + " given)");
+  }
+  // An empty value is never a choice, a file or a number: taken as "not
+  // given" it would draw silently without the mask, axes or input asked for
+  // (`--mask "$UNSET"`). Free text (TEXT) may be empty.
+  for (std::size_t k = 0; k < values.size(); ++k) {
+    const std::string& name = opt.metavars.empty() ? std::string() : opt.metavars[std::min(k, opt.metavars.size() - 1)];
+    if (values[k].empty() && name != "TEXT")
+      throw UsageError(opt.flag + ": an empty value" +
+                       (name.empty() || opt.positional ? std::string() : "; give " + name));
   }
   if (opt.numbers)
     for (const std::string& v : values) {
