@@ -14,6 +14,7 @@
 #include "render/glyph_kind.h"
 #include "render/glsl_cpp.h"
 #include "render/kind_programs.h"
+#include "render/march_groups.h"
 #include "render/raster_glyphs.h"
 #include "shaders/lib/bindings.h"
 
@@ -41,30 +42,17 @@ constexpr std::uint8_t kCastEllipsoid = 0;
 std::uint8_t castKindOf(MarchVariant v) { return std::uint8_t(1 + int(v)); }
 MarchVariant variantOfKind(std::uint8_t kind) { return MarchVariant(int(kind) - 1); }
 
-// Which program the raster path draws each group with (RasterGlyphs::
-// drawGlyphs): superquadric frames march all but spheres (at gamma 0 all
-// but spheres and definite glyphs), definite glyphs by the convex variant
-// and mixed-sign ones by the mixed, or all by the general march.
+// Which groups march, and how (render/march_groups.h, as the raster path).
 struct CastMarch {
-  int split = 3;  // groups below it are cast as ellipsoids
+  int split = 3;
   bool variants = true;
   bool marches() const { return split < 3; }
   std::optional<MarchVariant> variantOf(const tensor::GlyphRecord& g) const {
-    const int group = int(tensor::glyphGroup(g));
-    if (group >= split) {
-      if (!variants) return MarchVariant::General;
-      return group == int(tensor::GlyphGroup::Definite) ? MarchVariant::Convex : MarchVariant::Mixed;
-    }
-    return std::nullopt;
+    return marchVariant(int(tensor::glyphGroup(g)), split, variants);
   }
 };
 
-CastMarch castMarch(const FrameParams& p) {
-  CastMarch m;
-  if (glyphKind(p.glyph).draw == KindDraw::Superquadric) m.split = p.gamma > 0.0 ? 1 : 2;
-  m.variants = p.marchVariants;
-  return m;
-}
+CastMarch castMarch(const FrameParams& p) { return {marchSplit(p), p.marchVariants}; }
 
 // f(the variant's shaders): the march code is compiled once per variant.
 template <class F>

@@ -8,6 +8,7 @@
 
 #include "render/camera_uniforms.h"
 #include "render/cpu_glyphs.h"
+#include "render/march_groups.h"
 #include "render/shadow_pass.h"
 #include "render/sprite_primitive.h"
 #include "shaders/lib/bindings.h"
@@ -174,12 +175,6 @@ void RasterGlyphs::setParams(const FrameParams& p, const FrameParams* old) {
   orientedSprites_ = p.orientedSprites;
 }
 
-int RasterGlyphs::splitFor(const FrameParams& p) {
-  // split 3: nothing marches (ellipsoids, and the closed-form kinds: no pre-pass).
-  const bool sq = glyphKind(p.glyph).draw == KindDraw::Superquadric;
-  return !sq ? 3 : p.gamma > 0.0 ? 1 : 2;
-}
-
 std::pair<glm::dvec3, glm::dvec3> castersBoxWC(const glm::dvec3& centresLoWC, const glm::dvec3& centresHiWC,
                                                double maxAbsEigenvalue, const FrameParams& p) {
   // The selected centres, grown by the largest glyph box's half diagonal (a
@@ -200,7 +195,7 @@ std::pair<glm::dvec3, glm::dvec3> RasterGlyphs::castersBoxWC(const FrameParams& 
 }
 
 void RasterGlyphs::drawShadowCasters(const Camera& light, const FrameParams& p, ShadowPass& shadow) {
-  const int split = splitFor(p);
+  const int split = marchSplit(p);
   const bool tessellated = p.tessellation > 0;
   if (tessellated) culling_.bypass();
   else culling_.prepare(light, p.scale, p.sizing, p.faMin, p.slab, p.frustumCulling, pointSprites(light, p));
@@ -277,7 +272,7 @@ void RasterGlyphs::drawGlyphs(const Camera& cam, const FrameParams& p, int split
   // the convex variant, mixed-sign ones by the mixed variant, or all by the
   // general march; a group with no glyphs builds no program.
   const int definite = int(tensor::GlyphGroup::Definite), mixed = int(tensor::GlyphGroup::Mixed);
-  const bool convex = p.marchVariants && split == definite;
+  const bool convex = marchVariant(definite, split, p.marchVariants) == MarchVariant::Convex;
   auto march = [&](MarchVariant v, int g0, int g1) {
     const gl::Program& prog = marchProgram(stats, v, p);
     // Per pass, from what ran: the shaders never read a stale pre-pass.
@@ -288,7 +283,7 @@ void RasterGlyphs::drawGlyphs(const Camera& cam, const FrameParams& p, int split
   };
   if (convex && groupCounts_[std::size_t(definite)] > 0) march(MarchVariant::Convex, definite, definite + 1);
   const int rest = convex ? mixed : split;
-  if (p.marchVariants && rest == mixed) {
+  if (rest == mixed && marchVariant(mixed, split, p.marchVariants) == MarchVariant::Mixed) {
     if (groupCounts_[std::size_t(mixed)] > 0) march(MarchVariant::Mixed, mixed, mixed + 1);
   } else if (rest < 3) {
     march(MarchVariant::General, rest, 3);
@@ -297,7 +292,7 @@ void RasterGlyphs::drawGlyphs(const Camera& cam, const FrameParams& p, int split
 
 void RasterGlyphs::drawView(const Camera& cam, const FrameParams& p, const GBuffer& target) {
   const bool tessellated = p.tessellation > 0;
-  const int split = splitFor(p);
+  const int split = marchSplit(p);
   const double typical = typicalPx(cam, p);
   if (tessellated) culling_.bypass();
   else culling_.prepare(cam, p.scale, p.sizing, p.faMin, p.slab, p.frustumCulling, pointSprites(cam, p),

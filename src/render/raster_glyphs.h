@@ -75,8 +75,6 @@ class RasterGlyphs final : public GlyphPath {
   // shape uniforms; null where a marching program is not built yet.
   std::array<const gl::Program*, 9> glyphPrograms() const;
   std::array<const gl::Program*, 7> shapePrograms() const;
-  // Groups from `split` on march: 3 (none) but for superquadrics.
-  static int splitFor(const FrameParams& p);
   // Spheres or definite glyphs uploaded: what the occlusion pre-pass draws.
   bool hasOccluders() const { return groupCounts_[0] + groupCounts_[1] > 0; }
 
