@@ -46,7 +46,7 @@ struct V {
   double x, y, z;
 };
 double dot(const V& a, const V& b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
-V apply(const Mat3& m, const V& v) {
+V times(const Mat3& m, const V& v) {
   return {m[0] * v.x + m[1] * v.y + m[2] * v.z, m[3] * v.x + m[4] * v.y + m[5] * v.z,
           m[6] * v.x + m[7] * v.y + m[8] * v.z};
 }
@@ -160,7 +160,7 @@ CoherenceScores fibreCoherence(const CoherenceGrid& grid, std::span<const float>
     };
     double first = 0;
     for (std::size_t c = 0; c < candidates.size(); ++c) {
-      const V u = apply(toStep[c], e);
+      const V u = times(toStep[c], e);
       double sum = 0;
       for (int r = 1; r <= p.reach; ++r) {
         const int code = stepCode(u, r);
