@@ -103,6 +103,7 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
   ap.arg("--view NAME").help(std::string("look from an anatomical side, up anatomical, framing the field: ") +
                              render::kViewNames + " (in world terms: RAS+, as every reader converts; x, y, z for "
                              "fields without an anatomical space); default: a --slice seen face-on, else axial")
+      .oneOf(render::kViewNames)
       .action([&](Args a) {
         if (!render::namedView(a[1], false))
           throw UsageError(std::string("--view: unknown view \"") + a[1] + "\"; choose " + render::kViewNames);
@@ -123,6 +124,7 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
   ap.arg("--orientation-letters MODE").help("R/L, A/P, S/I on the image's edges: auto (default: on where the field's "
                                             "space is anatomical, NIfTI, MRtrix and NRRD with a space; off for FEM "
                                             "meshes and unknown spaces), on or off")
+      .oneOf("auto, on or off")
       .action([&](Args a) {
         const std::string m = a[1];
         if (m != "auto" && m != "on" && m != "off")

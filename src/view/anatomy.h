@@ -22,7 +22,7 @@ struct ViewAxes {
 
 // The view names --view takes, for messages and --help.
 inline constexpr const char* kViewNames =
-    "axial, coronal, sagittal, or seen from superior, inferior, anterior, posterior, left or right";
+    "axial, coronal, sagittal, superior, inferior, anterior, posterior, left or right";
 
 // Seen from a side: superior (from above, anterior up), inferior (from
 // below), anterior (from the front, superior up), posterior (from behind),

@@ -232,7 +232,7 @@ class StubLiterals(unittest.TestCase):
     def test_named_values_are_literals_of_what_each_option_takes(self):
         kinds = self.annotations()
         for kw in ("glyph", "color", "colormap", "underlay_colormap", "magnitude", "legend_corner", "mesh_mode",
-                   "pipeline", "layout", "frame", "scale_mode", "sizes_from", "backend"):
+                   "pipeline", "layout", "frame", "scale_mode", "sizes_from", "backend", "view", "orientation_letters"):
             self.assertIsNotNone(self.literal(kinds[kw]), f"{kw}: {ast.unparse(kinds[kw])}")
         self.assertIn("ArrayLike", ast.unparse(kinds["color"]), "color= also takes one value per tensor")
         for name in ("underlay", "mask"):
