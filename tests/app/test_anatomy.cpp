@@ -154,3 +154,29 @@ TEST(Anatomy, LettersSitAtTheEdgesTheyName) {
   EXPECT_LE(l.labels[2].rect.y1, 40);
   EXPECT_GE(l.labels[3].rect.y0, 260);
 }
+
+TEST(Anatomy, LettersSlideClearOfTheLegend) {
+  render::CameraDesc d;
+  const render::ViewAxes a = *render::namedView("coronal", true);
+  d.eyeWC = 50.0 * a.towardEyeWC;
+  d.upWC = a.upWC;
+  const render::Camera cam = render::makeCamera(d, 400, 300, glm::dvec3(-1), glm::dvec3(1));
+  const render::LegendFont font(2);
+  const render::LegendRect panel{300, 90, 396, 296};  // a tall panel in the bottom-right corner
+  const render::LegendLayout free = render::layoutOrientation(cam, font);
+  const render::LegendLayout l = render::layoutOrientation(cam, font, panel);
+  auto meets = [&](const render::LegendRect& r) {
+    return r.x0 < panel.x1 && panel.x0 < r.x1 && r.y0 < panel.y1 && panel.y0 < r.y1;
+  };
+  ASSERT_TRUE(meets(free.swatches[1].rect));  // the right letter would sit on the panel
+  for (int k = 0; k < 4; ++k) EXPECT_FALSE(meets(l.swatches[k].rect)) << l.labels[k].text;
+  EXPECT_EQ(l.labels[1].rect.x0, free.labels[1].rect.x0);  // still at the right edge,
+  EXPECT_LT(l.labels[1].rect.y1, panel.y0);                 // above the panel
+  EXPECT_GE(l.swatches[1].rect.y0, 0);
+  for (int k : {0, 2, 3}) EXPECT_EQ(l.labels[k].rect.y0, free.labels[k].rect.y0);  // the others unmoved
+  EXPECT_EQ(l.labels[3].rect.x0, free.labels[3].rect.x0);
+  // A panel along the whole bottom edge moves the bottom letter nowhere: no side has room.
+  const render::LegendRect strip{0, 250, 400, 300};
+  const render::LegendLayout s = render::layoutOrientation(cam, font, strip);
+  EXPECT_EQ(s.labels[3].rect.x0, free.labels[3].rect.x0);
+}

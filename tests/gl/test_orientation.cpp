@@ -6,6 +6,7 @@
 #include <cmath>
 #include <vector>
 
+#include "render/legend/legend_pass.h"
 #include "render/legend/orientation_pass.h"
 #include "view/anatomy.h"
 
@@ -79,4 +80,40 @@ TEST_F(Orientation, LettersAreTheirOwnPassAndDrawOnlyWhereLaidOut) {
   EXPECT_EQ(r.pass("orientation"), nullptr);
   EXPECT_EQ(r.gpuBytes(), bytesOff);
   EXPECT_EQ(r.passRuns("orientation"), 1u);
+}
+
+TEST_F(Orientation, LettersKeepClearOfTheLegendPanel) {
+  std::vector<float> pos, ten;
+  for (int k = 0; k < 9; ++k) {
+    pos.insert(pos.end(), {float(k % 3) - 1.0f, float(k / 3) - 1.0f, 0.0f});
+    ten.insert(ten.end(), {1.0f, 0, 0, 0.5f, 0, 0.3f});
+  }
+  const tensor::GlyphSet set = tensor::buildGlyphs(pos, ten, {});
+  render::CameraDesc d;
+  const render::ViewAxes a = *render::namedView("axial", true);
+  d.eyeWC = 20.0 * a.towardEyeWC;
+  d.upWC = a.upWC;
+  // An image short enough that the legend's panel reaches up past the middle of the right edge.
+  const render::Camera cam = render::makeCamera(d, 480, 300, glm::dvec3(-2), glm::dvec3(2));
+  render::FrameParams p;
+  p.scale = 0.4;
+  p.orientationLetters = true;
+  p.legend.enabled = true;
+  ctx_->makeCurrent();
+  render::GlyphRenderer r(ctx_->api(), *lib_, render::OverlayFactories{render::makeLegendPass, render::makeOrientationPass});
+  render::GBuffer target(ctx_->api(), cam.width, cam.height);
+  r.upload(set);
+  r.render(cam, p, target);
+  const auto* letters = static_cast<const render::OrientationPass*>(r.pass("orientation"));
+  const auto* legend = static_cast<const render::LegendPass*>(r.pass("legend"));
+  ASSERT_NE(letters, nullptr);
+  ASSERT_NE(legend, nullptr);
+  const render::LegendRect& panel = legend->layout().panel;
+  auto meets = [&](const render::LegendRect& b) {
+    return b.x0 < panel.x1 && panel.x0 < b.x1 && b.y0 < panel.y1 && panel.y0 < b.y1;
+  };
+  const render::LegendFont font(legend->layout().textScale);
+  const render::LegendLayout free = render::layoutOrientation(cam, font);
+  ASSERT_TRUE(meets(free.swatches[1].rect)) << "the scene no longer tests anything";
+  for (const render::LegendSwatch& s : letters->layout().swatches) EXPECT_FALSE(meets(s.rect));
 }
