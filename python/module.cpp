@@ -285,12 +285,12 @@ class Renderer {
       colorValuesSent_ = session_.get();
     }
     render::FrameImage img;
-    bool marches = true;
+    render::GlyphKind kind = render::GlyphKind::Superquadric;
     {
       py::gil_scoped_release release;
       const CurrentFor current(session_->context());
       const app::RenderSession::Frame f = session_->frame(o);
-      marches = f.params.glyph == render::GlyphKind::Superquadric;
+      kind = f.params.glyph;
       // The render stage, as the CLI's: the frame's passes as they finish.
       const util::ProgressSink sink = source_.progress->sink();
       if (sink) sink("rendering", 0, 0, util::kPassesUnit);
@@ -302,9 +302,16 @@ class Renderer {
     source_.progress->rethrow();
     // `render` refuses a march option for glyphs that do not march; a
     // Renderer keeps it for a later glyph="superquadric", and says so.
-    if (!o.marchFlag.empty() && !marches) {
+    const bool gamma = o.marchFlag == "--gamma";
+    if (!o.marchFlag.empty() && kind != render::GlyphKind::Superquadric && !(gamma && kind == render::GlyphKind::Blob)) {
       const std::string kw = table.find(o.marchFlag)->keyword();
-      const std::string w = kw + " applies to glyph=\"superquadric\" only; this frame draws " + o.glyph + " glyphs";
+      const std::string w = kw + " applies to glyph=\"superquadric\"" + (gamma ? " and \"blob\"" : "") +
+                            " only; this frame draws " + o.glyph + " glyphs";
+      if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) < 0) throw py::error_already_set();
+    }
+    if (!o.blobFlag.empty() && kind != render::GlyphKind::Blob) {
+      const std::string w = table.find(o.blobFlag)->keyword() + " applies to glyph=\"blob\" only; this frame draws " +
+                            o.glyph + " glyphs";
       if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) < 0) throw py::error_already_set();
     }
     py::dict out;

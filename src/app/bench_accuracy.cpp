@@ -24,6 +24,7 @@
 #include "app/scene.h"
 #include "gl/shader_library.h"
 #include "io/field/atomic_file.h"
+#include "ref/blob_ref.h"
 #include "ref/image_diff.h"
 #include "ref/superquadric_ref.h"
 #include "render/renderer.h"
@@ -41,13 +42,20 @@ struct Options {
   std::optional<double> faMin;
   std::vector<int> iterations{1, 2, 3, 4, 5, 6, 8, 10, 12, 15, 20, 30};
   std::vector<double> epsilons{1e-2, 1e-3, 1e-4, 1e-5, 1e-6, 1e-7};
+  // --glyph blob sweeps the blob's samples per span and cutoff instead.
+  bool blob = false;
+  render::BlobParams blobParams;
+  std::vector<int> steps{1, 2, 3, 4, 6, 8, 12};
+  std::vector<double> cutoffs{1e-1, 1e-2, 1e-3, 1e-4, 1e-5};
+  std::string sweepFlag;  // the first sweep option given, refused for the other kind
 };
 
 Options parse(int argc, const char** argv) {
   Options o;
   OptionTable ap("tensorglyph bench accuracy [INPUT] -o CSV [options]\n"
            "Superquadric march: frame time, Newton iterations and error against the\n"
-           "double-precision reference, over maximum iterations x epsilon.");
+           "double-precision reference, over maximum iterations x epsilon; with --glyph\n"
+           "blob, Blinn's blobs on the cpu path over samples per span x cutoff.");
   using Args = OptionArgs;
   addInputArg(ap, o.input);
   ap.arg("-o CSV").help("one row per setting").action([&](Args a) { o.csv = a[1]; });
@@ -62,13 +70,39 @@ Options parse(int argc, const char** argv) {
   ap.arg("--gamma G").help("superquadric sharpness").range(ranges::kGamma).byDefault(formatNumber(o.gamma)).action([&](Args a) {
     o.gamma = parseDouble("--gamma", a[1]);
   });
+  ap.arg("--glyph KIND").help("superquadric (default) or blob").oneOf("superquadric or blob").action([&](Args a) {
+    if (std::string(a[1]) != "superquadric" && std::string(a[1]) != "blob")
+      throw UsageError(std::string("--glyph: bench accuracy measures superquadric or blob, not \"") + a[1] + "\"");
+    o.blob = std::string(a[1]) == "blob";
+  });
+  auto swept = [&o](const char* flag) {
+    if (o.sweepFlag.empty()) o.sweepFlag = flag;
+  };
   ap.arg("--iterations LIST").help("maximum iterations, comma-separated")
-      .rangeList(ranges::kIterations).byDefault(formatList(o.iterations)).action([&](Args a) {
+      .rangeList(ranges::kIterations).byDefault(formatList(o.iterations)).action([&, swept](Args a) {
         o.iterations = parseList<int>("--iterations", a[1], [](auto f, auto t) { return parseInt(f, t); });
+        swept("--iterations");
       });
   ap.arg("--epsilon LIST").help("tolerances, comma-separated").rangeList(ranges::kEpsilon)
       .byDefault(formatList(o.epsilons))
-      .action([&](Args a) { o.epsilons = parseList<double>("--epsilon", a[1], parseDouble); });
+      .action([&, swept](Args a) {
+        o.epsilons = parseList<double>("--epsilon", a[1], parseDouble);
+        swept("--epsilon");
+      });
+  ap.arg("--blob-steps LIST").help("blob: samples per span, comma-separated").rangeList(ranges::kBlobSteps)
+      .byDefault(formatList(o.steps)).action([&, swept](Args a) {
+        o.steps = parseList<int>("--blob-steps", a[1], [](auto f, auto t) { return parseInt(f, t); });
+        swept("--blob-steps");
+      });
+  ap.arg("--blob-cutoff LIST").help("blob: cutoffs, comma-separated").rangeList(ranges::kBlobCutoff)
+      .byDefault(formatList(o.cutoffs)).action([&, swept](Args a) {
+        o.cutoffs = parseList<double>("--blob-cutoff", a[1], parseDouble);
+        swept("--blob-cutoff");
+      });
+  ap.arg("--blob-threshold T").help("blob: the threshold (render's --blob-threshold)").range(ranges::kBlobThreshold)
+      .byDefault(formatNumber(o.blobParams.threshold)).action([&](Args a) { o.blobParams.threshold = parseDouble(a[0], a[1]); });
+  ap.arg("--blobbiness B").help("blob: Blinn's blobbiness (render's --blobbiness)").range(ranges::kBlobbiness)
+      .byDefault(formatNumber(o.blobParams.blobbiness)).action([&](Args a) { o.blobParams.blobbiness = parseDouble(a[0], a[1]); });
   ap.arg("--frames N").help("timed frames per setting; the median is reported").range(ranges::kFrames)
       .byDefault(std::to_string(o.frames))
       .action([&](Args a) { o.frames = int(parseInt(a[0], a[1])); });
@@ -98,14 +132,18 @@ void validate(Options& o) {
   if (o.csv.empty()) throw UsageError("-o CSV is required");
   if (o.plot.empty()) o.plot = withExtension(o.csv, ".png");
   checkFrameSize("--size", o.width, o.height);
+  if (!o.sweepFlag.empty() && o.blob != (o.sweepFlag == "--blob-steps" || o.sweepFlag == "--blob-cutoff"))
+    throw UsageError(o.sweepFlag + " sweeps " + (o.blob ? "the superquadric march" : "blobs (--glyph blob)") +
+                     "; this run measures " + (o.blob ? "blobs" : "superquadrics"));
   // Within the range, but nothing to measure: gamma 0 draws no march.
-  if (o.gamma == 0.0) throw UsageError("--gamma 0 draws definite glyphs as ellipsoids, without the march bench accuracy measures; give a gamma above 0");
+  if (!o.blob && o.gamma == 0.0) throw UsageError("--gamma 0 draws definite glyphs as ellipsoids, without the march bench accuracy measures; give a gamma above 0");
   o.field.validate();
   checkBackend(o.backend);
   refuseOutputsOverInputs({{"-o", o.csv}, {"--plot", o.plot}},
                           {{"INPUT", o.input}, {"--mask", o.field.read.selection.maskPath}});
 }
 
+// A superquadric row's march, or a blob row's steps (in `iterations`) and cutoff (in `epsilon`).
 struct Row {
   int iterations;
   double epsilon;
@@ -130,9 +168,9 @@ struct Row {
 
 // The CSV's bytes into `out`, not yet committed. Units in the names: depth
 // errors in glyph sizes (each glyph's largest semi-axis, the unit of epsilon).
-void writeCsv(const std::vector<Row>& rows, io::AtomicFile& out) {
-  std::string f =
-      "iterations,epsilon,frame_ms,mean_iterations,max_iterations,coverage_error_pct,interior_error_pct,"
+void writeCsv(const std::vector<Row>& rows, bool blob, io::AtomicFile& out) {
+  std::string f = std::string(blob ? "steps,cutoff" : "iterations,epsilon") +
+      ",frame_ms,mean_iterations,max_iterations,coverage_error_pct,interior_error_pct,"
       "depth_err_median_sizes,depth_err_p99_sizes,depth_err_max_sizes,normal_err_median_deg,normal_err_p99_deg,"
       "normal_err_max_deg,frame_ms_min,frame_ms_max,repeats,default\n";
   char line[600];
@@ -148,10 +186,10 @@ void writeCsv(const std::vector<Row>& rows, io::AtomicFile& out) {
 }
 
 // The table on stdout: units in a second header line, * on the default row.
-void printTable(const std::vector<Row>& rows) {
-  std::printf("%5s %8s %9s %17s %6s %4s %9s %10s %10s %9s %7s\n", "iter", "eps", "frame", "frame min-max", "mean",
+void printTable(const std::vector<Row>& rows, bool blob) {
+  std::printf("%5s %8s %9s %17s %6s %4s %9s %10s %10s %9s %7s\n", blob ? "steps" : "iter", blob ? "cutoff" : "eps", "frame", "frame min-max", "mean",
               "max", "cover", "depth_p99", "depth_max", "norm_p99", "default");
-  std::printf("%5s %8s %9s %17s %6s %4s %9s %10s %10s %9s %7s\n", "", "[sizes]", "[ms]", "[ms]", "[iter]", "[it]",
+  std::printf("%5s %8s %9s %17s %6s %4s %9s %10s %10s %9s %7s\n", "", blob ? "[T]" : "[sizes]", "[ms]", "[ms]", "[iter]", "[it]",
               "[%]", "[sizes]", "[sizes]", "[deg]", "");
   for (const Row& r : rows) {
     char range[40];
@@ -163,10 +201,12 @@ void printTable(const std::vector<Row>& rows) {
   std::fflush(stdout);
 }
 
-bool plot(const std::vector<Row>& rows, const std::vector<double>& epsilons, int repeats, const std::string& path) {
+bool plot(const std::vector<Row>& rows, const std::vector<double>& epsilons, int repeats, bool blob,
+          const std::string& path) {
   // One series per epsilon, its points in order of maximum iterations, each
   // labelled with its iterations and barred with its rounds' range.
-  const std::string x = "frame time (ms): median of " + std::to_string(repeats) + " rounds, bars min-max; labels: iterations";
+  const std::string x = "frame time (ms): median of " + std::to_string(repeats) + " rounds, bars min-max; labels: " +
+                        (blob ? "steps" : "iterations");
   PlotPanel cover{"Coverage error vs frame time", x, "% glyph pixels", true, {}};
   PlotPanel depth{"Depth error (p99) vs frame time", x, "glyph sizes", true, {}};
   PlotPanel normal{"Normal error (p99) vs frame time", x, "degrees", true, {}};
@@ -174,7 +214,7 @@ bool plot(const std::vector<Row>& rows, const std::vector<double>& epsilons, int
                                           {0.1f, 0.6f, 0.8f},  {0.2f, 0.3f, 0.85f}, {0.6f, 0.2f, 0.7f}};
   for (std::size_t k = 0; k < epsilons.size(); ++k) {
     char label[32];
-    std::snprintf(label, sizeof label, "eps %g", epsilons[k]);
+    std::snprintf(label, sizeof label, blob ? "cutoff %g" : "eps %g", epsilons[k]);
     PlotSeries c{label, palette[k % 6], {}, {}, {}, -1, "default"};
     for (const Row& r : rows)
       if (r.epsilon == epsilons[k]) {
@@ -218,16 +258,31 @@ int benchAccuracy(int argc, const char** argv) {
   params.scale = sized.scale;
   params.sizing = sized.mapping;
   params.faMin = o.faMin.value_or(scene.preferredFaMin.value_or(0.0));
-  params.glyph = render::GlyphKind::Superquadric;
+  params.glyph = o.blob ? render::GlyphKind::Blob : render::GlyphKind::Superquadric;
   params.gamma = o.gamma;
-  const auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale, params.sizing);
+  params.blob = o.blobParams;
+  auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale, params.sizing);
+  // A blob reaches where its bump still adds (render::kindReach), at the smallest cutoff swept.
+  double reach = render::kindReach(params);
+  for (const double c : o.cutoffs) {
+    render::FrameParams q = params;
+    q.blob.cutoff = c;
+    reach = std::max(reach, render::kindReach(q));
+  }
+  const double pad = (reach - tensor::kGlyphReach) * tensor::glyphRadiusWC(params.scale, params.sizing, glyphs.maxAbsEigenvalue);
+  lo -= pad;
+  hi += pad;
   const tensor::FramingBox frame = tensor::framingBox(glyphs, !scene.field.grid, sized.typicalRadiusWC);
   const render::Camera cam = render::makeCamera(
       sceneCamera(scene, frame.lo, frame.hi, render::Projection::Perspective, 30.0, double(o.width) / o.height),
       o.width, o.height, lo, hi);
 
   const auto tr = Clock::now();
-  const ref::RefImage reference = ref::renderSuperquadrics(cam, glyphs.glyphs, {params.scale, params.faMin, params.sizing}, o.gamma);
+  ref::RefParams refParams{params.scale, params.faMin, params.sizing};
+  refParams.blobThreshold = o.blobParams.threshold;
+  refParams.blobBlobbiness = o.blobParams.blobbiness;
+  const ref::RefImage reference = o.blob ? ref::renderBlobs(cam, glyphs.glyphs, refParams, o.gamma)
+                                         : ref::renderSuperquadrics(cam, glyphs.glyphs, refParams, o.gamma);
   const double refMs = msSince(tr);
   // Depth errors in units of each glyph's largest semi-axis, the unit of epsilon.
   std::unordered_map<std::uint32_t, double> size;
@@ -239,7 +294,7 @@ int benchAccuracy(int argc, const char** argv) {
 
   auto ctx = createContext(o.backend, o.width, o.height);
   const gl::ShaderLibrary lib;
-  render::GlyphRenderer renderer(ctx->api(), lib);
+  render::GlyphRenderer renderer(ctx->api(), lib, nullptr, o.blob ? "cpu" : "raster");
   render::GBuffer target(ctx->api(), o.width, o.height);
   renderer.upload(glyphs);
   if (sink) sink({}, 0, 0, {});
@@ -251,31 +306,41 @@ int benchAccuracy(int argc, const char** argv) {
                          ": no glyph covers a pixel at this scale and size, so there is nothing to compare (try a "
                          "larger --scale, or --scale-mode spacing)");
   // One summary line, with how to read the table: a failure's own line follows it alone.
-  const render::MarchParams defaults;
+  const render::MarchParams march;
+  const render::BlobParams blob;
+  const std::vector<int>& counts = o.blob ? o.steps : o.iterations;
+  const std::vector<double>& tolerances = o.blob ? o.cutoffs : o.epsilons;
+  const int defaultCount = o.blob ? blob.steps : march.maxIterations;
+  const double defaultTolerance = o.blob ? blob.cutoff : march.epsilon;
   bool defaultSwept = false;
-  for (double eps : o.epsilons)
-    for (int it : o.iterations) defaultSwept |= it == defaults.maxIterations && eps == defaults.epsilon;
+  for (double eps : tolerances)
+    for (int it : counts) defaultSwept |= it == defaultCount && eps == defaultTolerance;
   std::fprintf(stderr,
-               "bench accuracy: %s, %zu glyphs, gamma %g, %dx%d, %s (%s); reference %.0f ms, %zu glyph pixels; frame "
+               "bench accuracy: %s, %zu glyphs, %s, gamma %g, %dx%d, %s (%s); reference %.0f ms, %zu glyph pixels; frame "
                "time: the median of %d rounds (each the median of %d frames), with their min-max; depth in glyph "
-               "sizes (the largest semi-axis, epsilon's unit); %s (%d iterations, epsilon %g)\n",
-               scene.field.path.c_str(), glyphs.glyphs.size(), o.gamma, o.width, o.height, ctx->backendName(),
-               ctx->describe().c_str(), refMs, refPixels, o.repeats, o.frames,
+               "sizes (the largest semi-axis); %s (%s %d, %s %g)\n",
+               scene.field.path.c_str(), glyphs.glyphs.size(), o.blob ? "blobs" : "superquadrics", o.gamma, o.width,
+               o.height, ctx->backendName(), ctx->describe().c_str(), refMs, refPixels, o.repeats, o.frames,
                defaultSwept ? "* marks the default setting" : "the default setting is not swept",
-               defaults.maxIterations, defaults.epsilon);
+               o.blob ? "steps" : "iterations", defaultCount, o.blob ? "cutoff" : "epsilon", defaultTolerance);
 
   // Round 0 measures the errors and the iteration counts (the same in every
   // round); every round times each setting, alternate rounds in reverse order.
   std::vector<Row> rows;
-  for (double eps : o.epsilons)
-    for (int it : o.iterations) rows.push_back({it, eps, {}, {}, {}, it == defaults.maxIterations && eps == defaults.epsilon});
+  for (double eps : tolerances)
+    for (int it : counts) rows.push_back({it, eps, {}, {}, {}, it == defaultCount && eps == defaultTolerance});
   const double total = double(rows.size()) * o.repeats;
   double done = 0;
   for (int round = 0; round < o.repeats; ++round)
     for (std::size_t j = 0; j < rows.size(); ++j) {
       Row& r = rows[round % 2 ? rows.size() - 1 - j : j];
       if (sink) sink("settings", done++, total, "settings");
-      params.march = {r.iterations, r.epsilon};
+      if (o.blob) {
+        params.blob.steps = r.iterations;
+        params.blob.cutoff = r.epsilon;
+      } else {
+        params.march = {r.iterations, r.epsilon};
+      }
       params.iterationStats = false;
       renderer.render(cam, params, target);  // warm-up: compiles and caches state
       ctx->api().Finish();
@@ -290,20 +355,22 @@ int benchAccuracy(int argc, const char** argv) {
       r.roundMs.push_back(times[times.size() / 2]);
       if (round > 0) continue;
       const render::FrameImage img = renderer.readback(cam, target, render::Channels::All);
-      params.iterationStats = true;  // a separate frame: the counters cost time
-      renderer.render(cam, params, target);
-      r.stats = renderer.iterationStats();
+      if (!o.blob) {
+        params.iterationStats = true;  // a separate frame: the counters cost time
+        renderer.render(cam, params, target);
+        r.stats = renderer.iterationStats();
+      }
       r.diff = ref::diffImages(img, reference, cam, diffOpt);
       if (r.diff.nonFinite && sink) sink({}, 0, 0, {});
       if (r.diff.nonFinite) std::fprintf(stderr, "bench accuracy: %zu non-finite GPU values\n", r.diff.nonFinite);
     }
   if (sink) sink({}, 0, 0, {});  // the table goes to stdout, often the same terminal
-  printTable(rows);
+  printTable(rows, o.blob);
   progress.finish();
   // The CSV is committed after the plot, so that a failure leaves neither.
   io::AtomicFile csv(o.csv);
-  writeCsv(rows, csv);
-  if (!plot(rows, o.epsilons, o.repeats, o.plot))
+  writeCsv(rows, o.blob, csv);
+  if (!plot(rows, tolerances, o.repeats, o.blob, o.plot))
     std::fprintf(stderr, "bench accuracy: %s: no font found, so the plot has no labels\n", printable(o.plot).c_str());
   csv.commit(std::int64_t(csv.bytesWritten()));
   std::fprintf(stderr, "bench accuracy: wrote %s and %s\n", printable(o.csv).c_str(), printable(o.plot).c_str());

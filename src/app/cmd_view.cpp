@@ -111,6 +111,11 @@ int cmdView(int argc, const char** argv) {
   reportLoad(scene.field, "view", o.field.read);
   std::vector<io::MeshData> meshes = o.mesh.read(o.input, "view");
   checkScriptMeshes(script, meshes.size(), o.script);
+  const std::string path = sessionGlyphPath(o);
+  for (const ScriptStep& s : script)
+    if (s.verb == "glyph" && !render::pathDraws(path, *glyphKindNamed(s.args[0])))
+      throw UsageError(o.script + ":" + std::to_string(s.line) + ": glyph " + s.args[0] + ": the viewer draws on the " +
+                       path + " glyph path, which draws no " + s.args[0] + " glyphs; start it with --glyph " + s.args[0]);
   const std::size_t meshCount = meshes.size();
   // The scene as `render` builds it (app/render_session.h): glyphs, underlay
   // and its warnings, meshes; only the window, its events and the panel are
@@ -163,7 +168,13 @@ int cmdView(int argc, const char** argv) {
   // Moving or hiding a plane later changes its quad only: the volume stays on the GPU.
   const std::span<render::SlicePlane* const> planes = session.slicePlanes();
   std::vector<PlaneView> appliedPlanes = v.planes;
-  // Context items in the order added: the planes, then the meshes.
+  // Context items in the order added: the planes, the tracts, then the meshes.
+  std::vector<render::TractItem*> tractItems;
+  for (const auto& item : renderer.context())
+    if (auto* t = dynamic_cast<render::TractItem*>(item.get())) {
+      tractItems.push_back(t);
+      v.tracts.push_back({t->label(), true, t->params()});
+    }
   std::vector<render::MeshItem*> meshItems;
   for (std::size_t k = renderer.context().size() - meshCount; k < renderer.context().size(); ++k) {
     const auto& item = renderer.context()[k];
@@ -182,6 +193,7 @@ int cmdView(int argc, const char** argv) {
   std::optional<render::FrameParams> applied;
   std::vector<double> changeUs, frameMs;
   PanelStatus status;
+  status.glyphPath = std::string(renderer.glyphPath().name());
   std::size_t step = 0;
   int framesLeft = 0, shots = 0;
   std::optional<Clock::time_point> lastFrame;
@@ -241,6 +253,10 @@ int cmdView(int argc, const char** argv) {
       for (std::size_t k = 0; k < meshItems.size(); ++k) {
         meshItems[k]->setVisible(v.meshes[k].visible);
         if (!(meshItems[k]->params() == v.meshes[k].params)) meshItems[k]->setParams(v.meshes[k].params);
+      }
+      for (std::size_t k = 0; k < tractItems.size(); ++k) {  // uniforms only: the tubes stay uploaded
+        tractItems[k]->setVisible(v.tracts[k].visible);
+        tractItems[k]->setParams(v.tracts[k].params);
       }
       const render::Camera cam = render::makeCamera(v.camera.desc(), w, h, lo, hi);
       renderer.render(cam, p, target);

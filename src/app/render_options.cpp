@@ -1,6 +1,7 @@
 #include "app/render_options.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iterator>
 #include <span>
 
@@ -56,9 +57,13 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
   ap.arg("--pipeline NAME").reloads().help("how glyphs are drawn: raster (default; a ray-cast sprite per glyph) or "
                                             "cpu (tiles cast on every core; ellipsoids and superquadrics)")
       .oneOf(render::glyphPathNames())
-      .action([&](Args a) { o.pipeline = a[1]; });
+      .action([&](Args a) {
+        o.pipeline = a[1];
+        o.pipelineGiven = true;
+      });
   ap.arg("--glyph KIND").help("ellipsoid (default; the built-in scene: superquadric), superquadric, "
-                                  "or Teem's cylinder or box").oneOf(kGlyphKindNames).action([&](Args a) {
+                                  "Teem's cylinder or box, or blob (Blinn's blobby surface of all the glyphs' "
+                                  "bumps; cast on the cpu path)").oneOf(kGlyphKindNames).action([&](Args a) {
     o.glyph = a[1];
     o.look.glyphGiven = true;
   });
@@ -82,6 +87,32 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
     o.gamma = parseDouble("--gamma", a[1]);
     if (o.marchFlag.empty()) o.marchFlag = "--gamma";
   });
+  const render::BlobParams blob;
+  auto blobFlag = [&o](const char* flag) {
+    if (o.blobFlag.empty()) o.blobFlag = flag;
+  };
+  ap.arg("--blob-threshold T").help("blob: the surface where the bumps' sum is T; at 1 a lone glyph's blob is the glyph")
+      .range(ranges::kBlobThreshold).byDefault(formatNumber(blob.threshold)).action([&, blobFlag](Args a) {
+        o.blob.threshold = parseDouble(a[0], a[1]);
+        blobFlag("--blob-threshold");
+      });
+  ap.arg("--blobbiness B").help("blob: Blinn's blobbiness B < 0 of each bump exp(B (g^2 - 1)); nearer 0, "
+                                "neighbours blend more")
+      .range(ranges::kBlobbiness).byDefault(formatNumber(blob.blobbiness)).action([&, blobFlag](Args a) {
+        o.blob.blobbiness = parseDouble(a[0], a[1]);
+        blobFlag("--blobbiness");
+      });
+  ap.arg("--blob-cutoff C").help("blob: a bump ends where it falls to C times the threshold; the sum is then "
+                                 "within K C T / (1 - C) of the untruncated one where K bumps overlap")
+      .range(ranges::kBlobCutoff).byDefault(formatNumber(blob.cutoff)).action([&, blobFlag](Args a) {
+        o.blob.cutoff = parseDouble(a[0], a[1]);
+        blobFlag("--blob-cutoff");
+      });
+  ap.arg("--blob-steps N").help("blob: samples of the sum along a ray between a bump's entry, peak and exit")
+      .range(ranges::kBlobSteps).byDefault(std::to_string(blob.steps)).action([&, blobFlag](Args a) {
+        o.blob.steps = int(parseInt(a[0], a[1]));
+        blobFlag("--blob-steps");
+      });
   ap.setGroup("input and selection");
   ap.arg("--fa-min F").help("hide glyphs with FA below F").range(ranges::kUnit).action([&](Args a) {
     o.faMin = parseDouble(a[0], a[1]);
@@ -199,17 +230,52 @@ namespace {
 // The options that need a kind of glyph: the cpu path casts ellipsoids and
 // superquadrics, the march's options (gamma among them) apply where the kind
 // table says.
+// "ellipsoid, superquadric and blob": the kinds a path draws, from the kind table.
+std::string kindsDrawnBy(std::string_view path) {
+  std::vector<std::string_view> names;
+  for (const render::GlyphKindInfo& k : render::glyphKinds())
+    if (render::pathDraws(path, k.kind)) names.push_back(k.name);
+  std::string s;
+  for (std::size_t k = 0; k < names.size(); ++k)
+    s.append(k == 0 ? "" : k + 1 == names.size() ? " and " : ", ").append(names[k]);
+  return s;
+}
+
 void checkKindOptions(const RenderOptions& o, render::GlyphKind kind, bool toFile) {
-  if (o.pipeline == "cpu" && o.tessellate != 0) throw UsageError("--pipeline cpu casts rays; --tessellate draws a mesh (use --pipeline raster)");
-  if (o.pipeline == "cpu" && render::glyphKind(kind).draw == render::KindDraw::ClosedForm)
-    throw UsageError("--pipeline cpu draws ellipsoid and superquadric glyphs only; this render draws " +
-                     std::string(render::glyphKind(kind).name) + " glyphs");
-  if (toFile && !o.marchFlag.empty() && !render::glyphKind(kind).gamma)
-    throw UsageError(o.marchFlag + " applies to --glyph superquadric only; this render draws " +
-                     std::string(render::glyphKind(kind).name) + " glyphs");
+  const std::string path = glyphPathFor(o, kind), name(render::glyphKind(kind).name);
+  if (path == "cpu" && o.tessellate != 0) throw UsageError("--pipeline cpu casts rays; --tessellate draws a mesh (use --pipeline raster)");
+  if (!render::pathDraws(path, kind))
+    throw UsageError("--pipeline " + path + " draws " + kindsDrawnBy(path) + " glyphs only; this render draws " + name +
+                     " glyphs" + (kind == render::GlyphKind::Blob ? " (each blob pixel needs every bump its ray meets)" : "") +
+                     ": leave --pipeline out");
+  const bool blob = kind == render::GlyphKind::Blob;
+  if (toFile && !o.marchFlag.empty() && (!render::glyphKind(kind).gamma || (blob && o.marchFlag != "--gamma")))
+    throw UsageError(o.marchFlag + " applies to --glyph superquadric" + (o.marchFlag == "--gamma" ? " and blob" : "") +
+                     " only; this render draws " + name + " glyphs");
+  if (toFile && !o.blobFlag.empty() && !blob)
+    throw UsageError(o.blobFlag + " applies to --glyph blob only; this render draws " + name + " glyphs");
+  if (blob) {
+    // The bump's peak exp(-B) must rise above the cutoff, or nothing adds.
+    const render::BlobParams& b = o.blob;
+    if (!(b.cutoff * b.threshold < std::exp(-b.blobbiness)))
+      throw UsageError("--blob-cutoff " + formatNumber(b.cutoff) + " x --blob-threshold " + formatNumber(b.threshold) +
+                       " lies above a bump's peak exp(-B) = " + formatNumber(std::exp(-b.blobbiness)) +
+                       " (--blobbiness " + formatNumber(b.blobbiness) + "): no bump would add anything");
+  }
 }
 
 }  // namespace
+
+std::string glyphPathFor(const RenderOptions& o, render::GlyphKind kind) {
+  if (o.pipelineGiven) return o.pipeline;
+  for (const std::string_view path : render::kGlyphPathNames)
+    if (render::pathDraws(path, kind)) return std::string(path);
+  return o.pipeline;
+}
+
+std::string sessionGlyphPath(const RenderOptions& o) {
+  return glyphPathFor(o, o.look.glyphGiven ? *glyphKindNamed(o.glyph) : render::GlyphKind::Ellipsoid);
+}
 
 // Every parameter is checked before anything is loaded or created.
 void validateRenderOptions(const RenderOptions& o, bool toFile) {
@@ -271,6 +337,7 @@ render::FrameParams frameParams(const RenderOptions& o, const Scene& s, const te
   p.glyph = *glyphKindNamed(o.glyph);
   p.gamma = o.gamma;
   p.march = {o.maxIterations, o.epsilon};
+  p.blob = o.blob;
   p.iterationStats = o.stats;
   p.tessellation = o.tessellate;
   p.background = o.background;

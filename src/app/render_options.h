@@ -43,7 +43,17 @@ struct RenderOptions : SceneFlags {
   // default ellipsoids); view and Python may switch to superquadrics later.
   std::string marchFlag;
   std::string pipeline = "raster";  // the glyph path (render::makeGlyphPath)
+  bool pipelineGiven = false;       // else a kind the raster path cannot draw (blob) takes the cpu path
+  render::BlobParams blob;
+  std::string blobFlag;  // the first --blob-* option given: refused for other kinds, as marchFlag
 };
+
+// The glyph path a session with options `o` draws `kind` by: --pipeline,
+// or where it was not given the first path of the kind's row that draws it.
+std::string glyphPathFor(const RenderOptions& o, render::GlyphKind kind);
+// The path a session starts on: glyphPathFor the kind --glyph gives (a
+// file's look never asks for a kind the raster path cannot draw).
+std::string sessionGlyphPath(const RenderOptions& o);
 
 
 inline constexpr const char* kRenderUsage = "tensorglyph render [INPUT] -o OUT [options]";

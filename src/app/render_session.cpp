@@ -72,7 +72,8 @@ RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io
   ctx_ = hooks.makeContext ? hooks.makeContext(o) : createContext(o.backend, o.width, o.height);
   lib_ = std::make_unique<gl::ShaderLibrary>();
   renderer_ = std::make_unique<render::GlyphRenderer>(
-      ctx_->api(), *lib_, render::OverlayFactories{render::makeLegendPass, render::makeOrientationPass}, o.pipeline);
+      ctx_->api(), *lib_, render::OverlayFactories{render::makeLegendPass, render::makeOrientationPass},
+      sessionGlyphPath(o));
   target_ = std::make_unique<render::GBuffer>(ctx_->api(), o.width, o.height);
   if (underlay)
     planes_ = addSlicePlanes(*renderer_, ctx_->api(), *lib_, o.slices, std::move(*underlay), glyphs_.maxAbsEigenvalue);
@@ -145,8 +146,18 @@ render::GBuffer& RenderSession::target(int width, int height) {
   return *target_;
 }
 
+void RenderSession::growForBlobs(glm::dvec3& lo, glm::dvec3& hi, const render::FrameParams& p) const {
+  // A blob's surface reaches where its bump still adds, beyond the glyph box's corner.
+  const double extra = render::kindReach(p) - tensor::kGlyphReach;
+  if (!(extra > 0.0)) return;
+  const double pad = extra * tensor::glyphRadiusWC(p.scale, p.sizing, glyphs_.maxAbsEigenvalue);
+  lo -= pad;
+  hi += pad;
+}
+
 std::pair<glm::dvec3, glm::dvec3> RenderSession::depthBoxWC(const render::FrameParams& p) const {
   auto [lo, hi] = tensor::glyphBoxWC(glyphs_, p.scale, p.sizing);
+  growForBlobs(lo, hi, p);
   growDepthRange(lo, hi, underlayLoWC_, underlayHiWC_);
   growDepthRange(lo, hi, meshLoWC_, meshHiWC_);
   return {lo, hi};
@@ -159,6 +170,7 @@ RenderSession::Frame RenderSession::frame(const RenderOptions& o) const {
 
   const Boxes b = boxes(f.sized);
   glm::dvec3 lo = b.glyphsWC.lo, hi = b.glyphsWC.hi;
+  growForBlobs(lo, hi, params);
   // The camera's depth range holds the planes and meshes too (framing stays on the glyphs).
   growDepthRange(lo, hi, underlayLoWC_, underlayHiWC_);
   growDepthRange(lo, hi, meshLoWC_, meshHiWC_);

@@ -111,6 +111,8 @@ class RenderSession {
     tensor::FramingBox framing;
   };
   Boxes boxes(const tensor::ResolvedScale& sized) const;
+  // [lo, hi] grown by how much farther a blob reaches than a glyph (render::kindReach).
+  void growForBlobs(glm::dvec3& lo, glm::dvec3& hi, const render::FrameParams& p) const;
   // Where the glyphs lie, for the legend's room: made from the records on
   // first need, so a session that never shows a legend never pays for it.
   const std::vector<render::GlyphCell>& cells() const;

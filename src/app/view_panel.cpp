@@ -70,7 +70,66 @@ void depthCues(render::FrameParams& p, const PanelStatus& s) {
   }
 }
 
-void controls(ViewState& v, const tensor::GlyphSet& meta) {
+// On a grid, the slab in --slice's terms: an anatomical plane (on the voxel
+// axis nearest it, as --slice axial:N picks), its index and thickness. A
+// point set has no grid: a world range across x, y or z.
+void slabControls(ViewState& v, const tensor::GlyphSet& meta) {
+  render::FrameParams& p = v.params;
+  if (v.fieldGrid) {
+    const SliceGrid& g = *v.fieldGrid;
+    // 0 off; 1, 2, 3: axial, coronal, sagittal (world axes z, y, x); 4, 5, 6: voxel axes i, j, k.
+    const std::optional<io::SliceSpec>& now = v.slabSlice;
+    int plane = !now ? 0 : now->worldAxis >= 0 ? 3 - now->worldAxis : 4 + now->axis;
+    io::SliceSpec s = v.slabSlice.value_or(io::SliceSpec{});
+    bool changed = false;
+    if (ImGui::Combo("slab", &plane, "off\0axial\0coronal\0sagittal\0voxel i\0voxel j\0voxel k\0")) {
+      changed = true;
+      if (plane > 0) {
+        s = io::SliceSpec{plane >= 4 ? plane - 4 : 2};
+        if (plane < 4) s.worldAxis = 3 - plane;
+        s = io::resolveSlice(s, g.placement, g.dims);
+        s.index = g.dims[s.axis] / 2;  // start at the middle, one voxel thick
+      }
+    }
+    if (plane > 0) {
+      const int n = g.dims[s.axis];
+      int index = int(s.index), thick = int(s.thickness);
+      const std::string axisName = std::string("voxel ") + "ijk"[s.axis];
+      if (ImGui::SliderInt("slab index", &index, 0, n - 1, (axisName + " %d").c_str())) changed = true;
+      if (ImGui::SliderInt("slab thickness", &thick, 1, n)) changed = true;
+      s.index = std::clamp(index, 0, n - 1);
+      s.thickness = std::clamp(thick, 1, n);
+      s.positionWC.reset();  // now an index, as the script's `slab axial:N`
+    }
+    if (changed) {
+      v.slabSlice = plane > 0 ? std::optional(s) : std::nullopt;
+      p.slab = plane > 0 ? slabOf(s, g) : render::Slab{};
+    }
+    return;
+  }
+  int axis = p.slab.axis + 1;
+  if (ImGui::Combo("slab (world)", &axis, "off\0x\0y\0z\0")) {
+    p.slab.axis = axis - 1;
+    p.slab.normalWC = glm::dvec3(0.0);
+    if (p.slab.axis >= 0) {
+      // Start as one sample thick, at the middle of the centres' range.
+      const double lo = meta.boundsMinWC[p.slab.axis], hi = meta.boundsMaxWC[p.slab.axis];
+      const double mid = 0.5 * (lo + hi), half = std::max(0.5, 0.01 * (hi - lo));
+      p.slab.lo = mid - half;
+      p.slab.hi = mid + half;
+    }
+  }
+  if (p.slab.axis >= 0) {
+    const auto lo = float(meta.boundsMinWC[p.slab.axis]), hi = float(meta.boundsMaxWC[p.slab.axis]);
+    float range[2] = {float(p.slab.lo), float(p.slab.hi)};
+    if (ImGui::DragFloat2("slab range", range, std::max(1e-3f, 0.002f * (hi - lo)), lo, hi)) {
+      p.slab.lo = std::min(range[0], range[1]);
+      p.slab.hi = std::max(range[0], range[1]);
+    }
+  }
+}
+
+void controls(ViewState& v, const tensor::GlyphSet& meta, const PanelStatus& status) {
   render::FrameParams& p = v.params;
   int kind = int(p.glyph);
   // The kind table's names (literals, so NUL-terminated).
@@ -78,10 +137,20 @@ void controls(ViewState& v, const tensor::GlyphSet& meta) {
     *out = render::glyphKinds()[std::size_t(k)].name.data();
     return true;
   };
-  if (ImGui::Combo("glyph", &kind, kindName, nullptr, int(render::glyphKinds().size())))
-    p.glyph = render::GlyphKind(kind);
+  if (ImGui::Combo("glyph", &kind, kindName, nullptr, int(render::glyphKinds().size()))) {
+    if (render::pathDraws(status.glyphPath, render::GlyphKind(kind))) p.glyph = render::GlyphKind(kind);
+  }
+  if (!render::pathDraws(status.glyphPath, render::GlyphKind::Blob))
+    ImGui::TextDisabled("blob: start the viewer with --glyph blob (the cpu path)");
   auto gamma = float(p.gamma);
   if (slider("gamma", &gamma, ranges::kGamma, "%.2f", true)) p.gamma = gamma;
+  if (p.glyph == render::GlyphKind::Blob) {
+    auto threshold = float(p.blob.threshold), blobbiness = float(p.blob.blobbiness);
+    // Of the options' ranges, the part where a picture changes.
+    if (ImGui::SliderFloat("blob threshold", &threshold, 0.05f, 20.0f, "%.3g", ImGuiSliderFlags_Logarithmic))
+      p.blob.threshold = threshold;
+    if (ImGui::SliderFloat("blobbiness", &blobbiness, -20.0f, -0.05f, "%.3g")) p.blob.blobbiness = blobbiness;
+  }
   auto fa = float(p.faMin);
   if (slider("FA min", &fa, ranges::kUnit, "%.3f")) p.faMin = fa;
   auto factor = float(v.scaleFactor);
@@ -102,26 +171,7 @@ void controls(ViewState& v, const tensor::GlyphSet& meta) {
     if (ImGui::Combo("colormap", &map, "gray\0viridis\0diverging\0")) p.colormap = render::Colormap(map);
   }
 
-  int axis = p.slab.axis + 1;
-  if (ImGui::Combo("slab", &axis, "off\0x\0y\0z\0")) {
-    p.slab.axis = axis - 1;
-    p.slab.normalWC = glm::dvec3(0.0);  // the panel's slabs lie across world axes
-    if (p.slab.axis >= 0) {
-      // Start as one sample thick, at the middle of the centres' range.
-      const double lo = meta.boundsMinWC[p.slab.axis], hi = meta.boundsMaxWC[p.slab.axis];
-      const double mid = 0.5 * (lo + hi), half = std::max(0.5, 0.01 * (hi - lo));
-      p.slab.lo = mid - half;
-      p.slab.hi = mid + half;
-    }
-  }
-  if (p.slab.axis >= 0) {
-    const auto lo = float(meta.boundsMinWC[p.slab.axis]), hi = float(meta.boundsMaxWC[p.slab.axis]);
-    float range[2] = {float(p.slab.lo), float(p.slab.hi)};
-    if (ImGui::DragFloat2("slab range", range, std::max(1e-3f, 0.002f * (hi - lo)), lo, hi)) {
-      p.slab.lo = std::min(range[0], range[1]);
-      p.slab.hi = std::max(range[0], range[1]);
-    }
-  }
+  slabControls(v, meta);
   if (ImGui::CollapsingHeader("legend")) {
     ImGui::Checkbox("show legend", &p.legend.enabled);
     int corner = int(p.legend.corner);
@@ -162,6 +212,21 @@ void controls(ViewState& v, const tensor::GlyphSet& meta) {
       if (m.params.mode == render::MeshMode::SeeThrough) slider("opacity", &m.params.opacity, ranges::kUnit);
       if (m.params.mode == render::MeshMode::Edges)
         slider("feature angle", &m.params.featureAngleDeg, ranges::kFeatureAngleDeg, "%.0f deg");
+      ImGui::PopID();
+    }
+  }
+  if (!v.tracts.empty() && ImGui::CollapsingHeader("tracts", ImGuiTreeNodeFlags_DefaultOpen)) {
+    for (std::size_t k = 0; k < v.tracts.size(); ++k) {
+      TractView& t = v.tracts[k];
+      ImGui::PushID(int(k));
+      ImGui::Checkbox(t.label.c_str(), &t.visible);
+      ImGui::Checkbox("coloured by direction", &t.params.byDirection);
+      if (!t.params.byDirection) ImGui::ColorEdit3("colour", &t.params.color[0]);
+      // Tube diameter in world units, from a hundredth to 100 times the start.
+      float width = t.params.widthWC;
+      if (ImGui::DragFloat("tube width", &width, 0.01f * width, float(ranges::kTractWidth.lo), float(ranges::kTractWidth.hi),
+                           "%.3g", ImGuiSliderFlags_Logarithmic) && width > 0.0f)
+        t.params.widthWC = width;
       ImGui::PopID();
     }
   }
@@ -232,7 +297,7 @@ PanelActions drawPanel(ViewState& v, const PanelStatus& s, const tensor::GlyphSe
   ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(330, 0), ImGuiCond_FirstUseEver);
   ImGui::Begin("tensorglyph");
-  controls(v, meta);
+  controls(v, meta, s);
   depthCues(v.params, s);
   slicePlanes(v);
   if (ImGui::Button("axial (1)")) turnToView(v, "axial");

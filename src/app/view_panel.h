@@ -18,6 +18,7 @@ struct PanelStatus {
   render::IterationStats newton;
   double aoRadiusWC = 0;  // the radius ambient occlusion uses (GlyphRenderer::aoRadiusWC)
   std::optional<std::string> picked;  // describePick of the last click or script pick
+  std::string glyphPath = "raster";   // the session's glyph path: the kinds it draws are offered
 };
 
 struct PanelActions {

@@ -92,6 +92,8 @@ void check(const ScriptStep& s) {
   if (v == "orbit" || v == "pan") ranged(s, 0, ranges::kAnyFloat), ranged(s, 1, ranges::kAnyFloat);
   if (v == "zoom" || v == "scale") ranged(s, 0, ranges::kPositiveFloat);
   if (v == "gamma") ranged(s, 0, ranges::kGamma);
+  if (v == "blob-threshold") ranged(s, 0, ranges::kBlobThreshold);
+  if (v == "blobbiness") ranged(s, 0, ranges::kBlobbiness);
   if (v == "fa-min") ranged(s, 0, ranges::kUnit);
   if (v == "glyph" && !glyphKindNamed(s.args[0]))
     throw UsageError("glyph: unknown kind \"" + s.args[0] + "\"; choose " + kGlyphKindNames);
@@ -304,6 +306,8 @@ void applyStep(const ScriptStep& s, ViewState& v) {
   else if (w == "reset") v.camera.reset();
   else if (w == "glyph") p.glyph = *glyphKindNamed(s.args[0]);
   else if (w == "gamma") p.gamma = number(s, 0);
+  else if (w == "blob-threshold") p.blob.threshold = number(s, 0);
+  else if (w == "blobbiness") p.blob.blobbiness = number(s, 0);
   else if (w == "fa-min") p.faMin = number(s, 0);
   else if (w == "color") p.color = *colorModeNamed(s.args[0]);
   else if (w == "colormap") p.colormap = s.args[0] == "auto" ? std::nullopt : render::colormapNamed(s.args[0]);
@@ -371,9 +375,12 @@ void applyStep(const ScriptStep& s, ViewState& v) {
     resize(v);
   } else if (w == "slab") {
     // checkSlabSteps has held the slice to the glyphs' grid.
+    v.slabSlice.reset();
     if (s.args[0] == "off") p.slab = render::Slab{};
-    else if (v.fieldGrid)
-      p.slab = slabOf(io::resolveSlice(io::parseSlice(s.args[0]), v.fieldGrid->placement, v.fieldGrid->dims), *v.fieldGrid);
+    else if (v.fieldGrid) {
+      v.slabSlice = io::resolveSlice(io::parseSlice(s.args[0]), v.fieldGrid->placement, v.fieldGrid->dims);
+      p.slab = slabOf(*v.slabSlice, *v.fieldGrid);
+    }
   } else if (w == "light") {
     const auto value = float(number(s, 1));
     const std::string& t = s.args[0];

@@ -12,6 +12,7 @@
 #include "app/orbit_camera.h"
 #include "io/core/selection.h"
 #include "render/mesh_item.h"
+#include "render/tract_item.h"
 #include "render/frame_params.h"
 #include "view/underlay.h"
 
@@ -31,6 +32,13 @@ struct MeshView {
   std::string label;
   bool visible = true;
   render::MeshParams params;
+};
+
+// A tractography item as the viewer shows it (its TractItem takes changes).
+struct TractView {
+  std::string label;
+  bool visible = true;
+  render::TractParams params;
 };
 
 // A grid that a script's slice is resolved on (io::resolveSlice): the
@@ -63,9 +71,13 @@ struct ViewState {
   tensor::MagnitudeSample magnitudes{};
   std::vector<PlaneView> planes{};  // in the order of --plane and --plane-at
   std::vector<MeshView> meshes{};
+  std::vector<TractView> tracts{};  // in the order of --tracts
   bool radiological = false;  // the convention `view axial` and `view coronal` follow
   std::string view{};         // the last view named, which a change of convention turns again
   std::optional<SliceGrid> fieldGrid{}, underlayGrid{};  // none: a point set, no underlay
+  // The slice params.slab shows, resolved on fieldGrid (the panel's slab
+  // controls start from it); none: no slab, or a point set's world range.
+  std::optional<io::SliceSpec> slabSlice{};
 };
 
 // Turns the camera to the named view (render::namedView) in v's convention.

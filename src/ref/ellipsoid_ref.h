@@ -32,6 +32,8 @@ struct RefParams {
   double scale;
   double faMin;
   tensor::SizeMapping sizing;  // as render::FrameParams::sizing
+  // Blobs (ref/blob_ref.h): render::BlobParams' threshold and blobbiness.
+  double blobThreshold = 1.0, blobBlobbiness = -2.0;
 };
 
 // The visible point of a pixel is the first intersection along its ray at or

@@ -11,11 +11,13 @@
 #include <type_traits>
 
 #include "render/camera_uniforms.h"
+#include "render/cpu_blobs.h"
 #include "render/glyph_kind.h"
 #include "render/glsl_cpp.h"
 #include "render/kind_programs.h"
 #include "render/march_groups.h"
 #include "render/raster_glyphs.h"
+#include "render/shadow_pass.h"
 #include "shaders/lib/bindings.h"
 
 namespace tg::render {
@@ -275,6 +277,7 @@ CpuGlyphs::~CpuGlyphs() {
   if (buffer_) gl_.DeleteBuffers(1, &buffer_);
   if (scalars_) gl_.DeleteBuffers(1, &scalars_);
   if (tex_[0]) gl_.DeleteTextures(4, tex_);
+  if (lightTex_[0]) gl_.DeleteTextures(2, lightTex_);
   gl_.DeleteVertexArrays(1, &vao_);
 }
 
@@ -333,13 +336,14 @@ void CpuGlyphs::allocate(int width, int height) {
 
 void CpuGlyphs::drawView(const Camera& cam, const FrameParams& p, const GBuffer& target) {
   if (glyphKind(p.glyph).draw == KindDraw::ClosedForm || p.tessellation > 0)
-    throw std::invalid_argument("GlyphRenderer::render: the cpu glyph path draws ellipsoids and superquadrics only (this frame: " +
+    throw std::invalid_argument("GlyphRenderer::render: the cpu glyph path draws ellipsoids, superquadrics and blobs only (this frame: " +
                                 std::string(p.tessellation > 0 ? "tessellated " : "") +
                                 std::string(glyphKind(p.glyph).name) + "); use the raster path");
   if (target.width() != cam.width || target.height() != cam.height)
     throw std::invalid_argument("GlyphRenderer::render: the target is not the camera's size");
   const bool sign = p.color == ColorMode::Sign;
-  drawn_ = castGlyphs(set_.glyphs, cam, p, sign, threads_, casts_);
+  drawn_ = glyphKind(p.glyph).draw == KindDraw::Blob ? castBlobs(set_.glyphs, cam, p, sign, threads_, casts_, blobs_)
+                                                     : castGlyphs(set_.glyphs, cam, p, sign, threads_, casts_);
   allocate(cam.width, cam.height);
   target.beginGeometry();
   if (drawn_ == 0) return;
@@ -370,7 +374,44 @@ std::pair<glm::dvec3, glm::dvec3> CpuGlyphs::castersBoxWC(const FrameParams& p) 
   return render::castersBoxWC(set_.boundsMinWC, set_.boundsMaxWC, set_.maxAbsEigenvalue, p);
 }
 
+void CpuGlyphs::castShadowBlobs(const Camera& light, const FrameParams& p, ShadowPass& shadow) {
+  castBlobs(set_.glyphs, light, p, false, threads_, lightCasts_, blobs_);
+  if (!depthProgram_)
+    depthProgram_ = std::make_unique<gl::Program>(
+        gl_, lib_, std::initializer_list<gl::StageSource>{{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "cpu_depth.frag"}});
+  if (!lightTex_[0] || lightSize_ != light.width || light.height != light.width) {
+    if (lightTex_[0]) gl_.DeleteTextures(2, lightTex_);
+    const GLenum formats[2] = {GL_R32F, GL_R32UI};
+    gl_.CreateTextures(GL_TEXTURE_2D, 2, lightTex_);
+    for (int k = 0; k < 2; ++k) {
+      gl_.TextureStorage2D(lightTex_[k], 1, formats[k], light.width, light.height);
+      gl_.TextureParameteri(lightTex_[k], GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+      gl_.TextureParameteri(lightTex_[k], GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    }
+    lightSize_ = light.width;
+  }
+  shadow.beginMap(light.width);
+  gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
+  gl_.TextureSubImage2D(lightTex_[0], 0, 0, 0, light.width, light.height, GL_RED, GL_FLOAT, lightCasts_.windowDepth.data());
+  gl_.TextureSubImage2D(lightTex_[1], 0, 0, 0, light.width, light.height, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                        lightCasts_.record.data());
+  gl_.BindTextureUnit(TG_UNIT_CPU_DEPTH, lightTex_[0]);
+  gl_.BindTextureUnit(TG_UNIT_CPU_RECORD, lightTex_[1]);
+  gl_.Enable(GL_DEPTH_TEST);
+  gl_.DepthFunc(GL_ALWAYS);
+  gl_.DepthMask(GL_TRUE);
+  gl_.UseProgram(depthProgram_->id());
+  gl_.BindVertexArray(vao_);
+  gl_.DrawArrays(GL_TRIANGLES, 0, 3);
+  gl_.DepthFunc(GL_GREATER);
+  gl::checkError(gl_, "CpuGlyphs::castShadowBlobs");
+}
+
 void CpuGlyphs::drawShadowCasters(const Camera& light, const FrameParams& p, ShadowPass& shadow) {
+  if (glyphKind(p.glyph).draw == KindDraw::Blob) {
+    castShadowBlobs(light, p, shadow);
+    return;
+  }
   if (!shadowCasters_) {
     shadowCasters_ = std::make_unique<RasterGlyphs>(gl_, lib_);
     shadowCasters_->upload(set_);
@@ -381,7 +422,9 @@ void CpuGlyphs::drawShadowCasters(const Camera& light, const FrameParams& p, Sha
 
 std::size_t CpuGlyphs::gpuBytes() const {
   const std::size_t pixels = std::size_t(casts_.width) * std::size_t(casts_.height);
+  const std::size_t lightPixels = std::size_t(lightSize_) * std::size_t(lightSize_);
   return set_.glyphs.size() * (sizeof(tensor::GlyphRecord) + (scalars_ ? sizeof(float) : 0)) + (tex_[0] ? pixels * 40 : 0) +
+         (lightTex_[0] ? lightPixels * 8 : 0) +
          (shadowCasters_ ? shadowCasters_->gpuBytes() : 0);
 }
 

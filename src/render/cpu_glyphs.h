@@ -16,6 +16,10 @@
 // lib/superquadric_cast.glsl's cast). The closed-form kinds (cylinder,
 // box) and the tessellated baseline are refused. The key light's shadow
 // map is drawn by a raster path built on the first frame with shadows.
+//
+// Blob frames (GlyphKind::Blob) cast the sum of the glyphs' bumps instead
+// (render/cpu_blobs.h), into the same textures; their shadow map is cast
+// the same way from the light and written by cpu_depth.frag.
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -30,6 +34,7 @@
 namespace tg::render {
 
 class RasterGlyphs;
+struct BlobCandidate;
 
 // A glyph that some pixel centre may see: what its fragments would receive.
 struct CastCandidate {
@@ -90,6 +95,8 @@ class CpuGlyphs final : public GlyphPath {
  private:
   // The casts' textures at width x height, reallocated when the size changes.
   void allocate(int width, int height);
+  // Blob frames' shadow map: the casts from `light`, depth only.
+  void castShadowBlobs(const Camera& light, const FrameParams& p, ShadowPass& shadow);
 
   const gl::Api& gl_;
   const gl::ShaderLibrary& lib_;
@@ -97,6 +104,11 @@ class CpuGlyphs final : public GlyphPath {
   tensor::GlyphSet set_;  // the records, kept for the casts (and a raster path for shadows)
   std::unique_ptr<RasterGlyphs> shadowCasters_;  // built on the first frame with shadows
   CpuCasts casts_;
+  std::vector<BlobCandidate> blobs_;  // blob frames' set-up, kept between frames
+  std::unique_ptr<gl::Program> depthProgram_;  // cpu_depth.frag, built by the first blob shadow map
+  CpuCasts lightCasts_;
+  GLuint lightTex_[2] = {};  // depth, record: cpu_depth.frag's inputs
+  int lightSize_ = 0;
   GLuint buffer_ = 0, vao_ = 0, scalars_ = 0;  // scalars_: ColorMode::Array's values, by record
   glm::vec2 colorWindow_{0.0f, 1.0f};
   GLuint tex_[4] = {};  // depth, record, normal, hit: cpu_gbuffer.frag's inputs

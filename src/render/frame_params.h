@@ -2,6 +2,8 @@
 // What one frame is drawn with: every parameter the renderer, the CLI, the
 // viewer, its scripts, Python and ParaView set. GL-free, so that option
 // handling includes this rather than the renderer.
+#include <algorithm>
+#include <cmath>
 #include <optional>
 
 #include <glm/vec2.hpp>
@@ -9,6 +11,7 @@
 #include <glm/vec4.hpp>
 
 #include "render/glyph_kind.h"
+#include "tensor/glyph.h"
 #include "render/legend_params.h"
 #include "tensor/glyph_scale.h"
 #include "view/underlay.h"
@@ -29,6 +32,18 @@ struct Lighting {
   glm::vec3 keyDirVC{-0.45f, 0.55f, 0.70f};  // upper left, in front
   float ambient = 0.22f, head = 0.55f, key = 0.40f, specular = 0.25f, shininess = 40.0f;
   bool operator==(const Lighting&) const = default;
+};
+
+// Blinn's blobs (GlyphKind::Blob; shaders/lib/blob.glsl): each glyph a bump
+// exp(B (g^2 - 1)), 1 on its own surface; the surface where their sum is
+// `threshold`. The defaults come from `tensorglyph bench accuracy --glyph
+// blob` (docs/performance.md, "Blobs").
+struct BlobParams {
+  double threshold = 1.0;    // T > 0: at 1 an isolated glyph's blob is the glyph
+  double blobbiness = -2.0;  // Blinn's B < 0: the larger |B|, the less neighbours blend
+  double cutoff = 1e-3;      // t in (0, 1): a bump ends where it falls to t T
+  int steps = 4;             // samples of the sum along a ray between a bump's entry, peak and exit
+  bool operator==(const BlobParams&) const = default;
 };
 
 // Newton march settings; the defaults come from `tensorglyph bench accuracy`
@@ -120,6 +135,7 @@ struct FrameParams {
   GlyphKind glyph = GlyphKind::Ellipsoid;
   double gamma = 3.0;  // superquadric sharpness; 0 makes definite tensors ellipsoids
   MarchParams march;
+  BlobParams blob;
   bool iterationStats = false;  // count Newton iterations (a shader variant; off costs nothing)
   bool frustumCulling = true;  // off only to measure what it saves
   // Superquadrics: an exact ellipsoid depth pass first, so that fragments of
@@ -160,5 +176,16 @@ struct FrameParams {
   ShadowParams shadow;    // soft shadows from the key light (render/shadow_pass.h)
   bool operator==(const FrameParams&) const = default;
 };
+
+// How far a glyph of p's kind reaches from its centre, in its largest
+// semi-axes: a box's corner (tensor::kGlyphReach) for every kind; a blob's
+// bump to where it falls to its cutoff (shaders/lib/blob.glsl's
+// blobBoundGauge) times that, since its surface may lie anywhere its bump
+// still adds.
+inline double kindReach(const FrameParams& p) {
+  if (p.glyph != GlyphKind::Blob) return tensor::kGlyphReach;
+  const double s = 1.0 + std::log(p.blob.cutoff * p.blob.threshold) / p.blob.blobbiness;
+  return tensor::kGlyphReach * std::max(1.0, std::sqrt(std::max(s, 0.0)));
+}
 
 }  // namespace tg::render

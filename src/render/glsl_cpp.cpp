@@ -25,6 +25,9 @@ void Shaders::setGlyph(const FrameParams& p) {
   uSlabAxis = p.slab.axis;
   uSlabNormal = vec3(p.slab.direction());
   uSlabWC = vec2(float(p.slab.lo), float(p.slab.hi));
+  uBlobBlobbiness = float(p.blob.blobbiness);
+  uBlobThreshold = float(p.blob.threshold);
+  uBlobCutoff = float(p.blob.cutoff);
 }
 
 }  // namespace tg::render::glsl

@@ -40,6 +40,7 @@ using glm::isnan;
 using glm::ivec2;
 using glm::ivec3;
 using glm::length;
+using glm::exp;
 using glm::lessThanEqual;
 using glm::log;
 using glm::log2;
@@ -68,6 +69,7 @@ struct Shaders {
 #include "shaders/lib/pixel_centres.glsl"
 #include "shaders/lib/ellipsoid_sprite.glsl"
 #include "shaders/lib/superquadric.glsl"
+#include "shaders/lib/blob.glsl"
 
   // The uniforms of camera.glsl, as render/camera_uniforms.cpp sets them.
   void setCamera(const Camera& cam);
@@ -98,6 +100,7 @@ struct MarchMixed : Shaders {
 
 using GlyphRecord = Shaders::GlyphRecord;
 using EllipsoidSprite = Shaders::EllipsoidSprite;
+using BlobBump = Shaders::BlobBump;
 using SuperquadricSprite = MarchGeneral::SuperquadricSprite;
 using SuperquadricRay = MarchGeneral::SuperquadricRay;
 using MarchResult = MarchGeneral::MarchResult;

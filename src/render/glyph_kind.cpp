@@ -3,6 +3,7 @@
 #include <array>
 #include <stdexcept>
 
+#include "ref/blob_ref.h"
 #include "ref/ellipsoid_ref.h"
 #include "ref/prism_ref.h"
 #include "ref/superquadric_ref.h"
@@ -15,18 +16,26 @@ using Glyphs = std::span<const tensor::GlyphRecord>;
 constexpr std::array<GlyphKindInfo, kGlyphKindCount> kKinds = {{
     {GlyphKind::Ellipsoid, "ellipsoid", "exact ray-cast ellipsoids", KindDraw::Ellipsoid, "ellipsoid.vert",
      "ellipsoid.frag", "", GlyphRecordKind::EigenQuat, false,
-     [](const Camera& c, Glyphs g, const ref::RefParams& p, double) { return ref::renderEllipsoids(c, g, p); }},
+     [](const Camera& c, Glyphs g, const ref::RefParams& p, double) { return ref::renderEllipsoids(c, g, p); },
+     kRasterPath | kCpuPath},
     {GlyphKind::Superquadric, "superquadric", "Kindlmann's superquadrics, sharpened by gamma",
      KindDraw::Superquadric, "superquadric.vert", "superquadric.frag", "", GlyphRecordKind::EigenQuat, true,
      [](const Camera& c, Glyphs g, const ref::RefParams& p, double gamma) {
        return ref::renderSuperquadrics(c, g, p, gamma);
-     }},
+     },
+     kRasterPath | kCpuPath},
     {GlyphKind::Cylinder, "cylinder", "Teem's cylinders", KindDraw::ClosedForm, "prism.vert", "prism.frag",
      "TG_CYLINDER", GlyphRecordKind::EigenQuat, false,
-     [](const Camera& c, Glyphs g, const ref::RefParams& p, double) { return ref::renderCylinders(c, g, p); }},
+     [](const Camera& c, Glyphs g, const ref::RefParams& p, double) { return ref::renderCylinders(c, g, p); },
+     kRasterPath},
     {GlyphKind::Box, "box", "Teem's boxes", KindDraw::ClosedForm, "prism.vert", "prism.frag", "",
      GlyphRecordKind::EigenQuat, false,
-     [](const Camera& c, Glyphs g, const ref::RefParams& p, double) { return ref::renderBoxes(c, g, p); }},
+     [](const Camera& c, Glyphs g, const ref::RefParams& p, double) { return ref::renderBoxes(c, g, p); },
+     kRasterPath},
+    {GlyphKind::Blob, "blob", "Blinn's blobs: the glyphs' bumps summed into one surface", KindDraw::Blob, "", "", "",
+     GlyphRecordKind::EigenQuat, true,
+     [](const Camera& c, Glyphs g, const ref::RefParams& p, double gamma) { return ref::renderBlobs(c, g, p, gamma); },
+     kCpuPath},
 }};
 
 constexpr bool rowsInEnumOrder() {
@@ -49,6 +58,11 @@ std::optional<GlyphKind> glyphKindNamed(std::string_view name) {
   for (const GlyphKindInfo& k : kKinds)
     if (k.name == name) return k.kind;
   return std::nullopt;
+}
+
+bool pathDraws(std::string_view path, GlyphKind k) {
+  const unsigned mask = path == "raster" ? kRasterPath : path == "cpu" ? kCpuPath : 0u;
+  return (glyphKind(k).paths & mask) != 0;
 }
 
 std::string glyphKindNames() {

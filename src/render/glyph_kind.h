@@ -22,8 +22,8 @@ namespace tg::render {
 struct Camera;
 
 // In the order of the table's rows (and of the viewer's list).
-enum class GlyphKind { Ellipsoid, Superquadric, Cylinder, Box };
-inline constexpr std::size_t kGlyphKindCount = 4;
+enum class GlyphKind { Ellipsoid, Superquadric, Cylinder, Box, Blob };
+inline constexpr std::size_t kGlyphKindCount = 5;
 
 // How the renderer draws a kind's glyphs into the G-buffer.
 enum class KindDraw {
@@ -35,7 +35,14 @@ enum class KindDraw {
   // One closed-form program of the kind's own for every group: no march, no
   // pre-pass, axis-aligned sprites (Teem's cylinder and box).
   ClosedForm,
+  // Blinn's blobs: a surface of the sum of every glyph's bump, which no
+  // sprite of one glyph can cast; the cpu path's tiles hold the lists of
+  // bumps each pixel needs (render/cpu_blobs.h).
+  Blob,
 };
+
+// The glyph paths (render/glyph_path.h) that draw a kind.
+enum PathMask : unsigned { kRasterPath = 1, kCpuPath = 2 };
 
 // The per-glyph record a kind reads from the glyph buffer.
 enum class GlyphRecordKind {
@@ -57,15 +64,20 @@ struct GlyphKindInfo {
   std::string_view vertex, fragment, option;
   GlyphRecordKind record;
   // Options that apply to the kind alone: the superquadric sharpness (and the
-  // march's --iterations and --epsilon, which shape it).
+  // march's --iterations and --epsilon, which shape it); blobs take gamma
+  // for their bumps' shapes.
   bool gamma;
   RefRenderer reference;
+  unsigned paths;  // PathMask
 };
+
+// Whether the glyph path named `path` ("raster", "cpu") draws kind k.
+bool pathDraws(std::string_view path, GlyphKind k);
 
 std::span<const GlyphKindInfo> glyphKinds();
 const GlyphKindInfo& glyphKind(GlyphKind k);
 std::optional<GlyphKind> glyphKindNamed(std::string_view name);
-// "ellipsoid, superquadric, cylinder or box": for the messages that list them.
+// "ellipsoid, superquadric, cylinder, box or blob": for the messages that list them.
 std::string glyphKindNames();
 
 }  // namespace tg::render

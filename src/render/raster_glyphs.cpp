@@ -22,6 +22,13 @@ std::string_view rendererName(const gl::Api& gl) {
   return name ? name : "";
 }
 
+// Blobs need every bump a pixel's ray meets, which no one glyph's sprite has.
+void refuseBlobs(const FrameParams& p) {
+  if (glyphKind(p.glyph).draw == KindDraw::Blob)
+    throw std::invalid_argument("GlyphRenderer::render: the raster glyph path casts no blobs (each pixel needs every "
+                                "bump its ray meets); use the cpu path");
+}
+
 }  // namespace
 
 RasterGlyphs::RasterGlyphs(const gl::Api& gl, const gl::ShaderLibrary& lib)
@@ -186,7 +193,7 @@ std::pair<glm::dvec3, glm::dvec3> castersBoxWC(const glm::dvec3& centresLoWC, co
     lo[a] = std::max(lo[a], p.slab.lo);
     hi[a] = std::max(lo[a], std::min(hi[a], p.slab.hi));
   }
-  const double pad = tensor::kGlyphReach * tensor::glyphRadiusWC(p.scale, p.sizing, maxAbsEigenvalue);
+  const double pad = kindReach(p) * tensor::glyphRadiusWC(p.scale, p.sizing, maxAbsEigenvalue);
   return {lo - pad, hi + pad};
 }
 
@@ -195,6 +202,7 @@ std::pair<glm::dvec3, glm::dvec3> RasterGlyphs::castersBoxWC(const FrameParams& 
 }
 
 void RasterGlyphs::drawShadowCasters(const Camera& light, const FrameParams& p, ShadowPass& shadow) {
+  refuseBlobs(p);
   const int split = marchSplit(p);
   const bool tessellated = p.tessellation > 0;
   if (tessellated) culling_.bypass();
@@ -291,6 +299,7 @@ void RasterGlyphs::drawGlyphs(const Camera& cam, const FrameParams& p, int split
 }
 
 void RasterGlyphs::drawView(const Camera& cam, const FrameParams& p, const GBuffer& target) {
+  refuseBlobs(p);
   const bool tessellated = p.tessellation > 0;
   const int split = marchSplit(p);
   const double typical = typicalPx(cam, p);

@@ -115,8 +115,10 @@ TEST_F(ViewScript, ParsesAppliesAndNamesTheLineOfAMistake) {
   EXPECT_EQ(v.params.glyph, render::GlyphKind::Superquadric);
   EXPECT_TRUE(v.params.iterationStats);
   EXPECT_DOUBLE_EQ(v.params.faMin, 0.4);
+  EXPECT_EQ(v.slabSlice->text(), "y:2");  // voxel axis j, canonically
   app::applyStep(steps[6], v);
   EXPECT_EQ(v.params.slab.axis, -1);
+  EXPECT_FALSE(v.slabSlice);
 
   EXPECT_PRED_FORMAT2(testing::IsSubstring, path + ":3: slab: give a slice as --slice takes it, or off",
                       scriptError("zoom 2\n\nslab z 3 1\n"));
@@ -341,6 +343,10 @@ TEST_F(ViewScript, SlabKeepsTheGlyphsASliceWouldLoadOnAnyGrid) {
       app::applyStep(steps[0], v);
       const render::Slab& slab = v.params.slab;
       ASSERT_GE(slab.axis, 0) << spec;
+      // The viewer panel's slab controls start from the slice as resolved.
+      ASSERT_TRUE(v.slabSlice) << spec;
+      EXPECT_EQ(v.slabSlice->worldAxis, io::parseSlice(spec).worldAxis) << spec;
+      EXPECT_EQ(app::slabOf(*v.slabSlice, *g), slab) << spec;
       io::Selection sel;
       sel.slice = io::parseSlice(spec);
       const io::Selector selector(sel, "grid", g->dims, &g->placement);

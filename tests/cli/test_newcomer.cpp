@@ -99,17 +99,27 @@ TEST(Newcomer, MarchOptionsOnGlyphsThatDoNotMarchAreRefused) {
     std::string flags;
     const char* said;
   } refused[] = {
-      {" --gamma 3", "--gamma applies to --glyph superquadric only; this render draws ellipsoid glyphs"},
+      {" --gamma 3", "--gamma applies to --glyph superquadric and blob only; this render draws ellipsoid glyphs"},
       {" --glyph box --iterations 4", "--iterations applies to --glyph superquadric only; this render draws box glyphs"},
       {" --epsilon 1e-3 --glyph cylinder", "--epsilon applies to --glyph superquadric only"},
-      {" --glyph ellipsoid --gamma 1", "--gamma applies to --glyph superquadric only"},
+      {" --glyph ellipsoid --gamma 1", "--gamma applies to --glyph superquadric and blob only"},
+      {" --glyph blob --iterations 4", "--iterations applies to --glyph superquadric only; this render draws blob glyphs"},
+      {" --blobbiness -1 --glyph box", "--blobbiness applies to --glyph blob only; this render draws box glyphs"},
+      {" --blob-threshold 2", "--blob-threshold applies to --glyph blob only; this render draws ellipsoid glyphs"},
+      {" --glyph blob --pipeline raster",
+       "--pipeline raster draws ellipsoid, superquadric, cylinder and box glyphs only; this render draws blob glyphs "
+       "(each blob pixel needs every bump its ray meets): leave --pipeline out"},
+      {" --glyph blob --blobbiness -0.01 --blob-cutoff 0.5 --blob-threshold 3",
+       "--blob-cutoff 0.5 x --blob-threshold 3 lies above a bump's peak exp(-B) = 1.01005"},
   };
   for (const auto& c : refused) {
     tg::test::expectFailsCleanly(render + c.flags, c.said, out, dir(), 1);
     EXPECT_EQ(run(render + c.flags).code, 2) << c.flags;
   }
-  // Where they apply: superquadrics, and the built-in scene's default glyph.
+  // Where they apply: superquadrics, blobs (on the cpu path, which --glyph blob takes), and the built-in scene's default glyph.
   EXPECT_EQ(run(render + " --glyph superquadric --gamma 2 --iterations 6").code, 0);
+  EXPECT_EQ(run(render + " --glyph blob --gamma 2 --blobbiness -1 --blob-threshold 0.8 --blob-steps 2").code, 0);
+  EXPECT_EQ(run(render + " --glyph blob --pipeline cpu --shadows").code, 0);
   EXPECT_EQ(run("render -o " + out.string() + " --size 64 48 --gamma 1.5 --no-shadows --no-ao").code, 0);
 }
 

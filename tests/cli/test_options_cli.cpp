@@ -65,6 +65,10 @@ const std::vector<NumericCase>& numericCases() {
       {"--iterations", "{}", "--glyph superquadric"},
       {"--epsilon", "{}", "--glyph superquadric"},
       {"--gamma", "{}", "--glyph superquadric"},
+      {"--blob-threshold", "{}", "--glyph blob"},
+      {"--blobbiness", "{}", "--glyph blob"},
+      {"--blob-cutoff", "{}", "--glyph blob"},
+      {"--blob-steps", "{}", "--glyph blob"},
       {"--min-eigenvalue", "{}", ""},
       {"--scale", "{}", ""},
       {"--lambda0", "{}", "--magnitude shape"},
@@ -224,6 +228,7 @@ TEST(Options, DependentFlagsWithoutTheirMasterAreRefused) {
            {"--mesh-opacity 0.5", "--mesh-opacity needs --mesh"},
            {"--lambda0 1", "--lambda0 applies to --magnitude log or shape only"},
            {"--stats", "--stats applies to --glyph superquadric only"},
+           {"--blob-steps 2", "--blob-steps applies to --glyph blob only"},
            {"--mesh MESH --mesh-opacity 0.5", "--mesh-opacity applies to --mesh-mode see-through"},
            {"--mesh MESH --mesh-mode see-through --mesh-feature-angle 30",
             "--mesh-feature-angle applies to --mesh-mode edges"}}) {

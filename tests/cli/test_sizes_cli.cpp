@@ -238,7 +238,7 @@ TEST(Sizes, StressDefaultsOnStressFieldsOnly) {
   EXPECT_EQ(cpu.code, 0) << cpu.err;
   const CmdResult box = run(render + " --no-legend --pipeline cpu --glyph cylinder");
   EXPECT_EQ(box.code, 2) << box.err;
-  EXPECT_NE(box.err.find("--pipeline cpu draws ellipsoid and superquadric glyphs only; this render draws cylinder glyphs"),
+  EXPECT_NE(box.err.find("--pipeline cpu draws ellipsoid, superquadric and blob glyphs only; this render draws cylinder glyphs"),
             std::string::npos)
       << box.err;
   const CmdResult x = run(render + " --color dec --magnitude linear --no-legend");

@@ -141,9 +141,10 @@ class GlFixture : public ::testing::Test {
     lib_.reset();
     ctx_.reset();
   }
+  // On the first glyph path that draws p's kind (the raster path but for blobs).
   render::FrameImage draw(const tensor::GlyphSet& set, const render::Camera& cam, const render::FrameParams& p) {
     ctx_->makeCurrent();
-    render::GlyphRenderer r(ctx_->api(), *lib_);
+    render::GlyphRenderer r(ctx_->api(), *lib_, nullptr, render::pathDraws("raster", p.glyph) ? "raster" : "cpu");
     render::GBuffer target(ctx_->api(), cam.width, cam.height);
     r.upload(set);
     r.render(cam, p, target);

@@ -22,6 +22,8 @@
 #include <cmath>
 
 #include "data-synthetic/generators.h"
+#include "cpu_frame.h"
+#include "render/cpu_blobs.h"
 #include "render/cpu_glyphs.h"
 #include "render/pixel_probe.h"
 #include "tensor/glyph_scale.h"
@@ -313,7 +315,60 @@ TEST_F(CpuGlyphs, ClosedFormKindsAreRefused) {
     r.render(cam, p, target);
     ADD_FAILURE() << "a cylinder frame was drawn";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("ellipsoids and superquadrics only (this frame: cylinder)"), std::string::npos)
+    EXPECT_NE(std::string(e.what()).find("ellipsoids, superquadrics and blobs only (this frame: cylinder)"), std::string::npos)
         << e.what();
+  }
+}
+
+// Blobs reach the G-buffer as castBlobs cast them: every pixel's id and
+// depth (through an R32F texture, exact), and lit; with shadows the light's
+// map is cast the same way, and the blobs shade themselves. The raster path
+// refuses them.
+TEST_F(CpuGlyphs, BlobsFillTheGBufferAsCastAndCastShadows) {
+  const tensor::GlyphSet set = grid(3, 17);
+  const double scale = 0.5;
+  const auto cam = test::cameraFor(set, scale, test::oblique(set, 7.0, render::Projection::Perspective), 160, 120);
+  render::FrameParams p;
+  p.scale = scale;
+  p.glyph = render::GlyphKind::Blob;
+  p.blob.blobbiness = -1.0;
+  ctx_->makeCurrent();
+  render::GBuffer target(ctx_->api(), cam.width, cam.height);
+  render::GlyphRenderer r(ctx_->api(), *lib_, nullptr, "cpu");
+  r.upload(set);
+  r.render(cam, p, target);
+  const render::FrameImage plain = r.readback(cam, target);
+  render::CpuCasts casts;
+  std::vector<render::BlobCandidate> bumps;
+  render::castBlobs(set.glyphs, cam, p, false, 2, casts, bumps);
+  const render::FrameImage cast = test::asFrame(casts, set, cam);
+  std::size_t covered = 0;
+  for (std::size_t i = 0; i < cast.id.size(); ++i) {
+    ASSERT_EQ(plain.id[i], cast.id[i]) << "pixel " << i;
+    if (cast.id[i] == ref::kNoGlyph) continue;
+    ++covered;
+    EXPECT_NEAR(plain.depth[i], cast.depth[i], kRelDepth * cast.depth[i]);
+  }
+  EXPECT_GT(covered, 2000u);
+
+  p.shadow.enabled = true;
+  r.render(cam, p, target);
+  ASSERT_NE(r.pass("shadow"), nullptr);
+  const render::FrameImage shadowed = r.readback(cam, target);
+  std::size_t darker = 0;
+  for (std::size_t i = 0; i < cast.id.size(); ++i) {
+    EXPECT_EQ(shadowed.id[i], cast.id[i]);
+    darker += cast.id[i] != ref::kNoGlyph && shadowed.rgba[4 * i] < plain.rgba[4 * i] - 0.02f;
+  }
+  EXPECT_GT(darker, 100u) << "no blob shades another";
+
+  render::GlyphRenderer raster(ctx_->api(), *lib_, nullptr, "raster");
+  raster.upload(set);
+  p.shadow.enabled = false;
+  try {
+    raster.render(cam, p, target);
+    ADD_FAILURE() << "the raster path drew blobs";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("casts no blobs"), std::string::npos) << e.what();
   }
 }

@@ -15,6 +15,10 @@ namespace {
 // relative; normals by median and 99th percentile (a box's or cylinder's
 // edge pixel may take either face's normal).
 const test::Tolerance kTolerance{0.0, 0.01, 0.0, 2e-5, 0.1, 180.0};
+// Blobs against their untruncated reference: truncation (cutoff 1e-3)
+// moves the surface where the sum's slope along the ray is small, on
+// grazing rays: measured 5.8e-5 of the depth at most here.
+const test::Tolerance kBlobTolerance{0.0, 0.01, 0.0, 1e-4, 0.1, 180.0};
 
 }  // namespace
 
@@ -27,7 +31,7 @@ TEST_F(GlFixture, EveryKindMatchesItsRowsReference) {
     p.glyph = k.kind;
     p.march = {30, 1e-6};  // the method, not the speed trade of looser settings
     const test::Comparison c = test::compare(draw(set, cam, p), k.reference(cam, set.glyphs, {scale, 0.0}, gamma), cam);
-    test::expectWithin(c, kTolerance, std::string(k.name));
+    test::expectWithin(c, k.kind == render::GlyphKind::Blob ? kBlobTolerance : kTolerance, std::string(k.name));
     EXPECT_LT(c.normalDeg.p99, 2.0) << k.name;
   }
 }
@@ -44,6 +48,7 @@ TEST_F(GlFixture, AFrameBuildsOnlyItsKindsProgram) {
     render::FrameParams p;
     p.scale = 0.6;
     p.glyph = k.kind;
+    if (!render::pathDraws("raster", k.kind)) continue;  // blobs: the cpu path (test_cpu_glyphs.cpp)
     r.render(cam, p, target);
     for (const render::GlyphKindInfo& other : render::glyphKinds()) {
       if (other.draw != render::KindDraw::ClosedForm) continue;

@@ -16,6 +16,7 @@
 #include "render/cpu_glyphs.h"
 #include "render/glsl_cpp.h"
 #include "render/tile_binning.h"
+#include "cpu_frame.h"
 #include "thin_glyphs.h"
 
 using namespace tg;
@@ -47,28 +48,6 @@ render::Camera galleryCamera(const tensor::GlyphSet& s, render::Projection proj)
   return render::makeCamera(d, 320, 160, lo, hi);
 }
 
-// The casts as a frame image (rows top first; view depth), for diffImages.
-render::FrameImage asFrame(const render::CpuCasts& c, const tensor::GlyphSet& set, const render::Camera& cam) {
-  render::FrameImage f;
-  f.width = c.width;
-  f.height = c.height;
-  const std::size_t n = std::size_t(c.width) * std::size_t(c.height);
-  f.depth.assign(n, INFINITY);
-  f.normalWC.assign(3 * n, 0.0f);
-  f.id.assign(n, ref::kNoGlyph);
-  f.rgba.assign(4 * n, 0.0f);
-  for (int j = 0; j < c.height; ++j)
-    for (int i = 0; i < c.width; ++i) {
-      const std::size_t src = std::size_t(c.height - 1 - j) * std::size_t(c.width) + std::size_t(i);
-      const std::size_t dst = std::size_t(j) * std::size_t(c.width) + std::size_t(i);
-      if (c.record[src] == 0) continue;
-      f.id[dst] = set.glyphs[c.record[src] - 1].id;
-      f.depth[dst] = float(cam.viewDepthFromWindowDepth(c.windowDepth[src]));
-      for (int k = 0; k < 3; ++k) f.normalWC[3 * dst + std::size_t(k)] = c.normalWC[src][k];
-    }
-  return f;
-}
-
 }  // namespace
 
 TEST(CpuCasts, SharedIntersectionMatchesTheReference) {
@@ -84,7 +63,7 @@ TEST(CpuCasts, SharedIntersectionMatchesTheReference) {
       const std::uint64_t drawn = render::castGlyphs(set.glyphs, cam, p, false, threads, casts);
       EXPECT_GT(drawn, 100u);
       const ref::ImageDiff d =
-          ref::diffImages(asFrame(casts, set, cam), ref::renderEllipsoids(cam, set.glyphs, {scale, 0.0}), cam);
+          ref::diffImages(test::asFrame(casts, set, cam), ref::renderEllipsoids(cam, set.glyphs, {scale, 0.0}), cam);
       const double covered = double(d.refCovered);
       EXPECT_GT(d.refCovered, 5000u);
       EXPECT_EQ(d.interiorMismatch, 0u);
@@ -123,7 +102,7 @@ TEST(CpuCasts, SharedSuperquadricMarchMatchesTheReference) {
         p.march = {30, 1e-6};
         render::CpuCasts casts;
         render::castGlyphs(set->glyphs, cam, p, false, 2, casts);
-        const ref::ImageDiff d = ref::diffImages(asFrame(casts, *set, cam),
+        const ref::ImageDiff d = ref::diffImages(test::asFrame(casts, *set, cam),
                                                  ref::renderSuperquadrics(cam, set->glyphs, {scale, 0.0}, gamma), cam);
         EXPECT_GT(d.refCovered, 500u);
         EXPECT_EQ(d.interiorMismatch, 0u);

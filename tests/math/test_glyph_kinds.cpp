@@ -21,16 +21,20 @@ TEST(GlyphKinds, NamesAreUniqueAndFindTheirRow) {
     EXPECT_EQ(&render::glyphKind(k.kind), &k) << k.name;
     EXPECT_NE(listed.find(k.name), std::string::npos) << listed;
     EXPECT_FALSE(k.help.empty()) << k.name;
-    EXPECT_FALSE(k.vertex.empty() || k.fragment.empty()) << k.name;
+    // A raster kind names its programs; the cpu path's casts need none.
+    EXPECT_EQ(k.vertex.empty() || k.fragment.empty(), !render::pathDraws("raster", k.kind)) << k.name;
+    EXPECT_TRUE(render::pathDraws("raster", k.kind) || render::pathDraws("cpu", k.kind)) << k.name << " has no path";
+    EXPECT_FALSE(render::pathDraws("tiles", k.kind)) << k.name;
     EXPECT_NE(k.reference, nullptr) << k.name;
   }
-  EXPECT_EQ(render::glyphKindNamed("blob"), std::nullopt);
+  EXPECT_EQ(render::glyphKindNamed("tube"), std::nullopt);
   EXPECT_EQ(render::glyphKindNamed(""), std::nullopt);
 }
 
-TEST(GlyphKinds, GammaAppliesToTheMarchedKindAlone) {
+// Gamma shapes the marched superquadrics and the blobs' bumps, nothing else.
+TEST(GlyphKinds, GammaAppliesToTheMarchedKindAndBlobsAlone) {
   for (const render::GlyphKindInfo& k : render::glyphKinds())
-    EXPECT_EQ(k.gamma, k.draw == render::KindDraw::Superquadric) << k.name;
+    EXPECT_EQ(k.gamma, k.draw == render::KindDraw::Superquadric || k.draw == render::KindDraw::Blob) << k.name;
 }
 
 // Each row's reference draws a glyph where it stands, and its gamma is read

@@ -26,6 +26,10 @@ CASES = {
     "epsilon": (0.4, SQ),
     "stats": (True, SQ),
     "gamma": (0.5, SQ),
+    "blob_threshold": (0.7, {"glyph": "blob"}),
+    "blobbiness": (-1.0, {"glyph": "blob"}),
+    "blob_cutoff": (0.1, {"glyph": "blob"}),
+    "blob_steps": (1, {"glyph": "blob"}),
     "fa_min": (0.85, {}),
     "eye": ((30.0, -20.0, 25.0), {}),
     "look_at": ((0.0, 0.0, 0.0), {"eye": (30.0, -20.0, 25.0)}),
@@ -109,9 +113,11 @@ CASES = {
 # neurological is the default convention; orientation_letters="on" is the
 # default for the anatomical inputs (NIfTI, a volume with its affine) and
 # changes the others: test_views checks where letters are drawn. The cpu
-# pipeline draws the raster path's pixels (tests/gl/test_cpu_glyphs.cpp).
+# pipeline draws the raster path's pixels (tests/gl/test_cpu_glyphs.cpp);
+# blob_steps samples the same surface more or less densely, which finds the
+# same pixels where the coarser sampling finds them.
 NO_VISIBLE_CHANGE = {"stats", "no_shadows", "no_ao", "no_legend", "no_outlines", "backend", "neurological",
-                     "orientation_letters", "pipeline"}
+                     "orientation_letters", "pipeline", "blob_steps"}
 # Where an array of points and a .vtu of the same points differ by design:
 # the file names its arrays and holds the cells of a mesh; arrays do neither.
 POINTS_DIFFER_FROM_VTU = {"array", "mesh_from_input"}
@@ -300,8 +306,9 @@ class OptionsApply(unittest.TestCase):
         d = self.data
         for kw, value in (("gamma", 2.0), ("iterations", 3), ("epsilon", 0.01)):
             with self.subTest(keyword=kw):
-                with self.assertWarnsRegex(UserWarning, f'{kw} applies to glyph="superquadric" only; this frame draws '
-                                                        "ellipsoid glyphs"):
+                both = ' and "blob"' if kw == "gamma" else ""
+                with self.assertWarnsRegex(UserWarning, f'{kw} applies to glyph="superquadric"{both} only; this frame '
+                                                        "draws ellipsoid glyphs"):
                     tg.render(d.nifti, size=(32, 24), **{kw: value})
                 with warnings.catch_warnings():
                     warnings.simplefilter("error")

@@ -44,6 +44,14 @@ inline constexpr NumberRange kUnit{0.0, 1.0};
 inline constexpr NumberRange kGamma{0.0, 1e4};
 inline constexpr NumberRange kIterations{1, 1000, true};
 inline constexpr NumberRange kEpsilon{1e-9, 0.5};
+// Blobs (render::BlobParams): a threshold and a bump's height exp(-B) both
+// within what single precision holds with room; a cutoff small enough that
+// truncation stays below the threshold, large enough that a bump's region
+// (sqrt(1 + ln(t T) / B) glyph radii) stays finite.
+inline constexpr NumberRange kBlobThreshold{1e-6, 1e6};
+inline constexpr NumberRange kBlobbiness{-80.0, -1e-3};
+inline constexpr NumberRange kBlobCutoff{1e-9, 0.5};
+inline constexpr NumberRange kBlobSteps{1, 64, true};
 // Below 0.01 degrees a pixel is finer than single precision resolves at the
 // scene (app/render_options.cpp checks the exact bound for the image height);
 // above 179 the scene shrinks towards a point.

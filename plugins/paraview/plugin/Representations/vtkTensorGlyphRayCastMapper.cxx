@@ -150,7 +150,14 @@ constexpr app::NumberRange kLambda0{app::ranges::kPositiveFloat.lo, app::ranges:
   void vtkTensorGlyphRayCastMapper::Set##Name(Type v) {             \
     if (paraview::acceptValue(this, "Set" #Name, "TensorGlyph" Property, this->Name, v, Range)) this->Modified(); \
   }
-TG_CHECKED_SETTER(GlyphKind, int, "Kind", paraview::choices(render::kGlyphKindCount))
+// The plugin draws through the raster path in ParaView's context: the kinds
+// it draws lead the table (blobs, cast on the CPU, are the CLI's and Python's).
+std::size_t rasterKinds() {
+  std::size_t n = 0;
+  while (n < render::kGlyphKindCount && render::pathDraws("raster", render::GlyphKind(n))) ++n;
+  return n;
+}
+TG_CHECKED_SETTER(GlyphKind, int, "Kind", paraview::choices(rasterKinds()))
 TG_CHECKED_SETTER(Gamma, double, "Gamma", app::ranges::kGamma)
 TG_CHECKED_SETTER(ScaleMode, int, "ScaleMode", paraview::choices(3))
 TG_CHECKED_SETTER(ScaleFactor, double, "ScaleFactor", app::ranges::kPositiveFloat)
