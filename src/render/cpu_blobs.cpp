@@ -36,14 +36,17 @@ struct Sum {
   const std::vector<Span>& spans;
   const std::vector<BlobCandidate>& bumps;
   float bound;
-  float at(float t, std::size_t end) const {
-    float d = 0.0f;
-    glsl::vec3 unused;
+  // With `slope`, the sum's derivative along the ray too.
+  float at(float t, std::size_t end, float* slope = nullptr) const {
+    float d = 0.0f, ds = 0.0f;
+    glsl::vec3 grad;
     for (std::size_t j = 0; j < end; ++j) {
       const Span& s = spans[j];
       if (t < s.t0 || t > s.t1) continue;
-      d += sh.blobField(bumps[s.k].shape, s.q0 + (t - s.tc) * s.dq, bound, false, unused);
+      d += sh.blobField(bumps[s.k].shape, s.q0 + (t - s.tc) * s.dq, bound, slope != nullptr, grad);
+      if (slope) ds += dot(grad, s.dq);
     }
+    if (slope) *slope = ds;
     return d;
   }
   // Whether the sum at t is surely below `level`, from a bound on each
@@ -185,6 +188,10 @@ std::uint64_t castBlobs(std::span<const tensor::GlyphRecord> records, const Came
             spans.push_back(s);
           }
           if (spans.empty()) continue;
+          // Quadric bumps cost no more exactly than bounded.
+          const bool superquadrics = std::any_of(spans.begin(), spans.end(), [&](const Span& e) {
+            return !blobIsQuadricShape(bumps[e.k].shape);
+          });
           std::sort(spans.begin(), spans.end(), [](const Span& a, const Span& b) { return a.t0 < b.t0 || (a.t0 == b.t0 && a.k < b.k); });
           // Sample points: every entry, peak and exit, and `steps` between
           // neighbours, in order; a bump's peak and exit are found once the
@@ -217,7 +224,7 @@ std::uint64_t castBlobs(std::span<const tensor::GlyphRecord> records, const Came
           // negative value (the sweep needs only the sign there).
           auto value = [&](float u, bool bounded = false) {
             while (end < spans.size() && spans[end].t0 <= u) ++end;
-            if (bounded && sum.surelyBelow(u, end, threshold)) return -threshold;
+            if (bounded && superquadrics && sum.surelyBelow(u, end, threshold)) return -threshold;
             return sum.at(u, end) - threshold;
           };
           float from = 0.0f, to = 0.0f;
@@ -245,24 +252,25 @@ std::uint64_t castBlobs(std::span<const tensor::GlyphRecord> records, const Came
           fa = value(ta);
           end = 0;
           fb = value(tb);
-          // Illinois regula falsi on [ta, tb], the bracket kept: sum(ta) - T and sum(tb) - T differ in sign.
-          int side = 0;
-          for (int it = 0; it < 40 && tb - ta > 1e-6f * tb; ++it) {
-            float tm = tb - fb * (tb - ta) / (fb - fa);
-            if (!(tm > ta && tm < tb)) tm = 0.5f * (ta + tb);
+          // Blinn's hybrid (§3.3) on [ta, tb], whose ends' sums lie either
+          // side of T: a Newton step on the sum and its slope, regula falsi
+          // where the step would leave the bracket, the bracket kept.
+          float r = std::abs(fa) < std::abs(fb) ? ta : tb;
+          for (int it = 0; it < 24; ++it) {
+            float slope;
             end = 0;
-            const float fm = value(tm);
-            if ((fm >= 0.0f) == (fb >= 0.0f)) {
-              tb = tm, fb = fm;
-              if (side == 1) fa *= 0.5f;
-              side = 1;
-            } else {
-              ta = tm, fa = fm;
-              if (side == -1) fb *= 0.5f;
-              side = -1;
-            }
+            while (end < spans.size() && spans[end].t0 <= r) ++end;
+            const float ft = sum.at(r, end, &slope) - threshold;
+            ((ft >= 0.0f) == (fb >= 0.0f) ? tb : ta) = r;
+            ((ft >= 0.0f) == (fb >= 0.0f) ? fb : fa) = ft;
+            float next = r - ft / slope;
+            if (!(next > ta && next < tb)) next = tb - fb * (tb - ta) / (fb - fa);
+            if (!(next > ta && next < tb)) next = 0.5f * (ta + tb);
+            const bool done = std::abs(next - r) <= 1e-6f * r || tb - ta <= 1e-6f * tb;
+            r = next;
+            if (done) break;
           }
-          const float tHit = tb;
+          const float tHit = r;
           if (sh.uOrtho == 1 && tHit > sh.uFarVC) continue;
           // The gradient and the dominant bump at the hit.
           glsl::vec3 gradVC(0.0f), bestQ(0.0f);
