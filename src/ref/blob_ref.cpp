@@ -101,13 +101,7 @@ RefImage renderBlobs(const render::Camera& cam, std::span<const tensor::GlyphRec
   const std::vector<Bump> bumps = prepare(glyphs, p, gamma);
   std::vector<detail::Prepared> prep;
   for (const Bump& b : bumps) prep.push_back(b.q);
-  RefImage img;
-  img.width = cam.width;
-  img.height = cam.height;
-  const std::size_t n = std::size_t(cam.width) * cam.height;
-  img.depth.assign(n, INFINITY);
-  img.normalWC.assign(n, glm::dvec3(0.0));
-  img.id.assign(n, kNoGlyph);
+  RefImage img = detail::emptyImage(cam);
   const auto tiles = detail::binGlyphs(cam, prep);
   const int tilesX = (cam.width + detail::kTile - 1) / detail::kTile;
   const glm::dmat4 wcFromVC = glm::inverse(cam.viewWCVC);

@@ -95,8 +95,8 @@ inline std::vector<std::vector<std::uint32_t>> binGlyphs(const render::Camera& c
 
 // intersect(q, oGC, dGC, tNear, tBest, t, nGC) -> bool: the first surface point
 // of glyph q along o + t d with tNear <= t < tBest, and its GC gradient.
-template <class Intersect>
-RefImage castRays(const render::Camera& cam, const std::vector<Prepared>& prep, Intersect intersect) {
+// The camera's image, every pixel empty.
+inline RefImage emptyImage(const render::Camera& cam) {
   RefImage img;
   img.width = cam.width;
   img.height = cam.height;
@@ -104,6 +104,12 @@ RefImage castRays(const render::Camera& cam, const std::vector<Prepared>& prep, 
   img.depth.assign(n, INFINITY);
   img.normalWC.assign(n, glm::dvec3(0.0));
   img.id.assign(n, kNoGlyph);
+  return img;
+}
+
+template <class Intersect>
+RefImage castRays(const render::Camera& cam, const std::vector<Prepared>& prep, Intersect intersect) {
+  RefImage img = emptyImage(cam);
   const auto tiles = binGlyphs(cam, prep);
   const int tilesX = (cam.width + kTile - 1) / kTile;
   const glm::dmat4 wcFromVC = glm::inverse(cam.viewWCVC);

@@ -12,16 +12,6 @@
 namespace tg::render {
 namespace {
 
-// The pixel centres (k + 0.5) within rectNDC; false where none lies in the viewport.
-bool pixelsOf(const glsl::vec4& rectNDC, int width, int height, PixelRect& r) {
-  const glsl::vec4 dc = (rectNDC + 1.0f) * 0.5f * glsl::vec4(float(width), float(height), float(width), float(height));
-  r.x0 = std::max(0, int(std::ceil(dc.x - 0.5f)));
-  r.y0 = std::max(0, int(std::ceil(dc.y - 0.5f)));
-  r.x1 = std::min(width - 1, int(std::floor(dc.z - 0.5f)));
-  r.y1 = std::min(height - 1, int(std::floor(dc.w - 0.5f)));
-  return r.x0 <= r.x1 && r.y0 <= r.y1;
-}
-
 // One bump along one ray: q(t) = q0 + (t - tc) dq in its GC, inside its
 // region for t in [t0, t1], nearest its centre (in GC) at tPeak.
 struct Span {
@@ -109,13 +99,7 @@ std::uint64_t castBlobs(std::span<const tensor::GlyphRecord> records, const Came
   const float gamma = float(p.gamma), bound = sh.blobBoundGauge(), threshold = float(p.blob.threshold);
   const int steps = std::max(1, p.blob.steps);
   const int w = cam.width, h = cam.height;
-  const std::size_t n = std::size_t(w) * std::size_t(h);
-  out.width = w;
-  out.height = h;
-  out.windowDepth.resize(n);
-  out.record.assign(n, 0);
-  out.normalWC.resize(n);
-  out.hitGC.resize(hitGC ? n : 0);
+  beginCasts(out, w, h, hitGC);
 
   // Set-up: part k writes its bumps, in record order, from its first record's slot on.
   const std::size_t m = records.size();
@@ -134,13 +118,7 @@ std::uint64_t castBlobs(std::span<const tensor::GlyphRecord> records, const Came
     }
     kept[std::size_t(part)] = at - begin;
   });
-  std::size_t count = kept[0];
-  for (int k = 1; k < threads; ++k) {
-    const std::size_t begin = partBegin(m, k, threads), n_k = kept[std::size_t(k)];
-    std::copy_n(bumps.begin() + std::ptrdiff_t(begin), n_k, bumps.begin() + std::ptrdiff_t(count));
-    std::copy_n(out.rects.begin() + std::ptrdiff_t(begin), n_k, out.rects.begin() + std::ptrdiff_t(count));
-    count += n_k;
-  }
+  const std::size_t count = closeUpParts(kept, m, &bumps, &out.rects);
   out.count = count;
   binToTiles(std::span(out.rects.data(), count), w, h, threads, out.bins);
   const TileBins& bins = out.bins;

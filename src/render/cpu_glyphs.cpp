@@ -28,17 +28,6 @@ static_assert(sizeof(glsl::GlyphRecord) == sizeof(tensor::GlyphRecord));
 
 using Candidate = CastCandidate;
 
-// The pixel centres (k + 0.5) within rectNDC, as rectMissesEveryPixelCentre
-// maps it; false where none lies in the viewport.
-bool pixelsOf(const glsl::vec4& rectNDC, int width, int height, PixelRect& r) {
-  const glsl::vec4 dc = (rectNDC + 1.0f) * 0.5f * glsl::vec4(float(width), float(height), float(width), float(height));
-  r.x0 = std::max(0, int(std::ceil(dc.x - 0.5f)));
-  r.y0 = std::max(0, int(std::ceil(dc.y - 0.5f)));
-  r.x1 = std::min(width - 1, int(std::floor(dc.z - 0.5f)));
-  r.y1 = std::min(height - 1, int(std::floor(dc.w - 0.5f)));
-  return r.x0 <= r.x1 && r.y0 <= r.y1;
-}
-
 // CastShape::kind: the ellipsoid cast, or 1 + the march variant.
 constexpr std::uint8_t kCastEllipsoid = 0;
 std::uint8_t castKindOf(MarchVariant v) { return std::uint8_t(1 + int(v)); }
@@ -80,6 +69,16 @@ glsl::vec3 ellipsoidOrderGC(const glsl::vec3& pGC, int axis) {
 
 }  // namespace
 
+void beginCasts(CpuCasts& out, int width, int height, bool hitGC) {
+  const std::size_t n = std::size_t(width) * std::size_t(height);
+  out.width = width;
+  out.height = height;
+  out.windowDepth.resize(n);
+  out.record.assign(n, 0);
+  out.normalWC.resize(n);
+  out.hitGC.resize(hitGC ? n : 0);
+}
+
 std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Camera& cam, const FrameParams& p,
                          bool hitGC, int threads, CpuCasts& out) {
   // One set of uniforms per march variant, as the raster path's programs.
@@ -95,13 +94,7 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
   const float gamma = float(p.gamma), eps = float(p.march.epsilon);
   const int maxIter = p.march.maxIterations;
   const int w = cam.width, h = cam.height;
-  const std::size_t n = std::size_t(w) * std::size_t(h);
-  out.width = w;
-  out.height = h;
-  out.windowDepth.resize(n);
-  out.record.assign(n, 0);
-  out.normalWC.resize(n);
-  out.hitGC.resize(hitGC ? n : 0);
+  beginCasts(out, w, h, hitGC);
 
   // Set-up, the vertex stage's: part k writes its glyphs, in record order,
   // from its first record's slot on; then the parts close up.
@@ -141,15 +134,7 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
     }
     kept[std::size_t(part)] = at - begin;
   });
-  std::size_t count = kept[0];
-  for (int k = 1; k < threads; ++k) {
-    const std::size_t begin = partBegin(m, k, threads), n_k = kept[std::size_t(k)];
-    const auto from = std::ptrdiff_t(begin), to = std::ptrdiff_t(count);
-    std::copy_n(out.candidates.begin() + from, n_k, out.candidates.begin() + to);
-    std::copy_n(out.rects.begin() + from, n_k, out.rects.begin() + to);
-    if (marching) std::copy_n(out.shapes.begin() + from, n_k, out.shapes.begin() + to);
-    count += n_k;
-  }
+  const std::size_t count = closeUpParts(kept, m, &out.candidates, &out.rects, marching ? &out.shapes : nullptr);
   out.count = count;
   const std::vector<Candidate>& cands = out.candidates;
   const std::vector<PixelRect>& rects = out.rects;

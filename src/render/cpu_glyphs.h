@@ -67,6 +67,9 @@ struct CpuCasts {
   TileBins bins;
 };
 
+// `out` sized for a width x height frame, every pixel empty.
+void beginCasts(CpuCasts& out, int width, int height, bool hitGC);
+
 // The casts of `cam` at p's parameters over `records` on `threads` threads
 // (what CpuGlyphs::drawView uploads; the tests compare it directly). Depth,
 // normal and hit are left undefined where the record says empty. Returns the

@@ -2,11 +2,15 @@
 // Screen tiles for the CPU glyph path (render/cpu_glyphs.h): each glyph's
 // pixel rectangle binned to the tiles it touches, in one counting pass over
 // all cores, and the worker pool that runs the path's passes.
+#include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <functional>
 #include <span>
 #include <vector>
+
+#include <glm/vec4.hpp>
 
 namespace tg::render {
 
@@ -16,6 +20,18 @@ inline constexpr int kTilePx = 16;
 struct PixelRect {
   int x0, y0, x1, y1;
 };
+
+// The pixel centres (k + 0.5) within rectNDC (xmin, ymin, xmax, ymax), as
+// shaders/lib/pixel_centres.glsl's rectMissesEveryPixelCentre maps it;
+// false where none lies in the viewport.
+inline bool pixelsOf(const glm::vec4& rectNDC, int width, int height, PixelRect& r) {
+  const glm::vec4 dc = (rectNDC + 1.0f) * 0.5f * glm::vec4(float(width), float(height), float(width), float(height));
+  r.x0 = std::max(0, int(std::ceil(dc.x - 0.5f)));
+  r.y0 = std::max(0, int(std::ceil(dc.y - 0.5f)));
+  r.x1 = std::min(width - 1, int(std::floor(dc.z - 0.5f)));
+  r.y1 = std::min(height - 1, int(std::floor(dc.w - 0.5f)));
+  return r.x0 <= r.x1 && r.y0 <= r.y1;
+}
 
 // Threads the CPU path runs on: every core the machine reports, at least one.
 int cpuPathThreads();
@@ -27,6 +43,23 @@ void runParts(int parts, const std::function<void(int part, int parts)>& body);
 
 // [begin, end) of part `part` of n items split into `parts` contiguous runs.
 inline std::size_t partBegin(std::size_t n, int part, int parts) { return n * std::size_t(part) / std::size_t(parts); }
+
+// After runParts wrote part k's kept[k] items to each vector from slot
+// partBegin(n, k, parts) on, in order: moves them up to the front, part
+// after part, so that the items stay in order; returns how many there are.
+// A null vector is skipped.
+template <class... Vectors>
+std::size_t closeUpParts(const std::vector<std::size_t>& kept, std::size_t n, Vectors*... v) {
+  const int parts = int(kept.size());
+  std::size_t count = parts > 0 ? kept[0] : 0;
+  for (int k = 1; k < parts; ++k) {
+    const auto from = std::ptrdiff_t(partBegin(n, k, parts)), to = std::ptrdiff_t(count);
+    const std::size_t items = kept[std::size_t(k)];
+    ((v ? (void)std::copy_n(v->begin() + from, items, v->begin() + to) : (void)0), ...);
+    count += items;
+  }
+  return count;
+}
 
 struct TileBins {
   int tilesX = 0, tilesY = 0;
