@@ -271,7 +271,10 @@ class Renderer {
     applyOptions(table, options, "render");
     useVolumes(o);
     validateFor(source_, o);
-    if (!session_ || volumesChanged_ || reloadKeys(table, options) != reloadKeys_) {
+    // A kind the session's glyph path cannot draw (blobs on the raster path) takes a new session.
+    const bool pathDraws = !session_ || !o.look.glyphGiven ||
+                           render::pathDraws(session_->renderer().glyphPath().name(), *render::glyphKindNamed(o.glyph));
+    if (!session_ || volumesChanged_ || reloadKeys(table, options) != reloadKeys_ || !pathDraws) {
       {
         py::gil_scoped_release release;
         build(o, options, table);
@@ -309,6 +312,9 @@ class Renderer {
                             " only; this frame draws " + o.glyph + " glyphs";
       if (PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1) < 0) throw py::error_already_set();
     }
+    if (kind == render::GlyphKind::Blob)
+      if (const std::string hint = app::blobThresholdHint(o.blob, "blob_threshold", "blobbiness"); !hint.empty())
+        if (PyErr_WarnEx(PyExc_UserWarning, hint.c_str(), 1) < 0) throw py::error_already_set();
     if (!o.blobFlag.empty() && kind != render::GlyphKind::Blob) {
       const std::string w = table.find(o.blobFlag)->keyword() + " applies to glyph=\"blob\" only; this frame draws " +
                             o.glyph + " glyphs";

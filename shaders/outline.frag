@@ -12,6 +12,9 @@ layout(binding = TG_UNIT_ID) uniform usampler2D uId;
 uniform float uWidth;      // pixels
 uniform vec4 uColor;
 uniform float uCosCrease;  // cosine of the crease angle
+// 0 where an id is no surface's own (a blob's dominant bump): ids then meet
+// on smooth seams, and only the depth jump and the crease find edges there.
+uniform int uIdEdges;
 
 out vec4 oColor;
 
@@ -44,7 +47,7 @@ void main() {
       } else {
         float zq = texelFetch(uDepth, q, 0).r;
         if (zq > zp) continue;  // q is in front: the line is on its side
-        if (idq != id) {
+        if (idq != id && uIdEdges == 1) {
           edge = true;
         } else {
           vec3 nq = normalize(texelFetch(uNormalWC, q, 0).xyz);

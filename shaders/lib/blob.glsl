@@ -18,6 +18,9 @@ uniform float uBlobBlobbiness;  // Blinn's B, < 0: the larger |B|, the less neig
 uniform float uBlobThreshold;   // T > 0
 uniform float uBlobCutoff;      // t in (0, 1)
 
+// Mirrors tg::tensor::kBlobMinAxisRatio: a bump's thinnest semi-axis relative to its longest.
+const float kBlobMinAxisRatio = 1e-3f;
+
 // The gauge at which a bump falls to the cutoff: D_i = t T at
 // g^2 = 1 + ln(t T) / B; 0 where even its peak exp(-B) stays below t T.
 float blobBoundGauge() {
@@ -43,6 +46,7 @@ bool blobBump(GlyphRecord g, float gamma, float boundGauge, TG_OUT(BlobBump) b) 
   vec3 axes = glyphAxes(vec3(g.eigenvalues_id));
   float radius = max(axes.x, max(axes.y, axes.z));
   if (!(radius > 0.0f)) return false;
+  axes = max(axes, vec3(kBlobMinAxisRatio * radius));
   b.shape = gamma > 0.0f ? superquadricShape(vec3(g.eigenvalues_id), gamma) : vec4(1.0f, 1.0f, 1.0f, 2.0f);
   // The unit shape lies within its reach of the GC origin, and g is
   // homogeneous of degree 1: the region g <= boundGauge within their product.

@@ -12,11 +12,12 @@ uniform int uOrtho;         // 0: perspective, 1: orthographic
 uniform vec2 uRayScaleVC;   // perspective: tan(fov/2)*(aspect, 1); ortho: half extent (w, h)
 uniform float uNearVC;
 uniform float uFarVC;
+uniform vec2 uPixelOffsetDC;  // anti-aliasing's sub-pixel jitter, GL's window axes; zero otherwise
 
 // The ray through window position fragDC, with a unit component along -z_VC,
 // so that its parameter is the depth along the view axis.
 void rayThroughFragment(vec2 fragDC, TG_OUT(vec3) originVC, TG_OUT(vec3) dirVC) {
-  vec2 ndc = fragDC / uViewportDC * 2.0f - 1.0f;
+  vec2 ndc = (fragDC + uPixelOffsetDC) / uViewportDC * 2.0f - 1.0f;
   if (uOrtho == 1) {
     originVC = vec3(ndc * uRayScaleVC, 0.0f);
     dirVC = vec3(0.0f, 0.0f, -1.0f);

@@ -173,10 +173,13 @@ void writeCsv(const std::vector<Row>& rows, bool blob, io::AtomicFile& out) {
       ",frame_ms,mean_iterations,max_iterations,coverage_error_pct,interior_error_pct,"
       "depth_err_median_sizes,depth_err_p99_sizes,depth_err_max_sizes,normal_err_median_deg,normal_err_p99_deg,"
       "normal_err_max_deg,frame_ms_min,frame_ms_max,repeats,default\n";
-  char line[600];
+  char line[600], march[64];
   for (const Row& r : rows) {
-    std::snprintf(line, sizeof line, "%d,%g,%.3f,%.3f,%u,%.4f,%.4f,%.3g,%.3g,%.3g,%.3g,%.3g,%.3g,%.3f,%.3f,%zu,%d\n",
-                  r.iterations, r.epsilon, r.frameMs(), r.stats.mean, r.stats.max, r.coveragePct(), r.interiorPct(),
+    // Blobs do not march: their iteration columns are empty.
+    if (blob) march[0] = ',', march[1] = '\0';
+    else std::snprintf(march, sizeof march, "%.3f,%u", r.stats.mean, r.stats.max);
+    std::snprintf(line, sizeof line, "%d,%g,%.3f,%s,%.4f,%.4f,%.3g,%.3g,%.3g,%.3g,%.3g,%.3g,%.3f,%.3f,%zu,%d\n",
+                  r.iterations, r.epsilon, r.frameMs(), march, r.coveragePct(), r.interiorPct(),
                   r.diff.depth.median, r.diff.depth.p99, r.diff.depth.max, r.diff.normalDeg.median,
                   r.diff.normalDeg.p99, r.diff.normalDeg.max, r.minMs(), r.maxMs(), r.roundMs.size(),
                   int(r.isDefault));
@@ -194,8 +197,13 @@ void printTable(const std::vector<Row>& rows, bool blob) {
   for (const Row& r : rows) {
     char range[40];
     std::snprintf(range, sizeof range, "%.2f-%.2f", r.minMs(), r.maxMs());
-    std::printf("%5d %8.0e %9.2f %17s %6.2f %4u %9.4f %10.2e %10.2e %9.3f %7s\n", r.iterations, r.epsilon,
-                r.frameMs(), range, r.stats.mean, r.stats.max, r.coveragePct(), r.diff.depth.p99, r.diff.depth.max,
+    char mean[16] = "-", most[16] = "-";
+    if (!blob) {
+      std::snprintf(mean, sizeof mean, "%.2f", r.stats.mean);
+      std::snprintf(most, sizeof most, "%u", r.stats.max);
+    }
+    std::printf("%5d %8.0e %9.2f %17s %6s %4s %9.4f %10.2e %10.2e %9.3f %7s\n", r.iterations, r.epsilon,
+                r.frameMs(), range, mean, most, r.coveragePct(), r.diff.depth.p99, r.diff.depth.max,
                 r.diff.normalDeg.p99, r.isDefault ? "*" : "");
   }
   std::fflush(stdout);

@@ -107,6 +107,11 @@ int cmdRender(int argc, const char** argv) {
                  "the camera may be inside the glyphs and see none; a smaller --scale draws them\n",
                  typicalPx, o.width, o.height);
   }
+  if (params.glyph == render::GlyphKind::Blob)
+    if (const std::string hint = blobThresholdHint(params.blob, "--blob-threshold", "--blobbiness"); !hint.empty()) {
+      if (sink) sink({}, 0, 0, {});
+      std::fprintf(stderr, "tensorglyph render: %s\n", hint.c_str());
+    }
   // An automatic sign window pinned by one peak (app/stress_defaults.h).
   if (params.color == render::ColorMode::Sign && !params.colorWindow) {
     if (const std::string hint = signWindowHint(renderer.colorWindow(params).y, session.magnitudes().sorted,

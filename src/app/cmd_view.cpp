@@ -112,6 +112,10 @@ int cmdView(int argc, const char** argv) {
   std::vector<io::MeshData> meshes = o.mesh.read(o.input, "view");
   checkScriptMeshes(script, meshes.size(), o.script);
   const std::string path = sessionGlyphPath(o);
+  // A viewer on a path that draws no blobs never shows them: their options would do nothing.
+  if (!o.blobFlag.empty() && !render::pathDraws(path, render::GlyphKind::Blob))
+    throw UsageError(o.blobFlag + " applies to --glyph blob only, and this viewer draws on the " + path +
+                     " glyph path, which draws none; start it with --glyph blob");
   for (const ScriptStep& s : script)
     if (s.verb == "glyph" && !render::pathDraws(path, *glyphKindNamed(s.args[0])))
       throw UsageError(o.script + ":" + std::to_string(s.line) + ": glyph " + s.args[0] + ": the viewer draws on the " +

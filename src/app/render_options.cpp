@@ -53,6 +53,11 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
     o.width = int(parseInt(a[0], a[1]));
     o.height = int(parseInt(a[0], a[2]));
   });
+  ap.arg("--samples N").help("anti-aliasing: colour samples per pixel where a silhouette crosses it (the id "
+                              "changes in its 3x3 neighbourhood), each a whole frame of glyphs from a jittered "
+                              "camera; id, depth and normal channels stay the pixel centre's")
+      .range(ranges::kSamples).byDefault(std::to_string(o.samples))
+      .action([&](Args a) { o.samples = int(parseInt(a[0], a[1])); });
   ap.setGroup("glyphs");
   ap.arg("--pipeline NAME").reloads().help("how glyphs are drawn: raster (default; a ray-cast sprite per glyph) or "
                                             "cpu (tiles cast on every core; ellipsoids and superquadrics)")
@@ -255,8 +260,17 @@ void checkKindOptions(const RenderOptions& o, render::GlyphKind kind, bool toFil
   if (toFile && !o.blobFlag.empty() && !blob)
     throw UsageError(o.blobFlag + " applies to --glyph blob only; this render draws " + name + " glyphs");
   if (blob) {
-    // The bump's peak exp(-B) must rise above the cutoff, or nothing adds.
+    // The bump's peak exp(-B) must rise above the cutoff, or nothing adds;
+    // its reach sqrt(1 + ln(C T) / B) glyph radii sets what every pixel
+    // pays, which grows with its cube.
     const render::BlobParams& b = o.blob;
+    constexpr double kMaxReach = 8.0;
+    const double reach = std::sqrt(std::max(0.0, 1.0 + std::log(b.cutoff * b.threshold) / b.blobbiness));
+    if (reach > kMaxReach)
+      throw UsageError("--blobbiness " + formatNumber(b.blobbiness) + " with --blob-cutoff " + formatNumber(b.cutoff) +
+                       " and --blob-threshold " + formatNumber(b.threshold) + ": each bump would reach " +
+                       formatNumber(reach) + " glyph radii (at most " + formatNumber(kMaxReach) +
+                       "); give a larger --blob-cutoff or a --blobbiness further from 0");
     if (!(b.cutoff * b.threshold < std::exp(-b.blobbiness)))
       throw UsageError("--blob-cutoff " + formatNumber(b.cutoff) + " x --blob-threshold " + formatNumber(b.threshold) +
                        " lies above a bump's peak exp(-B) = " + formatNumber(std::exp(-b.blobbiness)) +
@@ -271,6 +285,14 @@ std::string glyphPathFor(const RenderOptions& o, render::GlyphKind kind) {
   for (const std::string_view path : render::kGlyphPathNames)
     if (render::pathDraws(path, kind)) return std::string(path);
   return o.pipeline;
+}
+
+std::string blobThresholdHint(const render::BlobParams& b, const char* threshold, const char* blobbiness) {
+  const double peak = std::exp(-b.blobbiness);
+  if (b.threshold < peak) return "";
+  return std::string(threshold) + " " + formatNumber(b.threshold) + " is at or above a lone bump's peak exp(-B) = " +
+         formatNumber(peak) + " (" + blobbiness + " " + formatNumber(b.blobbiness) +
+         "): only where bumps overlap enough does a surface show, and the image may show none";
 }
 
 std::string sessionGlyphPath(const RenderOptions& o) {
@@ -338,6 +360,7 @@ render::FrameParams frameParams(const RenderOptions& o, const Scene& s, const te
   p.gamma = o.gamma;
   p.march = {o.maxIterations, o.epsilon};
   p.blob = o.blob;
+  p.samples = o.samples;
   p.iterationStats = o.stats;
   p.tessellation = o.tessellate;
   p.background = o.background;

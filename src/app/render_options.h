@@ -45,6 +45,7 @@ struct RenderOptions : SceneFlags {
   std::string pipeline = "raster";  // the glyph path (render::makeGlyphPath)
   bool pipelineGiven = false;       // else a kind the raster path cannot draw (blob) takes the cpu path
   render::BlobParams blob;
+  int samples = 1;  // --samples
   std::string blobFlag;  // the first --blob-* option given: refused for other kinds, as marchFlag
 };
 
@@ -54,6 +55,9 @@ std::string glyphPathFor(const RenderOptions& o, render::GlyphKind kind);
 // The path a session starts on: glyphPathFor the kind --glyph gives (a
 // file's look never asks for a kind the raster path cannot draw).
 std::string sessionGlyphPath(const RenderOptions& o);
+// "" or why a blob frame may show nothing: a threshold at or above a lone
+// bump's peak exp(-B), which only overlapping bumps can reach.
+std::string blobThresholdHint(const render::BlobParams& b, const char* threshold, const char* blobbiness);
 
 
 inline constexpr const char* kRenderUsage = "tensorglyph render [INPUT] -o OUT [options]";

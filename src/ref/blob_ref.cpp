@@ -5,6 +5,7 @@
 #include <thread>
 #include <vector>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/matrix.hpp>
 
@@ -51,8 +52,10 @@ std::vector<Bump> prepare(std::span<const tensor::GlyphRecord> glyphs, const Ref
   for (std::size_t i = 0; i < glyphs.size(); ++i) {
     const tensor::GlyphRecord& g = glyphs[i];
     if (!(g.fa >= p.faMin)) continue;
-    const glm::dvec3 axes = tensor::glyphAxes(g, p.scale, p.sizing);
-    if (!(std::max({axes.x, axes.y, axes.z}) > 0.0)) continue;
+    glm::dvec3 axes = tensor::glyphAxes(g, p.scale, p.sizing);
+    const double longest = std::max({axes.x, axes.y, axes.z});
+    if (!(longest > 0.0)) continue;
+    axes = glm::max(axes, glm::dvec3(tensor::kBlobMinAxisRatio * longest));
     Bump b;
     b.shape = gamma > 0.0 ? tensor::superquadricShape(glm::dvec3(g.eigenvalues[0], g.eigenvalues[1], g.eigenvalues[2]), gamma)
                           : SuperquadricShape{};

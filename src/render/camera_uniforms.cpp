@@ -17,6 +17,7 @@ CameraUniforms cameraUniforms(const Camera& cam) {
   const double aspect = double(cam.width) / cam.height;
   const double h = ortho ? 0.5 * cam.desc.orthoHeight : std::tan(glm::radians(cam.desc.fovYDeg) * 0.5);
   u.rayScaleVC = glm::vec2(float(h * aspect), float(h));
+  u.pixelOffsetDC = glm::vec2(float(cam.pixelOffsetDC.x), float(-cam.pixelOffsetDC.y));
   u.nearVC = float(cam.nearVC);
   u.farVC = ortho ? float(cam.farVC) : std::numeric_limits<float>::max();
   return u;
@@ -29,6 +30,7 @@ void setCameraUniforms(const gl::Program& prog, const Camera& cam) {
   prog.set("uViewportDC", u.viewportDC);
   prog.set("uOrtho", u.ortho);
   prog.set("uRayScaleVC", u.rayScaleVC);
+  prog.set("uPixelOffsetDC", u.pixelOffsetDC);
   prog.set("uNearVC", u.nearVC);
   prog.set("uFarVC", u.farVC);
 }

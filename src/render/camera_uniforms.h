@@ -13,6 +13,7 @@ namespace tg::render {
 struct CameraUniforms {
   glm::mat4 viewWCVC, projVCCC;
   glm::vec2 viewportDC, rayScaleVC;
+  glm::vec2 pixelOffsetDC;  // GL's window axes: y up
   int ortho;
   float nearVC, farVC;
 };

@@ -136,6 +136,8 @@ struct FrameParams {
   double gamma = 3.0;  // superquadric sharpness; 0 makes definite tensors ellipsoids
   MarchParams march;
   BlobParams blob;
+  // Colour samples per pixel where the id changes within it (render/antialias_pass.h); 1: the pixel centre's alone.
+  int samples = 1;
   bool iterationStats = false;  // count Newton iterations (a shader variant; off costs nothing)
   bool frustumCulling = true;  // off only to measure what it saves
   // Superquadrics: an exact ellipsoid depth pass first, so that fragments of

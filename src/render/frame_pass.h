@@ -6,6 +6,7 @@
 // that does not, so a disabled pass is never built, run or allocated.
 // Bindings are those of shaders/lib/bindings.h, shared with the GLSL.
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <span>
 #include <vector>
@@ -48,6 +49,9 @@ struct PassFrame {
   GlyphPath& glyphs;  // the shadow map draws its casters by it
   std::span<const std::unique_ptr<ContextItem>> context;
   const ShadowPass* shadow;  // the key light's map, when this frame drew one
+  // Draws the frame's glyphs and context, lit, from another camera (a
+  // jittered one: render/antialias_pass.h) into another target.
+  std::function<void(const Camera&, const GBuffer&)> drawSample{};
 };
 
 class FramePass {

@@ -11,6 +11,7 @@ void Shaders::setCamera(const Camera& cam) {
   uViewportDC = u.viewportDC;
   uOrtho = u.ortho;
   uRayScaleVC = u.rayScaleVC;
+  uPixelOffsetDC = u.pixelOffsetDC;
   uNearVC = u.nearVC;
   uFarVC = u.farVC;
 }

@@ -28,10 +28,11 @@ std::span<const Attachment> OutlinePass::writes() const {
 
 void OutlinePass::run(const PassFrame& f) {
   setCameraUniforms(program_, f.cam);
-  run(f.target, f.p.outline);
+  run(f.target, f.p.outline, f.p.glyph != GlyphKind::Blob);
 }
 
-void OutlinePass::run(const GBuffer& target, const OutlineParams& p) const {
+void OutlinePass::run(const GBuffer& target, const OutlineParams& p, bool idEdges) const {
+  program_.set("uIdEdges", idEdges ? 1 : 0);
   program_.set("uWidth", float(p.width));
   program_.set("uColor", p.color);
   program_.set("uCosCrease", float(std::cos(glm::radians(p.creaseDeg))));

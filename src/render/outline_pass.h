@@ -31,7 +31,8 @@ class OutlinePass final : public FramePass {
   OutlinePass& operator=(const OutlinePass&) = delete;
 
   // Needs the camera uniforms already set on program() (setCameraUniforms).
-  void run(const GBuffer& target, const OutlineParams& p) const;
+  // `idEdges`: ids bound surfaces (false for blobs, whose ids change on smooth seams).
+  void run(const GBuffer& target, const OutlineParams& p, bool idEdges = true) const;
   void run(const PassFrame& f) override;
   std::span<const Attachment> reads() const override;
   std::span<const Attachment> writes() const override;

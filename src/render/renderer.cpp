@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "render/antialias_pass.h"
 #include "render/ao_pass.h"
 #include "render/color_readback.h"
 #include "render/outline_pass.h"
@@ -39,6 +40,7 @@ GlyphRenderer::GlyphRenderer(const gl::Api& gl, const gl::ShaderLibrary& lib, Ov
   // The frame's optional passes, in frame order (render/frame_pass.h).
   slots_[kShadow].decl = {"shadow", [](const FrameParams& p) { return p.shadow.enabled; }, makeShadow};
   slots_[kAo].decl = {"ao", [](const FrameParams& p) { return p.ao.enabled; }, make<AoPass>};
+  slots_[kAntialias].decl = {"antialias", [](const FrameParams& p) { return p.samples > 1; }, make<AntialiasPass>};
   slots_[kOutline].decl = {"outline", [](const FrameParams& p) { return p.outline.enabled; }, make<OutlinePass>};
   slots_[kOrientation].decl = {"orientation", [](const FrameParams& p) { return p.orientationLetters; },
                                overlays.orientation};
@@ -195,7 +197,7 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   // The passes this frame runs, for `progress`: the glyphs (with the opaque
   // context) and the lighting (with the translucent context) always.
   int total = 2 + int(casts), done = 0;
-  for (const SlotIndex s : {kAo, kOutline, kOrientation, kLegend}) total += int(slots_[s].decl.enabled(p));
+  for (const SlotIndex s : {kAo, kAntialias, kOutline, kOrientation, kLegend}) total += int(slots_[s].decl.enabled(p));
   auto finished = [&](std::string_view pass) {
     if (!progress) return;
     gl_.Finish();
@@ -220,6 +222,17 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   for (const auto& item : context_)
     if (item->visible() && item->translucent()) item->drawTranslucent(cam, p, target);
   finished("lighting");
+  // More samples where silhouettes cross pixels: the glyphs, context and
+  // lighting again from jittered cameras, with this frame's shadow map and AO.
+  frame.drawSample = [&](const Camera& at, const GBuffer& sample) {
+    path_->drawView(at, p, sample);
+    drawContextOpaque(gl_, context_, at, p, ContextTarget::View);
+    gl_.Disable(GL_DEPTH_TEST);
+    lighting_.run(PassFrame{at, p, sample, frame.aoRadiusWC, ranges_, *path_, context_, frame.shadow});
+    for (const auto& item : context_)
+      if (item->visible() && item->translucent()) item->drawTranslucent(at, p, sample);
+  };
+  slot(kAntialias);
   slot(kOutline);
   slot(kOrientation);
   // Last before readback: the legend draws over every effect.

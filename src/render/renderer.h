@@ -136,7 +136,7 @@ class GlyphRenderer {
     std::unique_ptr<FramePass> pass;
     std::uint64_t runs = 0;
   };
-  enum SlotIndex { kShadow, kAo, kOutline, kOrientation, kLegend, kSlots };
+  enum SlotIndex { kShadow, kAo, kAntialias, kOutline, kOrientation, kLegend, kSlots };
   // Builds slot s's pass if this frame enables it (else releases it) and
   // runs it; whether it ran.
   bool runSlot(Slot& s, const PassFrame& f);

@@ -118,6 +118,11 @@ struct BoxWC {
 // sqrt(3) semi-axes out, a cylinder's rim sqrt(2). The depth range must hold
 // all of it, or the near plane cuts the glyphs nearest the eye.
 inline constexpr double kGlyphReach = 1.7320508075688772;
+// A blob's bump keeps its thinnest semi-axis at least this share of its
+// longest (a glyph's floor is kMinAxisRatio): a flat tensor's bump is then a
+// disc that a single-precision ray samples, not one 1e-7 of it thick, which
+// falls between the float depths of its own entry and exit.
+inline constexpr double kBlobMinAxisRatio = 1e-3;
 BoxWC glyphBoxWC(const GlyphSet& set, double scale);
 
 }  // namespace tg::tensor

@@ -87,6 +87,8 @@ Camera makeCamera(const CameraDesc& d, int width, int height, const glm::dvec3& 
 RayWC Camera::rayThroughPixel(double px, double py) const { return rayThroughPixel(px, py, glm::inverse(viewWCVC)); }
 
 RayWC Camera::rayThroughPixel(double px, double py, const glm::dmat4& wcFromVC) const {
+  px += pixelOffsetDC.x;
+  py += pixelOffsetDC.y;
   const double aspect = double(width) / double(height);
   const double xn = 2.0 * px / width - 1.0;
   const double yn = 1.0 - 2.0 * py / height;
@@ -98,6 +100,17 @@ RayWC Camera::rayThroughPixel(double px, double py, const glm::dmat4& wcFromVC) 
     oVC = glm::dvec3(xn * desc.orthoHeight * 0.5 * aspect, yn * desc.orthoHeight * 0.5, 0.0);
   }
   return {glm::dvec3(wcFromVC * glm::dvec4(oVC, 1.0)), glm::dvec3(wcFromVC * glm::dvec4(dVC, 0.0))};
+}
+
+Camera withPixelOffset(const Camera& cam, const glm::dvec2& offsetDC) {
+  Camera c = cam;
+  c.pixelOffsetDC = cam.pixelOffsetDC + offsetDC;
+  // NDC x grows right, y up; rows grow down.
+  glm::dmat4 shift(1.0);
+  shift[3][0] = -2.0 * offsetDC.x / cam.width;
+  shift[3][1] = 2.0 * offsetDC.y / cam.height;
+  c.projVCCC = shift * cam.projVCCC;
+  return c;
 }
 
 double Camera::windowDepthFromViewDepth(double dist) const {

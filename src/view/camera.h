@@ -29,6 +29,9 @@ struct Camera {
   double nearVC = 0.1, farVC = 1.0;  // distances along the view axis; far used by ortho only
   glm::dmat4 viewWCVC{1.0};
   glm::dmat4 projVCCC{1.0};  // to clip coordinates
+  // Sub-pixel jitter (withPixelOffset): the ray of window position p passes
+  // where p + pixelOffsetDC's did without it; zero but for anti-aliasing's samples.
+  glm::dvec2 pixelOffsetDC{0.0};
 
   // Pixel (i, j) has its centre at (i + 0.5, j + 0.5), row 0 at the top.
   RayWC rayThroughPixel(double px, double py) const;
@@ -38,6 +41,11 @@ struct Camera {
   double viewDepthFromWindowDepth(double z) const;
   glm::dvec3 viewDirectionWC() const;
 };
+
+// `cam` with its image shifted by `offsetDC` pixels (x right, y down, as
+// rayThroughPixel's rows): the projection moves the scene by -offset so that
+// each pixel centre sees the point offset from it; the depth range is kept.
+Camera withPixelOffset(const Camera& cam, const glm::dvec2& offsetDC);
 
 // Check a description before use: finite, eye != look-at, up not parallel to
 // the view axis, fov in (0, 180), ortho height > 0. Returns "" when valid.

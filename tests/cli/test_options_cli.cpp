@@ -104,6 +104,7 @@ const std::vector<NumericCase>& numericCases() {
       {"--shadow-strength", "{}", "--shadows"},
       {"--shadow-bias", "{}", "--shadows"},
       {"--size", "{} {}", ""},
+      {"--samples", "{}", ""},
       {"--pick", "{} {}", ""},
       {"--repeat", "{}", ""},
   };

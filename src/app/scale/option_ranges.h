@@ -49,9 +49,12 @@ inline constexpr NumberRange kEpsilon{1e-9, 0.5};
 // truncation stays below the threshold, large enough that a bump's region
 // (sqrt(1 + ln(t T) / B) glyph radii) stays finite.
 inline constexpr NumberRange kBlobThreshold{1e-6, 1e6};
-inline constexpr NumberRange kBlobbiness{-80.0, -1e-3};
+// Below -16 the bump's exp(-B) peak leaves float too little room for its
+// gradient's shading (banded highlights were seen at -40).
+inline constexpr NumberRange kBlobbiness{-16.0, -0.01};
 inline constexpr NumberRange kBlobCutoff{1e-9, 0.5};
 inline constexpr NumberRange kBlobSteps{1, 64, true};
+inline constexpr NumberRange kSamples{1, 16, true};  // colour samples at a silhouette pixel (render::AntialiasPass)
 // Below 0.01 degrees a pixel is finer than single precision resolves at the
 // scene (app/render_options.cpp checks the exact bound for the image height);
 // above 179 the scene shrinks towards a point.
