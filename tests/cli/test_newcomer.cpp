@@ -109,6 +109,8 @@ TEST(Newcomer, MarchOptionsOnGlyphsThatDoNotMarchAreRefused) {
       {" --glyph blob --pipeline raster",
        "--pipeline raster draws ellipsoid, superquadric, cylinder and box glyphs only; this render draws blob glyphs "
        "(each blob pixel needs every bump its ray meets): leave --pipeline out"},
+      {" --glyph blob --blobbiness -0.01 --blob-cutoff 1e-9",
+       "--blobbiness -0.01 with --blob-cutoff 1e-09 and --blob-threshold 1: each bump would reach 45.5338 glyph radii (at most 8)"},
       {" --glyph blob --blobbiness -0.01 --blob-cutoff 0.5 --blob-threshold 3",
        "--blob-cutoff 0.5 x --blob-threshold 3 lies above a bump's peak exp(-B) = 1.01005"},
   };
@@ -120,6 +122,11 @@ TEST(Newcomer, MarchOptionsOnGlyphsThatDoNotMarchAreRefused) {
   EXPECT_EQ(run(render + " --glyph superquadric --gamma 2 --iterations 6").code, 0);
   EXPECT_EQ(run(render + " --glyph blob --gamma 2 --blobbiness -1 --blob-threshold 0.8 --blob-steps 2").code, 0);
   EXPECT_EQ(run(render + " --glyph blob --pipeline cpu --shadows").code, 0);
+  // A threshold no lone bump reaches draws, and says why the image may be empty.
+  const tg::test::CmdResult high = run(render + " --glyph blob --blob-threshold 10");
+  EXPECT_EQ(high.code, 0) << high.err;
+  EXPECT_NE(high.err.find("--blob-threshold 10 is at or above a lone bump's peak exp(-B) = 7.38906"), std::string::npos)
+      << high.err;
   EXPECT_EQ(run("render -o " + out.string() + " --size 64 48 --gamma 1.5 --no-shadows --no-ao").code, 0);
 }
 

@@ -6,6 +6,7 @@
 // the surface.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -209,6 +210,28 @@ TEST(Blob, TheSumIsOneOnALoneGlyphsSurface) {
       EXPECT_NEAR(ref::blobSum(set.glyphs, r, 0.0, onSurface), 1.0, 1e-6) << "axis " << k << ", B " << b;
     }
     EXPECT_NEAR(ref::blobSum(set.glyphs, r, 0.0, glm::dvec3(1, 2, 3)), std::exp(-b), 1e-9 * std::exp(-b));
+  }
+}
+
+// A flat tensor's bump (an eigenvalue 0) keeps a thickness a float ray
+// samples (tensor::kBlobMinAxisRatio): seen face-on and edge-on, it covers
+// what its glyph's disc does, and not nothing.
+TEST(Blob, AFlatTensorsBumpIsDrawn) {
+  std::vector<float> pos = {0, 0, 0}, ten = {2, 0, 0, 1, 0, 0};
+  const tensor::GlyphSet set = tensor::buildGlyphs(pos, ten, {});
+  for (const glm::dvec3 eye : {glm::dvec3(0.1, 0.2, 10), glm::dvec3(3, 2, 8)}) {
+    render::CameraDesc d;
+    d.eyeWC = eye;
+    d.projection = render::Projection::Orthographic;
+    d.orthoHeight = 5.0;
+    const render::Camera cam = render::makeCamera(d, 100, 80, glm::dvec3(-6), glm::dvec3(6));
+    const ref::RefImage glyph = ref::renderEllipsoids(cam, set.glyphs, {1.0, 0.0});
+    const auto disc = std::size_t(
+        std::count_if(glyph.id.begin(), glyph.id.end(), [](std::uint32_t id) { return id != ref::kNoGlyph; }));
+    ASSERT_GT(disc, 500u);
+    const std::size_t blob = covered(cast(set, cam, blobParams()).casts);
+    EXPECT_GT(double(blob), 0.95 * double(disc));
+    EXPECT_LT(double(blob), 1.05 * double(disc));
   }
 }
 

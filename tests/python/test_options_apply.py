@@ -30,6 +30,7 @@ CASES = {
     "blobbiness": (-1.0, {"glyph": "blob"}),
     "blob_cutoff": (0.1, {"glyph": "blob"}),
     "blob_steps": (1, {"glyph": "blob"}),
+    "samples": (4, {}),
     "fa_min": (0.85, {}),
     "eye": ((30.0, -20.0, 25.0), {}),
     "look_at": ((0.0, 0.0, 0.0), {"eye": (30.0, -20.0, 25.0)}),
@@ -296,6 +297,18 @@ class OptionsApply(unittest.TestCase):
         # A case refused everywhere would test no application: each value
         # here applies to one input at least (confidence values: NRRD only).
         self.assertEqual(sorted(set(CASES) - applied), ["confidence_min"])
+
+    def test_a_renderer_switched_to_blobs_takes_the_cpu_path(self):
+        """A Renderer made for ellipsoids (the raster path) switched to
+        glyph="blob" raised the raster path's refusal; it now loads again on
+        the cpu path, and draws what a fresh blob render draws."""
+        d = self.data
+        r = tg.Renderer(d.nifti, size=(48, 36))
+        r.render()
+        blob = np.asarray(r.set(glyph="blob").render())
+        fresh = np.asarray(tg.render(d.nifti, size=(48, 36), glyph="blob"))
+        self.assertTrue(np.array_equal(blob, fresh))
+        self.assertFalse(np.array_equal(blob, np.asarray(r.set(glyph="ellipsoid").render())))
 
     def test_march_options_on_glyphs_that_do_not_march_are_named(self):
         """gamma, iterations and epsilon on ellipsoids: `render` refuses them;
