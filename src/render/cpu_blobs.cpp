@@ -79,7 +79,7 @@ float gaugeMinimum(glsl::Shaders& sh, const glsl::vec4& shape, const Span& s) {
     return sh.superquadricGauge(glsl::vec3(shape), s.q0 + (t - s.tc) * s.dq, unused);
   };
   float c = b - r * (b - a), d = a + r * (b - a), gc = g(c), gd = g(d);
-  for (int k = 0; k < 12; ++k) {
+  for (int k = 0; k < 9; ++k) {
     if (gc < gd) {
       b = d, d = c, gd = gc, c = b - r * (b - a), gc = g(c);
     } else {
