@@ -4,6 +4,7 @@
 #include "lib/bindings.h"
 #include "lib/camera.glsl"
 #include "lib/shadow.glsl"
+#include "lib/aa_edge.glsl"
 
 layout(binding = TG_UNIT_ALBEDO) uniform sampler2D uAlbedo;
 layout(binding = TG_UNIT_NORMAL) uniform sampler2D uNormalWC;
@@ -13,6 +14,9 @@ uniform vec4 uBackground;
 uniform vec3 uKeyDirVC;    // towards the key light
 uniform vec4 uLightMix;    // ambient, head, key, specular
 uniform float uShininess;
+// 1 for anti-aliasing's extra samples (render/antialias_pass.h): only the
+// frame's silhouette pixels are kept, so only they are lit.
+uniform int uEdgesOnly;
 
 #pragma tg option TG_AO
 #ifdef TG_AO
@@ -25,6 +29,7 @@ const uint kNoGlyph = 0xFFFFFFFFu;
 
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
+  if (uEdgesOnly == 1 && !aaEdge(p)) discard;
   if (texelFetch(uId, p, 0).r == kNoGlyph) {
     oColor = uBackground;
     return;

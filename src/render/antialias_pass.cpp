@@ -73,6 +73,7 @@ void AntialiasPass::run(const PassFrame& f) {
   gl_.ClearNamedFramebufferfv(sumFbo_, GL_COLOR, 0, zero);
   accumulate(f.target.color(), f.target.id());
   for (int k = 1; k < samples; ++k) {
+    gl_.BindTextureUnit(TG_UNIT_AA_FRAME_ID, f.target.id());  // the sample's lighting lights only the edges
     f.drawSample(withPixelOffset(f.cam, sampleOffset(k)), *sample_);
     accumulate(sample_->color(), f.target.id());
   }

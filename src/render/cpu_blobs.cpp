@@ -123,6 +123,7 @@ std::uint64_t castBlobs(std::span<const tensor::GlyphRecord> records, const Came
   binToTiles(std::span(out.rects.data(), count), w, h, threads, out.bins);
   const TileBins& bins = out.bins;
   const std::vector<PixelRect>& rects = out.rects;
+  const bool masked = out.masked();
 
   std::atomic<std::size_t> nextTile{0};
   runParts(threads, [&](int, int) {
@@ -136,6 +137,7 @@ std::uint64_t castBlobs(std::span<const tensor::GlyphRecord> records, const Came
       const int x1 = std::min(w, x0 + kTilePx) - 1, y1 = std::min(h, y0 + kTilePx) - 1;
       for (int y = y0; y <= y1; ++y)
         for (int x = x0; x <= x1; ++x) {
+          if (masked && !out.only[std::size_t(y) * std::size_t(w) + std::size_t(x)]) continue;
           // The z-active list: the bumps whose regions this ray crosses.
           glsl::vec3 originVC, dirVC;
           sh.rayThroughFragment(glsl::vec2(float(x) + 0.5f, float(y) + 0.5f), originVC, dirVC);

@@ -135,6 +135,7 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
     kept[std::size_t(part)] = at - begin;
   });
   const std::size_t count = closeUpParts(kept, m, &out.candidates, &out.rects, marching ? &out.shapes : nullptr);
+  const bool masked = out.masked();
   out.count = count;
   const std::vector<Candidate>& cands = out.candidates;
   const std::vector<PixelRect>& rects = out.rects;
@@ -179,7 +180,13 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
       std::fill_n(best, kTilePixels, kNone);
       // Pixels of the tile (within the viewport) with no hit yet, and the
       // farthest hit once every one has one.
-      int open = (x1 - x0 + 1) * (y1 - y0 + 1);
+      int open = 0;
+      for (int y = y0; y <= y1; ++y)
+        for (int x = x0; x <= x1; ++x) {
+          if (!masked || out.only[std::size_t(y) * std::size_t(w) + std::size_t(x)]) ++open;
+          else bestVC[(y - y0) * kTilePx + (x - x0)] = -1.0f;  // nearer than any glyph: cast nothing there
+        }
+      if (open == 0) continue;
       float farVC = std::numeric_limits<float>::infinity();
       bool farStale = true;
       for (const Key& key : order) {
@@ -327,12 +334,34 @@ void CpuGlyphs::drawView(const Camera& cam, const FrameParams& p, const GBuffer&
   if (target.width() != cam.width || target.height() != cam.height)
     throw std::invalid_argument("GlyphRenderer::render: the target is not the camera's size");
   const bool sign = p.color == ColorMode::Sign;
+  // An anti-aliasing sample of the last centre frame's view: only the
+  // pixels by that frame's silhouettes (a record differs in the 3x3 block).
+  const bool sample = cam.pixelOffsetDC != glm::dvec2(0.0);
+  const int w = cam.width, h = cam.height;
+  casts_.only.clear();
+  if (sample && centreRecord_.size() == std::size_t(w) * std::size_t(h) && centreView_ == cam.viewWCVC) {
+    casts_.only.assign(centreRecord_.size(), 0);
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const std::uint32_t r = centreRecord_[std::size_t(y) * std::size_t(w) + std::size_t(x)];
+        bool edge = false;
+        for (int dy = -1; dy <= 1 && !edge; ++dy)
+          for (int dx = -1; dx <= 1 && !edge; ++dx) {
+            const int qx = std::clamp(x + dx, 0, w - 1), qy = std::clamp(y + dy, 0, h - 1);
+            edge = centreRecord_[std::size_t(qy) * std::size_t(w) + std::size_t(qx)] != r;
+          }
+        casts_.only[std::size_t(y) * std::size_t(w) + std::size_t(x)] = edge;
+      }
+  }
   drawn_ = glyphKind(p.glyph).draw == KindDraw::Blob ? castBlobs(set_.glyphs, cam, p, sign, threads_, casts_, blobs_)
                                                      : castGlyphs(set_.glyphs, cam, p, sign, threads_, casts_);
+  if (!sample) {
+    centreRecord_ = casts_.record;
+    centreView_ = cam.viewWCVC;
+  }
   allocate(cam.width, cam.height);
   target.beginGeometry();
   if (drawn_ == 0) return;
-  const int w = cam.width, h = cam.height;
   gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
   gl_.TextureSubImage2D(tex_[0], 0, 0, 0, w, h, GL_RED, GL_FLOAT, casts_.windowDepth.data());
   gl_.TextureSubImage2D(tex_[1], 0, 0, 0, w, h, GL_RED_INTEGER, GL_UNSIGNED_INT, casts_.record.data());

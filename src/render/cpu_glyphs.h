@@ -65,6 +65,11 @@ struct CpuCasts {
   std::vector<CastShape> shapes;          // and, in frames that march, their shapes
   std::size_t count = 0;
   TileBins bins;
+  // When it holds a byte per pixel (rows as `record`'s), only its nonzero
+  // pixels are cast, the rest left empty: anti-aliasing's extra samples,
+  // which keep only the centre frame's silhouette pixels (render/antialias_pass.h).
+  std::vector<std::uint8_t> only;
+  bool masked() const { return only.size() == std::size_t(width) * std::size_t(height); }
 };
 
 // `out` sized for a width x height frame, every pixel empty.
@@ -107,6 +112,10 @@ class CpuGlyphs final : public GlyphPath {
   tensor::GlyphSet set_;  // the records, kept for the casts (and a raster path for shadows)
   std::unique_ptr<RasterGlyphs> shadowCasters_;  // built on the first frame with shadows
   CpuCasts casts_;
+  // The last centre frame's records and view, whose silhouettes an
+  // anti-aliasing sample of the same view casts alone.
+  std::vector<std::uint32_t> centreRecord_;
+  glm::dmat4 centreView_{0.0};
   std::vector<BlobCandidate> blobs_;  // blob frames' set-up, kept between frames
   std::unique_ptr<gl::Program> depthProgram_;  // cpu_depth.frag, built by the first blob shadow map
   CpuCasts lightCasts_;

@@ -52,6 +52,9 @@ struct PassFrame {
   // Draws the frame's glyphs and context, lit, from another camera (a
   // jittered one: render/antialias_pass.h) into another target.
   std::function<void(const Camera&, const GBuffer&)> drawSample{};
+  // A sample's frame: lighting lights only the frame's silhouette pixels
+  // (the frame's ids bound at TG_UNIT_AA_FRAME_ID).
+  bool edgesOnly = false;
 };
 
 class FramePass {

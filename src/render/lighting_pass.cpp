@@ -72,6 +72,7 @@ void LightingPass::run(const PassFrame& f) {
   if (shadows) f.target.beginLighting();
   else f.target.beginLightingCovered(&f.p.background[0]);
   setCameraUniforms(lighting, f.cam);
+  lighting.set("uEdgesOnly", f.edgesOnly ? 1 : 0);
   if (shadows) f.shadow->bindForLighting(lighting, f.cam, f.shadow->light(), f.p.shadow, f.target);
   gl_.UseProgram(lighting.id());
   gl_.BindVertexArray(vao_);

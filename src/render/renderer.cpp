@@ -228,7 +228,7 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
     path_->drawView(at, p, sample);
     drawContextOpaque(gl_, context_, at, p, ContextTarget::View);
     gl_.Disable(GL_DEPTH_TEST);
-    lighting_.run(PassFrame{at, p, sample, frame.aoRadiusWC, ranges_, *path_, context_, frame.shadow});
+    lighting_.run(PassFrame{at, p, sample, frame.aoRadiusWC, ranges_, *path_, context_, frame.shadow, {}, true});
     for (const auto& item : context_)
       if (item->visible() && item->translucent()) item->drawTranslucent(at, p, sample);
   };
