@@ -31,16 +31,17 @@
 #include "io/core/selection.h"
 #include "io/field/tensor_field.h"
 #include "util/progress.h"
+#include "python/array_inputs.h"
+#include "python/frame_arrays.h"
 
 namespace py = pybind11;
 using namespace tg;
+using namespace tg::python;
 
 namespace {
 
 // (keyword, [values]) per occurrence, in the order given.
 using OptionList = std::vector<std::pair<std::string, std::vector<std::string>>>;
-// (keyword, path) of each file a frame was drawn from.
-using InputList = std::vector<std::pair<std::string, std::string>>;
 
 // The keywords of the option table, as Python takes them.
 std::vector<std::string> keywords(const app::OptionTable& table) {
@@ -64,46 +65,6 @@ void applyOptions(const app::OptionTable& table, const OptionList& given, const 
   }
 }
 
-// underlay= and mask= given in memory (an array, a nibabel image): the
-// values i fastest, the grid, and where it lies when an affine came with it
-// (none: on the tensors' grid).
-std::shared_ptr<const io::ScalarVolume> scalarVolume(const py::handle& given, const char* kw) {
-  if (given.is_none()) return nullptr;
-  const auto t = given.cast<py::tuple>();
-  auto values = t[0].cast<py::array_t<float, py::array::c_style | py::array::forcecast>>();
-  const auto dims = t[1].cast<std::vector<long long>>();
-  const auto affine = t[2].cast<std::optional<std::vector<double>>>();
-  auto v = std::make_shared<io::ScalarVolume>();
-  std::uint64_t voxels = 1;
-  if (dims.size() != 3) throw std::invalid_argument(std::string(kw) + ": a volume has 3 axes");
-  for (int k = 0; k < 3; ++k) {
-    if (dims[std::size_t(k)] < 1 || dims[std::size_t(k)] > INT32_MAX)
-      throw std::invalid_argument(std::string(kw) + ": an empty or too large axis");
-    v->dims[k] = int(dims[std::size_t(k)]);
-    voxels *= std::uint64_t(v->dims[k]);
-  }
-  if (std::uint64_t(values.size()) != voxels) throw std::invalid_argument(std::string(kw) + ": values and shape differ");
-  v->values.assign(values.data(), values.data() + values.size());
-  if (affine) {
-    if (affine->size() != 16) throw std::invalid_argument(std::string(kw) + "_affine: must be 4x4");
-    v->placement = io::placementFromAffine(std::string(kw) + "_affine", affine->data());
-  }
-  return v;
-}
-
-bool sameVolume(const std::shared_ptr<const io::ScalarVolume>& a, const std::shared_ptr<const io::ScalarVolume>& b) {
-  if (!a || !b) return a == b;
-  const auto placed = [](const io::ScalarVolume& v) {
-    std::vector<double> out;
-    if (v.placement) {
-      out.assign(v.placement->originWC, v.placement->originWC + 3);
-      out.insert(out.end(), v.placement->axesWC, v.placement->axesWC + 9);
-    }
-    return out;
-  };
-  return std::equal(a->dims, a->dims + 3, b->dims) && a->values == b->values && placed(*a) == placed(*b);
-}
-
 // The files a frame was drawn from, named by keyword ("tensors" for the
 // input): what save() must not write over.
 InputList inputsOf(const app::OptionTable& table, const std::vector<app::NamedPath>& paths) {
@@ -114,23 +75,6 @@ InputList inputsOf(const app::OptionTable& table, const std::vector<app::NamedPa
     out.emplace_back(opt ? opt->keyword() : std::string("tensors"), p.path);
   }
   return out;
-}
-
-// With the GIL held: the view is read later without it.
-io::ArrayRef arrayRef(const py::array& a, const char* arg) {
-  io::ArrayRef r;
-  r.data = a.data();
-  if (a.dtype().kind() != 'f') throw std::domain_error(std::string(arg) + ": values must be float32 or float64");
-  // The values are read in place: swapped bytes would be other, finite numbers.
-  if (!a.dtype().attr("isnative").cast<bool>())
-    throw std::domain_error(std::string(arg) + ": values must be in this machine's byte order, not " +
-                            std::string(py::str(a.dtype())));
-  r.itemBytes = int(a.itemsize());
-  for (py::ssize_t k = 0; k < a.ndim(); ++k) {
-    r.shape.push_back(a.shape(k));
-    r.strides.push_back(a.strides(k));
-  }
-  return r;
 }
 
 class ProgressCallback;
@@ -217,14 +161,6 @@ app::Scene loadSource(const Source& s, const app::RenderOptions& o) {
   app::checkLoaded(scene.field, o.field.read);
   app::attachWholeField(scene, o.field, [&] { return field(io::Selection{}); });
   return scene;
-}
-
-py::array_t<float> floatImage(const std::vector<float>& v, int h, int w, int c) {
-  std::vector<py::ssize_t> shape{h, w};
-  if (c > 1) shape.push_back(c);
-  py::array_t<float> a(shape);
-  std::memcpy(a.mutable_data(), v.data(), v.size() * sizeof(float));
-  return a;
 }
 
 // The session's context, current for one call and released after it: the
@@ -466,56 +402,6 @@ class Renderer {
   bool volumesChanged_ = false;
   std::mutex mutex_;
 };
-
-template <class T>
-py::array_t<T, py::array::c_style | py::array::forcecast> channel(const py::dict& d, const char* key,
-                                                                  std::size_t count) {
-  if (!d.contains(key)) throw std::invalid_argument(std::string("image: no \"") + key + "\" channel");
-  auto a = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(d[key]);
-  if (!a || std::size_t(a.size()) != count)
-    throw std::invalid_argument(std::string("image: the \"") + key + "\" channel has the wrong size");
-  return a;
-}
-
-// Writes what render() returned through the CLI's writers: .exr takes the
-// float and geometry channels (render(..., channels=True)), every other
-// format the 8-bit image. First the CLI's output checks: no directory, FIFO,
-// socket or device, no missing directory, none of the files the frame was
-// drawn from (`inputs`).
-void saveFrame(const py::dict& frame, const std::string& path, const InputList& inputs) {
-  std::vector<app::NamedPath> read;
-  for (const auto& [name, file] : inputs) read.push_back({name, file});
-  app::refuseOutputsOverInputs({{"path", path}}, read);
-  // A cast would write a float image in 0..1 as black: refused instead.
-  const py::array given = py::array::ensure(frame["rgba"]);
-  if (!given || !given.dtype().is(py::dtype::of<std::uint8_t>()))
-    throw py::type_error("image: must be the (H, W, 4) uint8 image, not " +
-                         (given ? std::string(py::str(given.dtype())) : std::string("a non-array")));
-  auto rgba = py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>::ensure(frame["rgba"]);
-  if (!rgba || rgba.ndim() != 3 || rgba.shape(2) != 4) throw std::invalid_argument("image: must be (H, W, 4) uint8");
-  render::FrameImage img;
-  img.height = int(rgba.shape(0));
-  img.width = int(rgba.shape(1));
-  const std::size_t n = std::size_t(img.width) * std::size_t(img.height);
-  if (!io::canWriteImage(path)) throw std::invalid_argument("path: no image format for \"" + path + "\"");
-  if (io::writesGeometryChannels(path)) {
-    if (!frame.contains("depth"))
-      throw std::invalid_argument("path: " + path + " stores depth, normal and id: render(..., channels=True)");
-    auto color = channel<float>(frame, "color", 4 * n);
-    auto depth = channel<float>(frame, "depth", n);
-    auto normal = channel<float>(frame, "normal", 3 * n);
-    auto id = channel<std::uint32_t>(frame, "id", n);
-    img.rgba.assign(color.data(), color.data() + 4 * n);
-    img.depth.assign(depth.data(), depth.data() + n);
-    img.normalWC.assign(normal.data(), normal.data() + 3 * n);
-    img.id.assign(id.data(), id.data() + n);
-  } else {
-    img.rgba.resize(4 * n);
-    for (std::size_t i = 0; i < img.rgba.size(); ++i) img.rgba[i] = float(rgba.data()[i]) / 255.0f;
-  }
-  py::gil_scoped_release release;
-  io::writeImage(img, path);
-}
 
 Source makeSource(std::optional<py::array> tensors, std::optional<py::array> positions,
                   std::optional<std::vector<double>> affine, std::string layout, std::string frame, std::string path,
