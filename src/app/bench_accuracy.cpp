@@ -270,14 +270,13 @@ int benchAccuracy(int argc, const char** argv) {
   params.gamma = o.gamma;
   params.blob = o.blobParams;
   auto [lo, hi] = tensor::glyphBoxWC(glyphs, params.scale, params.sizing);
-  // A blob reaches where its bump still adds (render::kindReach), at the smallest cutoff swept.
-  double reach = render::kindReach(params);
+  // A blob reaches where its bump still adds (render::kindPadWC), farthest at the smallest cutoff swept.
+  double pad = render::kindPadWC(params, glyphs.maxAbsEigenvalue);
   for (const double c : o.cutoffs) {
     render::FrameParams q = params;
     q.blob.cutoff = c;
-    reach = std::max(reach, render::kindReach(q));
+    pad = std::max(pad, render::kindPadWC(q, glyphs.maxAbsEigenvalue));
   }
-  const double pad = (reach - tensor::kGlyphReach) * tensor::glyphRadiusWC(params.scale, params.sizing, glyphs.maxAbsEigenvalue);
   lo -= pad;
   hi += pad;
   const tensor::FramingBox frame = tensor::framingBox(glyphs, !scene.field.grid, sized.typicalRadiusWC);

@@ -265,7 +265,7 @@ void checkKindOptions(const RenderOptions& o, render::GlyphKind kind, bool toFil
     // pays, which grows with its cube.
     const render::BlobParams& b = o.blob;
     constexpr double kMaxReach = 8.0;
-    const double reach = std::sqrt(std::max(0.0, 1.0 + std::log(b.cutoff * b.threshold) / b.blobbiness));
+    const double reach = render::blobBoundGauge(b);
     if (reach > kMaxReach)
       throw UsageError("--blobbiness " + formatNumber(b.blobbiness) + " with --blob-cutoff " + formatNumber(b.cutoff) +
                        " and --blob-threshold " + formatNumber(b.threshold) + ": each bump would reach " +

@@ -148,9 +148,7 @@ render::GBuffer& RenderSession::target(int width, int height) {
 
 void RenderSession::growForBlobs(glm::dvec3& lo, glm::dvec3& hi, const render::FrameParams& p) const {
   // A blob's surface reaches where its bump still adds, beyond the glyph box's corner.
-  const double extra = render::kindReach(p) - tensor::kGlyphReach;
-  if (!(extra > 0.0)) return;
-  const double pad = extra * tensor::glyphRadiusWC(p.scale, p.sizing, glyphs_.maxAbsEigenvalue);
+  const double pad = render::kindPadWC(p, glyphs_.maxAbsEigenvalue);
   lo -= pad;
   hi += pad;
 }

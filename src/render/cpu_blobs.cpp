@@ -105,20 +105,15 @@ std::uint64_t castBlobs(std::span<const tensor::GlyphRecord> records, const Came
   const std::size_t m = records.size();
   if (bumps.size() < m) bumps.resize(m);
   if (out.rects.size() < m) out.rects.resize(m);
-  std::vector<std::size_t> kept(static_cast<std::size_t>(threads), 0);
-  runParts(threads, [&](int part, int parts) {
-    const std::size_t begin = partBegin(m, part, parts);
-    std::size_t at = begin;
-    for (std::size_t i = begin; i < partBegin(m, part + 1, parts); ++i) {
-      glsl::GlyphRecord g;
-      std::memcpy(&g, &records[i], sizeof g);
-      glsl::BlobBump b;
-      if (!sh.blobBump(g, gamma, bound, b) || !pixelsOf(b.rectNDC, w, h, out.rects[at])) continue;
-      bumps[at++] = {b.centreVC, b.gcFromVC, b.shape, b.reachGC, b.nearVC, std::uint32_t(i)};
-    }
-    kept[std::size_t(part)] = at - begin;
-  });
-  const std::size_t count = closeUpParts(kept, m, &bumps, &out.rects);
+  const auto setUp = [&](std::size_t i, std::size_t at) {
+    glsl::GlyphRecord g;
+    std::memcpy(&g, &records[i], sizeof g);
+    glsl::BlobBump b;
+    if (!sh.blobBump(g, gamma, bound, b) || !pixelsOf(b.rectNDC, w, h, out.rects[at])) return false;
+    bumps[at] = {b.centreVC, b.gcFromVC, b.shape, b.reachGC, b.nearVC, std::uint32_t(i)};
+    return true;
+  };
+  const std::size_t count = keepInParts(threads, m, setUp, &bumps, &out.rects);
   out.count = count;
   binToTiles(std::span(out.rects.data(), count), w, h, threads, out.bins);
   const TileBins& bins = out.bins;

@@ -105,36 +105,30 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
     out.rects.resize(m);
   }
   if (marching && out.shapes.size() < m) out.shapes.resize(m);
-  std::vector<std::size_t> kept(static_cast<std::size_t>(threads), 0);
-  runParts(threads, [&](int part, int parts) {
-    const std::size_t begin = partBegin(m, part, parts);
-    std::size_t at = begin;
-    for (std::size_t i = begin; i < partBegin(m, part + 1, parts); ++i) {
-      glsl::GlyphRecord g;
-      std::memcpy(&g, &records[i], sizeof g);
-      PixelRect& r = out.rects[at];
-      const std::optional<MarchVariant> v = march.variantOf(records[i]);
-      if (!v) {
-        glsl::EllipsoidSprite s;
-        if (!general.ellipsoidSprite(g, s) || !pixelsOf(s.rectNDC, w, h, r)) continue;
-        if (marching) out.shapes[at] = {glsl::vec3(1.0f), kCastEllipsoid, 0};
-        out.candidates[at++] = {s.centreVC, general.ellipsoidGcFromVC(s.rotVC, s.axes),
-                                std::max(s.dist - s.radius, general.uNearVC), std::uint32_t(i)};
-        continue;
-      }
-      const std::uint8_t kind = castKindOf(*v);
-      const bool ok = withVariant(*v, general, convex, mixed, [&](auto& sq) {
-        typename std::remove_reference_t<decltype(sq)>::SuperquadricSprite s;
-        if (!sq.superquadricSprite(g, gamma, eps, s) || !pixelsOf(s.rectNDC, w, h, r)) return false;
-        out.shapes[at] = {glsl::vec3(s.shape), kind, std::uint8_t(s.shape.w)};
-        out.candidates[at] = {s.centreVC, s.gcFromVC, s.nearVC, std::uint32_t(i)};
-        return true;
-      });
-      if (ok) ++at;
+  const auto setUp = [&](std::size_t i, std::size_t at) {
+    glsl::GlyphRecord g;
+    std::memcpy(&g, &records[i], sizeof g);
+    PixelRect& r = out.rects[at];
+    const std::optional<MarchVariant> v = march.variantOf(records[i]);
+    if (!v) {
+      glsl::EllipsoidSprite s;
+      if (!general.ellipsoidSprite(g, s) || !pixelsOf(s.rectNDC, w, h, r)) return false;
+      if (marching) out.shapes[at] = {glsl::vec3(1.0f), kCastEllipsoid, 0};
+      out.candidates[at] = {s.centreVC, general.ellipsoidGcFromVC(s.rotVC, s.axes),
+                            std::max(s.dist - s.radius, general.uNearVC), std::uint32_t(i)};
+      return true;
     }
-    kept[std::size_t(part)] = at - begin;
-  });
-  const std::size_t count = closeUpParts(kept, m, &out.candidates, &out.rects, marching ? &out.shapes : nullptr);
+    const std::uint8_t kind = castKindOf(*v);
+    return withVariant(*v, general, convex, mixed, [&](auto& sq) {
+      typename std::remove_reference_t<decltype(sq)>::SuperquadricSprite s;
+      if (!sq.superquadricSprite(g, gamma, eps, s) || !pixelsOf(s.rectNDC, w, h, r)) return false;
+      out.shapes[at] = {glsl::vec3(s.shape), kind, std::uint8_t(s.shape.w)};
+      out.candidates[at] = {s.centreVC, s.gcFromVC, s.nearVC, std::uint32_t(i)};
+      return true;
+    });
+  };
+  const std::size_t count =
+      keepInParts(threads, m, setUp, &out.candidates, &out.rects, marching ? &out.shapes : nullptr);
   const bool masked = out.masked();
   out.count = count;
   const std::vector<Candidate>& cands = out.candidates;
@@ -355,7 +349,7 @@ void CpuGlyphs::drawView(const Camera& cam, const FrameParams& p, const GBuffer&
   }
   drawn_ = glyphKind(p.glyph).draw == KindDraw::Blob ? castBlobs(set_.glyphs, cam, p, sign, threads_, casts_, blobs_)
                                                      : castGlyphs(set_.glyphs, cam, p, sign, threads_, casts_);
-  if (!sample) {
+  if (!sample && p.samples > 1) {  // only a frame that samples again needs them
     centreRecord_ = casts_.record;
     centreView_ = cam.viewWCVC;
   }

@@ -184,10 +184,24 @@ struct FrameParams {
 // bump to where it falls to its cutoff (shaders/lib/blob.glsl's
 // blobBoundGauge) times that, since its surface may lie anywhere its bump
 // still adds.
+// The gauge (in glyph radii) where a bump falls to its cutoff, the C++ twin
+// of shaders/lib/blob.glsl's blobBoundGauge: sqrt(1 + ln(C T) / B); 0 where
+// its peak stays below C T.
+inline double blobBoundGauge(const BlobParams& b) {
+  const double s = 1.0 + std::log(b.cutoff * b.threshold) / b.blobbiness;
+  return s > 0.0 ? std::sqrt(s) : 0.0;
+}
+
 inline double kindReach(const FrameParams& p) {
   if (p.glyph != GlyphKind::Blob) return tensor::kGlyphReach;
-  const double s = 1.0 + std::log(p.blob.cutoff * p.blob.threshold) / p.blob.blobbiness;
-  return tensor::kGlyphReach * std::max(1.0, std::sqrt(std::max(s, 0.0)));
+  return tensor::kGlyphReach * std::max(1.0, blobBoundGauge(p.blob));
+}
+
+// How far beyond tensor::glyphBoxWC (which holds kGlyphReach) a glyph of p's
+// kind can reach, in world units, for glyphs of largest |eigenvalue|
+// maxAbsEigenvalue: 0 but for blobs.
+inline double kindPadWC(const FrameParams& p, double maxAbsEigenvalue) {
+  return (kindReach(p) - tensor::kGlyphReach) * tensor::glyphRadiusWC(p.scale, p.sizing, maxAbsEigenvalue);
 }
 
 }  // namespace tg::render

@@ -61,6 +61,23 @@ std::size_t closeUpParts(const std::vector<std::size_t>& kept, std::size_t n, Ve
   return count;
 }
 
+// keep(i, at) for each i in [0, n), on `parts` threads: each part puts what
+// it keeps from slot `at` on, starting at its first index's slot, and says
+// whether it kept one; then the parts close up (closeUpParts) so that the
+// kept items lie in order at the front of each vector. Returns their count.
+template <class Keep, class... Vectors>
+std::size_t keepInParts(int parts, std::size_t n, Keep&& keep, Vectors*... v) {
+  std::vector<std::size_t> kept(static_cast<std::size_t>(parts), 0);
+  runParts(parts, [&](int part, int count) {
+    const std::size_t begin = partBegin(n, part, count);
+    std::size_t at = begin;
+    for (std::size_t i = begin; i < partBegin(n, part + 1, count); ++i)
+      if (keep(i, at)) ++at;
+    kept[std::size_t(part)] = at - begin;
+  });
+  return closeUpParts(kept, n, v...);
+}
+
 struct TileBins {
   int tilesX = 0, tilesY = 0;
   // Tile t's items are items[start[t] .. start[t + 1]), indices into the
