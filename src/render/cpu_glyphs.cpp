@@ -309,8 +309,11 @@ void CpuGlyphs::uploadColorScalars(std::span<const float> byRecord) {
 }
 
 void CpuGlyphs::allocate(int width, int height) {
-  if (tex_[0] && casts_.width == width && casts_.height == height) return;
+  // Not casts_'s size: the casts of this frame are already made at the new one.
+  if (tex_[0] && texWidth_ == width && texHeight_ == height) return;
   if (tex_[0]) gl_.DeleteTextures(4, tex_);
+  texWidth_ = width;
+  texHeight_ = height;
   const GLenum formats[4] = {GL_R32F, GL_R32UI, GL_RGBA32F, GL_RGBA32F};
   gl_.CreateTextures(GL_TEXTURE_2D, 4, tex_);
   for (int k = 0; k < 4; ++k) {

@@ -124,6 +124,7 @@ class CpuGlyphs final : public GlyphPath {
   GLuint buffer_ = 0, vao_ = 0, scalars_ = 0;  // scalars_: ColorMode::Array's values, by record
   glm::vec2 colorWindow_{0.0f, 1.0f};
   GLuint tex_[4] = {};  // depth, record, normal, hit: cpu_gbuffer.frag's inputs
+  int texWidth_ = 0, texHeight_ = 0;  // their size
   int threads_;
   std::uint64_t drawn_ = 0;
 };

@@ -372,3 +372,23 @@ TEST_F(CpuGlyphs, BlobsFillTheGBufferAsCastAndCastShadows) {
     EXPECT_NE(std::string(e.what()).find("casts no blobs"), std::string::npos) << e.what();
   }
 }
+
+// One renderer whose frames change size (a viewer's window, the
+// calibration of --pipeline auto): the casts' textures follow the frame.
+TEST_F(CpuGlyphs, FramesOfAnotherSizeMatchTheRasterPath) {
+  const tensor::GlyphSet set = grid(4, 7);
+  const double scale = 0.45;
+  render::FrameParams p;
+  p.scale = scale;
+  ctx_->makeCurrent();
+  render::GlyphRenderer cpu(ctx_->api(), *lib_, nullptr, "cpu");
+  cpu.upload(set);
+  for (const auto& [w, h] : {std::pair{120, 90}, std::pair{200, 150}, std::pair{96, 72}}) {
+    const auto cam = test::cameraFor(set, scale, test::oblique(set, 9.0, render::Projection::Perspective), w, h);
+    render::GBuffer target(ctx_->api(), w, h);
+    cpu.render(cam, p, target);
+    Pair s = both(set, cam, p);
+    s.cpu = cpu.readback(cam, target);
+    expectAgree(s, cam, std::to_string(w) + " x " + std::to_string(h), 200);
+  }
+}
