@@ -113,11 +113,11 @@ int cmdView(int argc, const char** argv) {
   checkScriptMeshes(script, meshes.size(), o.script);
   const std::string path = sessionGlyphPath(o);
   // A viewer on a path that draws no blobs never shows them: their options would do nothing.
-  if (!o.blobFlag.empty() && !render::pathDraws(path, render::GlyphKind::Blob))
+  if (!o.blobFlag.empty() && !pipelineDraws(path, render::GlyphKind::Blob))
     throw UsageError(o.blobFlag + " applies to --glyph blob only, and this viewer draws on the " + path +
                      " glyph path, which draws none; start it with --glyph blob");
   for (const ScriptStep& s : script)
-    if (s.verb == "glyph" && !render::pathDraws(path, *glyphKindNamed(s.args[0])))
+    if (s.verb == "glyph" && !pipelineDraws(path, *glyphKindNamed(s.args[0])))
       throw UsageError(o.script + ":" + std::to_string(s.line) + ": glyph " + s.args[0] + ": the viewer draws on the " +
                        path + " glyph path, which draws no " + s.args[0] + " glyphs; start it with --glyph " + s.args[0]);
   const std::size_t meshCount = meshes.size();
@@ -130,6 +130,10 @@ int cmdView(int argc, const char** argv) {
   if (scene.field.grid) v.fieldGrid = sliceGridOf(*scene.field.grid);
   checkSlabSteps(script, v.fieldGrid, o.script);
   SessionHooks hooks;
+  // --pipeline auto takes a path that draws whatever the script switches to.
+  for (const ScriptStep& s : script)
+    if (s.verb == "glyph") hooks.alsoDraws.push_back(*glyphKindNamed(s.args[0]));
+  if (!o.blobFlag.empty()) hooks.alsoDraws.push_back(render::GlyphKind::Blob);
   hooks.underlayLoaded = [&](const render::UnderlayVolume& underlay) {
     for (const render::PlaneSpec& spec : o.slices.planesFor(underlay))
       v.planes.push_back({spec, true, spec.axis >= 0 ? underlay.dims[spec.axis] : 0});

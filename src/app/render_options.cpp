@@ -59,9 +59,11 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
       .range(ranges::kSamples).byDefault(std::to_string(o.samples))
       .action([&](Args a) { o.samples = int(parseInt(a[0], a[1])); });
   ap.setGroup("glyphs");
-  ap.arg("--pipeline NAME").reloads().help("how glyphs are drawn: raster (default; a ray-cast sprite per glyph) or "
-                                            "cpu (tiles cast on every core; ellipsoids and superquadrics)")
-      .oneOf(render::glyphPathNames())
+  ap.arg("--pipeline NAME").reloads().help("how glyphs are drawn: raster (default; a ray-cast sprite per glyph), "
+                                            "cpu (tiles cast on every core; ellipsoids, superquadrics and blobs) or "
+                                            "auto (the path predicted fastest for this scene from a calibration "
+                                            "measured once per renderer and kept in the cache; --verbose says why)")
+      .oneOf(pipelineNames())
       .action([&](Args a) {
         o.pipeline = a[1];
         o.pipelineGiven = true;
@@ -249,7 +251,7 @@ std::string kindsDrawnBy(std::string_view path) {
 void checkKindOptions(const RenderOptions& o, render::GlyphKind kind, bool toFile) {
   const std::string path = glyphPathFor(o, kind), name(render::glyphKind(kind).name);
   if (path == "cpu" && o.tessellate != 0) throw UsageError("--pipeline cpu casts rays; --tessellate draws a mesh (use --pipeline raster)");
-  if (!render::pathDraws(path, kind))
+  if (!pipelineDraws(path, kind))
     throw UsageError("--pipeline " + path + " draws " + kindsDrawnBy(path) + " glyphs only; this render draws " + name +
                      " glyphs" + (kind == render::GlyphKind::Blob ? " (each blob pixel needs every bump its ray meets)" : "") +
                      ": leave --pipeline out");
@@ -280,6 +282,14 @@ void checkKindOptions(const RenderOptions& o, render::GlyphKind kind, bool toFil
 
 }  // namespace
 
+std::string pipelineNames() { return render::glyphPathNames() + " or " + std::string(kAutoPipeline); }
+
+bool pipelineDraws(std::string_view path, render::GlyphKind kind) {
+  if (path != kAutoPipeline) return render::pathDraws(path, kind);
+  return std::any_of(std::begin(render::kGlyphPathNames), std::end(render::kGlyphPathNames),
+                     [&](std::string_view p) { return render::pathDraws(p, kind); });
+}
+
 std::string glyphPathFor(const RenderOptions& o, render::GlyphKind kind) {
   if (o.pipelineGiven) return o.pipeline;
   for (const std::string_view path : render::kGlyphPathNames)
@@ -308,9 +318,10 @@ void validateRenderOptions(const RenderOptions& o, bool toFile) {
     throw UsageError("--glyph: unknown kind \"" + o.glyph + "\"; choose " + kGlyphKindNames);
   if (o.tessellate != 0 && o.glyph != "superquadric") throw UsageError("--tessellate needs --glyph superquadric");
   if (o.tessellate != 0 && o.stats) throw UsageError("--stats counts the ray march; --tessellate has none");
-  if (std::find(std::begin(render::kGlyphPathNames), std::end(render::kGlyphPathNames), o.pipeline) ==
-      std::end(render::kGlyphPathNames))
-    throw UsageError("--pipeline: unknown glyph path \"" + o.pipeline + "\"; choose " + render::glyphPathNames());
+  if (o.pipeline != kAutoPipeline &&
+      std::find(std::begin(render::kGlyphPathNames), std::end(render::kGlyphPathNames), o.pipeline) ==
+          std::end(render::kGlyphPathNames))
+    throw UsageError("--pipeline: unknown glyph path \"" + o.pipeline + "\"; choose " + pipelineNames());
   const render::GlyphKind kind = o.look.glyphGiven || !o.input.empty() ? *glyphKindNamed(o.glyph) : SceneLook{}.glyph;
   // A file's kind without --glyph may still change with its look (a stress
   // field's superquadrics): frameParams checks those once the look is known.

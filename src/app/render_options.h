@@ -49,6 +49,14 @@ struct RenderOptions : SceneFlags {
   std::string blobFlag;  // the first --blob-* option given: refused for other kinds, as marchFlag
 };
 
+// --pipeline auto: the session picks the path (app/scale/pipeline_choice.h)
+// once its context exists.
+inline constexpr std::string_view kAutoPipeline = "auto";
+// "raster, cpu or auto": what --pipeline takes.
+std::string pipelineNames();
+// Whether --pipeline `path` can draw kind: auto where some path does.
+bool pipelineDraws(std::string_view path, render::GlyphKind kind);
+
 // The glyph path a session with options `o` draws `kind` by: --pipeline,
 // or where it was not given the first path of the kind's row that draws it.
 std::string glyphPathFor(const RenderOptions& o, render::GlyphKind kind);

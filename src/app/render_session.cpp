@@ -4,7 +4,9 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <stdexcept>
+#include <thread>
 #include <tuple>
 
 #include "app/cli_common.h"
@@ -12,6 +14,7 @@
 #include "app/field_flags.h"
 #include "app/mesh_flags.h"
 #include "app/names.h"
+#include "app/scale/pipeline_calibration.h"
 #include "app/slice_flags.h"
 #include "app/tract_flags.h"
 #include "render/legend/legend_pass.h"
@@ -71,9 +74,10 @@ RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io
 
   ctx_ = hooks.makeContext ? hooks.makeContext(o) : createContext(o.backend, o.width, o.height);
   lib_ = std::make_unique<gl::ShaderLibrary>();
+  std::string path = sessionGlyphPath(o);
+  if (path == kAutoPipeline) path = autoPipeline(o, frameParams(o, scene_, firstScale), hooks.alsoDraws);
   renderer_ = std::make_unique<render::GlyphRenderer>(
-      ctx_->api(), *lib_, render::OverlayFactories{render::makeLegendPass, render::makeOrientationPass},
-      sessionGlyphPath(o));
+      ctx_->api(), *lib_, render::OverlayFactories{render::makeLegendPass, render::makeOrientationPass}, path);
   target_ = std::make_unique<render::GBuffer>(ctx_->api(), o.width, o.height);
   if (underlay)
     planes_ = addSlicePlanes(*renderer_, ctx_->api(), *lib_, o.slices, std::move(*underlay), glyphs_.maxAbsEigenvalue);
@@ -90,6 +94,40 @@ RenderSession::RenderSession(const RenderOptions& o, Scene scene, std::vector<io
   uploadMs_ = msSince(t1);
   glyphCount_ = glyphs_.glyphs.size();
   if (!keepGlyphs) glyphs_.glyphs = {};
+}
+
+std::string RenderSession::autoPipeline(const RenderOptions& o, const render::FrameParams& p,
+                                        const std::vector<render::GlyphKind>& alsoDraws) {
+  if (o.tessellate != 0) {
+    pipelineWhy_ = "--pipeline auto: --tessellate draws on the raster path";
+    return "raster";
+  }
+  // Glyphs below the FA threshold cost both paths little (culled first).
+  const auto drawn = std::count_if(glyphs_.glyphs.begin(), glyphs_.glyphs.end(),
+                                   [&](const tensor::GlyphRecord& g) { return double(g.fa) >= p.faMin; });
+  CachedCalibration cached;
+  const PathCalibration* cal = nullptr;
+  if (choiceNeedsCalibration(p.glyph, alsoDraws)) {
+    const gl::Api& gl = ctx_->api();
+    auto str = [&](GLenum e) {
+      const auto* s = reinterpret_cast<const char*>(gl.GetString(e));
+      return std::string(s ? s : "?");
+    };
+    const char* lpThreads = std::getenv("LP_NUM_THREADS");
+    const std::string key = calibrationKey(str(GL_RENDERER), str(GL_VERSION), std::thread::hardware_concurrency(),
+                                           lpThreads ? lpThreads : "");
+    cached = calibrationFor(gl, *lib_, key, [&](const std::string& file) {
+      if (!o.quiet)
+        std::fprintf(stderr, "tensorglyph %s: --pipeline auto: measuring the glyph paths on this renderer, once%s\n",
+                     command_, file.empty() ? "" : (" (kept in " + printable(file) + ")").c_str());
+    });
+    if (!cached.warning.empty())
+      std::fprintf(stderr, "tensorglyph %s: --pipeline auto: %s\n", command_, printable(cached.warning).c_str());
+    cal = &cached.cal;
+  }
+  const PathChoice c = choosePath(cal, p.glyph, p.gamma, double(drawn), double(o.width) * double(o.height), alsoDraws);
+  pipelineWhy_ = "--pipeline auto: " + c.why + (cached.file.empty() ? "" : "; calibration in " + printable(cached.file));
+  return c.path;
 }
 
 // The GL objects below are deleted through this session's context, which

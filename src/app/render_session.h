@@ -47,6 +47,9 @@ struct SessionHooks {
   std::function<void(const render::UnderlayVolume&)> underlayLoaded;
   // Default: an offscreen context of o.backend at o.width x o.height.
   std::function<std::unique_ptr<gl::Context>(const RenderOptions&)> makeContext;
+  // Kinds the session must draw besides its own (a viewer script's): what
+  // --pipeline auto chooses among.
+  std::vector<render::GlyphKind> alsoDraws;
 };
 
 class RenderSession {
@@ -102,6 +105,8 @@ class RenderSession {
   std::size_t glyphCount() const { return glyphCount_; }
   double buildMs() const { return buildMs_; }
   double uploadMs() const { return uploadMs_; }
+  // Why --pipeline auto took the session's path ("" when it was not asked).
+  const std::string& pipelineWhy() const { return pipelineWhy_; }
 
  private:
   struct Boxes {  // what the glyphs' records give for one scale
@@ -111,6 +116,10 @@ class RenderSession {
     tensor::FramingBox framing;
   };
   Boxes boxes(const tensor::ResolvedScale& sized) const;
+  // --pipeline auto's path for frames like `p` (app/scale/pipeline_choice.h),
+  // on the context just made: calibrated first where the cache lacks it.
+  std::string autoPipeline(const RenderOptions& o, const render::FrameParams& p,
+                           const std::vector<render::GlyphKind>& alsoDraws);
   // [lo, hi] grown by how much farther a blob reaches than a glyph (render::kindReach).
   void growForBlobs(glm::dvec3& lo, glm::dvec3& hi, const render::FrameParams& p) const;
   // Where the glyphs lie, for the legend's room: made from the records on
@@ -140,6 +149,7 @@ class RenderSession {
   std::unique_ptr<render::GBuffer> target_;
   std::vector<render::SlicePlane*> planes_;
   double buildMs_ = 0.0, uploadMs_ = 0.0;
+  std::string pipelineWhy_;
   const char* command_;
 };
 

@@ -125,13 +125,17 @@ FrameTime timeFrames(const gl::Api& gl, render::GlyphRenderer& r, const render::
   return ft;
 }
 
-render::Camera framing(const tensor::GlyphSet& set, double scale, int w, int h) {
+}  // namespace
+
+render::Camera sweepCamera(const tensor::GlyphSet& set, double scale, int w, int h) {
   const auto [lo, hi] = tensor::glyphBoxWC(set, scale);
   render::CameraDesc d = render::frameBox(lo, hi, render::Projection::Perspective, 30.0, double(w) / h);
   d.eyeWC = d.lookAtWC + glm::length(d.eyeWC - d.lookAtWC) * glm::normalize(glm::dvec3(0.5, -0.7, 1.0));
   d.upWC = {0, 1, 0};
   return render::makeCamera(d, w, h, lo, hi);
 }
+
+namespace {
 
 render::FrameParams paramsFor(const Method& m, double scale, double gamma) {
   render::FrameParams p;
@@ -149,7 +153,7 @@ double coverageErrorPct(const gl::Api& gl, const gl::ShaderLibrary& lib, const M
   const auto f = synth::randomField(64, 3);
   const auto set = tensor::buildGlyphs(f.positions, f.tensors, f.ids);
   const double scale = 0.6;
-  const render::Camera cam = framing(set, scale, 480, 360);
+  const render::Camera cam = sweepCamera(set, scale, 480, 360);
   render::GlyphRenderer r(gl, lib);
   render::GBuffer t(gl, cam.width, cam.height);
   r.upload(set);
@@ -210,7 +214,7 @@ void runScaleSweep(gl::Context& ctx, const ScaleOptions& o, const util::Progress
       set = tensor::buildGlyphs(randomTensors.positions, randomTensors.tensors, randomTensors.ids);
     }
     const double scale = 0.5;  // the largest eigenvalue 1 gives a diameter of one grid spacing
-    const render::Camera cam = framing(set, scale, o.width, o.height);
+    const render::Camera cam = sweepCamera(set, scale, o.width, o.height);
     render::GlyphRenderer r(gl, lib);
     render::GBuffer target(gl, o.width, o.height);
     r.upload(set);

@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "gl/context.h"
+#include "tensor/glyph.h"
+#include "view/camera.h"
 #include "util/progress.h"
 
 namespace tg::app {
@@ -32,6 +34,10 @@ struct ScaleOptions {
 ScaleOptions parseScaleOptions(int argc, const char** argv, ScaleOptions defaults, const std::string& command);
 // Teem's habit: every parameter checked before anything is generated.
 void checkScaleOptions(const ScaleOptions& o);
+
+// The sweep's view of `set` at `scale`: every glyph in a w x h frame, seen
+// obliquely (the calibration of --pipeline auto frames its fields the same).
+render::Camera sweepCamera(const tensor::GlyphSet& set, double scale, int w, int h);
 
 // Runs the sweep on `ctx` (current) and writes the CSV through a temporary
 // file, renamed into place only when every row is written.

@@ -1,0 +1,185 @@
+#include "app/scale/pipeline_calibration.h"
+
+#include <sys/stat.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <stdexcept>
+
+#include <glm/mat3x3.hpp>
+
+#include "app/scale/scale_sweep.h"
+#include "data-synthetic/generators.h"
+#include "io/field/atomic_file.h"
+#include "render/glyph_path.h"
+#include "render/renderer.h"
+
+namespace tg::app {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+// The fastest of `frames` finished frames after a warm-up: the least
+// disturbed by other work on the machine.
+double fastestFrameMs(const gl::Api& gl, render::GlyphRenderer& r, const render::Camera& cam,
+                      const render::FrameParams& p, const render::GBuffer& t, int frames) {
+  r.render(cam, p, t);
+  gl.Finish();
+  double best = INFINITY;
+  for (int k = 0; k < frames; ++k) {
+    const auto t0 = Clock::now();
+    r.render(cam, p, t);
+    gl.Finish();
+    best = std::min(best, std::chrono::duration<double, std::milli>(Clock::now() - t0).count());
+  }
+  return best;
+}
+
+// Least squares over the terms in `use` (fixed, glyphs, pixels); false when
+// singular. Units: ms, thousands of glyphs, megapixels.
+bool fitTerms(const std::vector<double>& g, const std::vector<double>& px, const std::vector<double>& t,
+              const bool use[3], double coef[3], double& residual) {
+  glm::dmat3 ata(0.0);
+  glm::dvec3 atb(0.0);
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const glm::dvec3 row(use[0] ? 1.0 : 0.0, use[1] ? g[i] * 1e-3 : 0.0, use[2] ? px[i] * 1e-6 : 0.0);
+    ata += glm::outerProduct(row, row);
+    atb += row * t[i];
+  }
+  for (int k = 0; k < 3; ++k)
+    if (!use[k]) ata[k][k] = 1.0;  // the unused term's coefficient solves to 0
+  if (std::abs(glm::determinant(ata)) < 1e-12) return false;
+  const glm::dvec3 x = glm::inverse(ata) * atb;
+  residual = 0.0;
+  for (std::size_t i = 0; i < t.size(); ++i) {
+    const double e = x[0] + x[1] * g[i] * 1e-3 + x[2] * px[i] * 1e-6 - t[i];
+    residual += e * e;
+  }
+  for (int k = 0; k < 3; ++k) coef[k] = x[k];
+  return true;
+}
+
+std::string readCache(const std::string& file) {
+  struct stat st {};
+  if (::stat(file.c_str(), &st) != 0) return {};
+  if (!S_ISREG(st.st_mode)) throw std::runtime_error(file + ": not a regular file");
+  if (st.st_size > 64 * 1024) throw std::runtime_error(file + ": " + std::to_string(st.st_size) + " bytes, too large for a calibration cache");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw std::runtime_error(file + ": cannot be read");
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+}  // namespace
+
+PathCost fitPathCost(const std::vector<double>& glyphs, const std::vector<double>& pixels,
+                     const std::vector<double>& frameMs) {
+  if (frameMs.size() < 3 || glyphs.size() != frameMs.size() || pixels.size() != frameMs.size())
+    throw std::invalid_argument("fitPathCost: needs three frames or more, each with its glyphs and pixels");
+  double best[3] = {0, 0, 0}, bestResidual = INFINITY;
+  for (int mask = 1; mask < 8; ++mask) {
+    const bool use[3] = {(mask & 1) != 0, (mask & 2) != 0, (mask & 4) != 0};
+    double coef[3], residual;
+    if (!fitTerms(glyphs, pixels, frameMs, use, coef, residual)) continue;
+    if (coef[0] < 0.0 || coef[1] < 0.0 || coef[2] < 0.0) continue;
+    if (residual < bestResidual) {
+      bestResidual = residual;
+      std::copy(coef, coef + 3, best);
+    }
+  }
+  if (!std::isfinite(bestResidual)) throw std::invalid_argument("fitPathCost: no fit with non-negative costs");
+  return {best[0], best[1], best[2]};
+}
+
+PathCalibration calibratePaths(const gl::Api& gl, const gl::ShaderLibrary& lib, const std::string& key,
+                               const CalibrationPlan& plan) {
+  PathCalibration cal{key, {}};
+  std::map<std::size_t, tensor::GlyphSet> sets;
+  for (const std::size_t n : plan.glyphs) {
+    const io::TensorField f = synth::randomField(n, 7);
+    sets[n] = tensor::buildGlyphs(f.positions, f.tensors, f.ids);
+  }
+  constexpr double kScale = 0.5;  // bench scale's: the largest glyph spans one grid spacing
+  for (const std::string_view path : render::kGlyphPathNames)
+    for (const CostClass cls : {CostClass::ClosedForm, CostClass::March}) {
+      std::vector<double> g, px, t;
+      for (const auto& [n, set] : sets) {
+        render::GlyphRenderer r(gl, lib, {}, path);
+        r.upload(set);
+        for (const auto& [w, h] : plan.sizes) {
+          const render::Camera cam = sweepCamera(set, kScale, w, h);
+          render::GBuffer target(gl, w, h);
+          render::FrameParams p;
+          p.scale = kScale;
+          p.glyph = cls == CostClass::March ? render::GlyphKind::Superquadric : render::GlyphKind::Ellipsoid;
+          p.gamma = 3.0;
+          g.push_back(double(n));
+          px.push_back(double(w) * double(h));
+          t.push_back(fastestFrameMs(gl, r, cam, p, target, plan.frames));
+        }
+      }
+      cal.rows.push_back({std::string(path), cls, fitPathCost(g, px, t)});
+    }
+  return cal;
+}
+
+std::string calibrationCachePath() {
+  auto env = [](const char* name) {
+    const char* v = std::getenv(name);
+    return std::string(v ? v : "");
+  };
+  if (!env("TG_CACHE_DIR").empty()) return env("TG_CACHE_DIR") + "/pipelines.tsv";
+  if (!env("XDG_CACHE_HOME").empty()) return env("XDG_CACHE_HOME") + "/tensorglyph/pipelines.tsv";
+  if (!env("HOME").empty()) return env("HOME") + "/.cache/tensorglyph/pipelines.tsv";
+  return {};
+}
+
+CachedCalibration calibrationFor(const gl::Api& gl, const gl::ShaderLibrary& lib, const std::string& key,
+                                 const std::function<void(const std::string& file)>& calibrating) {
+  CachedCalibration out;
+  out.file = calibrationCachePath();
+  std::vector<PathCalibration> kept;
+  if (!out.file.empty()) {
+    try {
+      const std::string text = readCache(out.file);
+      if (!text.empty()) kept = parseCalibrations(text, out.file);
+    } catch (const std::exception& e) {
+      out.warning = std::string(e.what()) + "; measured again";
+    }
+    for (const PathCalibration& c : kept)
+      if (c.key == key) {
+        out.cal = c;
+        return out;
+      }
+  }
+  if (calibrating) calibrating(out.file);
+  out.cal = calibratePaths(gl, lib, key);
+  out.measured = true;
+  if (out.file.empty()) {
+    out.warning = "no cache directory (TG_CACHE_DIR, XDG_CACHE_HOME and HOME unset): measured for this run only";
+    return out;
+  }
+  std::erase_if(kept, [&](const PathCalibration& c) { return c.key == key; });
+  kept.push_back(out.cal);
+  try {
+    std::error_code ec;
+    std::filesystem::create_directories(std::filesystem::path(out.file).parent_path(), ec);
+    io::AtomicFile f(out.file);
+    const std::string text = formatCalibrations(kept);
+    f.write(text.data(), text.size());
+    f.commit(std::int64_t(text.size()));
+  } catch (const std::exception& e) {
+    out.warning = std::string(e.what()) + ": the calibration is not kept";
+    out.file.clear();
+  }
+  return out;
+}
+
+}  // namespace tg::app

@@ -1,0 +1,52 @@
+#pragma once
+// The measurement behind `--pipeline auto` (app/scale/pipeline_choice.h):
+// frames of random fields (synth random, framed as `bench scale` frames
+// them) on every glyph path, for each cost class at two glyph counts and two
+// frame sizes, fitted per path and class; and the cache file that keeps one
+// such table per GL renderer, driver and core count, so that a machine
+// measures once.
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "app/scale/pipeline_choice.h"
+#include "gl/loader.h"
+#include "gl/shader_library.h"
+
+namespace tg::app {
+
+struct CalibrationPlan {
+  std::vector<std::size_t> glyphs{2000, 16000};
+  std::vector<std::pair<int, int>> sizes{{320, 240}, {800, 600}};
+  int frames = 2;  // timed, after one warm-up; the fastest is kept
+};
+
+// Every path and class of the plan on the current context, fitted.
+PathCalibration calibratePaths(const gl::Api& gl, const gl::ShaderLibrary& lib, const std::string& key,
+                               const CalibrationPlan& plan = {});
+
+// Least squares for fixed, per-glyph and per-pixel costs with none negative
+// (the subset of terms whose fit is non-negative and leaves the least
+// residual): frames[i] ms at glyphs[i], pixels[i]. Needs 3 points or more.
+PathCost fitPathCost(const std::vector<double>& glyphs, const std::vector<double>& pixels,
+                     const std::vector<double>& frameMs);
+
+// The cache file: $TG_CACHE_DIR/pipelines.tsv, else
+// $XDG_CACHE_HOME/tensorglyph/pipelines.tsv, else
+// $HOME/.cache/tensorglyph/pipelines.tsv; "" when none of those is set.
+std::string calibrationCachePath();
+
+struct CachedCalibration {
+  PathCalibration cal;
+  std::string file;     // where it is kept ("" when not kept)
+  bool measured = false;  // measured by this call
+  std::string warning;  // a cache that could not be read or written, for one stderr line
+};
+// The calibration for `key` from the cache, or measured now (after
+// `calibrating()`, which may tell the user) and written into it through a
+// temporary file, the other keys' rows kept. A cache that cannot be read is
+// measured over and rewritten, and says so in `warning`.
+CachedCalibration calibrationFor(const gl::Api& gl, const gl::ShaderLibrary& lib, const std::string& key,
+                                 const std::function<void(const std::string& file)>& calibrating);
+
+}  // namespace tg::app

@@ -1,0 +1,121 @@
+// Tier 2: --pipeline auto through the real binary, with calibration caches
+// written here (TG_CACHE_DIR), so that the choice is fixed by the table:
+// each table's choice is the path named, draws that path's picture, and
+// --verbose says why.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "cli/cli_run.h"
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using tg::test::CmdResult;
+
+fs::path dir() { return tg::test::cliDir("pipeline"); }
+
+CmdResult run(const std::string& args) { return tg::test::runBinary(args, dir()); }
+
+std::string slurpFile(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  return {std::istreambuf_iterator<char>(in), {}};
+}
+
+// The key this machine's renderer gets, from a run that calibrates into `cache`.
+std::string keyFromCalibration(const fs::path& cache) {
+  const std::string text = slurpFile(cache / "pipelines.tsv");
+  const std::size_t row = text.find('\n', text.find('\n') + 1) + 1;
+  return text.substr(row, text.find('\t', row) - row);
+}
+
+void writeTable(const fs::path& cache, const std::string& key, double rasterGlyphUs, double cpuGlyphUs) {
+  fs::create_directories(cache);
+  std::ofstream f(cache / "pipelines.tsv", std::ios::trunc);
+  f << "# tensorglyph --pipeline auto calibration 1\n"
+    << "key\tpath\tclass\tfixed_ms\tglyph_us\tmegapixel_ms\n";
+  for (const char* cls : {"closed-form", "march"})
+    f << key << "\traster\t" << cls << "\t1\t" << rasterGlyphUs << "\t10\n"
+      << key << "\tcpu\t" << cls << "\t1\t" << cpuGlyphUs << "\t10\n";
+}
+
+struct CacheDir {
+  explicit CacheDir(const fs::path& p) : path(p) {
+    fs::remove_all(p);
+    ::setenv("TG_CACHE_DIR", p.c_str(), 1);
+  }
+  ~CacheDir() { ::unsetenv("TG_CACHE_DIR"); }
+  fs::path path;
+};
+
+}  // namespace
+
+TEST(PipelineCli, AutoTakesThePathItsTablePredictsFastest) {
+  const CacheDir cache(dir() / "cache");
+  const std::string base = " --size 160 120 --no-legend --verbose";
+  const fs::path out = dir() / "auto.png", cpu = dir() / "cpu.png", raster = dir() / "raster.png";
+  // No table yet: measured once, kept, and said so.
+  const CmdResult first = run("render -o " + out.string() + base + " --pipeline auto");
+  ASSERT_EQ(first.code, 0) << first.err;
+  EXPECT_NE(first.err.find("--pipeline auto: measuring the glyph paths on this renderer, once (kept in " +
+                           (cache.path / "pipelines.tsv").string() + ")"),
+            std::string::npos)
+      << first.err;
+  const std::string key = keyFromCalibration(cache.path);
+  ASSERT_NE(key.find("cores | LP_NUM_THREADS"), std::string::npos) << key;
+  const CmdResult again = run("render -o " + out.string() + base + " --pipeline auto");
+  EXPECT_EQ(again.err.find("measuring"), std::string::npos) << again.err;
+
+  ASSERT_EQ(run("render -o " + cpu.string() + base + " --pipeline cpu").code, 0);
+  ASSERT_EQ(run("render -o " + raster.string() + base + " --pipeline raster").code, 0);
+  for (const auto& [rasterUs, cpuUs, want] : {std::tuple{10.0, 1.0, "cpu"}, std::tuple{1.0, 10.0, "raster"}}) {
+    writeTable(cache.path, key, rasterUs, cpuUs);
+    const CmdResult r = run("render -o " + out.string() + base + " --pipeline auto");
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find(std::string("glyph path: ") + want + " (--pipeline auto: predicted"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("measuring"), std::string::npos) << r.err;
+    EXPECT_EQ(slurpFile(out), slurpFile(std::string(want) == "cpu" ? cpu : raster)) << want;
+  }
+  // Another renderer's rows are no answer for this one: measured, and both kept.
+  writeTable(cache.path, "some GPU | 4.6 | 64 cores | LP_NUM_THREADS unset", 10.0, 1.0);
+  const CmdResult other = run("render -o " + out.string() + base + " --pipeline auto");
+  ASSERT_EQ(other.code, 0) << other.err;
+  EXPECT_NE(other.err.find("measuring"), std::string::npos) << other.err;
+  const std::string kept = slurpFile(cache.path / "pipelines.tsv");
+  EXPECT_NE(kept.find("some GPU"), std::string::npos);
+  EXPECT_NE(kept.find(key), std::string::npos);
+}
+
+TEST(PipelineCli, KindsOnOnePathAndBadCachesNeedNoTable) {
+  const CacheDir cache(dir() / "cache-kinds");
+  const fs::path out = dir() / "kinds.png";
+  // Cylinders are drawn by the raster path alone, blobs by the cpu path: nothing to measure.
+  for (const auto& [glyph, path] : {std::pair{"cylinder", "raster"}, std::pair{"blob", "cpu"}}) {
+    const CmdResult r = run("render -o " + out.string() + " --size 96 72 --verbose --pipeline auto --glyph " + glyph);
+    ASSERT_EQ(r.code, 0) << r.err;
+    EXPECT_NE(r.err.find(std::string("glyph path: ") + path + " (--pipeline auto: the only path that draws " + glyph),
+              std::string::npos)
+        << r.err;
+  }
+  EXPECT_FALSE(fs::exists(cache.path / "pipelines.tsv"));
+  // A cache that is not one: one line names it and the problem, and the paths are measured again.
+  fs::create_directories(cache.path);
+  std::ofstream(cache.path / "pipelines.tsv") << "not a table\n";
+  const CmdResult r = run("render -o " + out.string() + " --size 96 72 --pipeline auto");
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("--pipeline auto: " + (cache.path / "pipelines.tsv").string() +
+                       ":1: is not a tensorglyph calibration cache"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(slurpFile(cache.path / "pipelines.tsv").rfind("# tensorglyph --pipeline auto calibration 1\n", 0), 0u);
+  const CmdResult bad = run("render -o " + out.string() + " --pipeline fastest");
+  EXPECT_EQ(bad.code, 2);
+  EXPECT_NE(bad.err.find("--pipeline: unknown glyph path \"fastest\"; choose raster, cpu or auto"), std::string::npos)
+      << bad.err;
+}
