@@ -75,6 +75,13 @@ read -r tg_s tg_mb <tg-helix.med
 "$bin" render "$helix" -o tg-helix.png --glyph superquadric --gamma 3 --size 512 512 --scale-mode absolute --scale 0.12 --eye $eye \
   --look-at 0 0 0 --up 0 0 1 --fov 30 --background 0 0 0 0 --repeat 7 --verbose 2>tg-helix-frames.err
 tg_ms=$(ms tg-helix-frames.err)
+# The same frames on the cpu glyph path (issue 33's target: 10x echoRTRender).
+measure tg-helix-cpu "$bin" render "$helix" -o tg-helix-cpu.png --glyph superquadric --gamma 3 --pipeline cpu \
+  --size 512 512 --scale-mode absolute --scale 0.12 --eye $eye --look-at 0 0 0 --up 0 0 1 --fov 30 --background 0 0 0 0
+read -r tgc_s tgc_mb <tg-helix-cpu.med
+"$bin" render "$helix" -o tg-helix-cpu.png --glyph superquadric --gamma 3 --pipeline cpu --size 512 512 --scale-mode absolute \
+  --scale 0.12 --eye $eye --look-at 0 0 0 --up 0 0 1 --fov 30 --background 0 0 0 0 --repeat 7 --verbose 2>tg-helix-cpu-frames.err
+tgc_ms=$(ms tg-helix-cpu-frames.err)
 measure teem-helix teem-tend glyph -rt -i teem-helix.nhdr -o teem-helix.nrrd -g superquad \
   -sh 3 -gsc 0.06 -atr -1 -ctr 0.5 -fr $eye -at 0 0 0 -up 0 0 1 -fv 30 -dn -12 -df 13.4 -is 512 512 -ns 1 -nt 2
 read -r te_s te_mb <teem-helix.med
@@ -82,6 +89,8 @@ te_ms=$(sed -n 's/.*echoRTRender: time = \([0-9.]*\).*/\1/p' teem-helix.errs | m
 row "dt-helix, 59,280 superquadrics, 512x512" "tensorglyph, Kindlmann superquadrics (gamma 3)" "$tg_s" "$tg_ms" "$tg_mb"
 row "" "\`tend glyph -rt -nt 2\`, Kindlmann superquadrics (gamma 3)" "$te_s" "$te_ms (echoRTRender)" "$te_mb"
 row "" "Teem / tensorglyph" "$(ratio "$te_s" "$tg_s")" "$(ratio "$te_ms" "$tg_ms")" "$(ratio "$te_mb" "$tg_mb")"
+row "" "tensorglyph \`--pipeline cpu\`, the same superquadrics" "$tgc_s" "$tgc_ms" "$tgc_mb"
+row "" "Teem / tensorglyph cpu" "$(ratio "$te_s" "$tgc_s")" "$(ratio "$te_ms" "$tgc_ms")" "$(ratio "$te_mb" "$tgc_mb")"
 # Teem's image V axis points up: its row 0 is our bottom row.
 teem-unu slice -i teem-helix.nrrd -a 0 -p 3 | teem-unu 2op gt - 0.5 | teem-unu flip -a 1 -o teem-helix-mask.nrrd
 ours_mask tg-helix.png tg-helix-mask.nrrd
