@@ -1,11 +1,22 @@
 #version 450 core
 // Exact ray-box (three slabs) or, with TG_CYLINDER, ray-cylinder (the
 // quadric and its two cap planes) intersection per pixel into the G-buffer
-// (lib/prism.glsl). No march: one closed-form span per pixel.
+// (lib/prism.glsl's castPrism, which the CPU glyph path runs too). No
+// march: one closed-form span per pixel.
 #pragma tg option TG_CYLINDER
 #include "lib/camera.glsl"
+#include "lib/glyph_record_type.glsl"
+#include "lib/ellipsoid.glsl"
+#include "lib/glyph_size.glsl"
+#include "lib/selection.glsl"
 #include "lib/prism.glsl"
 #include "lib/color.glsl"
+
+#ifdef TG_CYLINDER
+const bool kCylinder = true;
+#else
+const bool kCylinder = false;
+#endif
 
 uniform int uColorMode;
 
@@ -22,31 +33,11 @@ layout(location = 1) out vec4 oNormalWC;
 layout(location = 2) out uint oId;
 
 void main() {
-  vec3 originVC, dirVC;
-  rayThroughFragment(gl_FragCoord.xy, originVC, dirVC);
-  // Restart at the closest approach to the centre, as for ellipsoids: GC
-  // coordinates stay O(1) on every ray that can hit.
-  float tc = dot(fin.centreVC - originVC, dirVC) / dot(dirVC, dirVC);
-  vec3 o = fin.gcFromVC * (originVC + tc * dirVC - fin.centreVC);
-  vec3 d = fin.gcFromVC * dirVC;
-  vec2 span;
-  vec3 nIn, nOut;
-#ifdef TG_CYLINDER
-  if (!cylinderSpan(o, d, span, nIn, nOut)) discard;
-#else
-  if (!boxSpan(o, d, span, nIn, nOut)) discard;
-#endif
-  // First surface at or beyond the near plane: from inside, the far wall.
-  bool entry = tc + span.x >= uNearVC;
-  float t = entry ? span.x : span.y;
-  float depth = tc + t;
-  if (!(depth >= uNearVC) || (uOrtho == 1 && depth > uFarVC)) discard;
-
-  vec3 nGC = entry ? nIn : nOut;
-  vec3 nVC = transpose(fin.gcFromVC) * nGC;  // inverse transpose of GC -> VC
-  vec3 nWC = normalize(transpose(mat3(uViewWCVC)) * nVC);
+  float depth;
+  vec3 pGC, nGC;
+  if (!castPrism(gl_FragCoord.xy, fin.centreVC, fin.gcFromVC, kCylinder, depth, pGC, nGC)) discard;
   gl_FragDepth = windowDepthFromViewDepth(depth);
-  oAlbedo = vec4(uColorMode == kColorSign ? signColor(fin.color, o + t * d, fin.gcFromVC) : fin.color, 1.0);
-  oNormalWC = vec4(nWC, 0.0);
+  oAlbedo = vec4(uColorMode == kColorSign ? signColor(fin.color, pGC, fin.gcFromVC) : fin.color, 1.0);
+  oNormalWC = vec4(prismNormalWC(fin.gcFromVC, nGC), 0.0);
   oId = fin.id;
 }

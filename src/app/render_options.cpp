@@ -60,7 +60,7 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
       .action([&](Args a) { o.samples = int(parseInt(a[0], a[1])); });
   ap.setGroup("glyphs");
   ap.arg("--pipeline NAME").reloads().help("how glyphs are drawn: raster (default; a ray-cast sprite per glyph), "
-                                            "cpu (tiles cast on every core; ellipsoids, superquadrics and blobs) or "
+                                            "cpu (tiles cast on every core; every kind, and the only path for blobs) or "
                                             "auto (the path predicted fastest for this scene from a calibration "
                                             "measured once per renderer and kept in the cache; --verbose says why)")
       .oneOf(pipelineNames())

@@ -28,8 +28,8 @@ static_assert(sizeof(glsl::GlyphRecord) == sizeof(tensor::GlyphRecord));
 
 using Candidate = CastCandidate;
 
-// CastShape::kind: the ellipsoid cast, or 1 + the march variant.
-constexpr std::uint8_t kCastEllipsoid = 0;
+// CastShape::kind: the ellipsoid cast, 1 + the march variant, or a prism's.
+constexpr std::uint8_t kCastEllipsoid = 0, kCastCylinder = 4, kCastBox = 5;
 std::uint8_t castKindOf(MarchVariant v) { return std::uint8_t(1 + int(v)); }
 MarchVariant variantOfKind(std::uint8_t kind) { return MarchVariant(int(kind) - 1); }
 
@@ -99,7 +99,11 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
   // Set-up, the vertex stage's: part k writes its glyphs, in record order,
   // from its first record's slot on; then the parts close up.
   const std::size_t m = records.size();
-  const bool marching = march.marches();
+  // Teem's cylinders and boxes: one closed form for every group (prismSprite, castPrism).
+  const bool prisms = glyphKind(p.glyph).draw == KindDraw::ClosedForm;
+  const bool cylinders = p.glyph == GlyphKind::Cylinder;
+  // Frames whose glyphs take more than the ellipsoid's cast keep each one's shape.
+  const bool marching = prisms || march.marches();
   if (out.candidates.size() < m) {
     out.candidates.resize(m);
     out.rects.resize(m);
@@ -109,6 +113,13 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
     glsl::GlyphRecord g;
     std::memcpy(&g, &records[i], sizeof g);
     PixelRect& r = out.rects[at];
+    if (prisms) {
+      glsl::PrismSprite s;
+      if (!general.prismSprite(g, cylinders, s) || !pixelsOf(s.rectNDC, w, h, r)) return false;
+      out.shapes[at] = {glsl::vec3(0.0f), cylinders ? kCastCylinder : kCastBox, std::uint8_t(s.src.z)};
+      out.candidates[at] = {s.centreVC, s.gcFromVC, s.nearVC, std::uint32_t(i)};
+      return true;
+    }
     const std::optional<MarchVariant> v = march.variantOf(records[i]);
     if (!v) {
       glsl::EllipsoidSprite s;
@@ -206,6 +217,9 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
             glsl::vec3 pGC, grad(0.0f);
             if (kind == kCastEllipsoid) {
               if (!sh.castEllipsoid(fragDC, c.centreVC, c.gcFromVC, depthVC, pGC)) continue;
+            } else if (kind >= kCastCylinder) {
+              // grad holds the face's GC normal.
+              if (!sh.castPrism(fragDC, c.centreVC, c.gcFromVC, kind == kCastCylinder, depthVC, pGC, grad)) continue;
             } else {
               const bool hit = withVariant(variantOfKind(kind), general, convex, mixed, [&](auto& sq) {
                 const glsl::vec3 shape = shapes[k].shape;
@@ -239,9 +253,12 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
           const std::size_t px = std::size_t(y) * std::size_t(w) + std::size_t(x);
           out.windowDepth[px] = bestWin[q];
           out.record[px] = c.record + 1;
-          const bool ellipsoid = !marching || shapes[best[q]].kind == kCastEllipsoid;
-          out.normalWC[px] = glsl::vec4(ellipsoid ? sh.ellipsoidNormalWC(c.gcFromVC, bestGC[q])
-                                                  : general.superquadricNormalWC(c.gcFromVC, bestGrad[q]), 0.0f);
+          const std::uint8_t kind = marching ? shapes[best[q]].kind : kCastEllipsoid;
+          const bool ellipsoid = kind == kCastEllipsoid;
+          out.normalWC[px] = glsl::vec4(ellipsoid            ? sh.ellipsoidNormalWC(c.gcFromVC, bestGC[q])
+                                        : kind >= kCastCylinder ? sh.prismNormalWC(c.gcFromVC, bestGrad[q])
+                                                              : general.superquadricNormalWC(c.gcFromVC, bestGrad[q]),
+                                        0.0f);
           if (hitGC)
             out.hitGC[px] = glsl::vec4(ellipsoid ? bestGC[q] : ellipsoidOrderGC(bestGC[q], shapes[best[q]].axis), 0.0f);
         }
@@ -324,10 +341,8 @@ void CpuGlyphs::allocate(int width, int height) {
 }
 
 void CpuGlyphs::drawView(const Camera& cam, const FrameParams& p, const GBuffer& target) {
-  if (glyphKind(p.glyph).draw == KindDraw::ClosedForm || p.tessellation > 0)
-    throw std::invalid_argument("GlyphRenderer::render: the cpu glyph path draws ellipsoids, superquadrics and blobs only (this frame: " +
-                                std::string(p.tessellation > 0 ? "tessellated " : "") +
-                                std::string(glyphKind(p.glyph).name) + "); use the raster path");
+  if (p.tessellation > 0)
+    throw std::invalid_argument("GlyphRenderer::render: the cpu glyph path casts rays; a tessellated frame needs the raster path");
   if (target.width() != cam.width || target.height() != cam.height)
     throw std::invalid_argument("GlyphRenderer::render: the target is not the camera's size");
   const bool sign = p.color == ColorMode::Sign;

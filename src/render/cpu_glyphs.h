@@ -13,9 +13,10 @@
 // Superquadric frames cast each group as the raster path draws it: spheres
 // (at gamma 0 definite glyphs too) as ellipsoids, the rest by the Newton
 // march's variant for their group (lib/superquadric_sprite.glsl's set-up,
-// lib/superquadric_cast.glsl's cast). The closed-form kinds (cylinder,
-// box) and the tessellated baseline are refused. The key light's shadow
-// map is drawn by a raster path built on the first frame with shadows.
+// lib/superquadric_cast.glsl's cast); Teem's cylinders and boxes by
+// lib/prism.glsl's prismSprite and castPrism, as prism.vert and prism.frag.
+// The tessellated baseline is refused. The key light's shadow map is drawn
+// by a raster path built on the first frame with shadows.
 //
 // Blob frames (GlyphKind::Blob) cast the sum of the glyphs' bumps instead
 // (render/cpu_blobs.h), into the same textures; their shadow map is cast

@@ -70,6 +70,7 @@ struct Shaders {
 #include "shaders/lib/ellipsoid_sprite.glsl"
 #include "shaders/lib/superquadric.glsl"
 #include "shaders/lib/blob.glsl"
+#include "shaders/lib/prism.glsl"
 
   // The uniforms of camera.glsl, as render/camera_uniforms.cpp sets them.
   void setCamera(const Camera& cam);
@@ -100,6 +101,7 @@ struct MarchMixed : Shaders {
 
 using GlyphRecord = Shaders::GlyphRecord;
 using EllipsoidSprite = Shaders::EllipsoidSprite;
+using PrismSprite = Shaders::PrismSprite;
 using BlobBump = Shaders::BlobBump;
 using SuperquadricSprite = MarchGeneral::SuperquadricSprite;
 using SuperquadricRay = MarchGeneral::SuperquadricRay;

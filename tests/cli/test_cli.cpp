@@ -135,7 +135,6 @@ TEST(Cli, BadInputFailsWithOneLineAndNoOutput) {
       {"render -o " + (d / "x.notanimage").string(), "no image format"},
       {"render -o " + out.string() + " --backend vulkan", "backend"},
       {"render -o " + out.string() + " --pipeline tiles", "--pipeline: unknown glyph path \"tiles\"; choose raster, cpu or auto"},
-      {"render -o " + out.string() + " --pipeline cpu --glyph box", "--pipeline cpu draws ellipsoid, superquadric and blob glyphs only; this render draws box"},
       {"render -o " + out.string() + " --pipeline cpu --glyph superquadric --tessellate 8", "--pipeline cpu casts rays; --tessellate draws a mesh"},
       {"render", "-o OUT"},
       {"info", "INPUT"},

@@ -92,17 +92,19 @@ TEST(PipelineCli, AutoTakesThePathItsTablePredictsFastest) {
   EXPECT_NE(kept.find(key), std::string::npos);
 }
 
-TEST(PipelineCli, KindsOnOnePathAndBadCachesNeedNoTable) {
+TEST(PipelineCli, KindsOnOnePathNeedNoTableAndBadCachesAreMeasuredAgain) {
   const CacheDir cache(dir() / "cache-kinds");
   const fs::path out = dir() / "kinds.png";
-  // Cylinders are drawn by the raster path alone, blobs by the cpu path: nothing to measure.
-  for (const auto& [glyph, path] : {std::pair{"cylinder", "raster"}, std::pair{"blob", "cpu"}}) {
-    const CmdResult r = run("render -o " + out.string() + " --size 96 72 --verbose --pipeline auto --glyph " + glyph);
-    ASSERT_EQ(r.code, 0) << r.err;
-    EXPECT_NE(r.err.find(std::string("glyph path: ") + path + " (--pipeline auto: the only path that draws " + glyph),
-              std::string::npos)
-        << r.err;
-  }
+  // Blobs are drawn by the cpu path alone, a tessellated baseline by the raster path: nothing to measure.
+  const std::string small = "render -o " + out.string() + " --size 96 72 --verbose --pipeline auto";
+  const CmdResult blob = run(small + " --glyph blob");
+  ASSERT_EQ(blob.code, 0) << blob.err;
+  EXPECT_NE(blob.err.find("glyph path: cpu (--pipeline auto: the only path that draws blob glyphs here)"), std::string::npos)
+      << blob.err;
+  const CmdResult mesh = run(small + " --glyph superquadric --tessellate 8");
+  ASSERT_EQ(mesh.code, 0) << mesh.err;
+  EXPECT_NE(mesh.err.find("glyph path: raster (--pipeline auto: --tessellate draws on the raster path)"), std::string::npos)
+      << mesh.err;
   EXPECT_FALSE(fs::exists(cache.path / "pipelines.tsv"));
   // A cache that is not one: one line names it and the problem, and the paths are measured again.
   fs::create_directories(cache.path);
