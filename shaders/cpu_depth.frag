@@ -1,6 +1,6 @@
 #version 450 core
 // The CPU glyph path's casts into a depth-only target: the key light's
-// shadow map of blobs (render/cpu_glyphs.h), which no raster program casts.
+// shadow map (render/cpu_glyphs.h), cast from the light as the view is.
 // Window depth where a cast hit; elsewhere the cleared map stays.
 #include "lib/bindings.h"
 

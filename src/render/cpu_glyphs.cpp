@@ -296,17 +296,15 @@ void CpuGlyphs::upload(const tensor::GlyphSet& set) {
     gl_.CreateBuffers(1, &buffer_);
     gl_.NamedBufferStorage(buffer_, GLsizeiptr(set.glyphs.size() * sizeof(tensor::GlyphRecord)), set.glyphs.data(), 0);
   }
-  if (shadowCasters_) shadowCasters_->upload(set);
   gl::checkError(gl_, "GlyphRenderer::upload");
 }
 
 void CpuGlyphs::setParams(const FrameParams& p, const FrameParams* old) {
   setGlyphUniforms(program_, p, old);
-  if (shadowCasters_) shadowCasters_->setParams(p, old);
 }
 
 // The colour inputs as the raster path takes them (RasterGlyphs), for the
-// same colour code in cpu_gbuffer.frag; the shadow casters draw no colour.
+// same colour code in cpu_gbuffer.frag.
 void CpuGlyphs::setColorWindow(glm::dvec2 window) {
   colorWindow_ = glm::vec2(window);
   program_.set("uColorWindow", colorWindow_);
@@ -400,8 +398,12 @@ std::pair<glm::dvec3, glm::dvec3> CpuGlyphs::castersBoxWC(const FrameParams& p) 
   return render::castersBoxWC(set_.boundsMinWC, set_.boundsMaxWC, set_.maxAbsEigenvalue, p);
 }
 
-void CpuGlyphs::castShadowBlobs(const Camera& light, const FrameParams& p, ShadowPass& shadow) {
-  castBlobs(set_.glyphs, light, p, false, threads_, lightCasts_, blobs_);
+void CpuGlyphs::castShadowMap(const Camera& light, const FrameParams& p, ShadowPass& shadow) {
+  // Into the view's buffers, which the view's casts refill after: one set
+  // of per-glyph set-ups, not two (2 M glyphs: 144 MB).
+  casts_.only.clear();
+  if (glyphKind(p.glyph).draw == KindDraw::Blob) castBlobs(set_.glyphs, light, p, false, threads_, casts_, blobs_);
+  else castGlyphs(set_.glyphs, light, p, false, threads_, casts_);
   if (!depthProgram_)
     depthProgram_ = std::make_unique<gl::Program>(
         gl_, lib_, std::initializer_list<gl::StageSource>{{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "cpu_depth.frag"}});
@@ -418,9 +420,9 @@ void CpuGlyphs::castShadowBlobs(const Camera& light, const FrameParams& p, Shado
   }
   shadow.beginMap(light.width);
   gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  gl_.TextureSubImage2D(lightTex_[0], 0, 0, 0, light.width, light.height, GL_RED, GL_FLOAT, lightCasts_.windowDepth.data());
+  gl_.TextureSubImage2D(lightTex_[0], 0, 0, 0, light.width, light.height, GL_RED, GL_FLOAT, casts_.windowDepth.data());
   gl_.TextureSubImage2D(lightTex_[1], 0, 0, 0, light.width, light.height, GL_RED_INTEGER, GL_UNSIGNED_INT,
-                        lightCasts_.record.data());
+                        casts_.record.data());
   gl_.BindTextureUnit(TG_UNIT_CPU_DEPTH, lightTex_[0]);
   gl_.BindTextureUnit(TG_UNIT_CPU_RECORD, lightTex_[1]);
   gl_.Enable(GL_DEPTH_TEST);
@@ -430,28 +432,18 @@ void CpuGlyphs::castShadowBlobs(const Camera& light, const FrameParams& p, Shado
   gl_.BindVertexArray(vao_);
   gl_.DrawArrays(GL_TRIANGLES, 0, 3);
   gl_.DepthFunc(GL_GREATER);
-  gl::checkError(gl_, "CpuGlyphs::castShadowBlobs");
+  gl::checkError(gl_, "CpuGlyphs::castShadowMap");
 }
 
 void CpuGlyphs::drawShadowCasters(const Camera& light, const FrameParams& p, ShadowPass& shadow) {
-  if (glyphKind(p.glyph).draw == KindDraw::Blob) {
-    castShadowBlobs(light, p, shadow);
-    return;
-  }
-  if (!shadowCasters_) {
-    shadowCasters_ = std::make_unique<RasterGlyphs>(gl_, lib_);
-    shadowCasters_->upload(set_);
-    shadowCasters_->setParams(p, nullptr);
-  }
-  shadowCasters_->drawShadowCasters(light, p, shadow);
+  castShadowMap(light, p, shadow);
 }
 
 std::size_t CpuGlyphs::gpuBytes() const {
-  const std::size_t pixels = std::size_t(casts_.width) * std::size_t(casts_.height);
+  const std::size_t pixels = std::size_t(texWidth_) * std::size_t(texHeight_);
   const std::size_t lightPixels = std::size_t(lightSize_) * std::size_t(lightSize_);
   return set_.glyphs.size() * (sizeof(tensor::GlyphRecord) + (scalars_ ? sizeof(float) : 0)) + (tex_[0] ? pixels * 40 : 0) +
-         (lightTex_[0] ? lightPixels * 8 : 0) +
-         (shadowCasters_ ? shadowCasters_->gpuBytes() : 0);
+         (lightTex_[0] ? lightPixels * 8 : 0);
 }
 
 }  // namespace tg::render

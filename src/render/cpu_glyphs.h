@@ -15,12 +15,11 @@
 // march's variant for their group (lib/superquadric_sprite.glsl's set-up,
 // lib/superquadric_cast.glsl's cast); Teem's cylinders and boxes by
 // lib/prism.glsl's prismSprite and castPrism, as prism.vert and prism.frag.
-// The tessellated baseline is refused. The key light's shadow map is drawn
-// by a raster path built on the first frame with shadows.
+// The tessellated baseline is refused. The key light's shadow map is cast
+// the same way from the light and written by cpu_depth.frag.
 //
 // Blob frames (GlyphKind::Blob) cast the sum of the glyphs' bumps instead
-// (render/cpu_blobs.h), into the same textures; their shadow map is cast
-// the same way from the light and written by cpu_depth.frag.
+// (render/cpu_blobs.h), into the same textures and shadow map.
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -34,7 +33,6 @@
 
 namespace tg::render {
 
-class RasterGlyphs;
 struct BlobCandidate;
 
 // A glyph that some pixel centre may see: what its fragments would receive.
@@ -104,14 +102,13 @@ class CpuGlyphs final : public GlyphPath {
  private:
   // The casts' textures at width x height, reallocated when the size changes.
   void allocate(int width, int height);
-  // Blob frames' shadow map: the casts from `light`, depth only.
-  void castShadowBlobs(const Camera& light, const FrameParams& p, ShadowPass& shadow);
+  // The shadow map: the casts from `light`, depth only.
+  void castShadowMap(const Camera& light, const FrameParams& p, ShadowPass& shadow);
 
   const gl::Api& gl_;
   const gl::ShaderLibrary& lib_;
   gl::Program program_;
-  tensor::GlyphSet set_;  // the records, kept for the casts (and a raster path for shadows)
-  std::unique_ptr<RasterGlyphs> shadowCasters_;  // built on the first frame with shadows
+  tensor::GlyphSet set_;  // the records, kept for the casts
   CpuCasts casts_;
   // The last centre frame's records and view, whose silhouettes an
   // anti-aliasing sample of the same view casts alone.
@@ -119,7 +116,6 @@ class CpuGlyphs final : public GlyphPath {
   glm::dmat4 centreView_{0.0};
   std::vector<BlobCandidate> blobs_;  // blob frames' set-up, kept between frames
   std::unique_ptr<gl::Program> depthProgram_;  // cpu_depth.frag, built by the first blob shadow map
-  CpuCasts lightCasts_;
   GLuint lightTex_[2] = {};  // depth, record: cpu_depth.frag's inputs
   int lightSize_ = 0;
   GLuint buffer_ = 0, vao_ = 0, scalars_ = 0;  // scalars_: ColorMode::Array's values, by record
