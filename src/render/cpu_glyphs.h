@@ -108,7 +108,8 @@ class CpuGlyphs final : public GlyphPath {
   const gl::Api& gl_;
   const gl::ShaderLibrary& lib_;
   gl::Program program_;
-  tensor::GlyphSet set_;  // the records, kept for the casts
+  tensor::GlyphSet set_;  // bounds and counts; the records only where records_ is not the mapped buffer
+  std::span<const tensor::GlyphRecord> records_;  // what the casts read: buffer_ mapped, or set_'s
   CpuCasts casts_;
   // The last centre frame's records and view, whose silhouettes an
   // anti-aliasing sample of the same view casts alone.
