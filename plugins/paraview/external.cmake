@@ -3,7 +3,8 @@
 # are named like the system VTK 9.1 targets the CLI uses, so the plugin is a
 # CMake project of its own (plugins/paraview/CMakeLists.txt) that links the
 # render core built here: tg_scale (the option ranges and their
-# messages), tg_render, tg_gl with the embedded shaders, tg_ref,
+# messages, and --pipeline auto's calibration, with tg_synth's random
+# fields), tg_render, tg_gl with the embedded shaders, tg_ref,
 # tg_view, tg_tensor, the VTK-free tg_field and tg_util. Nothing else crosses.
 find_file(TG_PARAVIEW_CONFIG ParaViewConfig.cmake paraview-config.cmake
   PATH_SUFFIXES cmake/paraview-5.11 lib/cmake/paraview-5.11 lib/x86_64-linux-gnu/cmake/paraview-5.11)
@@ -20,7 +21,7 @@ if(TG_PARAVIEW_PLUGIN)
   endif()
   get_filename_component(_tg_pv_dir ${TG_PARAVIEW_CONFIG} DIRECTORY)
   # The plugin is a shared object: the core it links goes in with it.
-  set(_tg_pv_libs tg_scale tg_io tg_render tg_gl tg_field tg_ref tg_view tg_tensor tg_util)
+  set(_tg_pv_libs tg_scale tg_synth tg_io tg_render tg_gl tg_field tg_ref tg_view tg_tensor tg_util)
   set(_tg_pv_lib_args "")
   foreach(l ${_tg_pv_libs})
     string(TOUPPER ${l} _tg_pv_var)

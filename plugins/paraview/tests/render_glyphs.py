@@ -103,6 +103,7 @@ def main():
     ap.add_argument("--set", nargs=2, action="append", default=[], metavar=("PROPERTY", "VALUE"))
     ap.add_argument("--view-set", nargs=2, action="append", default=[], metavar=("PROPERTY", "VALUE"))
     ap.add_argument("--representations-out")
+    ap.add_argument("--glyph-path-out", help="write the glyph path the frame drew on (TensorGlyphPath)")
     ap.add_argument("--mask-array")
     ap.add_argument("--tensors")
     ap.add_argument("--color-by")
@@ -244,6 +245,10 @@ def main():
         with open(a.uploads_out, "w") as f:
             for k, n in enumerate(uploads):
                 f.write("uploads %d %d\n" % (k, n))
+    if a.glyph_path_out:
+        disp.UpdatePropertyInformation()
+        with open(a.glyph_path_out, "w") as f:
+            f.write("glyph_path %s\n" % disp.GetPropertyValue("TensorGlyphPath"))
     if a.legend_out:
         legend["md_range_of_input"] = md_range(reader)
         with open(a.legend_out, "w") as f:

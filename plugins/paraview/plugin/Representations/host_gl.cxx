@@ -61,6 +61,7 @@ HostState::HostState(const HostGL& host) : host_(host) {
   gl.GetIntegerv(GL_BLEND_DST_ALPHA, &blendDstA_);
   gl.GetIntegerv(GL_DRAW_INDIRECT_BUFFER_BINDING, &indirect_);
   gl.GetIntegerv(GL_PACK_ALIGNMENT, &packAlignment_);
+  gl.GetIntegerv(GL_UNPACK_ALIGNMENT, &unpackAlignment_);  // the cpu path's uploads change it
   GLint b = 0;
   auto flag = [&](GLenum e, GLboolean& out) {
     gl.GetIntegerv(e, &b);
@@ -95,6 +96,7 @@ HostState::~HostState() {
   gl.BlendFuncSeparate(GLenum(blendSrcRgb_), GLenum(blendDstRgb_), GLenum(blendSrcA_), GLenum(blendDstA_));
   gl.BindBuffer(GL_DRAW_INDIRECT_BUFFER, GLuint(indirect_));
   gl.PixelStorei(GL_PACK_ALIGNMENT, packAlignment_);
+  gl.PixelStorei(GL_UNPACK_ALIGNMENT, unpackAlignment_);
   auto set = [&](GLenum e, GLboolean on) { on ? gl.Enable(e) : gl.Disable(e); };
   set(GL_DEPTH_TEST, depthTest_);
   set(GL_BLEND, blend_);

@@ -45,7 +45,7 @@ class HostState {
   const HostGL& host_;
   GLint drawFbo_ = 0, readFbo_ = 0, program_ = 0, vao_ = 0, activeTexture_ = 0, clipOrigin_ = 0, clipDepth_ = 0;
   GLint viewport_[4] = {}, depthFunc_ = 0, blendSrcRgb_ = 0, blendDstRgb_ = 0, blendSrcA_ = 0, blendDstA_ = 0;
-  GLint indirect_ = 0, packAlignment_ = 0;
+  GLint indirect_ = 0, packAlignment_ = 0, unpackAlignment_ = 0;
   GLboolean depthTest_ = 0, depthMask_ = 0, blend_ = 0, cull_ = 0, scissor_ = 0, stencil_ = 0, offset_ = 0,
             srgb_ = 0;
   GLint colorMask_[4] = {1, 1, 1, 1};

@@ -3,8 +3,11 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
+#include <iterator>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <vtkCamera.h>
@@ -29,7 +32,9 @@
 #include "host_gl.h"
 #include "lookup_colors.h"
 #include "property_check.h"
+#include "app/scale/pipeline_calibration.h"
 #include "render/glyph_kind.h"
+#include "render/glyph_path.h"
 #include "render/renderer.h"
 
 namespace {
@@ -46,6 +51,7 @@ struct GLState {
   std::unique_ptr<render::GBuffer> target;
   std::unique_ptr<paraview::HostComposite> composite;
   vtkMTimeType uploaded = 0;  // input time of the records on the GPU
+  int pipeline = -1;          // the Pipeline `renderer` was made for
   GLuint blocks = 0;          // the composite input's block table (blockTable), or none
   // What the colour scalars and table on the GPU were made from.
   std::string scalarsArray;
@@ -60,6 +66,30 @@ struct GLState {
   GLState(const GLState&) = delete;
   GLState& operator=(const GLState&) = delete;
 };
+
+// Pipeline's path: raster or cpu as named, or for auto the calibrated
+// choice (app/scale/pipeline_calibration.h), measured in this context the
+// first time this renderer, driver and core count is seen.
+std::string glyphPathFor(GLState& g, int pipeline, render::GlyphKind kind, double gamma, double glyphs,
+                         double pixels) {
+  if (pipeline < int(std::size(render::kGlyphPathNames))) return std::string(render::kGlyphPathNames[pipeline]);
+  app::CachedCalibration cached;
+  const app::PathCalibration* cal = nullptr;
+  if (app::choiceNeedsCalibration(kind, {})) {
+    auto str = [&](GLenum e) {
+      const auto* s = reinterpret_cast<const char*>(g.host.api.GetString(e));
+      return std::string(s ? s : "?");
+    };
+    const char* lpThreads = std::getenv("LP_NUM_THREADS");
+    cached = app::calibrationFor(g.host.api, g.lib,
+                                 app::calibrationKey(str(GL_RENDERER), str(GL_VERSION),
+                                                     std::thread::hardware_concurrency(), lpThreads ? lpThreads : ""),
+                                 {});
+    if (!cached.warning.empty()) vtkGenericWarningMacro("TensorGlyphPipeline auto: " << cached.warning);
+    cal = &cached.cal;
+  }
+  return app::choosePath(cal, kind, gamma, glyphs, pixels).path;
+}
 
 }  // namespace
 
@@ -158,6 +188,8 @@ std::size_t rasterKinds() {
   return n;
 }
 TG_CHECKED_SETTER(GlyphKind, int, "Kind", paraview::choices(rasterKinds()))
+// render::kGlyphPathNames, then auto.
+TG_CHECKED_SETTER(Pipeline, int, "Pipeline", paraview::choices(std::size(render::kGlyphPathNames) + 1))
 TG_CHECKED_SETTER(Gamma, double, "Gamma", app::ranges::kGamma)
 TG_CHECKED_SETTER(ScaleMode, int, "ScaleMode", paraview::choices(3))
 TG_CHECKED_SETTER(ScaleFactor, double, "ScaleFactor", app::ranges::kPositiveFloat)
@@ -287,6 +319,8 @@ void vtkTensorGlyphRayCastMapper::Render(vtkRenderer* ren, vtkActor* actor) {
     in.gl.reset();
     in.builtFrom = nullptr;
   }
+  // Another glyph path takes the records again: they are built anew.
+  if (in.gl && in.gl->pipeline != this->Pipeline) in.builtFrom = nullptr;
   double ms = 0;
   if (in.refresh(input, ms)) this->LastBuildMilliseconds = ms;
   if (in.count == 0) return;
@@ -300,7 +334,18 @@ void vtkTensorGlyphRayCastMapper::Render(vtkRenderer* ren, vtkActor* actor) {
     GLState& g = *in.gl;
     const paraview::HostState saved(g.host);
     saved.neutral();
-    if (!g.renderer) g.renderer = std::make_unique<render::GlyphRenderer>(g.host.api, g.lib);
+    int width = 0, height = 0, x0 = 0, y0 = 0;
+    ren->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
+    if (width <= 0 || height <= 0) return;
+    if (g.renderer && g.pipeline != this->Pipeline) g.renderer.reset();
+    if (!g.renderer) {
+      const std::string path = glyphPathFor(g, this->Pipeline, render::GlyphKind(this->GlyphKind), this->Gamma,
+                                            double(in.glyphs.glyphs.size()), double(width) * double(height));
+      g.renderer = std::make_unique<render::GlyphRenderer>(g.host.api, g.lib, render::OverlayFactories{}, path);
+      g.pipeline = this->Pipeline;
+      g.uploaded = 0;
+    }
+    this->GlyphPath = std::string(g.renderer->glyphPath().name());
     if (!g.composite) g.composite = std::make_unique<paraview::HostComposite>(g.host.api, g.lib);
     if (g.uploaded != in.built) {
       g.renderer->upload(in.glyphs);
@@ -318,9 +363,6 @@ void vtkTensorGlyphRayCastMapper::Render(vtkRenderer* ren, vtkActor* actor) {
     if (!ren->GetSelector() && actor) selection.output().opacity = float(actor->GetProperty()->GetOpacity());
     selection.output().blocks = g.blocks;
     selection.output().blockCount = int(in.blocks.size() / 2);
-    int width = 0, height = 0, x0 = 0, y0 = 0;
-    ren->GetTiledSizeAndOrigin(&width, &height, &x0, &y0);
-    if (width <= 0 || height <= 0) return;
     if (!g.target || g.target->width() != width || g.target->height() != height)
       g.target = std::make_unique<render::GBuffer>(g.host.api, width, height);
 

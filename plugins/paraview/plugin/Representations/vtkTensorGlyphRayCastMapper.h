@@ -59,6 +59,14 @@ public:
   vtkGetMacro(MarchIterations, int);
   void SetMarchEpsilon(double v);
   vtkGetMacro(MarchEpsilon, double);
+  // The glyph path (the CLI's --pipeline): 0 raster, 1 cpu (tiles cast on
+  // every core), 2 auto (the path a calibration of this machine predicts
+  // faster, app/scale/pipeline_choice.h). A change draws the next frame on
+  // the new path, its records uploaded again.
+  void SetPipeline(int v);
+  vtkGetMacro(Pipeline, int);
+  // The path the last frame drew on ("raster", "cpu"; "" before a frame).
+  const char* GetGlyphPath() { return this->GlyphPath.c_str(); }
   // The renderer's deferred depth cues (render/ao_pass.h, outline_pass.h,
   // shadow_pass.h), off by default as in the CLI.
   vtkSetMacro(AmbientOcclusion, bool);
@@ -99,6 +107,8 @@ protected:
   int FillInputPortInformation(int port, vtkInformation* info) override;
 
   int GlyphKind = 0;
+  int Pipeline = 0;
+  std::string GlyphPath;
   double Gamma = 3.0;
   int ScaleMode = 2;
   double ScaleFactor = 1.0;

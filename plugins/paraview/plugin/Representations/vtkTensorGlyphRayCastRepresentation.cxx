@@ -226,6 +226,7 @@ vtkDoubleArray* vtkTensorGlyphRayCastRepresentation::GetColorLegendRGBPoints() {
     this->Mapper->Set##Name(v);                                                  \
   }
 TG_FORWARD(GlyphKind, int)
+TG_FORWARD(Pipeline, int)
 TG_FORWARD(Gamma, double)
 TG_FORWARD(FAThreshold, double)
 TG_FORWARD(ColorMode, int)
@@ -269,6 +270,7 @@ void vtkTensorGlyphRayCastRepresentation::SetColorArrayName(int, int, int, int a
 void vtkTensorGlyphRayCastRepresentation::SetLookupTable(vtkScalarsToColors* lut) { this->Mapper->SetLookupTable(lut); }
 
 int vtkTensorGlyphRayCastRepresentation::GetRecordUploads() { return this->Mapper->GetRecordUploads(); }
+const char* vtkTensorGlyphRayCastRepresentation::GetGlyphPath() { return this->Mapper->GetGlyphPath(); }
 
 // What is selected is new data: RequestData again.
 void vtkTensorGlyphRayCastRepresentation::SetStride(int v) {

@@ -34,6 +34,8 @@ public:
 
   // The mapper's settings (vtkTensorGlyphRayCastMapper.h), forwarded.
   void SetGlyphKind(int v);
+  void SetPipeline(int v);
+  const char* GetGlyphPath();
   void SetGamma(double v);
   void SetScaleMode(int v);
   void SetScaleFactor(double v);
