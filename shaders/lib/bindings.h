@@ -28,7 +28,8 @@
 #define TG_UNIT_CPU_HIT_GC 3         // GC hit point (sign colours only)
 #define TG_UNIT_AA_SAMPLE 9          // anti-aliasing (render/antialias_pass.h): a sample's lit colour,
 #define TG_UNIT_AA_FRAME_ID 10       // the frame's own ids (where edges are),
-#define TG_UNIT_AA_SUM 11            // the samples' sum
+#define TG_UNIT_AA_SUM 11            // the samples' sum,
+#define TG_UNIT_AA_DEPTH 12          // the frame's depth (aa_coverage.frag)
 
 // Image units: the occluder pyramid's reduction.
 #define TG_IMAGE_PYRAMID_FINER 0
@@ -47,5 +48,6 @@
 #define TG_SSBO_MESH_VERTICES 9
 #define TG_SSBO_COLOR_TABLE 10       // lib/glyph_color.glsl: a host's colour table (GlyphRenderer::setColorTable)
 #define TG_SSBO_TRACT_POINTS 11      // tract.vert: streamlines, separated by w = 0
+#define TG_SSBO_AA_ID_RECORDS 12     // aa_coverage.frag: where each input id's record is
 
 #endif

@@ -85,18 +85,28 @@ struct PrismSprite {
   vec4 rectNDC;   // (xmin, ymin, xmax, ymax), grown by a pixel, within the viewport
 };
 
-bool prismSprite(GlyphRecord g, bool cylinder, TG_OUT(PrismSprite) s) {
-  if (!glyphSelected(g.posWC_fa)) return false;
-  vec3 l = vec3(g.eigenvalues_id);
-  vec3 axes = glyphAxes(l);
-  if (!(max(axes.x, max(axes.y, axes.z)) > 0.0f)) return false;
+// The glyph's frame, what a cast needs: centreVC, rotWC, src, gcFromVC;
+// its GC axes in VC times their semi-axes in e0..e2.
+void prismFrame(GlyphRecord g, vec3 axes, bool cylinder, TG_OUT(PrismSprite) s, TG_OUT(vec3) e0, TG_OUT(vec3) e1,
+                TG_OUT(vec3) e2) {
   s.rotWC = quatToMat3(g.frameWC);
   mat3 rotVC = mat3(uViewWCVC) * s.rotWC;
   s.centreVC = vec3(uViewWCVC * vec4(vec3(g.posWC_fa), 1.0f));
   // GC z on the cylinder's axis; a cyclic permutation keeps GC right-handed.
-  int ax = cylinder ? cylinderAxis(l) : 2;
+  int ax = cylinder ? cylinderAxis(vec3(g.eigenvalues_id)) : 2;
   s.src = ivec3((ax + 1) % 3, (ax + 2) % 3, ax);
-  vec3 e0 = rotVC[s.src.x] * axes[s.src.x], e1 = rotVC[s.src.y] * axes[s.src.y], e2 = rotVC[s.src.z] * axes[s.src.z];
+  e0 = rotVC[s.src.x] * axes[s.src.x];
+  e1 = rotVC[s.src.y] * axes[s.src.y];
+  e2 = rotVC[s.src.z] * axes[s.src.z];
+  s.gcFromVC = transpose(mat3(e0 / dot(e0, e0), e1 / dot(e1, e1), e2 / dot(e2, e2)));
+}
+
+bool prismSprite(GlyphRecord g, bool cylinder, TG_OUT(PrismSprite) s) {
+  if (!glyphSelected(g.posWC_fa)) return false;
+  vec3 axes = glyphAxes(vec3(g.eigenvalues_id));
+  if (!(max(axes.x, max(axes.y, axes.z)) > 0.0f)) return false;
+  vec3 e0, e1, e2;
+  prismFrame(g, axes, cylinder, s, e0, e1, e2);
 
   vec4 rect = vec4(1e38f, 1e38f, -1e38f, -1e38f);
   bool full = false;
@@ -132,7 +142,6 @@ bool prismSprite(GlyphRecord g, bool cylinder, TG_OUT(PrismSprite) s) {
   s.rectNDC = clamp(rect + vec4(-px, px), -1.0f, 1.0f);
   if (s.rectNDC.x >= s.rectNDC.z || s.rectNDC.y >= s.rectNDC.w) return false;
   s.nearVC = max(nearest, uNearVC);
-  s.gcFromVC = transpose(mat3(e0 / dot(e0, e0), e1 / dot(e1, e1), e2 / dot(e2, e2)));
   return true;
 }
 

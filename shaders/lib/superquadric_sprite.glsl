@@ -27,18 +27,12 @@ struct SuperquadricSprite {
   vec4 rectNDC;    // (xmin, ymin, xmax, ymax), grown by a quarter pixel, within the viewport
 };
 
-// False where no pixel centre can see glyph g at sharpness gamma and march
-// tolerance eps: unselected, of no size, beyond the depth range, or its
-// rectangle holding no pixel centre.
-bool superquadricSprite(GlyphRecord g, float gamma, float eps, TG_OUT(SuperquadricSprite) s) {
-  if (!glyphSelected(g.posWC_fa)) return false;
-  s.axes = glyphAxes(vec3(g.eigenvalues_id));
-  if (!(max(s.axes.x, max(s.axes.y, s.axes.z)) > 0.0f)) return false;
-  s.centreVC = vec3(uViewWCVC * vec4(vec3(g.posWC_fa), 1.0f));
-  // The box's half-diagonal bounds every shape.
-  if (spriteMissesEveryPixelCentre(s.centreVC, length(s.axes))) return false;
+// The glyph's frame, what a cast needs (axes, centreVC, shape, rotWC, src,
+// e0..e2, gcFromVC), for semi-axes `axes` and view centre `centreVC`.
+void superquadricFrame(GlyphRecord g, vec3 axes, vec3 centreVC, float gamma, TG_OUT(SuperquadricSprite) s) {
+  s.axes = axes;
+  s.centreVC = centreVC;
   s.shape = superquadricShape(vec3(g.eigenvalues_id), gamma);
-
   s.rotWC = quatToMat3(g.frameWC);
   mat3 rotVC = mat3(uViewWCVC) * s.rotWC;
   // GC axes: a cyclic permutation of the eigenvectors that puts the symmetry axis on z.
@@ -47,6 +41,20 @@ bool superquadricSprite(GlyphRecord g, float gamma, float eps, TG_OUT(Superquadr
   s.e0 = rotVC[s.src.x] * s.axes[s.src.x];
   s.e1 = rotVC[s.src.y] * s.axes[s.src.y];
   s.e2 = rotVC[s.src.z] * s.axes[s.src.z];
+  s.gcFromVC = transpose(mat3(s.e0 / dot(s.e0, s.e0), s.e1 / dot(s.e1, s.e1), s.e2 / dot(s.e2, s.e2)));
+}
+
+// False where no pixel centre can see glyph g at sharpness gamma and march
+// tolerance eps: unselected, of no size, beyond the depth range, or its
+// rectangle holding no pixel centre.
+bool superquadricSprite(GlyphRecord g, float gamma, float eps, TG_OUT(SuperquadricSprite) s) {
+  if (!glyphSelected(g.posWC_fa)) return false;
+  vec3 axes = glyphAxes(vec3(g.eigenvalues_id));
+  if (!(max(axes.x, max(axes.y, axes.z)) > 0.0f)) return false;
+  vec3 centreVC = vec3(uViewWCVC * vec4(vec3(g.posWC_fa), 1.0f));
+  // The box's half-diagonal bounds every shape.
+  if (spriteMissesEveryPixelCentre(centreVC, length(axes))) return false;
+  superquadricFrame(g, axes, centreVC, gamma, s);
   vec3 e0 = s.e0, e1 = s.e1, e2 = s.e2;
 
   // The box's corners: nearest depth, and their projected rectangle.
@@ -109,6 +117,5 @@ bool superquadricSprite(GlyphRecord g, float gamma, float eps, TG_OUT(Superquadr
   // The march accepts hits up to its tolerance in front of the shape, so the
   // sprite lies that much nearer (superquadric.frag promises depth_less).
   s.nearVC = max(s.nearest - 4.0f * eps * radius, uNearVC);
-  s.gcFromVC = transpose(mat3(e0 / dot(e0, e0), e1 / dot(e1, e1), e2 / dot(e2, e2)));
   return true;
 }

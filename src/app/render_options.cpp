@@ -53,9 +53,10 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
     o.width = int(parseInt(a[0], a[1]));
     o.height = int(parseInt(a[0], a[2]));
   });
-  ap.arg("--samples N").help("anti-aliasing: colour samples per pixel where a silhouette crosses it (the id "
-                              "changes in its 3x3 neighbourhood), each a whole frame of glyphs from a jittered "
-                              "camera; id, depth and normal channels stay the pixel centre's")
+  ap.arg("--samples N").help("anti-aliasing: samples per pixel where a silhouette crosses it (the id changes "
+                              "in its 3x3 neighbourhood), each cast against the glyphs around it and coloured as "
+                              "the nearest pixel showing its surface (blobs: a whole frame per sample); id, depth "
+                              "and normal channels stay the pixel centre's")
       .range(ranges::kSamples).byDefault(std::to_string(o.samples))
       .action([&](Args a) { o.samples = int(parseInt(a[0], a[1])); });
   ap.setGroup("glyphs");

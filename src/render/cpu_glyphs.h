@@ -97,6 +97,7 @@ class CpuGlyphs final : public GlyphPath {
   std::pair<glm::dvec3, glm::dvec3> castersBoxWC(const FrameParams& p) const override;
   void drawShadowCasters(const Camera& light, const FrameParams& p, ShadowPass& shadow) override;
   std::size_t gpuBytes() const override;
+  GLuint recordBuffer() const override { return buffer_; }
   std::uint64_t drawnGlyphs() const override { return drawn_; }
 
  private:

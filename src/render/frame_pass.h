@@ -55,6 +55,9 @@ struct PassFrame {
   // A sample's frame: lighting lights only the frame's silhouette pixels
   // (the frame's ids bound at TG_UNIT_AA_FRAME_ID).
   bool edgesOnly = false;
+  // Record uploads so far (GlyphRenderer::upload): what a pass keeps of the
+  // records is stale once it changes.
+  std::uint64_t uploads = 0;
 };
 
 class FramePass {

@@ -64,6 +64,10 @@ class GlyphPath {
   // which it calls, glyphs or none).
   virtual void drawShadowCasters(const Camera& light, const FrameParams& p, ShadowPass& shadow) = 0;
   virtual std::size_t gpuBytes() const = 0;
+  // The records' storage buffer (lib/glyph_record.glsl's), in upload order,
+  // for passes that cast glyphs again (anti-aliasing's coverage); 0 where
+  // the path keeps none on the GPU.
+  virtual GLuint recordBuffer() const { return 0; }
   // Of the last frame with iterationStats on (zeros for a path with no march).
   virtual IterationStats iterationStats() const { return {}; }
   // Glyphs the last frame submitted, waiting for the GPU or not.

@@ -35,6 +35,7 @@ class RasterGlyphs final : public GlyphPath {
   std::pair<glm::dvec3, glm::dvec3> castersBoxWC(const FrameParams& p) const override;
   void drawShadowCasters(const Camera& light, const FrameParams& p, ShadowPass& shadow) override;
   std::size_t gpuBytes() const override;
+  GLuint recordBuffer() const override { return buffer_; }
   IterationStats iterationStats() const override;
   std::uint64_t drawnGlyphs() const override { return culling_.drawnGlyphs(); }
   void requestDrawnCount() override { culling_.requestDrawnCount(); }

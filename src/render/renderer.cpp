@@ -192,6 +192,7 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   if (colorTable_) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_COLOR_TABLE, colorTable_);
   ranges_.underlays = p.legend.enabled ? legendKeys() : std::vector<UnderlayKey>{};
   PassFrame frame{cam, p, target, aoRadiusWC(p), ranges_, *path_, context_, nullptr};
+  frame.uploads = uploads_;
   Slot& shadow = slots_[kShadow];
   const bool casts = shadow.decl.enabled(p) && (glyphCount_ > 0 || !context_.empty());
   // The passes this frame runs, for `progress`: the glyphs (with the opaque
@@ -222,8 +223,10 @@ void GlyphRenderer::render(const Camera& cam, const FrameParams& p, const GBuffe
   for (const auto& item : context_)
     if (item->visible() && item->translucent()) item->drawTranslucent(cam, p, target);
   finished("lighting");
-  // More samples where silhouettes cross pixels: the glyphs, context and
-  // lighting again from jittered cameras, with this frame's shadow map and AO.
+  // More samples where silhouettes cross pixels. Blobs (and tessellated
+  // frames), which no single glyph's cast gives, draw the glyphs, context
+  // and lighting again from jittered cameras, with this frame's shadow map
+  // and AO; the rest are cast at the samples (render/antialias_pass.h).
   frame.drawSample = [&](const Camera& at, const GBuffer& sample) {
     path_->drawView(at, p, sample);
     drawContextOpaque(gl_, context_, at, p, ContextTarget::View);

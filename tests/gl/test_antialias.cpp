@@ -5,6 +5,8 @@
 #include "render_fixture.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 #include <vector>
 
 #include "render/antialias_pass.h"
@@ -89,8 +91,47 @@ TEST_F(Antialias, OnlySilhouettePixelsChangeAndTheChannelsStayThePixelCentres) {
         between += inside;
       }
     EXPECT_GT(edges, 300u);
-    EXPECT_GT(changed, edges / 2) << "most silhouette pixels take other samples' colours";
+    // A silhouette between two pixel centres crosses one of the two
+    // footprints, and 4 samples see it only where it passes within their
+    // spread: measured 380 of 1,572 edge pixels (24%) change.
+    EXPECT_GT(changed, edges / 6) << "silhouette pixels take other samples' colours";
     EXPECT_GE(double(between), 0.97 * double(edges));
+    // Against supersampling at the same points (every sample a whole frame
+    // from the shifted camera, averaged at the edge pixels): coverage is
+    // exact per sample and shading is per pixel, so the two differ by how
+    // the shading varies across a pixel (steepest at a rim). Measured: mean
+    // 0.0103 per channel at the edge pixels, against 0.0197 for one sample
+    // (0.52 of it); max 0.116.
+    {
+      render::FrameParams q = p;
+      q.samples = 1;
+      std::vector<double> mean(one.rgba.size(), 0.0);
+      for (int k = 0; k < 4; ++k) {
+        const render::Camera at = k == 0 ? cam : render::withPixelOffset(cam, render::sampleOffset(k));
+        r.render(at, q, target);
+        const render::FrameImage f = r.readback(at, target);
+        for (std::size_t i = 0; i < mean.size(); ++i) mean[i] += 0.25 * f.rgba[i];
+      }
+      double sumDiff = 0, maxDiff = 0, sumOne = 0;
+      std::size_t n = 0;
+      for (int y = 0; y < cam.height; ++y)
+        for (int x = 0; x < cam.width; ++x) {
+          if (!edge(one, x, y)) continue;
+          const std::size_t i = std::size_t(y) * cam.width + x;
+          for (int c = 0; c < 3; ++c) {
+            const double d = std::abs(double(four.rgba[4 * i + c]) - mean[4 * i + c]);
+            sumDiff += d;
+            maxDiff = std::max(maxDiff, d);
+            sumOne += std::abs(double(one.rgba[4 * i + c]) - mean[4 * i + c]);
+            ++n;
+          }
+        }
+      std::printf("[ antialias ] %s: %zu of %zu edge pixels changed; against supersampled frames mean %.4f "
+                  "(one sample: %.4f), max %.3f\n",
+                  path, changed, edges, sumDiff / double(n), sumOne / double(n), maxDiff);
+      EXPECT_LT(sumDiff, 0.6 * sumOne);
+      EXPECT_LT(maxDiff, 0.2);
+    }
     p.samples = 1;
     r.render(cam, p, target);
     EXPECT_EQ(r.pass("antialias"), nullptr);
