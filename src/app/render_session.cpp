@@ -116,13 +116,9 @@ std::string RenderSession::autoPipeline(const RenderOptions& o, const render::Fr
     const char* lpThreads = std::getenv("LP_NUM_THREADS");
     const std::string key = calibrationKey(str(GL_RENDERER), str(GL_VERSION), std::thread::hardware_concurrency(),
                                            lpThreads ? lpThreads : "");
-    cached = calibrationFor(gl, *lib_, key, [&](const std::string& file) {
-      if (!o.quiet)
-        std::fprintf(stderr, "tensorglyph %s: --pipeline auto: measuring the glyph paths on this renderer, once%s\n",
-                     command_, file.empty() ? "" : (" (kept in " + printable(file) + ")").c_str());
-    });
-    if (!cached.warning.empty())
-      std::fprintf(stderr, "tensorglyph %s: --pipeline auto: %s\n", command_, printable(cached.warning).c_str());
+    cached = calibrationFor(gl, *lib_, key);
+    if (!cached.said.empty() && !o.quiet)
+      std::fprintf(stderr, "tensorglyph %s: --pipeline auto: %s\n", command_, printable(cached.said).c_str());
     cal = &cached.cal;
   }
   const PathChoice c = choosePath(cal, p.glyph, p.gamma, double(drawn), double(o.width) * double(o.height), alsoDraws);

@@ -1,14 +1,19 @@
 #include "app/scale/pipeline_calibration.h"
 
+#include <fcntl.h>
+#include <sys/file.h>
 #include <sys/stat.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <map>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -136,47 +141,95 @@ std::string calibrationCachePath() {
     return std::string(v ? v : "");
   };
   if (!env("TG_CACHE_DIR").empty()) return env("TG_CACHE_DIR") + "/pipelines.tsv";
-  if (!env("XDG_CACHE_HOME").empty()) return env("XDG_CACHE_HOME") + "/tensorglyph/pipelines.tsv";
+  // The XDG base directory rules: a relative path is to be ignored.
+  if (env("XDG_CACHE_HOME").rfind('/', 0) == 0) return env("XDG_CACHE_HOME") + "/tensorglyph/pipelines.tsv";
   if (!env("HOME").empty()) return env("HOME") + "/.cache/tensorglyph/pipelines.tsv";
   return {};
 }
 
-CachedCalibration calibrationFor(const gl::Api& gl, const gl::ShaderLibrary& lib, const std::string& key,
-                                 const std::function<void(const std::string& file)>& calibrating) {
+bool calibrationComplete(const PathCalibration& cal) {
+  for (const std::string_view path : render::kGlyphPathNames)
+    for (const CostClass c : {CostClass::ClosedForm, CostClass::March})
+      if (!cal.cost(path, c)) return false;
+  return true;
+}
+
+namespace {
+
+// An exclusive lock on FILE.lock while it is held; none (and no wait) where
+// the directory cannot hold one.
+class CacheLock {
+ public:
+  explicit CacheLock(const std::string& file) {
+    std::error_code ec;
+    std::filesystem::create_directories(std::filesystem::path(file).parent_path(), ec);
+    fd_ = ::open((file + ".lock").c_str(), O_RDWR | O_CREAT | O_CLOEXEC | O_NOFOLLOW, 0644);
+    if (fd_ < 0) return;
+    // Another run measuring takes about 2 s; a stuck one is not waited for.
+    for (int k = 0; k < 600; ++k) {
+      if (::flock(fd_, LOCK_EX | LOCK_NB) == 0) return;
+      ::usleep(100000);
+    }
+    ::close(fd_);
+    fd_ = -1;
+  }
+  ~CacheLock() {
+    if (fd_ >= 0) ::close(fd_);  // releases the lock
+  }
+  CacheLock(const CacheLock&) = delete;
+  CacheLock& operator=(const CacheLock&) = delete;
+
+ private:
+  int fd_ = -1;
+};
+
+}  // namespace
+
+CachedCalibration calibrationFor(const gl::Api& gl, const gl::ShaderLibrary& lib, const std::string& key) {
   CachedCalibration out;
   out.file = calibrationCachePath();
+  std::optional<CacheLock> lock;
+  if (!out.file.empty()) lock.emplace(out.file);
   std::vector<PathCalibration> kept;
+  std::string problem;
   if (!out.file.empty()) {
     try {
       const std::string text = readCache(out.file);
       if (!text.empty()) kept = parseCalibrations(text, out.file);
     } catch (const std::exception& e) {
-      out.warning = std::string(e.what()) + "; measured again";
+      problem = e.what();
+      kept.clear();
     }
     for (const PathCalibration& c : kept)
       if (c.key == key) {
-        out.cal = c;
-        return out;
+        if (calibrationComplete(c)) {
+          out.cal = c;
+          return out;
+        }
+        problem = out.file + ": this renderer's rows are incomplete";
       }
   }
-  if (calibrating) calibrating(out.file);
+  const auto t0 = Clock::now();
   out.cal = calibratePaths(gl, lib, key);
   out.measured = true;
+  out.measuredMs = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
+  char took[64];
+  std::snprintf(took, sizeof took, "measured the glyph paths on this renderer in %.1f s", out.measuredMs * 1e-3);
+  const std::string why = problem.empty() ? "" : problem + "; ";
   if (out.file.empty()) {
-    out.warning = "no cache directory (TG_CACHE_DIR, XDG_CACHE_HOME and HOME unset): measured for this run only";
+    out.said = std::string(took) + ", for this run only: no cache directory (TG_CACHE_DIR, XDG_CACHE_HOME and HOME unset or empty)";
     return out;
   }
   std::erase_if(kept, [&](const PathCalibration& c) { return c.key == key; });
   kept.push_back(out.cal);
   try {
-    std::error_code ec;
-    std::filesystem::create_directories(std::filesystem::path(out.file).parent_path(), ec);
     io::AtomicFile f(out.file);
     const std::string text = formatCalibrations(kept);
     f.write(text.data(), text.size());
     f.commit(std::int64_t(text.size()));
+    out.said = why + took + ", kept in " + out.file;
   } catch (const std::exception& e) {
-    out.warning = std::string(e.what()) + ": the calibration is not kept";
+    out.said = why + took + ", not kept: " + e.what();
     out.file.clear();
   }
   return out;

@@ -5,7 +5,6 @@
 // frame sizes, fitted per path and class; and the cache file that keeps one
 // such table per GL renderer, driver and core count, so that a machine
 // measures once.
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -38,15 +37,22 @@ std::string calibrationCachePath();
 
 struct CachedCalibration {
   PathCalibration cal;
-  std::string file;     // where it is kept ("" when not kept)
+  std::string file;       // where it is kept ("" when not kept)
   bool measured = false;  // measured by this call
-  std::string warning;  // a cache that could not be read or written, for one stderr line
+  double measuredMs = 0;  // how long that took
+  // What the user should hear, one line: what was measured and where it is
+  // kept, or why a cache could not be read or written. Empty when the
+  // calibration came from the cache.
+  std::string said;
 };
-// The calibration for `key` from the cache, or measured now (after
-// `calibrating()`, which may tell the user) and written into it through a
-// temporary file, the other keys' rows kept. A cache that cannot be read is
-// measured over and rewritten, and says so in `warning`.
-CachedCalibration calibrationFor(const gl::Api& gl, const gl::ShaderLibrary& lib, const std::string& key,
-                                 const std::function<void(const std::string& file)>& calibrating);
+// The calibration for `key` from the cache; else measured now and written
+// into it through a temporary file, other keys' rows kept. A cache that
+// cannot be read, or lacks one of this key's rows, is measured over and
+// rewritten. Concurrent callers take turns on a lock file beside the cache
+// (waiting at most 60 s), so a machine measures once and no caller's rows
+// are lost.
+CachedCalibration calibrationFor(const gl::Api& gl, const gl::ShaderLibrary& lib, const std::string& key);
+// Whether `cal` holds every path's row for every cost class.
+bool calibrationComplete(const PathCalibration& cal);
 
 }  // namespace tg::app

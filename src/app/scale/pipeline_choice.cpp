@@ -129,7 +129,8 @@ std::vector<PathCalibration> parseCalibrations(std::string_view text, const std:
                       std::to_string(kMaxBytes));
   if (text.empty() || text.back() != '\n') throw fail(1, "does not end with a line break (a truncated write?)");
   std::vector<std::string_view> lines = split(text.substr(0, text.size() - 1), '\n');
-  if (lines[0] != kHeader) throw fail(1, "is not a tensorglyph calibration cache (first line \"" + std::string(kHeader) + "\")");
+  if (lines[0] != kHeader)
+    throw fail(1, "is not a tensorglyph calibration cache (its first line is not \"" + std::string(kHeader) + "\")");
   if (lines.size() < 2 || lines[1] != kColumns) throw fail(2, "the column line is not \"" + std::string(kColumns) + "\"");
   std::vector<PathCalibration> cals;
   for (std::size_t n = 2; n < lines.size(); ++n) {

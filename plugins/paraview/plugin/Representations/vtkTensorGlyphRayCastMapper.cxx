@@ -83,9 +83,8 @@ std::string glyphPathFor(GLState& g, int pipeline, render::GlyphKind kind, doubl
     const char* lpThreads = std::getenv("LP_NUM_THREADS");
     cached = app::calibrationFor(g.host.api, g.lib,
                                  app::calibrationKey(str(GL_RENDERER), str(GL_VERSION),
-                                                     std::thread::hardware_concurrency(), lpThreads ? lpThreads : ""),
-                                 {});
-    if (!cached.warning.empty()) vtkGenericWarningMacro("TensorGlyphPipeline auto: " << cached.warning);
+                                                     std::thread::hardware_concurrency(), lpThreads ? lpThreads : ""));
+    if (!cached.said.empty()) vtkGenericWarningMacro("TensorGlyphPipeline auto: " << cached.said);
     cal = &cached.cal;
   }
   return app::choosePath(cal, kind, gamma, glyphs, pixels).path;
