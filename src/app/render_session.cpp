@@ -4,9 +4,7 @@
 #include <cfloat>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <stdexcept>
-#include <thread>
 #include <tuple>
 
 #include "app/cli_common.h"
@@ -108,15 +106,7 @@ std::string RenderSession::autoPipeline(const RenderOptions& o, const render::Fr
   CachedCalibration cached;
   const PathCalibration* cal = nullptr;
   if (choiceNeedsCalibration(p.glyph, alsoDraws)) {
-    const gl::Api& gl = ctx_->api();
-    auto str = [&](GLenum e) {
-      const auto* s = reinterpret_cast<const char*>(gl.GetString(e));
-      return std::string(s ? s : "?");
-    };
-    const char* lpThreads = std::getenv("LP_NUM_THREADS");
-    const std::string key = calibrationKey(str(GL_RENDERER), str(GL_VERSION), std::thread::hardware_concurrency(),
-                                           lpThreads ? lpThreads : "");
-    cached = calibrationFor(gl, *lib_, key);
+    cached = calibrationFor(ctx_->api(), *lib_, currentCalibrationKey(ctx_->api()));
     if (!cached.said.empty() && !o.quiet)
       std::fprintf(stderr, "tensorglyph %s: --pipeline auto: %s\n", command_, printable(cached.said).c_str());
     cal = &cached.cal;

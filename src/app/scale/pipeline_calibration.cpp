@@ -16,6 +16,7 @@
 #include <optional>
 #include <sstream>
 #include <stdexcept>
+#include <thread>
 
 #include <glm/mat3x3.hpp>
 
@@ -133,6 +134,15 @@ PathCalibration calibratePaths(const gl::Api& gl, const gl::ShaderLibrary& lib, 
       cal.rows.push_back({std::string(path), cls, fitPathCost(g, px, t)});
     }
   return cal;
+}
+
+std::string currentCalibrationKey(const gl::Api& gl) {
+  auto str = [&](GLenum e) {
+    const auto* s = reinterpret_cast<const char*>(gl.GetString(e));
+    return std::string(s ? s : "?");
+  };
+  const char* lpThreads = std::getenv("LP_NUM_THREADS");
+  return calibrationKey(str(GL_RENDERER), str(GL_VERSION), std::thread::hardware_concurrency(), lpThreads ? lpThreads : "");
 }
 
 std::string calibrationCachePath() {

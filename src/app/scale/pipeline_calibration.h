@@ -30,6 +30,10 @@ PathCalibration calibratePaths(const gl::Api& gl, const gl::ShaderLibrary& lib, 
 PathCost fitPathCost(const std::vector<double>& glyphs, const std::vector<double>& pixels,
                      const std::vector<double>& frameMs);
 
+// The cache's key for the current context (calibrationKey): its GL_RENDERER
+// and GL_VERSION, this machine's cores and LP_NUM_THREADS.
+std::string currentCalibrationKey(const gl::Api& gl);
+
 // The cache file: $TG_CACHE_DIR/pipelines.tsv, else
 // $XDG_CACHE_HOME/tensorglyph/pipelines.tsv, else
 // $HOME/.cache/tensorglyph/pipelines.tsv; "" when none of those is set.

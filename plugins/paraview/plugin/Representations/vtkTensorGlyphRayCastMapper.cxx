@@ -3,11 +3,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <cstdlib>
 #include <iterator>
 #include <optional>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <vtkCamera.h>
@@ -76,14 +74,7 @@ std::string glyphPathFor(GLState& g, int pipeline, render::GlyphKind kind, doubl
   app::CachedCalibration cached;
   const app::PathCalibration* cal = nullptr;
   if (app::choiceNeedsCalibration(kind, {})) {
-    auto str = [&](GLenum e) {
-      const auto* s = reinterpret_cast<const char*>(g.host.api.GetString(e));
-      return std::string(s ? s : "?");
-    };
-    const char* lpThreads = std::getenv("LP_NUM_THREADS");
-    cached = app::calibrationFor(g.host.api, g.lib,
-                                 app::calibrationKey(str(GL_RENDERER), str(GL_VERSION),
-                                                     std::thread::hardware_concurrency(), lpThreads ? lpThreads : ""));
+    cached = app::calibrationFor(g.host.api, g.lib, app::currentCalibrationKey(g.host.api));
     if (!cached.said.empty()) vtkGenericWarningMacro("TensorGlyphPipeline auto: " << cached.said);
     cal = &cached.cal;
   }
