@@ -286,20 +286,11 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
 }
 
 CpuGlyphs::CpuGlyphs(const gl::Api& gl, const gl::ShaderLibrary& lib)
-    : gl_(gl),
-      lib_(lib),
-      program_(gl, lib, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "cpu_gbuffer.frag"}}),
-      threads_(cpuPathThreads()) {
-  gl.CreateVertexArrays(1, &vao_);
-  gl::checkError(gl, "CpuGlyphs");
-}
+    : gl_(gl), targets_(gl, lib), threads_(cpuPathThreads()) {}
 
 CpuGlyphs::~CpuGlyphs() {
   if (buffer_) gl_.DeleteBuffers(1, &buffer_);
   if (scalars_) gl_.DeleteBuffers(1, &scalars_);
-  if (tex_[0]) gl_.DeleteTextures(4, tex_);
-  if (lightTex_[0]) gl_.DeleteTextures(2, lightTex_);
-  gl_.DeleteVertexArrays(1, &vao_);
 }
 
 void CpuGlyphs::upload(const tensor::GlyphSet& set) {
@@ -336,14 +327,14 @@ void CpuGlyphs::upload(const tensor::GlyphSet& set) {
 }
 
 void CpuGlyphs::setParams(const FrameParams& p, const FrameParams* old) {
-  setGlyphUniforms(program_, p, old);
+  setGlyphUniforms(targets_.gbufferProgram(), p, old);
 }
 
 // The colour inputs as the raster path takes them (RasterGlyphs), for the
 // same colour code in cpu_gbuffer.frag.
 void CpuGlyphs::setColorWindow(glm::dvec2 window) {
   colorWindow_ = glm::vec2(window);
-  program_.set("uColorWindow", colorWindow_);
+  targets_.gbufferProgram().set("uColorWindow", colorWindow_);
 }
 
 void CpuGlyphs::uploadColorScalars(std::span<const float> byRecord) {
@@ -357,21 +348,6 @@ void CpuGlyphs::uploadColorScalars(std::span<const float> byRecord) {
     gl_.NamedBufferStorage(scalars_, GLsizeiptr(byRecord.size_bytes()), byRecord.data(), 0);
   }
   gl::checkError(gl_, "GlyphRenderer::setColorScalars");
-}
-
-void CpuGlyphs::allocate(int width, int height) {
-  // Not casts_'s size: the casts of this frame are already made at the new one.
-  if (tex_[0] && texWidth_ == width && texHeight_ == height) return;
-  if (tex_[0]) gl_.DeleteTextures(4, tex_);
-  texWidth_ = width;
-  texHeight_ = height;
-  const GLenum formats[4] = {GL_R32F, GL_R32UI, GL_RGBA32F, GL_RGBA32F};
-  gl_.CreateTextures(GL_TEXTURE_2D, 4, tex_);
-  for (int k = 0; k < 4; ++k) {
-    gl_.TextureStorage2D(tex_[k], 1, formats[k], width, height);
-    gl_.TextureParameteri(tex_[k], GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    gl_.TextureParameteri(tex_[k], GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  }
 }
 
 void CpuGlyphs::drawView(const Camera& cam, const FrameParams& p, const GBuffer& target) {
@@ -405,29 +381,17 @@ void CpuGlyphs::drawView(const Camera& cam, const FrameParams& p, const GBuffer&
     centreRecord_ = casts_.record;
     centreView_ = cam.viewWCVC;
   }
-  allocate(cam.width, cam.height);
+  targets_.allocateView(w, h);
   target.beginGeometry();
   if (drawn_ == 0) return;
   gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  gl_.TextureSubImage2D(tex_[0], 0, 0, 0, w, h, GL_RED, GL_FLOAT, casts_.windowDepth.data());
-  gl_.TextureSubImage2D(tex_[1], 0, 0, 0, w, h, GL_RED_INTEGER, GL_UNSIGNED_INT, casts_.record.data());
-  gl_.TextureSubImage2D(tex_[2], 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, casts_.normalWC.data());
-  if (sign) gl_.TextureSubImage2D(tex_[3], 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, casts_.hitGC.data());
-  setCameraUniforms(program_, cam);
-  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_GLYPHS, buffer_);
-  if (scalars_) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_COLOR_SCALARS, scalars_);
-  gl_.BindTextureUnit(TG_UNIT_CPU_DEPTH, tex_[0]);
-  gl_.BindTextureUnit(TG_UNIT_CPU_RECORD, tex_[1]);
-  gl_.BindTextureUnit(TG_UNIT_CPU_NORMAL, tex_[2]);
-  gl_.BindTextureUnit(TG_UNIT_CPU_HIT_GC, tex_[3]);
-  gl_.Enable(GL_DEPTH_TEST);
-  gl_.DepthFunc(GL_ALWAYS);
-  gl_.DepthMask(GL_TRUE);
-  gl_.UseProgram(program_.id());
-  gl_.BindVertexArray(vao_);
-  gl_.DrawArrays(GL_TRIANGLES, 0, 3);
-  gl_.DepthFunc(GL_GREATER);  // reversed Z, as the raster path leaves it for the context
-  gl::checkError(gl_, "CpuGlyphs::drawView");
+  gl_.TextureSubImage2D(targets_.view(CastTargets::kDepth), 0, 0, 0, w, h, GL_RED, GL_FLOAT, casts_.windowDepth.data());
+  gl_.TextureSubImage2D(targets_.view(CastTargets::kRecord), 0, 0, 0, w, h, GL_RED_INTEGER, GL_UNSIGNED_INT,
+                        casts_.record.data());
+  gl_.TextureSubImage2D(targets_.view(CastTargets::kNormal), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, casts_.normalWC.data());
+  if (sign)
+    gl_.TextureSubImage2D(targets_.view(CastTargets::kHitGC), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, casts_.hitGC.data());
+  targets_.writeView(cam, buffer_, scalars_);
 }
 
 std::pair<glm::dvec3, glm::dvec3> CpuGlyphs::castersBoxWC(const FrameParams& p) const {
@@ -440,35 +404,13 @@ void CpuGlyphs::castShadowMap(const Camera& light, const FrameParams& p, ShadowP
   casts_.only.clear();
   if (glyphKind(p.glyph).draw == KindDraw::Blob) castBlobs(records_, light, p, false, threads_, casts_, blobs_);
   else castGlyphs(records_, light, p, false, threads_, casts_);
-  if (!depthProgram_)
-    depthProgram_ = std::make_unique<gl::Program>(
-        gl_, lib_, std::initializer_list<gl::StageSource>{{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "cpu_depth.frag"}});
-  if (!lightTex_[0] || lightSize_ != light.width || light.height != light.width) {
-    if (lightTex_[0]) gl_.DeleteTextures(2, lightTex_);
-    const GLenum formats[2] = {GL_R32F, GL_R32UI};
-    gl_.CreateTextures(GL_TEXTURE_2D, 2, lightTex_);
-    for (int k = 0; k < 2; ++k) {
-      gl_.TextureStorage2D(lightTex_[k], 1, formats[k], light.width, light.height);
-      gl_.TextureParameteri(lightTex_[k], GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-      gl_.TextureParameteri(lightTex_[k], GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    }
-    lightSize_ = light.width;
-  }
-  shadow.beginMap(light.width);
+  targets_.allocateLight(light.width);
   gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  gl_.TextureSubImage2D(lightTex_[0], 0, 0, 0, light.width, light.height, GL_RED, GL_FLOAT, casts_.windowDepth.data());
-  gl_.TextureSubImage2D(lightTex_[1], 0, 0, 0, light.width, light.height, GL_RED_INTEGER, GL_UNSIGNED_INT,
+  gl_.TextureSubImage2D(targets_.lightDepth(), 0, 0, 0, light.width, light.height, GL_RED, GL_FLOAT,
+                        casts_.windowDepth.data());
+  gl_.TextureSubImage2D(targets_.lightRecord(), 0, 0, 0, light.width, light.height, GL_RED_INTEGER, GL_UNSIGNED_INT,
                         casts_.record.data());
-  gl_.BindTextureUnit(TG_UNIT_CPU_DEPTH, lightTex_[0]);
-  gl_.BindTextureUnit(TG_UNIT_CPU_RECORD, lightTex_[1]);
-  gl_.Enable(GL_DEPTH_TEST);
-  gl_.DepthFunc(GL_ALWAYS);
-  gl_.DepthMask(GL_TRUE);
-  gl_.UseProgram(depthProgram_->id());
-  gl_.BindVertexArray(vao_);
-  gl_.DrawArrays(GL_TRIANGLES, 0, 3);
-  gl_.DepthFunc(GL_GREATER);
-  gl::checkError(gl_, "CpuGlyphs::castShadowMap");
+  targets_.writeLight(light.width, shadow);
 }
 
 void CpuGlyphs::drawShadowCasters(const Camera& light, const FrameParams& p, ShadowPass& shadow) {
@@ -476,10 +418,7 @@ void CpuGlyphs::drawShadowCasters(const Camera& light, const FrameParams& p, Sha
 }
 
 std::size_t CpuGlyphs::gpuBytes() const {
-  const std::size_t pixels = std::size_t(texWidth_) * std::size_t(texHeight_);
-  const std::size_t lightPixels = std::size_t(lightSize_) * std::size_t(lightSize_);
-  return records_.size() * (sizeof(tensor::GlyphRecord) + (scalars_ ? sizeof(float) : 0)) + (tex_[0] ? pixels * 40 : 0) +
-         (lightTex_[0] ? lightPixels * 8 : 0);
+  return records_.size() * (sizeof(tensor::GlyphRecord) + (scalars_ ? sizeof(float) : 0)) + targets_.bytes();
 }
 
 }  // namespace tg::render

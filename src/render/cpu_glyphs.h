@@ -28,6 +28,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "render/cast_targets.h"
 #include "render/glyph_path.h"
 #include "render/tile_binning.h"
 
@@ -101,14 +102,11 @@ class CpuGlyphs final : public GlyphPath {
   std::uint64_t drawnGlyphs() const override { return drawn_; }
 
  private:
-  // The casts' textures at width x height, reallocated when the size changes.
-  void allocate(int width, int height);
   // The shadow map: the casts from `light`, depth only.
   void castShadowMap(const Camera& light, const FrameParams& p, ShadowPass& shadow);
 
   const gl::Api& gl_;
-  const gl::ShaderLibrary& lib_;
-  gl::Program program_;
+  CastTargets targets_;
   tensor::GlyphSet set_;  // bounds and counts; the records only where records_ is not the mapped buffer
   std::span<const tensor::GlyphRecord> records_;  // what the casts read: buffer_ mapped, or set_'s
   CpuCasts casts_;
@@ -117,13 +115,8 @@ class CpuGlyphs final : public GlyphPath {
   std::vector<std::uint32_t> centreRecord_;
   glm::dmat4 centreView_{0.0};
   std::vector<BlobCandidate> blobs_;  // blob frames' set-up, kept between frames
-  std::unique_ptr<gl::Program> depthProgram_;  // cpu_depth.frag, built by the first blob shadow map
-  GLuint lightTex_[2] = {};  // depth, record: cpu_depth.frag's inputs
-  int lightSize_ = 0;
-  GLuint buffer_ = 0, vao_ = 0, scalars_ = 0;  // scalars_: ColorMode::Array's values, by record
+  GLuint buffer_ = 0, scalars_ = 0;  // scalars_: ColorMode::Array's values, by record
   glm::vec2 colorWindow_{0.0f, 1.0f};
-  GLuint tex_[4] = {};  // depth, record, normal, hit: cpu_gbuffer.frag's inputs
-  int texWidth_ = 0, texHeight_ = 0;  // their size
   int threads_;
   std::uint64_t drawn_ = 0;
 };

@@ -1,0 +1,61 @@
+#pragma once
+// The casts' textures of the paths that cast rays outside GL's rasteriser
+// (render/cpu_glyphs.h uploads them, render/compute_glyphs.h writes them by
+// compute), and the two full-screen passes that write them into GL's
+// targets: cpu_gbuffer.frag into the G-buffer, taking albedo and id from the
+// record with the raster path's colour code, and cpu_depth.frag into the key
+// light's shadow map. One home, so that both paths shade alike.
+#include <cstddef>
+#include <memory>
+
+#include "gl/program.h"
+#include "view/camera.h"
+
+namespace tg::render {
+
+class ShadowPass;
+
+class CastTargets {
+ public:
+  // The view's textures: window depth (R32F, reversed, 0 where empty),
+  // record + 1 (R32UI, 0: empty), WC normal and GC hit (RGBA32F).
+  enum View { kDepth = 0, kRecord = 1, kNormal = 2, kHitGC = 3 };
+
+  CastTargets(const gl::Api& gl, const gl::ShaderLibrary& lib);
+  ~CastTargets();
+  CastTargets(const CastTargets&) = delete;
+  CastTargets& operator=(const CastTargets&) = delete;
+
+  // cpu_gbuffer.frag, whose glyph and colour uniforms the path sets.
+  const gl::Program& gbufferProgram() const { return gbuffer_; }
+  // The view's textures at width x height (reallocated when it changes).
+  void allocateView(int width, int height);
+  GLuint view(View k) const { return view_[k]; }
+  // The light's depth and record textures, size x size.
+  void allocateLight(int size);
+  GLuint lightDepth() const { return light_[0]; }
+  GLuint lightRecord() const { return light_[1]; }
+
+  // The view textures into the bound geometry framebuffer (what
+  // GBuffer::beginGeometry left bound), over `records` (and `scalars`, 0
+  // for none); leaves the depth test at GL_GREATER, as the raster path.
+  void writeView(const Camera& cam, GLuint records, GLuint scalars) const;
+  // The light textures into shadow's map (ShadowPass::beginMap, which it calls).
+  void writeLight(int size, ShadowPass& shadow);
+  std::size_t bytes() const;
+
+ private:
+  void fullScreen(const gl::Program& prog) const;
+
+  const gl::Api& gl_;
+  const gl::ShaderLibrary& lib_;
+  gl::Program gbuffer_;
+  std::unique_ptr<gl::Program> depth_;  // cpu_depth.frag, built by the first shadow map
+  GLuint vao_ = 0;
+  GLuint view_[4] = {};
+  int width_ = 0, height_ = 0;
+  GLuint light_[2] = {};
+  int lightSize_ = 0;
+};
+
+}  // namespace tg::render
