@@ -34,6 +34,11 @@
 // Image units: the occluder pyramid's reduction.
 #define TG_IMAGE_PYRAMID_FINER 0
 #define TG_IMAGE_PYRAMID_COARSER 1
+// The compute glyph path's resolve (render/compute_glyphs.h): cpu_gbuffer.frag's inputs.
+#define TG_IMAGE_CAST_DEPTH 2
+#define TG_IMAGE_CAST_RECORD 3
+#define TG_IMAGE_CAST_NORMAL 4
+#define TG_IMAGE_CAST_HIT_GC 5
 
 // Shader storage buffers.
 #define TG_SSBO_GLYPHS 0             // lib/glyph_record.glsl
@@ -49,5 +54,13 @@
 #define TG_SSBO_COLOR_TABLE 10       // lib/glyph_color.glsl: a host's colour table (GlyphRenderer::setColorTable)
 #define TG_SSBO_TRACT_POINTS 11      // tract.vert: streamlines, separated by w = 0
 #define TG_SSBO_AA_ID_RECORDS 12     // aa_coverage.frag: where each input id's record is
+// The compute glyph path (lib/compute_vis.glsl): the visibility buffer, the
+// tiled glyphs' set-ups, the tiles' counts, starts and lists, and its counters.
+#define TG_SSBO_VIS 13
+#define TG_SSBO_CANDIDATES 14
+#define TG_SSBO_TILE_COUNT 15
+#define TG_SSBO_TILE_START 16
+#define TG_SSBO_TILE_LIST 17
+#define TG_SSBO_COMPUTE_STATE 18
 
 #endif

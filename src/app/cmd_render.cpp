@@ -202,8 +202,10 @@ int cmdRender(int argc, const char** argv) {
     const std::string framing = o.eye ? "--eye given; it looks by default at the centre of " + fr.framing.why
                                 : scene.preferredCamera ? std::string("the built-in scene's own view")
                                                         : fr.framing.why;
-    std::fprintf(stderr, "  glyph path: %s%s\n", renderer.glyphPath().name().data(),
-                 session.pipelineWhy().empty() ? "" : (" (" + session.pipelineWhy() + ")").c_str());
+    const std::string how = renderer.glyphPath().how();
+    std::fprintf(stderr, "  glyph path: %s%s%s\n", renderer.glyphPath().name().data(),
+                 session.pipelineWhy().empty() ? "" : (" (" + session.pipelineWhy() + ")").c_str(),
+                 how.empty() ? "" : ("; " + how).c_str());
     std::fprintf(stderr, "  size: %s\n  framing: %s\n", fr.sized.why.c_str(), framing.c_str());
     if (scene.stress) std::fprintf(stderr, "  %s\n", stressDefaultsLine(*scene.stress).c_str());
     if (params.ao.enabled)

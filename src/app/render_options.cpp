@@ -61,7 +61,9 @@ void addViewOptions(OptionTable& ap, RenderOptions& o) {
       .action([&](Args a) { o.samples = int(parseInt(a[0], a[1])); });
   ap.setGroup("glyphs");
   ap.arg("--pipeline NAME").reloads().help("how glyphs are drawn: raster (default; a ray-cast sprite per glyph), "
-                                            "cpu (tiles cast on every core; every kind, and the only path for blobs) or "
+                                            "cpu (tiles cast on every core; every kind, and the only path for blobs), "
+                                            "compute (compute shaders cast per screen tile into a visibility buffer; "
+                                            "for GPUs whose graphics stages are a small part of the chip) or "
                                             "auto (the path predicted fastest for this scene from a calibration "
                                             "measured once per renderer and kept in the cache; --verbose says why)")
       .oneOf(pipelineNames())
@@ -251,7 +253,8 @@ std::string kindsDrawnBy(std::string_view path) {
 
 void checkKindOptions(const RenderOptions& o, render::GlyphKind kind, bool toFile) {
   const std::string path = glyphPathFor(o, kind), name(render::glyphKind(kind).name);
-  if (path == "cpu" && o.tessellate != 0) throw UsageError("--pipeline cpu casts rays; --tessellate draws a mesh (use --pipeline raster)");
+  if ((path == "cpu" || path == "compute") && o.tessellate != 0)
+    throw UsageError("--pipeline " + path + " casts rays; --tessellate draws a mesh (use --pipeline raster)");
   if (!pipelineDraws(path, kind))
     throw UsageError("--pipeline " + path + " draws " + kindsDrawnBy(path) + " glyphs only; this render draws " + name +
                      " glyphs" + (kind == render::GlyphKind::Blob ? " (each blob pixel needs every bump its ray meets)" : "") +

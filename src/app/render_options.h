@@ -52,7 +52,7 @@ struct RenderOptions : SceneFlags {
 // --pipeline auto: the session picks the path (app/scale/pipeline_choice.h)
 // once its context exists.
 inline constexpr std::string_view kAutoPipeline = "auto";
-// "raster, cpu or auto": what --pipeline takes.
+// "raster, cpu, compute or auto": what --pipeline takes.
 std::string pipelineNames();
 // Whether --pipeline `path` can draw kind: auto where some path does.
 bool pipelineDraws(std::string_view path, render::GlyphKind kind);

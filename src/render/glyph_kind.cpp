@@ -17,21 +17,21 @@ constexpr std::array<GlyphKindInfo, kGlyphKindCount> kKinds = {{
     {GlyphKind::Ellipsoid, "ellipsoid", "exact ray-cast ellipsoids", KindDraw::Ellipsoid, "ellipsoid.vert",
      "ellipsoid.frag", "", GlyphRecordKind::EigenQuat, false,
      [](const Camera& c, Glyphs g, const ref::RefParams& p, double) { return ref::renderEllipsoids(c, g, p); },
-     kRasterPath | kCpuPath},
+     kRasterPath | kCpuPath | kComputePath},
     {GlyphKind::Superquadric, "superquadric", "Kindlmann's superquadrics, sharpened by gamma",
      KindDraw::Superquadric, "superquadric.vert", "superquadric.frag", "", GlyphRecordKind::EigenQuat, true,
      [](const Camera& c, Glyphs g, const ref::RefParams& p, double gamma) {
        return ref::renderSuperquadrics(c, g, p, gamma);
      },
-     kRasterPath | kCpuPath},
+     kRasterPath | kCpuPath | kComputePath},
     {GlyphKind::Cylinder, "cylinder", "Teem's cylinders", KindDraw::ClosedForm, "prism.vert", "prism.frag",
      "TG_CYLINDER", GlyphRecordKind::EigenQuat, false,
      [](const Camera& c, Glyphs g, const ref::RefParams& p, double) { return ref::renderCylinders(c, g, p); },
-     kRasterPath | kCpuPath},
+     kRasterPath | kCpuPath | kComputePath},
     {GlyphKind::Box, "box", "Teem's boxes", KindDraw::ClosedForm, "prism.vert", "prism.frag", "",
      GlyphRecordKind::EigenQuat, false,
      [](const Camera& c, Glyphs g, const ref::RefParams& p, double) { return ref::renderBoxes(c, g, p); },
-     kRasterPath | kCpuPath},
+     kRasterPath | kCpuPath | kComputePath},
     {GlyphKind::Blob, "blob", "Blinn's blobs: the glyphs' bumps summed into one surface", KindDraw::Blob, "", "", "",
      GlyphRecordKind::EigenQuat, true,
      [](const Camera& c, Glyphs g, const ref::RefParams& p, double gamma) { return ref::renderBlobs(c, g, p, gamma); },
@@ -61,7 +61,7 @@ std::optional<GlyphKind> glyphKindNamed(std::string_view name) {
 }
 
 bool pathDraws(std::string_view path, GlyphKind k) {
-  const unsigned mask = path == "raster" ? kRasterPath : path == "cpu" ? kCpuPath : 0u;
+  const unsigned mask = path == "raster" ? kRasterPath : path == "cpu" ? kCpuPath : path == "compute" ? kComputePath : 0u;
   return (glyphKind(k).paths & mask) != 0;
 }
 

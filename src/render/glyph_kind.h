@@ -42,7 +42,7 @@ enum class KindDraw {
 };
 
 // The glyph paths (render/glyph_path.h) that draw a kind.
-enum PathMask : unsigned { kRasterPath = 1, kCpuPath = 2 };
+enum PathMask : unsigned { kRasterPath = 1, kCpuPath = 2, kComputePath = 4 };
 
 // The per-glyph record a kind reads from the glyph buffer.
 enum class GlyphRecordKind {
@@ -71,7 +71,7 @@ struct GlyphKindInfo {
   unsigned paths;  // PathMask
 };
 
-// Whether the glyph path named `path` ("raster", "cpu") draws kind k.
+// Whether the glyph path named `path` ("raster", "cpu", "compute") draws kind k.
 bool pathDraws(std::string_view path, GlyphKind k);
 
 std::span<const GlyphKindInfo> glyphKinds();

@@ -7,8 +7,8 @@
 // the raster path is. The depth the deferred passes read is a depth
 // attachment; a path that cannot raster it writes a float depth channel and
 // resolves it (render/depth_resolve.h). Paths are selected by name
-// (makeGlyphPath): "raster" (render/raster_glyphs.h) and "cpu"
-// (render/cpu_glyphs.h).
+// (makeGlyphPath): "raster" (render/raster_glyphs.h), "cpu"
+// (render/cpu_glyphs.h) and "compute" (render/compute_glyphs.h).
 #include <cstdint>
 #include <memory>
 #include <optional>
@@ -44,6 +44,8 @@ class GlyphPath {
  public:
   virtual ~GlyphPath() = default;
   virtual std::string_view name() const = 0;
+  // How it draws on this GL, where that depends on the GL (for --verbose).
+  virtual std::string how() const { return ""; }
   // Takes the records once; later frames change parameters only.
   virtual void upload(const tensor::GlyphSet& set) = 0;
   // The parameters of the next frames; `old`: those last set, or null.
@@ -77,7 +79,7 @@ class GlyphPath {
 };
 
 // The paths' names, GL-free, for the options that choose one.
-inline constexpr std::string_view kGlyphPathNames[] = {"raster", "cpu"};
+inline constexpr std::string_view kGlyphPathNames[] = {"raster", "cpu", "compute"};
 
 inline void GlyphPath::uploadColorScalars(std::span<const float>) {
   throw std::invalid_argument("GlyphRenderer::setColorScalars: the " + std::string(name()) +
@@ -86,7 +88,7 @@ inline void GlyphPath::uploadColorScalars(std::span<const float>) {
 
 // The path called `name`; throws std::invalid_argument naming the choices.
 std::unique_ptr<GlyphPath> makeGlyphPath(std::string_view name, const gl::Api& gl, const gl::ShaderLibrary& lib);
-// "raster, cpu": the names makeGlyphPath takes, for messages.
+// "raster, cpu, compute": the names makeGlyphPath takes, for messages.
 std::string glyphPathNames();
 
 }  // namespace tg::render

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "render/camera_uniforms.h"
+#include "render/compute_glyphs.h"
 #include "render/cpu_glyphs.h"
 #include "render/march_groups.h"
 #include "render/shadow_pass.h"
@@ -358,6 +359,7 @@ IterationStats RasterGlyphs::iterationStats() const {
 std::unique_ptr<GlyphPath> makeGlyphPath(std::string_view name, const gl::Api& gl, const gl::ShaderLibrary& lib) {
   if (name == "raster") return std::make_unique<RasterGlyphs>(gl, lib);
   if (name == "cpu") return std::make_unique<CpuGlyphs>(gl, lib);
+  if (name == "compute") return std::make_unique<ComputeGlyphs>(gl, lib);
   throw std::invalid_argument("makeGlyphPath: unknown glyph path \"" + std::string(name) + "\"; choose " +
                               glyphPathNames());
 }

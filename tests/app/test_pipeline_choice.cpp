@@ -16,13 +16,16 @@ using render::GlyphKind;
 namespace {
 
 // Shaped like this project's 2-core llvmpipe measurement: the raster path
-// pays more per glyph, the cpu path a little more per pixel.
+// pays more per glyph, the cpu path a little more per pixel, and the
+// compute path (llvmpipe's compute shaders) most of all.
 app::PathCalibration fixedTable() {
   return {"test renderer | 1.0 | 2 cores | LP_NUM_THREADS unset",
           {{"raster", CostClass::ClosedForm, {2.0, 1.0, 30.0}},
            {"raster", CostClass::March, {2.0, 1.7, 100.0}},
            {"cpu", CostClass::ClosedForm, {1.0, 0.16, 45.0}},
-           {"cpu", CostClass::March, {1.0, 0.37, 110.0}}}};
+           {"cpu", CostClass::March, {1.0, 0.37, 110.0}},
+           {"compute", CostClass::ClosedForm, {3.0, 1.6, 200.0}},
+           {"compute", CostClass::March, {3.0, 11.0, 450.0}}}};
 }
 
 std::string errorOf(const std::string& text) {
@@ -38,10 +41,11 @@ std::string errorOf(const std::string& text) {
 
 TEST(PipelineChoice, TheFasterPredictionWinsAndTheChoiceIsDeterministic) {
   const app::PathCalibration t = fixedTable();
-  // 2,600 march glyphs at 1024x768: raster 2 + 4.4 + 78.6 = 85.0 ms, cpu 1 + 1.0 + 86.5 = 88.5 ms.
+  // 2,600 march glyphs at 1024x768: raster 2 + 4.4 + 78.6 = 85.0 ms, cpu 1 + 1.0 + 86.5 = 88.5 ms,
+  // compute 3 + 28.6 + 353.9 = 385.5 ms.
   const app::PathChoice small = app::choosePath(&t, GlyphKind::Superquadric, 3.0, 2600, 1024 * 768);
   EXPECT_EQ(small.path, "raster") << small.why;
-  EXPECT_NE(small.why.find("predicted 85 ms a frame against cpu 88 ms"), std::string::npos) << small.why;
+  EXPECT_NE(small.why.find("predicted 85 ms a frame against cpu 88 ms, compute 385 ms"), std::string::npos) << small.why;
   // 2 M glyphs at 1920x1080: raster 3.6 s, cpu 0.97 s.
   const app::PathChoice brain = app::choosePath(&t, GlyphKind::Superquadric, 3.0, 2e6, 1920 * 1080);
   EXPECT_EQ(brain.path, "cpu") << brain.why;
@@ -70,7 +74,7 @@ TEST(PipelineChoice, KindsOnOnePathNeedNoCalibration) {
   EXPECT_EQ(app::choosePath(&t, GlyphKind::Box, 0.0, 2e6, 1920 * 1080).path, "cpu");
   EXPECT_THROW(app::choosePath(nullptr, GlyphKind::Ellipsoid, 0.0, 10, 100), std::invalid_argument);
   app::PathCalibration partial = t;
-  partial.rows.pop_back();  // no cpu march row
+  partial.rows.erase(partial.rows.begin() + 3);  // no cpu march row
   EXPECT_THROW(app::choosePath(&partial, GlyphKind::Superquadric, 3.0, 10, 100), std::invalid_argument);
   EXPECT_EQ(app::choosePath(&partial, GlyphKind::Ellipsoid, 0.0, 10, 100).path, "cpu");
 }
@@ -83,7 +87,8 @@ TEST(PipelineChoice, TheCacheTextRoundTripsAndIsReadStrictly) {
   const auto back = app::parseCalibrations(text, "cache.tsv");
   ASSERT_EQ(back.size(), 2u);
   EXPECT_EQ(back[1].key, other.key);
-  ASSERT_EQ(back[0].rows.size(), 4u);
+  ASSERT_EQ(back[0].rows.size(), 6u);
+  EXPECT_DOUBLE_EQ(back[0].cost("compute", CostClass::March)->glyphUs, 11.0);
   EXPECT_DOUBLE_EQ(back[0].cost("cpu", CostClass::March)->glyphUs, 0.37);
   EXPECT_DOUBLE_EQ(back[0].cost("raster", CostClass::ClosedForm)->megapixelMs, 30.0);
 

@@ -134,7 +134,7 @@ TEST(Cli, BadInputFailsWithOneLineAndNoOutput) {
       {"render -o " + out.string() + " --background 2 0 0 1", "--background must be within 0..1"},
       {"render -o " + (d / "x.notanimage").string(), "no image format"},
       {"render -o " + out.string() + " --backend vulkan", "backend"},
-      {"render -o " + out.string() + " --pipeline tiles", "--pipeline: unknown glyph path \"tiles\"; choose raster, cpu or auto"},
+      {"render -o " + out.string() + " --pipeline tiles", "--pipeline: unknown glyph path \"tiles\"; choose raster, cpu, compute or auto"},
       {"render -o " + out.string() + " --pipeline cpu --glyph superquadric --tessellate 8", "--pipeline cpu casts rays; --tessellate draws a mesh"},
       {"render", "-o OUT"},
       {"info", "INPUT"},

@@ -36,14 +36,16 @@ std::string keyFromCalibration(const fs::path& cache) {
   return text.substr(row, text.find('\t', row) - row);
 }
 
-void writeTable(const fs::path& cache, const std::string& key, double rasterGlyphUs, double cpuGlyphUs) {
+void writeTable(const fs::path& cache, const std::string& key, double rasterGlyphUs, double cpuGlyphUs,
+                double computeGlyphUs = 100.0) {
   fs::create_directories(cache);
   std::ofstream f(cache / "pipelines.tsv", std::ios::trunc);
   f << "# tensorglyph --pipeline auto calibration 1\n"
     << "key\tpath\tclass\tfixed_ms\tglyph_us\tmegapixel_ms\n";
   for (const char* cls : {"closed-form", "march"})
     f << key << "\traster\t" << cls << "\t1\t" << rasterGlyphUs << "\t10\n"
-      << key << "\tcpu\t" << cls << "\t1\t" << cpuGlyphUs << "\t10\n";
+      << key << "\tcpu\t" << cls << "\t1\t" << cpuGlyphUs << "\t10\n"
+      << key << "\tcompute\t" << cls << "\t1\t" << computeGlyphUs << "\t10\n";
 }
 
 struct CacheDir {
@@ -60,7 +62,8 @@ struct CacheDir {
 TEST(PipelineCli, AutoTakesThePathItsTablePredictsFastest) {
   const CacheDir cache(dir() / "cache");
   const std::string base = " --size 160 120 --no-legend --verbose";
-  const fs::path out = dir() / "auto.png", cpu = dir() / "cpu.png", raster = dir() / "raster.png";
+  const fs::path out = dir() / "auto.png", cpu = dir() / "cpu.png", raster = dir() / "raster.png",
+                 compute = dir() / "compute.png";
   // No table yet: measured once, kept, and said so.
   const CmdResult first = run("render -o " + out.string() + base + " --pipeline auto");
   ASSERT_EQ(first.code, 0) << first.err;
@@ -73,13 +76,16 @@ TEST(PipelineCli, AutoTakesThePathItsTablePredictsFastest) {
 
   ASSERT_EQ(run("render -o " + cpu.string() + base + " --pipeline cpu").code, 0);
   ASSERT_EQ(run("render -o " + raster.string() + base + " --pipeline raster").code, 0);
-  for (const auto& [rasterUs, cpuUs, want] : {std::tuple{10.0, 1.0, "cpu"}, std::tuple{1.0, 10.0, "raster"}}) {
-    writeTable(cache.path, key, rasterUs, cpuUs);
+  ASSERT_EQ(run("render -o " + compute.string() + base + " --pipeline compute").code, 0);
+  for (const auto& [rasterUs, cpuUs, computeUs, want] :
+       {std::tuple{10.0, 1.0, 20.0, "cpu"}, std::tuple{1.0, 10.0, 20.0, "raster"}, std::tuple{10.0, 20.0, 1.0, "compute"}}) {
+    writeTable(cache.path, key, rasterUs, cpuUs, computeUs);
     const CmdResult r = run("render -o " + out.string() + base + " --pipeline auto");
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_NE(r.err.find(std::string("glyph path: ") + want + " (--pipeline auto: predicted"), std::string::npos) << r.err;
     EXPECT_EQ(r.err.find("measured"), std::string::npos) << r.err;
-    EXPECT_EQ(slurpFile(out), slurpFile(std::string(want) == "cpu" ? cpu : raster)) << want;
+    const std::string w = want;
+    EXPECT_EQ(slurpFile(out), slurpFile(w == "cpu" ? cpu : w == "raster" ? raster : compute)) << want;
   }
   // Another renderer's rows are no answer for this one: measured, and both kept.
   writeTable(cache.path, "some GPU | 4.6 | 64 cores | LP_NUM_THREADS unset", 10.0, 1.0);
@@ -119,6 +125,6 @@ TEST(PipelineCli, KindsOnOnePathNeedNoTableAndBadCachesAreMeasuredAgain) {
   EXPECT_EQ(slurpFile(cache.path / "pipelines.tsv").rfind("# tensorglyph --pipeline auto calibration 1\n", 0), 0u);
   const CmdResult bad = run("render -o " + out.string() + " --pipeline fastest");
   EXPECT_EQ(bad.code, 2);
-  EXPECT_NE(bad.err.find("--pipeline: unknown glyph path \"fastest\"; choose raster, cpu or auto"), std::string::npos)
+  EXPECT_NE(bad.err.find("--pipeline: unknown glyph path \"fastest\"; choose raster, cpu, compute or auto"), std::string::npos)
       << bad.err;
 }

@@ -42,7 +42,7 @@ bool edge(const render::FrameImage& f, int x, int y) {
 TEST_F(Antialias, OnlySilhouettePixelsChangeAndTheChannelsStayThePixelCentres) {
   const tensor::GlyphSet set = row();
   const auto cam = test::cameraFor(set, 1.0, test::oblique(set, 6.0, render::Projection::Perspective), 160, 120);
-  for (const char* path : {"raster", "cpu"}) {
+  for (const char* path : {"raster", "cpu", "compute"}) {
     SCOPED_TRACE(path);
     ctx_->makeCurrent();
     render::GlyphRenderer r(ctx_->api(), *lib_, nullptr, path);

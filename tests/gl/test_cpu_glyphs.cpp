@@ -1,8 +1,11 @@
-// Tier 3: the CPU glyph path (render/cpu_glyphs.h) against the raster path
-// on reference scenes. Both run the same intersection source
-// (shaders/lib/ellipsoid.glsl and the superquadric march's files, as GLSL
-// on llvmpipe and as C++ over GLM), so that the pictures agree to float
-// rounding:
+// Tier 3: the glyph paths that cast rays outside GL's rasteriser, the CPU
+// path (render/cpu_glyphs.h) and the compute path (render/compute_glyphs.h),
+// against the raster path on reference scenes (CastPaths, once per path).
+// All run the same intersection source (shaders/lib/ellipsoid.glsl and the
+// superquadric march's files, as GLSL on llvmpipe, the CPU path as C++ over
+// GLM), so that the pictures agree to float rounding (the compute path's,
+// the same GLSL through the same compiler, measured equal to the raster
+// path's at every pixel):
 // - coverage and ids: equal at every pixel centre (measured: no pixel differs
 //   on any scene here). A pixel centre within float rounding of a silhouette
 //   (the hit test's h = 1 - |q|^2 within a few ulps of 0) or of a depth tie
@@ -20,10 +23,13 @@
 // - lit colour: 2e-3, below one 8-bit step (3.9e-3).
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
+#include <memory>
 
 #include "data-synthetic/generators.h"
 #include "cpu_frame.h"
 #include "render/cpu_blobs.h"
+#include "render/compute_glyphs.h"
 #include "render/cpu_glyphs.h"
 #include "render/pixel_probe.h"
 #include "tensor/glyph_scale.h"
@@ -52,6 +58,7 @@ constexpr double kDepthTies = 1e-2;
 // to 0.087 degrees; test_superquadric.cpp's 0.5 against the reference.
 constexpr double kRelDepthMarch = 2e-4, kNormalDegMarch = 0.5;
 
+// `cpu`: the frame of the path under test.
 struct Pair {
   render::FrameImage raster, cpu;
   std::uint64_t cpuDrawn = 0;
@@ -94,7 +101,7 @@ void expectAgree(const Pair& s, const render::Camera& cam, const std::string& wh
                  bool marched = false, double maxColor = kColor) {
   SCOPED_TRACE(what);
   const Agreement g = agreement(s, cam);
-  std::printf("[ cpu path ] %s: %zu covered, %zu id mismatches, %zu depth ties, depth %.2g, normal %.3g deg, colour %.2g\n",
+  std::printf("[ cast path ] %s: %zu covered, %zu id mismatches, %zu depth ties, depth %.2g, normal %.3g deg, colour %.2g\n",
               what.c_str(), g.covered, g.idMismatch, g.depthTies, g.relDepth, g.normalDeg, g.color);
   EXPECT_GE(g.covered, minCovered);
   EXPECT_LE(double(g.idMismatch), kIdMismatch * double(g.covered));
@@ -119,24 +126,30 @@ tensor::GlyphSet spheres() {
 
 }  // namespace
 
-class CpuGlyphs : public GlFixture {
+class CastPaths : public GlFixture, public ::testing::WithParamInterface<std::string> {
  protected:
+  // The raster path's frame and the frame of the path under test.
   Pair both(const tensor::GlyphSet& set, const render::Camera& cam, const render::FrameParams& p) {
     ctx_->makeCurrent();
     render::GBuffer target(ctx_->api(), cam.width, cam.height);
     Pair out;
-    for (const char* path : {"raster", "cpu"}) {
+    for (const std::string& path : {std::string("raster"), GetParam()}) {
       render::GlyphRenderer r(ctx_->api(), *lib_, nullptr, path);
       r.upload(set);
       r.render(cam, p, target);
-      (std::string(path) == "cpu" ? out.cpu : out.raster) = r.readback(cam, target);
-      if (std::string(path) == "cpu") out.cpuDrawn = r.drawnGlyphs();
+      (path == "raster" ? out.raster : out.cpu) = r.readback(cam, target);
+      if (path != "raster") out.cpuDrawn = r.drawnGlyphs();
     }
     return out;
   }
 };
 
-TEST_F(CpuGlyphs, EllipsoidsMatchTheRasterPath) {
+INSTANTIATE_TEST_SUITE_P(Paths, CastPaths, ::testing::Values("cpu", "compute"),
+                         [](const ::testing::TestParamInfo<std::string>& param) { return param.param; });
+
+using CpuGlyphs = GlFixture;
+
+TEST_P(CastPaths, EllipsoidsMatchTheRasterPath) {
   const tensor::GlyphSet set = grid(4, 7);
   const double scale = 0.45;
   for (const auto proj : {render::Projection::Perspective, render::Projection::Orthographic}) {
@@ -149,7 +162,7 @@ TEST_F(CpuGlyphs, EllipsoidsMatchTheRasterPath) {
   }
 }
 
-TEST_F(CpuGlyphs, SpheresMatchTheRasterPath) {
+TEST_P(CastPaths, SpheresMatchTheRasterPath) {
   const tensor::GlyphSet set = spheres();
   const auto cam = test::cameraFor(set, 1.0, test::oblique(set, 6.0, render::Projection::Perspective), 160, 120);
   expectAgree(both(set, cam, render::FrameParams{}), cam, "spheres");
@@ -157,7 +170,7 @@ TEST_F(CpuGlyphs, SpheresMatchTheRasterPath) {
 
 // Every colour mode (sign colours per surface point) and the selection: FA
 // threshold and a slab.
-TEST_F(CpuGlyphs, ColoursAndSelectionMatchTheRasterPath) {
+TEST_P(CastPaths, ColoursAndSelectionMatchTheRasterPath) {
   const tensor::GlyphSet set = grid(4, 11);
   const double scale = 0.45;
   const auto cam = test::cameraFor(set, scale, test::oblique(set, 9.0, render::Projection::Perspective), 160, 120);
@@ -176,7 +189,7 @@ TEST_F(CpuGlyphs, ColoursAndSelectionMatchTheRasterPath) {
 
 // The eye inside a glyph and the eye plane cutting others: no finite
 // rectangle, rays from inside see the far wall.
-TEST_F(CpuGlyphs, GlyphsAroundTheEyeMatchTheRasterPath) {
+TEST_P(CastPaths, GlyphsAroundTheEyeMatchTheRasterPath) {
   const tensor::GlyphSet set = test::glyphsAroundTheEye();
   for (const auto proj : {render::Projection::Perspective, render::Projection::Orthographic}) {
     const auto cam = test::insideCamera(proj);
@@ -185,7 +198,7 @@ TEST_F(CpuGlyphs, GlyphsAroundTheEyeMatchTheRasterPath) {
 }
 
 // Deferred passes and context read the same G-buffer: AO and outlines on.
-TEST_F(CpuGlyphs, DepthCuesMatchTheRasterPath) {
+TEST_P(CastPaths, DepthCuesMatchTheRasterPath) {
   const tensor::GlyphSet set = grid(3, 5);
   const double scale = 0.5;
   const auto cam = test::cameraFor(set, scale, test::oblique(set, 7.0, render::Projection::Perspective), 160, 120);
@@ -194,7 +207,7 @@ TEST_F(CpuGlyphs, DepthCuesMatchTheRasterPath) {
   p.ao.enabled = p.outline.enabled = true;
   const Pair s = both(set, cam, p);
   const Agreement g = agreement(s, cam);
-  std::printf("[ cpu path ] depth cues: %zu id mismatches, colour %.2g\n", g.idMismatch, g.color);
+  std::printf("[ cast path ] depth cues: %zu id mismatches, colour %.2g\n", g.idMismatch, g.color);
   EXPECT_LE(double(g.idMismatch), kIdMismatch * double(g.covered));
   // AO samples depth and normals around each pixel; rounding-level depth
   // differences could move a sample across a surface at grazing angles
@@ -204,7 +217,7 @@ TEST_F(CpuGlyphs, DepthCuesMatchTheRasterPath) {
 
 // Picking reads one pixel of the G-buffer (render/pixel_probe.h): the same
 // glyph and depth on both paths.
-TEST_F(CpuGlyphs, PickingReadsTheCpuPathsGBuffer) {
+TEST_P(CastPaths, PickingReadsThePathsGBuffer) {
   const tensor::GlyphSet set = grid(3, 9);
   const double scale = 0.5;
   const auto cam = test::cameraFor(set, scale, test::oblique(set, 7.0, render::Projection::Perspective), 120, 90);
@@ -214,7 +227,7 @@ TEST_F(CpuGlyphs, PickingReadsTheCpuPathsGBuffer) {
   render::GBuffer target(ctx_->api(), cam.width, cam.height);
   std::vector<render::PixelSample> picks[2];
   int k = 0;
-  for (const char* path : {"raster", "cpu"}) {
+  for (const std::string& path : {std::string("raster"), GetParam()}) {
     render::GlyphRenderer r(ctx_->api(), *lib_, nullptr, path);
     r.upload(set);
     r.render(cam, p, target);
@@ -238,7 +251,7 @@ TEST_F(CpuGlyphs, PickingReadsTheCpuPathsGBuffer) {
 // variant), Schultz-Kindlmann ones (mixed variant) and spheres cast as
 // ellipsoids, at gamma 0 (definite glyphs then ellipsoids), 1, 3 and the
 // extremes, both projections, the sign colour, and the general march alone.
-TEST_F(CpuGlyphs, SuperquadricsMatchTheRasterPath) {
+TEST_P(CastPaths, SuperquadricsMatchTheRasterPath) {
   const tensor::GlyphSet set = grid(4, 13);
   const double scale = 0.45;
   for (const auto proj : {render::Projection::Perspective, render::Projection::Orthographic}) {
@@ -268,7 +281,7 @@ TEST_F(CpuGlyphs, SuperquadricsMatchTheRasterPath) {
 // llvmpipe's exp2 and log2 against libm's) cover a few pixels differently.
 // Measured: 16 of 2994 pixels (0.5%), all inside a disc {1, 0.5, 0} that the
 // double reference covers, and the raster path with it.
-TEST_F(CpuGlyphs, SuperquadricExtremesMatchTheRasterPath) {
+TEST_P(CastPaths, SuperquadricExtremesMatchTheRasterPath) {
   const io::TensorField gallery = synth::extremesGallery(1.0, 1.0);
   const tensor::GlyphSet set = test::withoutFlatGlyphs(gallery), all = test::glyphsOf(gallery);
   for (const auto proj : {render::Projection::Perspective, render::Projection::Orthographic}) {
@@ -278,7 +291,7 @@ TEST_F(CpuGlyphs, SuperquadricExtremesMatchTheRasterPath) {
       p.march = {30, 1e-6};
       expectAgree(both(set, cam, p), cam, "extremes, gamma " + std::to_string(gamma));
       const Agreement g = agreement(both(all, cam, p), cam);
-      std::printf("[ cpu path ] flat glyphs too, gamma %g: %zu of %zu pixels differ\n", gamma, g.idMismatch, g.covered);
+      std::printf("[ cast path ] flat glyphs too, gamma %g: %zu of %zu pixels differ\n", gamma, g.idMismatch, g.covered);
       EXPECT_LE(double(g.idMismatch), 0.01 * double(g.covered));
     }
     const auto inside = test::insideCamera(proj);
@@ -288,7 +301,7 @@ TEST_F(CpuGlyphs, SuperquadricExtremesMatchTheRasterPath) {
 }
 
 // The stress field of the point load: every glyph of mixed sign.
-TEST_F(CpuGlyphs, StressSuperquadricsMatchTheRasterPath) {
+TEST_P(CastPaths, StressSuperquadricsMatchTheRasterPath) {
   const io::TensorField f = synth::boussinesq(6, 0.3);
   const tensor::GlyphSet set = test::glyphsOf(f);
   // The default sizing: the load's neighbours overlap, as in a render.
@@ -303,7 +316,7 @@ TEST_F(CpuGlyphs, StressSuperquadricsMatchTheRasterPath) {
 
 // The key light's shadow map comes from the raster path's casters on both
 // paths, so that shadowed superquadrics light alike.
-TEST_F(CpuGlyphs, ShadowedSuperquadricsMatchTheRasterPath) {
+TEST_P(CastPaths, ShadowedSuperquadricsMatchTheRasterPath) {
   const tensor::GlyphSet set = grid(3, 17);
   const double scale = 0.5;
   const auto cam = test::cameraFor(set, scale, test::oblique(set, 7.0, render::Projection::Perspective), 160, 120);
@@ -315,7 +328,7 @@ TEST_F(CpuGlyphs, ShadowedSuperquadricsMatchTheRasterPath) {
 // Teem's cylinders and boxes: the same closed forms (lib/prism.glsl) on
 // both paths, in both projections, with sign colours (each face's point),
 // the selection, a stress field's mixed signs, and the eye inside a glyph.
-TEST_F(CpuGlyphs, CylindersAndBoxesMatchTheRasterPath) {
+TEST_P(CastPaths, CylindersAndBoxesMatchTheRasterPath) {
   const tensor::GlyphSet set = grid(4, 7);
   const tensor::GlyphSet stress = test::glyphsOf(synth::boussinesq(6, 0.3));
   const double scale = 0.45;
@@ -358,12 +371,12 @@ TEST_F(CpuGlyphs, CylindersAndBoxesMatchTheRasterPath) {
   }
 }
 
-TEST_F(CpuGlyphs, TessellatedFramesAreRefused) {
+TEST_P(CastPaths, TessellatedFramesAreRefused) {
   const tensor::GlyphSet set = grid(2, 3);
   ctx_->makeCurrent();
   const auto cam = test::cameraFor(set, 0.5, test::oblique(set, 5.0, render::Projection::Perspective), 64, 48);
   render::GBuffer target(ctx_->api(), cam.width, cam.height);
-  render::GlyphRenderer r(ctx_->api(), *lib_, nullptr, "cpu");
+  render::GlyphRenderer r(ctx_->api(), *lib_, nullptr, GetParam());
   r.upload(set);
   render::FrameParams p;
   p.scale = 0.5;
@@ -432,13 +445,13 @@ TEST_F(CpuGlyphs, BlobsFillTheGBufferAsCastAndCastShadows) {
 
 // One renderer whose frames change size (a viewer's window, the
 // calibration of --pipeline auto): the casts' textures follow the frame.
-TEST_F(CpuGlyphs, FramesOfAnotherSizeMatchTheRasterPath) {
+TEST_P(CastPaths, FramesOfAnotherSizeMatchTheRasterPath) {
   const tensor::GlyphSet set = grid(4, 7);
   const double scale = 0.45;
   render::FrameParams p;
   p.scale = scale;
   ctx_->makeCurrent();
-  render::GlyphRenderer cpu(ctx_->api(), *lib_, nullptr, "cpu");
+  render::GlyphRenderer cpu(ctx_->api(), *lib_, nullptr, GetParam());
   cpu.upload(set);
   for (const auto& [w, h] : {std::pair{120, 90}, std::pair{200, 150}, std::pair{96, 72}}) {
     const auto cam = test::cameraFor(set, scale, test::oblique(set, 9.0, render::Projection::Perspective), w, h);
@@ -448,4 +461,68 @@ TEST_F(CpuGlyphs, FramesOfAnotherSizeMatchTheRasterPath) {
     s.cpu = cpu.readback(cam, target);
     expectAgree(s, cam, std::to_string(w) + " x " + std::to_string(h), 200);
   }
+}
+
+using ComputeGlyphs = GlFixture;
+
+// Tile lists that start too small for the frame (4 glyphs, 16 entries):
+// the frame is cast again with room, and matches the raster path.
+TEST_F(ComputeGlyphs, ListsTooSmallForAFrameGrowAndTheFrameMatches) {
+  const tensor::GlyphSet set = grid(4, 7);
+  const double scale = 0.45;
+  const auto cam = test::cameraFor(set, scale, test::oblique(set, 9.0, render::Projection::Perspective), 200, 150);
+  render::FrameParams p = test::superquadricParams(scale, 3.0);
+  ctx_->makeCurrent();
+  render::GBuffer target(ctx_->api(), cam.width, cam.height);
+  render::GlyphRenderer r(ctx_->api(), *lib_, nullptr, std::make_unique<render::ComputeGlyphs>(ctx_->api(), *lib_, 4, 16));
+  r.upload(set);
+  const std::size_t before = r.glyphPath().gpuBytes();
+  r.render(cam, p, target);
+  EXPECT_GT(r.glyphPath().gpuBytes(), before + 16 * 80) << "the lists did not grow";
+  Pair s;
+  s.cpu = r.readback(cam, target);
+  render::GlyphRenderer raster(ctx_->api(), *lib_, nullptr, "raster");
+  raster.upload(set);
+  raster.render(cam, p, target);
+  s.raster = raster.readback(cam, target);
+  expectAgree(s, cam, "lists grown", 500, true);
+}
+
+TEST_F(ComputeGlyphs, BlobsAreRefusedNamingTheCpuPath) {
+  const tensor::GlyphSet set = grid(2, 3);
+  ctx_->makeCurrent();
+  const auto cam = test::cameraFor(set, 0.5, test::oblique(set, 5.0, render::Projection::Perspective), 64, 48);
+  render::GBuffer target(ctx_->api(), cam.width, cam.height);
+  render::GlyphRenderer r(ctx_->api(), *lib_, nullptr, "compute");
+  r.upload(set);
+  render::FrameParams p;
+  p.scale = 0.5;
+  p.glyph = render::GlyphKind::Blob;
+  try {
+    r.render(cam, p, target);
+    ADD_FAILURE() << "the compute path drew blobs";
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("casts no blobs; use the cpu path"), std::string::npos) << e.what();
+  }
+}
+
+// Which visibility buffer the path writes follows the GL's extensions; the
+// ctest entry ComputeGlyphs.Atomics64OnLlvmpipe runs the compute tests again
+// with llvmpipe's 64-bit atomics switched on (MESA_EXTENSION_OVERRIDE) and
+// TG_TEST_EXPECT_ATOMICS64=1, so that both variants are tested here.
+TEST_F(ComputeGlyphs, VisibilityBufferFollowsTheGlsAtomics) {
+  ctx_->makeCurrent();
+  const render::ComputeGlyphs path(ctx_->api(), *lib_);
+  bool nv = false;
+  GLint n = 0;
+  ctx_->api().GetIntegerv(GL_NUM_EXTENSIONS, &n);
+  for (GLint k = 0; k < n; ++k) {
+    const auto* e = reinterpret_cast<const char*>(ctx_->api().GetStringi(GL_EXTENSIONS, GLuint(k)));
+    nv = nv || std::string(e) == "GL_NV_shader_atomic_int64";
+  }
+  EXPECT_EQ(path.atomics64(), nv);
+  if (const char* want = std::getenv("TG_TEST_EXPECT_ATOMICS64")) {
+    EXPECT_EQ(path.atomics64(), std::string(want) == "1");
+  }
+  EXPECT_NE(path.how().find(path.atomics64() ? "64-bit atomics" : "two passes of 32-bit atomics"), std::string::npos);
 }

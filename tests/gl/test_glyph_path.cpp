@@ -91,16 +91,17 @@ tensor::GlyphSet oneGlyph() {
 }  // namespace
 
 TEST(GlyphPath, PathsAreSelectedByName) {
-  EXPECT_EQ(render::glyphPathNames(), "raster, cpu");
+  EXPECT_EQ(render::glyphPathNames(), "raster, cpu, compute");
   auto ctx = gl::createOSMesaContext();
   const gl::ShaderLibrary lib;
   EXPECT_EQ(render::makeGlyphPath("raster", ctx->api(), lib)->name(), "raster");
   EXPECT_EQ(render::makeGlyphPath("cpu", ctx->api(), lib)->name(), "cpu");
+  EXPECT_EQ(render::makeGlyphPath("compute", ctx->api(), lib)->name(), "compute");
   try {
     render::makeGlyphPath("tiles", ctx->api(), lib);
     ADD_FAILURE() << "an unknown path was made";
   } catch (const std::invalid_argument& e) {
-    EXPECT_NE(std::string(e.what()).find("\"tiles\"; choose raster, cpu"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("\"tiles\"; choose raster, cpu, compute"), std::string::npos) << e.what();
   }
 }
 

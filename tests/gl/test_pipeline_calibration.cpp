@@ -7,8 +7,11 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string_view>
 
 #include "app/scale/pipeline_calibration.h"
+#include "render/glyph_path.h"
 #include "render_fixture.h"
 
 using namespace tg;
@@ -24,8 +27,8 @@ TEST_F(PipelineCalibration, EveryPathAndClassIsMeasured) {
   plan.frames = 1;
   const app::PathCalibration cal = app::calibratePaths(ctx_->api(), *lib_, "key", plan);
   EXPECT_EQ(cal.key, "key");
-  ASSERT_EQ(cal.rows.size(), 4u);
-  for (const char* path : {"raster", "cpu"})
+  ASSERT_EQ(cal.rows.size(), 2 * std::size(render::kGlyphPathNames));
+  for (const std::string_view path : render::kGlyphPathNames)
     for (const app::CostClass c : {app::CostClass::ClosedForm, app::CostClass::March}) {
       const app::PathCost* cost = cal.cost(path, c);
       ASSERT_NE(cost, nullptr) << path;
@@ -53,7 +56,7 @@ TEST_F(PipelineCalibration, TheCacheIsKeptReusedAndRebuiltWhenUnreadableOrIncomp
   const app::CachedCalibration again = app::calibrationFor(ctx_->api(), *lib_, "renderer A");
   EXPECT_FALSE(again.measured);
   EXPECT_EQ(again.said, "");
-  ASSERT_EQ(again.cal.rows.size(), 4u);
+  ASSERT_EQ(again.cal.rows.size(), 2 * std::size(render::kGlyphPathNames));
   EXPECT_DOUBLE_EQ(again.cal.rows[3].cost.glyphUs, first.cal.rows[3].cost.glyphUs);
   // Another renderer's rows are kept beside these.
   EXPECT_TRUE(app::calibrationFor(ctx_->api(), *lib_, "renderer B").measured);

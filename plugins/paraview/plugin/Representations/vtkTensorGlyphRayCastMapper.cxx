@@ -65,7 +65,7 @@ struct GLState {
   GLState& operator=(const GLState&) = delete;
 };
 
-// Pipeline's path: raster or cpu as named, or for auto the calibrated
+// Pipeline's path: raster, cpu or compute as named, or for auto the calibrated
 // choice (app/scale/pipeline_calibration.h), measured in this context the
 // first time this renderer, driver and core count is seen.
 std::string glyphPathFor(GLState& g, int pipeline, render::GlyphKind kind, double gamma, double glyphs,

@@ -65,7 +65,7 @@ public:
   // the new path, its records uploaded again.
   void SetPipeline(int v);
   vtkGetMacro(Pipeline, int);
-  // The path the last frame drew on ("raster", "cpu"; "" before a frame).
+  // The path the last frame drew on ("raster", "cpu", "compute"; "" before a frame).
   const char* GetGlyphPath() { return this->GlyphPath.c_str(); }
   // The renderer's deferred depth cues (render/ao_pass.h, outline_pass.h,
   // shadow_pass.h), off by default as in the CLI.

@@ -1,0 +1,109 @@
+#pragma once
+// The compute glyph path (render/glyph_path.h, "compute"): every glyph's
+// set-up and cast by compute shaders in the frame's own GL context, for GPUs
+// whose graphics stages run on a small part of the chip (H100/H200) while
+// compute runs on all of it. Per cast class (the ellipsoid, each march
+// variant, cylinders, boxes: the raster path's programs), from the records
+// as uploaded, so that no parameter or camera change uploads anything:
+//  1. compute_setup.comp, per record: the sprite stage's culls and exact
+//     screen rectangle; a glyph of at most 16 pixel centres is cast at each
+//     and written to the visibility buffer; a larger one is kept, with the
+//     count of each tile it touches;
+//  2. compute_scan.comp: the tiles' starts by a prefix sum, and the next
+//     pass's indirect dispatch (no CPU round trip);
+//  3. compute_bin.comp: each kept glyph into its tiles' lists;
+//  4. compute_cast.comp, per tile and pixel: its list's glyphs, skipping
+//     those behind the nearest hit so far, the nearest into the buffer.
+// The visibility buffer holds, per pixel, the minimum of (inverted window
+// depth, record) as 64 bits: by one atomic where GL_NV_shader_atomic_int64
+// is present, else by two passes of 32-bit minima (depth, then the record
+// at that depth). compute_resolve.comp turns it into the CPU path's textures
+// (render/cast_targets.h), casting each pixel's glyph once more for its
+// normal; cpu_gbuffer.frag writes the G-buffer, so that every deferred pass,
+// context and picking run unchanged. The key light's shadow map is cast the
+// same way from the light. Blobs and the tessellated baseline are refused.
+// The lists are sized by the last frame's need: a frame that needs more is
+// cast again with room (the counters are read back once a frame).
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "render/cast_targets.h"
+#include "render/glyph_path.h"
+
+namespace tg::render {
+
+class ComputeGlyphs final : public GlyphPath {
+ public:
+  // The tile lists start with room for `tiled` glyphs and `entries` tile
+  // entries (they grow as frames need; tests start them small).
+  ComputeGlyphs(const gl::Api& gl, const gl::ShaderLibrary& lib, std::size_t tiled = std::size_t(1) << 16,
+                std::size_t entries = std::size_t(1) << 18);
+  ~ComputeGlyphs() override;
+  ComputeGlyphs(const ComputeGlyphs&) = delete;
+  ComputeGlyphs& operator=(const ComputeGlyphs&) = delete;
+
+  std::string_view name() const override { return "compute"; }
+  std::string how() const override;
+  void upload(const tensor::GlyphSet& set) override;
+  void setParams(const FrameParams& p, const FrameParams* old) override;
+  void setColorWindow(glm::dvec2 window) override;
+  void uploadColorScalars(std::span<const float> byRecord) override;
+  void drawView(const Camera& cam, const FrameParams& p, const GBuffer& target) override;
+  std::pair<glm::dvec3, glm::dvec3> castersBoxWC(const FrameParams& p) const override;
+  void drawShadowCasters(const Camera& light, const FrameParams& p, ShadowPass& shadow) override;
+  std::size_t gpuBytes() const override;
+  GLuint recordBuffer() const override { return buffer_; }
+  std::uint64_t drawnGlyphs() const override { return drawn_; }
+
+  // Whether the visibility buffer takes one 64-bit atomic (else two 32-bit passes).
+  bool atomics64() const { return vis64_; }
+
+  // A frame's cast classes: which programs cast which glyph groups.
+  struct CastClass {
+    int program;  // kEllipsoid ... kBox
+    int groupLo, groupHi;
+  };
+  enum Program { kEllipsoid = 0, kMarchGeneral, kMarchConvex, kMarchMixed, kCylinder, kBox, kPrograms };
+
+ private:
+  enum Stage { kSetup = 0, kCast, kSurface, kStages };
+  const gl::Program& classProgram(Stage stage, int program);
+  // The visibility buffer of `cam` at p's parameters, and the frame's
+  // glyph count; grows the lists and casts again where they overflowed.
+  void castFrame(const Camera& cam, const FrameParams& p, const std::vector<CastClass>& classes);
+  void castPasses(const Camera& cam, const FrameParams& p, const std::vector<CastClass>& classes);
+  void setUniforms(const gl::Program& prog, const Camera& cam, const FrameParams& p, const CastClass* c, int pass) const;
+  void allocateFrame(int width, int height);
+  void allocateLists(std::size_t tiled, std::size_t entries);
+  // vis_ into the depth and record images (and, with `surface`, each
+  // class's normals and hits), for cpu_gbuffer.frag or cpu_depth.frag.
+  void resolve(const Camera& cam, const FrameParams& p, const std::vector<CastClass>& classes, GLuint depth,
+               GLuint record, bool surface, bool hitGC);
+
+  const gl::Api& gl_;
+  const gl::ShaderLibrary& lib_;
+  CastTargets targets_;
+  bool vis64_ = false;
+  std::array<std::unique_ptr<gl::Program>, std::size_t(kStages) * std::size_t(kPrograms)> programs_;
+  std::unique_ptr<gl::Program> scan_, bin_, depthResolve_;
+  std::size_t records_ = 0, sphereCount_ = 0, definiteCount_ = 0;
+  glm::dvec3 centresLoWC_{0.0}, centresHiWC_{0.0};
+  double maxAbsEigenvalue_ = 0;
+  FrameParams params_;
+  bool paramsSet_ = false;
+  glm::vec2 colorWindow_{0.0f, 1.0f};
+  GLuint buffer_ = 0, scalars_ = 0;
+  GLuint vis_ = 0, state_ = 0, candidates_ = 0, tileCount_ = 0, tileStart_ = 0, tileList_ = 0;
+  int width_ = 0, height_ = 0, tilesX_ = 0, tilesY_ = 0;
+  std::size_t initialTiled_, initialEntries_;
+  std::size_t tiledCapacity_ = 0, entryCapacity_ = 0;
+  std::uint64_t drawn_ = 0;
+};
+
+// The cast classes of a frame at p over groups of these sizes (spheres,
+// definite, mixed), in the raster path's program order; GL-free, for tests.
+std::vector<ComputeGlyphs::CastClass> computeCastClasses(const FrameParams& p, const std::array<std::size_t, 3>& groups);
+
+}  // namespace tg::render
