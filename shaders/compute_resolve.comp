@@ -3,8 +3,8 @@
 // textures cpu_gbuffer.frag and cpu_depth.frag read, as the CPU path
 // uploads them. Without TG_RESOLVE_SURFACE, every pixel's window depth and
 // record + 1 (0: empty) from the visibility buffer; with it, per cast
-// class, the normal and the sign colour's GC hit of the pixels whose
-// record is the class's, cast again at the pixel centre with the same code
+// class and record chunk, the normal and the sign colour's GC hit of the
+// pixels whose record is the class's and the chunk's, cast again at the pixel centre with the same code
 // (a visibility buffer keeps only which glyph won).
 #pragma tg option TG_RESOLVE_SURFACE
 #include "lib/compute_vis.glsl"
@@ -28,12 +28,14 @@ void main() {
   imageStore(uCastDepth, p, vec4(empty ? 0.0 : uintBitsToFloat(~key)));
   imageStore(uCastRecord, p, uvec4(empty ? 0u : record + 1u));
 #else
-  if (key == kEmptyKey || record >= uint(uRecordCount) || !inClass(glyphs[record])) return;
+  // Per chunk too: the pixels whose record the bound chunk holds.
+  uint k = record - uint(uRecordBase);  // wraps past the chunk for records before it
+  if (key == kEmptyKey || k >= uint(uRecordCount) || !inClass(glyphs[k])) return;
   CastCandidate c;
   float depthVC;
   vec3 pGC, gradGC;
   vec3 nWC, hitGC = vec3(0.0);
-  if (glyphCandidate(record, c) && castCandidate(vec2(p) + 0.5, c, depthVC, pGC, gradGC)) {
+  if (glyphCandidate(k, c) && castCandidate(vec2(p) + 0.5, c, depthVC, pGC, gradGC)) {
     nWC = candidateNormalWC(c, pGC, gradGC);
     hitGC = candidateHitGC(c, pGC);
   } else {

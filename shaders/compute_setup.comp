@@ -4,7 +4,7 @@
 #extension GL_NV_shader_atomic_int64 : require
 #endif
 // The compute glyph path's set-up (render/compute_glyphs.h), one invocation
-// per record of the class's groups: the sprite stage's culls and screen
+// per record of the bound chunk in the class's groups: the sprite stage's culls and screen
 // rectangle; a glyph of at most kDirectPixels pixel centres is cast at each
 // of them here and written to the visibility buffer, a larger one is kept
 // for the tiles (compute_scan.comp, compute_bin.comp, compute_cast.comp).
@@ -17,10 +17,11 @@ layout(local_size_x = 64) in;
 const int kDirectPixels = 16;
 
 void main() {
-  uint i = linearInvocation(64u);
-  if (i >= uint(uRecordCount) || !inClass(glyphs[i])) return;
+  uint k = linearInvocation(64u);
+  if (k >= uint(uRecordCount) || !inClass(glyphs[k])) return;
   CastCandidate c;
-  if (!glyphCandidate(i, c)) return;
+  if (!glyphCandidate(k, c)) return;
+  uint i = c.record_rect.x;
   if (uPass == 0) atomicAdd(drawn, 1u);
   ivec4 r = candidateRect(c);
   if ((r.z - r.x + 1) * (r.w - r.y + 1) <= kDirectPixels) {

@@ -21,11 +21,17 @@ layout(location = 0) out vec4 oAlbedo;
 layout(location = 1) out vec4 oNormalWC;
 layout(location = 2) out uint oId;
 
+// The bound chunk of the records and colour scalars (render/cast_targets.h,
+// RecordChunk): one draw per chunk, each writing the pixels of its records.
+uniform int uRecordBase;
+uniform int uRecordCount;
+
 void main() {
   ivec2 p = ivec2(gl_FragCoord.xy);
   uint r = texelFetch(uRecord, p, 0).r;
   if (r == 0u) discard;
-  uint index = r - 1u;
+  uint index = r - 1u - uint(uRecordBase);  // wraps past the chunk for records before it
+  if (index >= uint(uRecordCount)) discard;
   GlyphRecord g = glyphs[index];
   mat3 rotWC = quatToMat3(g.frameWC);
   vec3 color = glyphVertexColor(index, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, g.eigenvalues_id.xyz);

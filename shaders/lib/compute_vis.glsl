@@ -39,6 +39,9 @@ const bool kCylinder = false;
 uniform float uGamma;
 uniform float uEpsilon;
 uniform int uMaxIterations;
+// The bound chunk of the records (render/compute_glyphs.h, RecordChunk):
+// glyphs[k] is record uRecordBase + k, for k < uRecordCount.
+uniform int uRecordBase;
 uniform int uRecordCount;
 uniform int uGroupLo;  // the class's glyph groups: [uGroupLo, uGroupHi)
 uniform int uGroupHi;
@@ -86,10 +89,11 @@ bool inClass(GlyphRecord g) {
   return group >= uGroupLo && group < uGroupHi;
 }
 
-// Record i's set-up for this class: false where no pixel centre can see it
-// (the sprite's own culls: selection, size, depth range, its rectangle).
-bool glyphCandidate(uint i, out CastCandidate c) {
-  GlyphRecord g = glyphs[i];
+// The set-up of the chunk's record k for this class: false where no pixel
+// centre can see it (the sprite's own culls: selection, size, depth range,
+// its rectangle).
+bool glyphCandidate(uint k, out CastCandidate c) {
+  GlyphRecord g = glyphs[k];
   vec3 shape = vec3(1.0);
   uint axis = 0u;
   vec4 rectNDC;
@@ -121,7 +125,7 @@ bool glyphCandidate(uint i, out CastCandidate c) {
   c.gc0_shapeX = vec4(gc[0], shape.x);
   c.gc1_shapeY = vec4(gc[1], shape.y);
   c.gc2_shapeZ = vec4(gc[2], shape.z);
-  c.record_rect = uvec4(i, uint(r.x) | uint(r.y) << 16, uint(r.z) | uint(r.w) << 16, axis);
+  c.record_rect = uvec4(uint(uRecordBase) + k, uint(r.x) | uint(r.y) << 16, uint(r.z) | uint(r.w) << 16, axis);
   return true;
 }
 

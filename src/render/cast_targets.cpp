@@ -1,5 +1,8 @@
 #include "render/cast_targets.h"
 
+#include <algorithm>
+#include <limits>
+
 #include "render/camera_uniforms.h"
 #include "render/shadow_pass.h"
 #include "shaders/lib/bindings.h"
@@ -58,15 +61,19 @@ void CastTargets::fullScreen(const gl::Program& prog) const {
   gl_.DepthFunc(GL_GREATER);  // reversed Z, as the raster path leaves it for the context
 }
 
-void CastTargets::writeView(const Camera& cam, GLuint records, GLuint scalars) const {
+void CastTargets::writeView(const Camera& cam, std::span<const RecordChunk> chunks) const {
   setCameraUniforms(gbuffer_, cam);
-  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_GLYPHS, records);
-  if (scalars) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_COLOR_SCALARS, scalars);
   gl_.BindTextureUnit(TG_UNIT_CPU_DEPTH, view_[kDepth]);
   gl_.BindTextureUnit(TG_UNIT_CPU_RECORD, view_[kRecord]);
   gl_.BindTextureUnit(TG_UNIT_CPU_NORMAL, view_[kNormal]);
   gl_.BindTextureUnit(TG_UNIT_CPU_HIT_GC, view_[kHitGC]);
-  fullScreen(gbuffer_);
+  for (const RecordChunk& c : chunks) {
+    gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_GLYPHS, c.records);
+    if (c.scalars) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_COLOR_SCALARS, c.scalars);
+    gbuffer_.set("uRecordBase", int(c.first));
+    gbuffer_.set("uRecordCount", int(std::min<std::size_t>(c.count, std::numeric_limits<int>::max())));
+    fullScreen(gbuffer_);
+  }
   gl::checkError(gl_, "CastTargets::writeView");
 }
 

@@ -7,6 +7,7 @@
 // light's shadow map. One home, so that both paths shade alike.
 #include <cstddef>
 #include <memory>
+#include <span>
 
 #include "gl/program.h"
 #include "view/camera.h"
@@ -14,6 +15,14 @@
 namespace tg::render {
 
 class ShadowPass;
+
+// Records [first, first + count) in their own buffers (records, and colour
+// scalars or 0): a path whose records pass one storage block
+// (GL_MAX_SHADER_STORAGE_BLOCK_SIZE) holds them in several.
+struct RecordChunk {
+  GLuint records = 0, scalars = 0;
+  std::size_t first = 0, count = 0;
+};
 
 class CastTargets {
  public:
@@ -37,9 +46,9 @@ class CastTargets {
   GLuint lightRecord() const { return light_[1]; }
 
   // The view textures into the bound geometry framebuffer (what
-  // GBuffer::beginGeometry left bound), over `records` (and `scalars`, 0
-  // for none); leaves the depth test at GL_GREATER, as the raster path.
-  void writeView(const Camera& cam, GLuint records, GLuint scalars) const;
+  // GBuffer::beginGeometry left bound), over the records' chunks, one draw
+  // each; leaves the depth test at GL_GREATER, as the raster path.
+  void writeView(const Camera& cam, std::span<const RecordChunk> chunks) const;
   // The light textures into shadow's map (ShadowPass::beginMap, which it calls).
   void writeLight(int size, ShadowPass& shadow);
   std::size_t bytes() const;

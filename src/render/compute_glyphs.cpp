@@ -88,20 +88,35 @@ std::vector<ComputeGlyphs::CastClass> computeCastClasses(const FrameParams& p, c
   return out;
 }
 
-ComputeGlyphs::ComputeGlyphs(const gl::Api& gl, const gl::ShaderLibrary& lib, std::size_t tiled, std::size_t entries)
+ComputeGlyphs::ComputeGlyphs(const gl::Api& gl, const gl::ShaderLibrary& lib, std::size_t tiled, std::size_t entries,
+                             std::size_t chunkRecords)
     : gl_(gl),
       lib_(lib),
       targets_(gl, lib),
       vis64_(hasExtension(gl, "GL_ARB_gpu_shader_int64") && hasExtension(gl, "GL_NV_shader_atomic_int64")),
       initialTiled_(std::max<std::size_t>(tiled, 1)),
       initialEntries_(std::max<std::size_t>(entries, 1)) {
+  GLint64 maxBlock = 0;
+  gl.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
+  // GLSL indexes a block with an int; GL guarantees 2^27 bytes.
+  const auto blockBytes = std::size_t(std::clamp<GLint64>(maxBlock, GLint64(1) << 27, std::numeric_limits<GLint>::max()));
+  chunkRecords_ = blockBytes / sizeof(tensor::GlyphRecord);
+  if (chunkRecords > 0) chunkRecords_ = std::min(chunkRecords_, chunkRecords);
   state_ = makeBuffer(gl, sizeof(ComputeState), GL_DYNAMIC_STORAGE_BIT);
   gl::checkError(gl, "ComputeGlyphs");
 }
 
 ComputeGlyphs::~ComputeGlyphs() {
-  for (GLuint* b : {&buffer_, &scalars_, &vis_, &state_, &candidates_, &tileCount_, &tileStart_, &tileList_})
-    deleteBuffer(gl_, *b);
+  freeChunks(false);
+  for (GLuint* b : {&vis_, &state_, &candidates_, &tileCount_, &tileStart_, &tileList_}) deleteBuffer(gl_, *b);
+}
+
+void ComputeGlyphs::freeChunks(bool scalarsOnly) {
+  for (RecordChunk& c : chunks_) {
+    deleteBuffer(gl_, c.scalars);
+    if (!scalarsOnly) deleteBuffer(gl_, c.records);
+  }
+  if (!scalarsOnly) chunks_.clear();
 }
 
 std::string ComputeGlyphs::how() const {
@@ -129,27 +144,24 @@ const gl::Program& ComputeGlyphs::classProgram(Stage stage, int program) {
 }
 
 void ComputeGlyphs::upload(const tensor::GlyphSet& set) {
-  const std::size_t bytes = set.glyphs.size() * sizeof(tensor::GlyphRecord);
-  GLint64 maxBlock = 0;
-  gl_.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
-  if (set.glyphs.size() >= std::size_t(std::numeric_limits<std::int32_t>::max()) ||
-      (maxBlock > 0 && bytes > std::size_t(maxBlock)))
-    throw std::runtime_error("GlyphRenderer::upload: " + std::to_string(set.glyphs.size()) + " glyphs (" +
-                             std::to_string(bytes) + " bytes of records) pass this GL's storage block of " +
-                             std::to_string(maxBlock) +
-                             " bytes (GL_MAX_SHADER_STORAGE_BLOCK_SIZE), which the compute path reads whole; "
-                             "use --pipeline raster");
-  deleteBuffer(gl_, buffer_);
-  deleteBuffer(gl_, scalars_);
+  // Record ids are 32-bit words of the visibility buffer and GLSL ints.
+  if (set.glyphs.size() >= std::size_t(std::numeric_limits<std::int32_t>::max()))
+    throw std::runtime_error("GlyphRenderer::upload: " + std::to_string(set.glyphs.size()) +
+                             " glyphs; the compute path draws fewer than 2^31");
+  freeChunks(false);
   records_ = set.glyphs.size();
   sphereCount_ = set.sphereCount;
   definiteCount_ = set.definiteCount;
   centresLoWC_ = set.boundsMinWC;
   centresHiWC_ = set.boundsMaxWC;
   maxAbsEigenvalue_ = set.maxAbsEigenvalue;
-  if (records_ > 0) {
-    gl_.CreateBuffers(1, &buffer_);
-    gl_.NamedBufferStorage(buffer_, GLsizeiptr(bytes), set.glyphs.data(), 0);
+  for (std::size_t first = 0; first < records_; first += chunkRecords_) {
+    RecordChunk c;
+    c.first = first;
+    c.count = std::min(chunkRecords_, records_ - first);
+    gl_.CreateBuffers(1, &c.records);
+    chunks_.push_back(c);
+    gl_.NamedBufferStorage(c.records, GLsizeiptr(c.count * sizeof(tensor::GlyphRecord)), set.glyphs.data() + first, 0);
   }
   gl::checkError(gl_, "GlyphRenderer::upload");
 }
@@ -167,10 +179,10 @@ void ComputeGlyphs::uploadColorScalars(std::span<const float> byRecord) {
   if (byRecord.size() != records_)
     throw std::invalid_argument("GlyphRenderer::setColorScalars: " + std::to_string(byRecord.size()) +
                                 " values for " + std::to_string(records_) + " glyphs");
-  deleteBuffer(gl_, scalars_);
-  if (!byRecord.empty()) {
-    gl_.CreateBuffers(1, &scalars_);
-    gl_.NamedBufferStorage(scalars_, GLsizeiptr(byRecord.size_bytes()), byRecord.data(), 0);
+  freeChunks(true);
+  for (RecordChunk& c : chunks_) {
+    gl_.CreateBuffers(1, &c.scalars);
+    gl_.NamedBufferStorage(c.scalars, GLsizeiptr(c.count * sizeof(float)), byRecord.data() + c.first, 0);
   }
   gl::checkError(gl_, "GlyphRenderer::setColorScalars");
 }
@@ -216,13 +228,18 @@ void ComputeGlyphs::setUniforms(const gl::Program& prog, const Camera& cam, cons
   prog.set("uGamma", float(p.gamma));
   prog.set("uEpsilon", float(p.march.epsilon));
   prog.set("uMaxIterations", p.march.maxIterations);
-  prog.set("uRecordCount", int(records_));
   prog.set("uGroupLo", c ? c->groupLo : 0);
   prog.set("uGroupHi", c ? c->groupHi : 3);
   prog.set("uPass", pass);
   prog.set("uTilesX", tilesX_);
   prog.set("uTiles", tilesX_ * tilesY_);
   gl_.UseProgram(prog.id());
+}
+
+void ComputeGlyphs::bindChunk(const gl::Program& prog, const RecordChunk& c) const {
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_GLYPHS, c.records);
+  prog.set("uRecordBase", int(c.first));
+  prog.set("uRecordCount", int(c.count));
 }
 
 void ComputeGlyphs::castPasses(const Camera& cam, const FrameParams& p, const std::vector<CastClass>& classes) {
@@ -232,7 +249,6 @@ void ComputeGlyphs::castPasses(const Camera& cam, const FrameParams& p, const st
   s.tiledCapacity = GLuint(tiledCapacity_);
   s.entryCapacity = GLuint(entryCapacity_);
   gl_.NamedBufferSubData(state_, 0, sizeof s, &s);
-  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_GLYPHS, buffer_);
   gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_VIS, vis_);
   gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_COMPUTE_STATE, state_);
   gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_CANDIDATES, candidates_);
@@ -252,8 +268,12 @@ void ComputeGlyphs::castPasses(const Camera& cam, const FrameParams& p, const st
                                   GL_UNSIGNED_INT, &zero);
       gl_.ClearNamedBufferData(tileCount_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
       gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
-      setUniforms(classProgram(kSetup, c.program), cam, p, &c, pass);
-      dispatchLinear(gl_, records_);
+      const gl::Program& setup = classProgram(kSetup, c.program);
+      setUniforms(setup, cam, p, &c, pass);
+      for (const RecordChunk& chunk : chunks_) {
+        bindChunk(setup, chunk);
+        dispatchLinear(gl_, chunk.count);
+      }
       gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
       setUniforms(*scan_, cam, p, &c, pass);
       gl_.DispatchCompute(1, 1, 1);
@@ -292,7 +312,6 @@ void ComputeGlyphs::resolve(const Camera& cam, const FrameParams& p, const std::
   if (!depthResolve_)
     depthResolve_ = std::make_unique<gl::Program>(
         gl_, lib_, std::initializer_list<gl::StageSource>{{GL_COMPUTE_SHADER, "compute_resolve.comp"}});
-  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_GLYPHS, buffer_);
   gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_VIS, vis_);
   gl_.BindImageTexture(TG_IMAGE_CAST_DEPTH, depth, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32F);
   gl_.BindImageTexture(TG_IMAGE_CAST_RECORD, record, 0, GL_FALSE, 0, GL_WRITE_ONLY, GL_R32UI);
@@ -308,7 +327,10 @@ void ComputeGlyphs::resolve(const Camera& cam, const FrameParams& p, const std::
       const gl::Program& prog = classProgram(kSurface, c.program);
       setUniforms(prog, cam, p, &c, 0);
       prog.set("uHitGC", hitGC ? 1 : 0);
-      gl_.DispatchCompute(gx, gy, 1);
+      for (const RecordChunk& chunk : chunks_) {
+        bindChunk(prog, chunk);
+        gl_.DispatchCompute(gx, gy, 1);
+      }
     }
   }
   gl_.MemoryBarrier(GL_TEXTURE_FETCH_BARRIER_BIT | GL_SHADER_IMAGE_ACCESS_BARRIER_BIT);
@@ -339,7 +361,7 @@ void ComputeGlyphs::drawView(const Camera& cam, const FrameParams& p, const GBuf
             p.color == ColorMode::Sign);
   target.beginGeometry();
   if (drawn_ == 0) return;
-  targets_.writeView(cam, buffer_, scalars_);
+  targets_.writeView(cam, chunks_);
 }
 
 std::pair<glm::dvec3, glm::dvec3> ComputeGlyphs::castersBoxWC(const FrameParams& p) const {
@@ -357,7 +379,8 @@ void ComputeGlyphs::drawShadowCasters(const Camera& light, const FrameParams& p,
 
 std::size_t ComputeGlyphs::gpuBytes() const {
   const std::size_t tiles = std::size_t(tilesX_) * std::size_t(tilesY_);
-  return records_ * (sizeof(tensor::GlyphRecord) + (scalars_ ? sizeof(float) : 0)) + targets_.bytes() +
+  const bool scalars = !chunks_.empty() && chunks_[0].scalars;
+  return records_ * (sizeof(tensor::GlyphRecord) + (scalars ? sizeof(float) : 0)) + targets_.bytes() +
          std::size_t(width_) * std::size_t(height_) * 8 + tiles * 12 + tiledCapacity_ * kCandidateBytes +
          entryCapacity_ * 4;
 }

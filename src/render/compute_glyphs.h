@@ -5,7 +5,8 @@
 // compute runs on all of it. Per cast class (the ellipsoid, each march
 // variant, cylinders, boxes: the raster path's programs), from the records
 // as uploaded, so that no parameter or camera change uploads anything:
-//  1. compute_setup.comp, per record: the sprite stage's culls and exact
+//  1. compute_setup.comp, per record (a dispatch per chunk of the records,
+//     whose buffers hold at most one storage block each): the sprite stage's culls and exact
 //     screen rectangle; a glyph of at most 16 pixel centres is cast at each
 //     and written to the visibility buffer; a larger one is kept, with the
 //     count of each tile it touches;
@@ -37,9 +38,11 @@ namespace tg::render {
 class ComputeGlyphs final : public GlyphPath {
  public:
   // The tile lists start with room for `tiled` glyphs and `entries` tile
-  // entries (they grow as frames need; tests start them small).
+  // entries (they grow as frames need; tests start them small). Records
+  // are held in chunks of at most `chunkRecords` (0: as many as one storage
+  // block holds, GL_MAX_SHADER_STORAGE_BLOCK_SIZE; tests split small sets).
   ComputeGlyphs(const gl::Api& gl, const gl::ShaderLibrary& lib, std::size_t tiled = std::size_t(1) << 16,
-                std::size_t entries = std::size_t(1) << 18);
+                std::size_t entries = std::size_t(1) << 18, std::size_t chunkRecords = 0);
   ~ComputeGlyphs() override;
   ComputeGlyphs(const ComputeGlyphs&) = delete;
   ComputeGlyphs& operator=(const ComputeGlyphs&) = delete;
@@ -54,7 +57,10 @@ class ComputeGlyphs final : public GlyphPath {
   std::pair<glm::dvec3, glm::dvec3> castersBoxWC(const FrameParams& p) const override;
   void drawShadowCasters(const Camera& light, const FrameParams& p, ShadowPass& shadow) override;
   std::size_t gpuBytes() const override;
-  GLuint recordBuffer() const override { return buffer_; }
+  // The records' one buffer; 0 where they are in several chunks (the
+  // anti-aliasing then casts whole frames per sample).
+  GLuint recordBuffer() const override { return chunks_.size() == 1 ? chunks_[0].records : 0; }
+  std::size_t recordChunks() const { return chunks_.size(); }
   std::uint64_t drawnGlyphs() const override { return drawn_; }
 
   // Whether the visibility buffer takes one 64-bit atomic (else two 32-bit passes).
@@ -76,6 +82,9 @@ class ComputeGlyphs final : public GlyphPath {
   void castPasses(const Camera& cam, const FrameParams& p, const std::vector<CastClass>& classes);
   void setUniforms(const gl::Program& prog, const Camera& cam, const FrameParams& p, const CastClass* c, int pass) const;
   void allocateFrame(int width, int height);
+  void freeChunks(bool scalarsOnly);
+  // c's records bound, and prog's uRecordBase and uRecordCount set.
+  void bindChunk(const gl::Program& prog, const RecordChunk& c) const;
   void allocateLists(std::size_t tiled, std::size_t entries);
   // vis_ into the depth and record images (and, with `surface`, each
   // class's normals and hits), for cpu_gbuffer.frag or cpu_depth.frag.
@@ -94,7 +103,8 @@ class ComputeGlyphs final : public GlyphPath {
   FrameParams params_;
   bool paramsSet_ = false;
   glm::vec2 colorWindow_{0.0f, 1.0f};
-  GLuint buffer_ = 0, scalars_ = 0;
+  std::vector<RecordChunk> chunks_;
+  std::size_t chunkRecords_;
   GLuint vis_ = 0, state_ = 0, candidates_ = 0, tileCount_ = 0, tileStart_ = 0, tileList_ = 0;
   int width_ = 0, height_ = 0, tilesX_ = 0, tilesY_ = 0;
   std::size_t initialTiled_, initialEntries_;

@@ -391,7 +391,8 @@ void CpuGlyphs::drawView(const Camera& cam, const FrameParams& p, const GBuffer&
   gl_.TextureSubImage2D(targets_.view(CastTargets::kNormal), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, casts_.normalWC.data());
   if (sign)
     gl_.TextureSubImage2D(targets_.view(CastTargets::kHitGC), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, casts_.hitGC.data());
-  targets_.writeView(cam, buffer_, scalars_);
+  const RecordChunk all{buffer_, scalars_, 0, records_.size()};
+  targets_.writeView(cam, std::span(&all, 1));
 }
 
 std::pair<glm::dvec3, glm::dvec3> CpuGlyphs::castersBoxWC(const FrameParams& p) const {

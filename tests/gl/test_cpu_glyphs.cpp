@@ -488,6 +488,54 @@ TEST_F(ComputeGlyphs, ListsTooSmallForAFrameGrowAndTheFrameMatches) {
   expectAgree(s, cam, "lists grown", 500, true);
 }
 
+// Records past one storage block are held in chunks (at 10^8 glyphs, 4.8 GB
+// against a block of 2^31 bytes or less); chunks of 7 records draw the
+// picture of one chunk exactly, in every cast class, with colour scalars
+// and the sign colour's GC hits taken per chunk.
+TEST_F(ComputeGlyphs, RecordsInChunksDrawTheOneChunkPicture) {
+  const tensor::GlyphSet set = grid(4, 7);
+  const double scale = 0.45;
+  const auto cam = test::cameraFor(set, scale, test::oblique(set, 9.0, render::Projection::Perspective), 160, 120);
+  ctx_->makeCurrent();
+  render::GBuffer target(ctx_->api(), cam.width, cam.height);
+  auto chunked = std::make_unique<render::ComputeGlyphs>(ctx_->api(), *lib_, 1 << 16, 1 << 18, 7);
+  const render::ComputeGlyphs* path = chunked.get();
+  render::GlyphRenderer split(ctx_->api(), *lib_, nullptr, std::move(chunked));
+  render::GlyphRenderer whole(ctx_->api(), *lib_, nullptr, "compute");
+  std::vector<float> scalars(set.glyphs.size());
+  for (std::size_t k = 0; k < scalars.size(); ++k) scalars[k] = float(k % 11);
+  for (render::GlyphRenderer* r : {&split, &whole}) {
+    r->upload(set);
+    r->setColorScalars(scalars, "k mod 11");
+  }
+  EXPECT_EQ(path->recordChunks(), (set.glyphs.size() + 6) / 7);
+  EXPECT_EQ(path->recordBuffer(), 0u) << "several chunks have no one buffer";
+  EXPECT_NE(whole.glyphPath().recordBuffer(), 0u);
+  struct Case {
+    render::GlyphKind glyph;
+    render::ColorMode color;
+  };
+  for (const Case c : {Case{render::GlyphKind::Ellipsoid, render::ColorMode::Array},
+                       Case{render::GlyphKind::Superquadric, render::ColorMode::Sign},
+                       Case{render::GlyphKind::Cylinder, render::ColorMode::FA},
+                       Case{render::GlyphKind::Box, render::ColorMode::Array}}) {
+    render::FrameParams p = test::superquadricParams(scale, 3.0);
+    p.glyph = c.glyph;
+    p.color = c.color;
+    p.shadow.enabled = c.glyph == render::GlyphKind::Superquadric;
+    split.render(cam, p, target);
+    const render::FrameImage a = split.readback(cam, target);
+    whole.render(cam, p, target);
+    const render::FrameImage b = whole.readback(cam, target);
+    SCOPED_TRACE(std::string(render::glyphKind(c.glyph).name));
+    EXPECT_GT(std::count_if(a.id.begin(), a.id.end(), [](std::uint32_t id) { return id != ref::kNoGlyph; }), 500);
+    EXPECT_EQ(a.id, b.id);
+    EXPECT_EQ(a.depth, b.depth);
+    EXPECT_EQ(a.normalWC, b.normalWC);
+    EXPECT_EQ(a.rgba, b.rgba);
+  }
+}
+
 TEST_F(ComputeGlyphs, BlobsAreRefusedNamingTheCpuPath) {
   const tensor::GlyphSet set = grid(2, 3);
   ctx_->makeCurrent();
