@@ -55,23 +55,31 @@ const std::string kSweep = "--n 300,1000 --size 96 64 --resolutions 4,16 --frame
 std::map<std::string, double> checkSweep(const std::vector<Row>& rows) {
   std::map<std::string, double> coverage;
   std::map<std::string, std::string> coveredPct;  // method and count
-  EXPECT_EQ(rows.size(), 14u);  // 7 methods x 2 counts
+  EXPECT_EQ(rows.size(), 20u);  // (7 raster + 3 compute methods) x 2 counts
   for (const Row& r : rows) {
     const std::string m = r.at("method");
+    const bool compute = r.at("pipeline") == "compute";
+    EXPECT_EQ(compute, m.rfind("compute-", 0) == 0) << m;
     const bool noPrepass = m.size() > 11 && m.substr(m.size() - 11) == "-no-prepass";
     coveredPct[m + " " + r.at("n")] = r.at("covered_pct");
+    EXPECT_EQ(r.at("frames"), "1") << m;
     EXPECT_GT(num(r, "frame_ms"), 0.0) << m;
     EXPECT_GT(num(r, "gpu_ms"), 0.0) << m;
-    EXPECT_LE(num(r, "gpu_bytes_per_glyph"), 64.0) << m;
+    // The compute path's tile lists start at a fixed size, whatever the count.
+    if (!compute) {
+      EXPECT_LE(num(r, "gpu_bytes_per_glyph"), 64.0) << m;
+    }
+    EXPECT_GE(num(r, "gpu_bytes_per_glyph"), 48.0) << m;  // the records
     // Whether the timed frames ran the pre-pass: never where it is off.
     EXPECT_TRUE(r.at("prepass") == "0" || (r.at("prepass") == "1" && !noPrepass)) << m << " " << r.at("prepass");
-    if (m.rfind("sprites-subpixel", 0) == 0) {
+    if (m.find("sprites-subpixel") != std::string::npos) {
       // Under a pixel per glyph: nearly nothing covered, and no shape to score.
       EXPECT_LT(num(r, "covered_pct"), 1.0);
       EXPECT_EQ(r.at("coverage_error_pct"), "");
       continue;
     }
     EXPECT_GT(num(r, "covered_pct"), 5.0) << m;
+    // The compute path keeps no march counts.
     EXPECT_EQ(r.at("newton_mean").empty(), m.rfind("raycast-superquadric", 0) != 0) << m;
     EXPECT_EQ(r.at("vtk_mesh_bytes_per_glyph").empty(), m.rfind("tessellated-", 0) != 0) << m;
     coverage[m] = num(r, "coverage_error_pct");
@@ -84,6 +92,13 @@ std::map<std::string, double> checkSweep(const std::vector<Row>& rows) {
               coveredPct[std::string("sprites-subpixel-no-prepass ") + n]);
   }
   EXPECT_EQ(coverage["raycast-superquadric"], coverage["raycast-superquadric-no-prepass"]);
+  // The compute path casts the raster path's pixels.
+  for (const char* n : {"300", "1000"}) {
+    EXPECT_EQ(coveredPct[std::string("compute-superquadric ") + n], coveredPct[std::string("raycast-superquadric ") + n]);
+    EXPECT_EQ(coveredPct[std::string("compute-ellipsoid ") + n], coveredPct[std::string("raycast-ellipsoid ") + n]);
+  }
+  EXPECT_EQ(coverage["compute-superquadric"], coverage["raycast-superquadric"]);
+  EXPECT_EQ(coverage["compute-ellipsoid"], coverage["raycast-ellipsoid"]);
   // The exact ray casts beat the coarse mesh, which the finer mesh improves on.
   EXPECT_LT(coverage["raycast-superquadric"], coverage["tessellated-4"]);
   EXPECT_LT(coverage["tessellated-16"], coverage["tessellated-4"]);
@@ -101,6 +116,40 @@ TEST(BenchScale, WritesOneRowPerMethodAndCount) {
   tg::test::expectFailsCleanly("bench scale --size 96 -o " + csv.string(), "--size", csv, dir, 1);
   tg::test::expectFailsCleanly("bench scale --bogus -o " + csv.string(), "--bogus", csv, dir, 1);
   tg::test::expectFailsCleanly("bench scale --require-gpu -o " + csv.string(), "--require-gpu", csv, dir, 1);
+  tg::test::expectFailsCleanly("bench scale --pipelines raster,tiles -o " + csv.string(), "--pipelines: \"tiles\"; choose raster, cpu, compute", csv, dir, 1);
+  tg::test::expectFailsCleanly("bench scale --pipelines raster,raster -o " + csv.string(), "named twice", csv, dir, 1);
+  tg::test::expectFailsCleanly("bench scale --row-budget 0 -o " + csv.string(), "--row-budget", csv, dir, 1);
+  std::filesystem::remove_all(dir);
+}
+
+// The CSV is whole after every row: a sweep out of time keeps the rows it
+// finished and names the budget; --row-budget cuts a row's timed frames
+// (at least one), and --pipelines picks the paths and their order.
+TEST(BenchScale, BudgetsCutRowsAndFramesAndTheCsvKeepsWhatRan) {
+  const auto dir = tg::test::cliDir("bench_scale_budget");
+  const auto csv = dir / "scale.csv";
+  auto r = tg::test::runBinary("bench scale --n 300,1000 --size 96 64 --pipelines compute,cpu --frames 50 "
+                               "--row-budget 0.001 -o " + csv.string(), dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  auto rows = readCsv(csv);
+  ASSERT_EQ(rows.size(), 12u);  // 3 methods x 2 paths x 2 counts
+  EXPECT_EQ(rows[0].at("pipeline"), "compute");
+  EXPECT_EQ(rows[3].at("pipeline"), "cpu");
+  EXPECT_EQ(rows[3].at("method"), "cpu-ellipsoid");
+  // Each frame takes well over 0.1 ms here, so that 1 ms holds a few of the 50.
+  for (const Row& row : rows) {
+    EXPECT_GE(std::stoi(row.at("frames")), 1) << row.at("method");
+    EXPECT_LE(std::stoi(row.at("frames")), 10) << row.at("method");
+  }
+  EXPECT_EQ(rows[1].at("covered_pct"), rows[4].at("covered_pct"));  // compute and cpu superquadrics
+  // A total budget spent by the first count: its rows, none of the second's.
+  r = tg::test::runBinary("bench scale --n 300,1000 --size 96 64 --pipelines compute --frames 1 "
+                          "--total-budget 0.001 -o " + csv.string(), dir);
+  ASSERT_EQ(r.code, 0) << r.err;
+  EXPECT_NE(r.err.find("the sweep's 0.001 s are spent"), std::string::npos) << r.err;
+  rows = readCsv(csv);
+  EXPECT_LT(rows.size(), 3u);
+  for (const Row& row : rows) EXPECT_EQ(row.at("n"), "300");
   std::filesystem::remove_all(dir);
 }
 

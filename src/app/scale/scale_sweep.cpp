@@ -1,6 +1,8 @@
 #include "app/scale/scale_sweep.h"
 
 #include <algorithm>
+#include <array>
+#include <map>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -15,6 +17,7 @@
 #include "io/field/atomic_file.h"
 #include "ref/image_diff.h"
 #include "ref/superquadric_ref.h"
+#include "render/glyph_path.h"
 #include "render/raster_glyphs.h"
 #include "render/renderer.h"
 
@@ -23,9 +26,11 @@ namespace tg::app {
 ScaleOptions parseScaleOptions(int argc, const char** argv, ScaleOptions o, const std::string& command) {
   OptionTable ap(command +
                  " -o CSV [options]\n"
-                 "Frame time against glyph count (random tensors on a cubic grid, all in view): ray-cast ellipsoids\n"
-                 "and superquadrics, sub-pixel sprites (the per-glyph cost without fragment work), both again without\n"
-                 "the occlusion pre-pass, and a tessellated superquadric mesh per glyph as VTK's vtkTensorGlyph draws it.");
+                 "Frame time against glyph count (random tensors on a cubic grid, all in view; the camera turns by\n"
+                 "a tenth of a degree before each frame, so that no frame reuses the last): per glyph path, ray-cast\n"
+                 "ellipsoids and superquadrics and sub-pixel sprites (the per-glyph cost without fragment work); on\n"
+                 "the raster path also both again without the occlusion pre-pass, and a tessellated superquadric\n"
+                 "mesh per glyph as VTK's vtkTensorGlyph draws it.");
   using Args = OptionArgs;
   ap.arg("-o CSV").help("results, one row per method and count").action([&](Args a) { o.csv = a[1]; });
   ap.arg("--n LIST").help("glyph counts, comma-separated, whole numbers")
@@ -43,6 +48,18 @@ ScaleOptions parseScaleOptions(int argc, const char** argv, ScaleOptions o, cons
       .range(ranges::kFrames).byDefault(std::to_string(o.frames)).action([&](Args a) { o.frames = int(parseInt(a[0], a[1])); });
   ap.arg("--budget S").help("a method whose warm-up frame took over S seconds skips larger counts")
       .range({1e-3, 1e6}).byDefault(formatNumber(o.budgetS)).action([&](Args a) { o.budgetS = parseDouble(a[0], a[1]); });
+  ap.arg("--row-budget S").help("a row's timed frames stop once they have taken S seconds (at least one runs)")
+      .range({1e-3, 1e6}).byDefault(formatNumber(o.rowBudgetS)).action([&](Args a) { o.rowBudgetS = parseDouble(a[0], a[1]); });
+  ap.arg("--total-budget S").help("rows that would start after S seconds of the sweep are skipped; 0: none")
+      .range({0, 1e6}).byDefault(formatNumber(o.totalBudgetS)).action([&](Args a) { o.totalBudgetS = parseDouble(a[0], a[1]); });
+  ap.arg("--pipelines LIST").help("glyph paths to sweep, comma-separated: " + render::glyphPathNames())
+      .byDefault([&] {
+        std::string j;
+        for (const std::string& name : o.pipelines) j += (j.empty() ? "" : ",") + name;
+        return j;
+      }()).action([&](Args a) {
+        o.pipelines = parseList<std::string>("--pipelines", a[1], [](std::string_view, std::string_view t) { return std::string(t); });
+      });
   ap.arg("--gamma G").help("superquadric sharpness").range(ranges::kGamma).byDefault(formatNumber(o.gamma)).action([&](Args a) {
     o.gamma = parseDouble(a[0], a[1]);
   });
@@ -63,12 +80,21 @@ void checkScaleOptions(const ScaleOptions& o) {
     if (n != double(std::size_t(n))) throw UsageError("--n: each must be a whole number");
   checkFrameSize("--size", o.width, o.height);
   if (o.requireGpu && o.backend != "egl") throw UsageError("--require-gpu needs --backend egl");
+  for (std::size_t k = 0; k < o.pipelines.size(); ++k) {
+    const std::string& name = o.pipelines[k];
+    if (std::find(std::begin(render::kGlyphPathNames), std::end(render::kGlyphPathNames), name) ==
+        std::end(render::kGlyphPathNames))
+      throw UsageError("--pipelines: \"" + name + "\"; choose " + render::glyphPathNames());
+    if (std::find(o.pipelines.begin(), o.pipelines.begin() + std::ptrdiff_t(k), name) != o.pipelines.begin() + std::ptrdiff_t(k))
+      throw UsageError("--pipelines: \"" + name + "\" is named twice");
+  }
   checkOutputPath("-o", o.csv);
 }
 
 namespace {
 
 struct Method {
+  std::string pipeline;
   std::string name;
   render::GlyphKind glyph;
   int tessellation = 0;
@@ -80,18 +106,23 @@ struct Method {
 
 struct FrameTime {
   double wallMs = 0, gpuMs = 0, warmMs = 0;
+  int frames = 0;  // timed, after the warm-up
 };
 
-// Medians of `frames` frames after one warm-up, each finished: wall time as
-// the caller sees it, and GPU time between two timestamps around the frame.
-FrameTime timeFrames(const gl::Api& gl, render::GlyphRenderer& r, const render::Camera& cam,
-                     const render::FrameParams& p, const render::GBuffer& t, int frames) {
+// Medians of at most `frames` frames after one warm-up, each finished, the
+// camera turned by a tenth of a degree about the view's centre before each
+// (cams alternates two such views), stopping once they have taken
+// `budgetMs`: wall time as the caller sees it, and GPU time between two
+// timestamps around the frame.
+FrameTime timeFrames(const gl::Api& gl, render::GlyphRenderer& r, const std::array<render::Camera, 2>& cams,
+                     const render::FrameParams& p, const render::GBuffer& t, int frames, double budgetMs) {
   GLuint q[2];
   gl.CreateQueries(GL_TIMESTAMP, 2, q);
+  int shown = 0;
   auto once = [&](double& gpuMs) {
     const auto t0 = Clock::now();
     gl.QueryCounter(q[0], GL_TIMESTAMP);
-    r.render(cam, p, t);
+    r.render(cams[std::size_t(shown++ % 2)], p, t);
     gl.QueryCounter(q[1], GL_TIMESTAMP);
     gl.Finish();
     const double wall = msSince(t0);
@@ -108,10 +139,13 @@ FrameTime timeFrames(const gl::Api& gl, render::GlyphRenderer& r, const render::
   double gpu = 0;
   ft.warmMs = once(gpu);
   std::vector<double> wall, gpuV;
-  for (int k = 0; k < frames; ++k) {
+  double spent = 0;
+  for (int k = 0; k < frames && (k == 0 || spent < budgetMs); ++k) {
     wall.push_back(once(gpu));
     gpuV.push_back(gpu);
+    spent += wall.back();
   }
+  ft.frames = int(wall.size());
   gl.DeleteQueries(2, q);
   std::sort(wall.begin(), wall.end());
   ft.wallMs = wall[wall.size() / 2];
@@ -137,6 +171,20 @@ render::Camera sweepCamera(const tensor::GlyphSet& set, double scale, int w, int
 
 namespace {
 
+// cam turned about its look-at point by `degrees` around the up axis.
+render::Camera turned(const render::Camera& cam, double degrees, const glm::dvec3& loWC, const glm::dvec3& hiWC) {
+  render::CameraDesc d = cam.desc;
+  const double a = degrees * (3.14159265358979323846 / 180.0);
+  const glm::dvec3 v = d.eyeWC - d.lookAtWC, k = glm::normalize(d.upWC);
+  // Rodrigues' rotation of v about k.
+  d.eyeWC = d.lookAtWC + v * std::cos(a) + glm::cross(k, v) * std::sin(a) + k * glm::dot(k, v) * (1 - std::cos(a));
+  return render::makeCamera(d, cam.width, cam.height, loWC, hiWC);
+}
+
+}  // namespace
+
+namespace {
+
 render::FrameParams paramsFor(const Method& m, double scale, double gamma) {
   render::FrameParams p;
   p.scale = scale * m.scaleFactor;
@@ -154,7 +202,7 @@ double coverageErrorPct(const gl::Api& gl, const gl::ShaderLibrary& lib, const M
   const auto set = tensor::buildGlyphs(f.positions, f.tensors, f.ids);
   const double scale = 0.6;
   const render::Camera cam = sweepCamera(set, scale, 480, 360);
-  render::GlyphRenderer r(gl, lib);
+  render::GlyphRenderer r(gl, lib, {}, m.pipeline);
   render::GBuffer t(gl, cam.width, cam.height);
   r.upload(set);
   r.render(cam, paramsFor(m, scale, gamma), t);
@@ -178,34 +226,74 @@ std::string field(double v, const char* fmt) {
   return b;
 }
 
+// The sweep's methods, per path in `pipelines`' order.
+std::vector<Method> sweepMethods(const ScaleOptions& o) {
+  std::vector<Method> methods;
+  for (const std::string& path : o.pipelines) {
+    if (path != "raster") {
+      methods.push_back({path, path + "-ellipsoid", render::GlyphKind::Ellipsoid});
+      methods.push_back({path, path + "-superquadric", render::GlyphKind::Superquadric});
+      methods.push_back({path, path + "-sprites-subpixel", render::GlyphKind::Superquadric, 0, 1.0 / 64.0});
+      continue;
+    }
+    methods.push_back({path, "raycast-ellipsoid", render::GlyphKind::Ellipsoid});
+    methods.push_back({path, "raycast-superquadric", render::GlyphKind::Superquadric});
+    // 1/64 of the size: under a pixel, so almost no fragment runs.
+    methods.push_back({path, "sprites-subpixel", render::GlyphKind::Superquadric, 0, 1.0 / 64.0});
+    // The same two without the occlusion pre-pass: whether it pays is
+    // measured per renderer (render::RendererProfile), GPUs included.
+    methods.push_back({path, "raycast-superquadric-no-prepass", render::GlyphKind::Superquadric, 0, 1.0, false});
+    methods.push_back({path, "sprites-subpixel-no-prepass", render::GlyphKind::Superquadric, 0, 1.0 / 64.0, false});
+    for (int r : o.resolutions)
+      methods.push_back({path, "tessellated-" + std::to_string(r), render::GlyphKind::Superquadric, r});
+  }
+  return methods;
+}
+
+// What a method draws, whatever the path ("ellipsoid", "sprites-subpixel"):
+// the rows of one count and family are timed against each other.
+std::string family(const Method& m) {
+  if (m.pipeline != "raster") return m.name.substr(m.pipeline.size() + 1);
+  return m.name.rfind("raycast-", 0) == 0 ? m.name.substr(8) : m.name;
+}
+
 }  // namespace
 
 void runScaleSweep(gl::Context& ctx, const ScaleOptions& o, const util::ProgressSink& progress) {
   const gl::Api& gl = ctx.api();
   const gl::ShaderLibrary lib;
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  std::vector<Method> methods{{"raycast-ellipsoid", render::GlyphKind::Ellipsoid},
-                              {"raycast-superquadric", render::GlyphKind::Superquadric},
-                              // 1/64 of the size: under a pixel, so almost no fragment runs.
-                              {"sprites-subpixel", render::GlyphKind::Superquadric, 0, 1.0 / 64.0},
-                              // The same two without the occlusion pre-pass: whether it pays is
-                              // measured per renderer (render::RendererProfile), GPUs included.
-                              {"raycast-superquadric-no-prepass", render::GlyphKind::Superquadric, 0, 1.0, false},
-                              {"sprites-subpixel-no-prepass", render::GlyphKind::Superquadric, 0, 1.0 / 64.0, false}};
-  for (int r : o.resolutions)
-    methods.push_back({"tessellated-" + std::to_string(r), render::GlyphKind::Superquadric, r});
+  const auto sweepStart = Clock::now();
+  std::vector<Method> methods = sweepMethods(o);
   for (Method& m : methods)
     if (m.scaleFactor == 1.0) m.coveragePct = coverageErrorPct(gl, lib, m, o.gamma);
 
-  io::AtomicFile out(o.csv);  // created now: an unwritable directory fails before the sweep
-  std::ostringstream f;
-  f << "method,resolution,n,width,height,frame_ms,gpu_ms,empty_frame_ms,covered_pct,newton_mean,"
-       "gpu_bytes_per_glyph,vtk_mesh_bytes_per_glyph,coverage_error_pct,prepass,device\n";
+  // The whole CSV after every row, each time through a temporary file.
+  std::string text =
+      "pipeline,method,resolution,n,width,height,frames,frame_ms,gpu_ms,empty_frame_ms,covered_pct,newton_mean,"
+      "gpu_bytes_per_glyph,vtk_mesh_bytes_per_glyph,coverage_error_pct,prepass,device\n";
+  auto save = [&] {
+    io::AtomicFile out(o.csv);
+    out.write(text.data(), text.size());
+    out.commit(std::int64_t(text.size()));
+  };
+  save();  // an unwritable directory fails before the sweep
   std::fprintf(stderr, "scale sweep: %s (%s), %dx%d\n", ctx.backendName(), ctx.describe().c_str(), o.width, o.height);
   const double rows = double(o.counts.size() * methods.size());
   double rowsDone = 0;
+  bool outOfTime = false;
+  auto overBudget = [&] {
+    if (!outOfTime && o.totalBudgetS > 0 && msSince(sweepStart) > 1000.0 * o.totalBudgetS) {
+      outOfTime = true;
+      if (progress) progress({}, 0, 0, {});
+      std::fprintf(stderr, "  the sweep's %g s are spent: the remaining rows are skipped\n", o.totalBudgetS);
+    }
+    return outOfTime;
+  };
+  std::map<std::string, std::map<std::string, double>> frameMs;  // this count's frame times by path and family
   for (double nd : o.counts) {
     const auto n = std::size_t(nd);
+    if (overBudget()) break;
     if (progress) progress("sweep", rowsDone, rows, "rows");
     const auto t0 = Clock::now();
     tensor::GlyphSet set;
@@ -214,54 +302,87 @@ void runScaleSweep(gl::Context& ctx, const ScaleOptions& o, const util::Progress
       set = tensor::buildGlyphs(randomTensors.positions, randomTensors.tensors, randomTensors.ids);
     }
     const double scale = 0.5;  // the largest eigenvalue 1 gives a diameter of one grid spacing
+    const auto [loWC, hiWC] = tensor::glyphBoxWC(set, scale);
     const render::Camera cam = sweepCamera(set, scale, o.width, o.height);
-    render::GlyphRenderer r(gl, lib);
-    render::GBuffer target(gl, o.width, o.height);
-    r.upload(set);
-    set.glyphs = {};
+    const std::array<render::Camera, 2> cams{turned(cam, 0.1, loWC, hiWC), turned(cam, -0.1, loWC, hiWC)};
     if (progress) progress({}, 0, 0, {});  // the row lines below, not after the progress line
-    std::fprintf(stderr, "  n %zu: generated, decomposed and uploaded in %.0f ms\n", n, msSince(t0));
-    // The frame's fixed part: clears and the deferred lighting pass, with
-    // every glyph hidden by the threshold (compacted away in the warm-up).
-    render::FrameParams empty;
-    empty.scale = scale;
-    empty.faMin = 10.0;
-    const FrameTime emptyT = timeFrames(gl, r, cam, empty, target, o.frames);
-    for (Method& m : methods) {
-      if (progress) progress("sweep", rowsDone, rows, "rows");
-      ++rowsDone;
-      if (m.skipped) continue;
-      const render::FrameParams p = paramsFor(m, scale, o.gamma);
-      // A tessellated frame of a million glyphs or more is long; one timed frame says enough.
-      const int frames = m.tessellation > 0 && n >= 1000000 ? 1 : o.frames;
-      const std::uint64_t prepassesBefore = render::asRaster(r.glyphPath()).occlusionPrepasses();
-      const FrameTime ft = timeFrames(gl, r, cam, p, target, frames);
-      const bool prepassRan = render::asRaster(r.glyphPath()).occlusionPrepasses() > prepassesBefore;
-      m.skipped = ft.warmMs > 1000.0 * o.budgetS;
-      const double covered = coveredPct(r.readback(cam, target));
-      double newton = nan;
-      if (m.glyph == render::GlyphKind::Superquadric && m.tessellation == 0) {
-        render::FrameParams s = p;
-        s.iterationStats = true;
-        r.render(cam, s, target);
-        newton = r.iterationStats().mean;
+    std::fprintf(stderr, "  n %zu: generated and decomposed in %.0f ms\n", n, msSince(t0));
+    frameMs.clear();
+    for (std::size_t pk = 0; pk < o.pipelines.size(); ++pk) {
+      const std::string& path = o.pipelines[pk];
+      const bool any = std::any_of(methods.begin(), methods.end(), [&](const Method& m) { return m.pipeline == path && !m.skipped; });
+      if (!any || overBudget()) {
+        for (const Method& m : methods) rowsDone += m.pipeline == path ? 1 : 0;
+        continue;
       }
-      const double bytes = double(r.gpuBytes()) / double(n);
-      const double vtk = m.tessellation > 0 ? double(render::TessellatedGlyphs::perGlyphMeshBytes(m.tessellation)) : nan;
-      f << m.name << ',' << m.tessellation << ',' << n << ',' << o.width << ',' << o.height << ','
-        << field(ft.wallMs, "%.3f") << ',' << field(ft.gpuMs, "%.3f") << ',' << field(emptyT.wallMs, "%.3f") << ','
-        << field(covered, "%.2f") << ',' << field(newton, "%.3f") << ',' << field(bytes, "%.2f") << ','
-        << field(vtk, "%.0f") << ',' << field(m.coveragePct, "%.4f") << ',' << (prepassRan ? 1 : 0) << ",\""
-        << ctx.describe() << "\"\n";
+      const auto u0 = Clock::now();
+      render::GlyphRenderer r(gl, lib, {}, path);
+      render::GBuffer target(gl, o.width, o.height);
+      r.upload(set);
+      gl.Finish();
+      const bool last = std::none_of(o.pipelines.begin() + std::ptrdiff_t(pk) + 1, o.pipelines.end(), [&](const std::string& q) {
+        return std::any_of(methods.begin(), methods.end(), [&](const Method& m) { return m.pipeline == q && !m.skipped; });
+      });
+      if (last) set.glyphs = {};
       if (progress) progress({}, 0, 0, {});
-      std::fprintf(stderr, "  %-31s n %-10zu %10.2f ms (GPU %.2f, empty %.2f), %.1f%% covered, %.1f B/glyph%s%s\n",
-                   m.name.c_str(), n, ft.wallMs, ft.gpuMs, emptyT.wallMs, covered, bytes, prepassRan ? ", pre-pass" : "",
-                   m.skipped ? "; larger counts skipped" : "");
+      std::fprintf(stderr, "  n %zu, %s path: uploaded in %.0f ms\n", n, path.c_str(), msSince(u0));
+      // The frame's fixed part: clears and the deferred lighting pass, with
+      // every glyph hidden by the threshold (the raster path compacts them
+      // away in the warm-up; the others cull each glyph every frame).
+      render::FrameParams empty;
+      empty.scale = scale;
+      empty.faMin = 10.0;
+      const FrameTime emptyT = timeFrames(gl, r, cams, empty, target, o.frames, 1000.0 * o.rowBudgetS);
+      for (Method& m : methods) {
+        if (m.pipeline != path) continue;
+        if (progress) progress("sweep", rowsDone, rows, "rows");
+        ++rowsDone;
+        if (m.skipped || overBudget()) continue;
+        const render::FrameParams p = paramsFor(m, scale, o.gamma);
+        // A tessellated frame of a million glyphs or more is long; one timed frame says enough.
+        const int frames = m.tessellation > 0 && n >= 1000000 ? 1 : o.frames;
+        const bool raster = path == "raster";
+        const std::uint64_t prepassesBefore = raster ? render::asRaster(r.glyphPath()).occlusionPrepasses() : 0;
+        const FrameTime ft = timeFrames(gl, r, cams, p, target, frames, 1000.0 * o.rowBudgetS);
+        const bool prepassRan = raster && render::asRaster(r.glyphPath()).occlusionPrepasses() > prepassesBefore;
+        m.skipped = ft.warmMs > 1000.0 * o.budgetS;
+        const double covered = coveredPct(r.readback(cam, target));
+        double newton = nan;
+        if (m.glyph == render::GlyphKind::Superquadric && m.tessellation == 0) {
+          render::FrameParams st = p;
+          st.iterationStats = true;
+          r.render(cam, st, target);
+          // Paths that keep no count (compute) report none.
+          if (r.iterationStats().pixels > 0) newton = r.iterationStats().mean;
+        }
+        const double bytes = double(r.gpuBytes()) / double(n);
+        const double vtk = m.tessellation > 0 ? double(render::TessellatedGlyphs::perGlyphMeshBytes(m.tessellation)) : nan;
+        std::ostringstream f;
+        f << m.pipeline << ',' << m.name << ',' << m.tessellation << ',' << n << ',' << o.width << ',' << o.height << ','
+          << ft.frames << ',' << field(ft.wallMs, "%.3f") << ',' << field(ft.gpuMs, "%.3f") << ','
+          << field(emptyT.wallMs, "%.3f") << ',' << field(covered, "%.2f") << ',' << field(newton, "%.3f") << ','
+          << field(bytes, "%.2f") << ',' << field(vtk, "%.0f") << ',' << field(m.coveragePct, "%.4f") << ','
+          << (prepassRan ? 1 : 0) << ",\"" << ctx.describe() << "\"\n";
+        text += f.str();
+        save();
+        // Against the raster path's row of the family, whichever ran first.
+        frameMs[path][family(m)] = ft.wallMs;
+        std::string ratio;
+        for (const auto& [other, byFamily] : frameMs) {
+          const std::string& a = raster ? path : other;
+          const std::string& b = raster ? other : path;
+          if (a != "raster" || b == "raster" || !frameMs[a].count(family(m)) || !frameMs[b].count(family(m))) continue;
+          char t[80];
+          std::snprintf(t, sizeof t, "; raster/%s %.2f", b.c_str(), frameMs[a][family(m)] / frameMs[b][family(m)]);
+          ratio += t;
+        }
+        if (progress) progress({}, 0, 0, {});
+        std::fprintf(stderr, "  %-31s n %-10zu %10.2f ms (GPU %.2f, empty %.2f; %d frames), %.1f%% covered, %.1f B/glyph%s%s%s\n",
+                     m.name.c_str(), n, ft.wallMs, ft.gpuMs, emptyT.wallMs, ft.frames, covered, bytes,
+                     prepassRan ? ", pre-pass" : "", ratio.c_str(), m.skipped ? "; larger counts skipped" : "");
+      }
     }
   }
-  const std::string text = f.str();
-  out.write(text.data(), text.size());
-  out.commit(std::int64_t(text.size()));
 }
 
 }  // namespace tg::app
