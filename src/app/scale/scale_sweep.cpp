@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <functional>
 #include <map>
 #include <cmath>
 #include <cstdint>
@@ -115,7 +116,8 @@ struct FrameTime {
 // `budgetMs`: wall time as the caller sees it, and GPU time between two
 // timestamps around the frame.
 FrameTime timeFrames(const gl::Api& gl, render::GlyphRenderer& r, const std::array<render::Camera, 2>& cams,
-                     const render::FrameParams& p, const render::GBuffer& t, int frames, double budgetMs) {
+                     const render::FrameParams& p, const render::GBuffer& t, int frames, double budgetMs,
+                     const std::function<void()>& afterWarmUp = {}) {
   GLuint q[2];
   gl.CreateQueries(GL_TIMESTAMP, 2, q);
   int shown = 0;
@@ -138,6 +140,7 @@ FrameTime timeFrames(const gl::Api& gl, render::GlyphRenderer& r, const std::arr
   FrameTime ft;
   double gpu = 0;
   ft.warmMs = once(gpu);
+  if (afterWarmUp) afterWarmUp();  // cams[0]'s frame, whatever the timed frames' count
   std::vector<double> wall, gpuV;
   double spent = 0;
   for (int k = 0; k < frames && (k == 0 || spent < budgetMs); ++k) {
@@ -343,15 +346,16 @@ void runScaleSweep(gl::Context& ctx, const ScaleOptions& o, const util::Progress
         const int frames = m.tessellation > 0 && n >= 1000000 ? 1 : o.frames;
         const bool raster = path == "raster";
         const std::uint64_t prepassesBefore = raster ? render::asRaster(r.glyphPath()).occlusionPrepasses() : 0;
-        const FrameTime ft = timeFrames(gl, r, cams, p, target, frames, 1000.0 * o.rowBudgetS);
+        double covered = nan;
+        const FrameTime ft = timeFrames(gl, r, cams, p, target, frames, 1000.0 * o.rowBudgetS,
+                                        [&] { covered = coveredPct(r.readback(cams[0], target)); });
         const bool prepassRan = raster && render::asRaster(r.glyphPath()).occlusionPrepasses() > prepassesBefore;
         m.skipped = ft.warmMs > 1000.0 * o.budgetS;
-        const double covered = coveredPct(r.readback(cam, target));
         double newton = nan;
         if (m.glyph == render::GlyphKind::Superquadric && m.tessellation == 0) {
           render::FrameParams st = p;
           st.iterationStats = true;
-          r.render(cam, st, target);
+          r.render(cams[0], st, target);
           // Paths that keep no count (compute) report none.
           if (r.iterationStats().pixels > 0) newton = r.iterationStats().mean;
         }
