@@ -4,7 +4,8 @@
 #extension GL_NV_shader_atomic_int64 : require
 #endif
 // The compute glyph path's set-up (render/compute_glyphs.h), one invocation
-// per record of the bound chunk in the class's groups: the sprite stage's culls and screen
+// per record of the bound chunk's kept batches (compute_batches.comp) in the
+// class's groups: the sprite stage's culls and screen
 // rectangle; a glyph of at most kDirectPixels pixel centres is cast at each
 // of them here and written to the visibility buffer, a larger one is kept
 // for the tiles (compute_scan.comp, compute_bin.comp, compute_cast.comp).
@@ -17,7 +18,7 @@ layout(local_size_x = 64) in;
 const int kDirectPixels = 16;
 
 void main() {
-  uint k = linearInvocation(64u);
+  uint k = keptRecord(64u);
   if (k >= uint(uRecordCount) || !inClass(glyphs[k])) return;
   CastCandidate c;
   if (!glyphCandidate(k, c)) return;

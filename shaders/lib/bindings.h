@@ -62,5 +62,7 @@
 #define TG_SSBO_TILE_START 16
 #define TG_SSBO_TILE_LIST 17
 #define TG_SSBO_COMPUTE_STATE 18
+#define TG_SSBO_BATCH_BOUNDS 19  // the chunk's batches of records: centre box, largest |eigenvalue|, FA
+#define TG_SSBO_BATCH_LIST 20    // the batches left after the cull (compute_batches.comp)
 
 #endif

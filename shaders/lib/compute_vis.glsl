@@ -210,7 +210,20 @@ layout(std430, binding = TG_SSBO_COMPUTE_STATE) buffer ComputeState {
   uint entryNeeded;
   uint drawn;           // glyphs that reached a pixel
   uint entryOverflow;   // this class's tiles of glyphs past the capacity
+  uvec4 setupDispatch;  // compute_setup.comp's indirect dispatch: x kBatchRecords / 64, y the chunk's kept batches
+  uint batchesKept;     // the frame's kept batches over its chunks, classes and passes
 };
+
+// Records in batches of kBatchRecords (render/compute_glyphs.h, BatchBounds),
+// each with the box of its centres and what bounds its glyphs' size and
+// selection, so that compute_batches.comp culls whole batches each frame.
+const uint kBatchRecords = 8192u;
+struct BatchBounds {
+  vec4 loWC_maxAbs;  // xyz: the least centre; w: the largest |eigenvalue|
+  vec4 hiWC_maxFA;   // xyz: the greatest centre; w: the largest FA (-1 where none is a number)
+};
+layout(std430, binding = TG_SSBO_BATCH_BOUNDS) readonly buffer Batches { BatchBounds batches[]; };
+layout(std430, binding = TG_SSBO_BATCH_LIST) buffer BatchList { uint keptBatches[]; };
 layout(std430, binding = TG_SSBO_CANDIDATES) buffer Candidates { CastCandidate candidates[]; };
 layout(std430, binding = TG_SSBO_TILE_COUNT) buffer TileCount { uint tileCount[]; };
 layout(std430, binding = TG_SSBO_TILE_START) buffer TileStart { uint tileStart[]; };  // tiles + 1, then the cursors
@@ -222,4 +235,10 @@ uniform int uTiles;
 // Workgroups are more than a dispatch's 65535 along x at 10^8 glyphs.
 uint linearInvocation(uint localSize) {
   return (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * localSize + gl_LocalInvocationIndex;
+}
+
+// The chunk's record of this invocation of a dispatch over the kept
+// batches (setupDispatch: a workgroup row of kBatchRecords per batch).
+uint keptRecord(uint localSize) {
+  return keptBatches[gl_WorkGroupID.y] * kBatchRecords + gl_WorkGroupID.x * localSize + gl_LocalInvocationIndex;
 }

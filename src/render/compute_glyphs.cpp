@@ -24,9 +24,13 @@ struct ComputeState {
   GLuint tiledCount, entryCount, tiledCapacity, entryCapacity;
   GLuint binDispatch[4];
   GLuint tiledNeeded, entryNeeded, drawn, entryOverflow;
+  GLuint setupDispatch[4];
+  GLuint batchesKept, pad[3];
 };
-static_assert(sizeof(ComputeState) == 48);
-constexpr GLintptr kBinDispatchOffset = 16;
+static_assert(sizeof(ComputeState) == 80);
+constexpr GLintptr kBinDispatchOffset = offsetof(ComputeState, binDispatch);
+constexpr GLintptr kSetupDispatchOffset = offsetof(ComputeState, setupDispatch);
+constexpr GLuint kSetupGroupSize = 64;  // compute_setup.comp's local size
 constexpr std::size_t kCandidateBytes = 80;  // lib/compute_vis.glsl's CastCandidate
 constexpr int kTilePx = 16;
 
@@ -52,15 +56,32 @@ GLuint makeBuffer(const gl::Api& gl, std::size_t bytes, GLbitfield flags = 0) {
   return b;
 }
 
-// Invocations of 64 over at most 65535 workgroups along x.
-void dispatchLinear(const gl::Api& gl, std::size_t invocations) {
-  const std::size_t groups = (invocations + 63) / 64;
-  if (groups == 0) return;
-  const std::size_t x = std::min<std::size_t>(groups, 65535);
-  gl.DispatchCompute(GLuint(x), GLuint((groups + x - 1) / x), 1);
-}
-
 }  // namespace
+
+std::vector<BatchBounds> batchBoundsOf(std::span<const tensor::GlyphRecord> records) {
+  std::vector<BatchBounds> out((records.size() + kBatchRecords - 1) / kBatchRecords);
+  for (std::size_t b = 0; b < out.size(); ++b) {
+    BatchBounds& o = out[b];
+    const std::size_t first = b * kBatchRecords, last = std::min(records.size(), first + kBatchRecords);
+    for (int k = 0; k < 3; ++k) {
+      o.loWC[k] = INFINITY;
+      o.hiWC[k] = -INFINITY;
+    }
+    o.maxAbsEigenvalue = 0;
+    o.maxFA = -1;
+    for (std::size_t i = first; i < last; ++i) {
+      const tensor::GlyphRecord& g = records[i];
+      for (int k = 0; k < 3; ++k) {
+        o.loWC[k] = std::min(o.loWC[k], g.posWC[k]);
+        o.hiWC[k] = std::max(o.hiWC[k], g.posWC[k]);
+      }
+      // Descending eigenvalues: the largest magnitude is the first's or the last's.
+      o.maxAbsEigenvalue = std::max({o.maxAbsEigenvalue, std::abs(g.eigenvalues[0]), std::abs(g.eigenvalues[2])});
+      if (g.fa > o.maxFA) o.maxFA = g.fa;  // false for NaN
+    }
+  }
+  return out;
+}
 
 std::vector<ComputeGlyphs::CastClass> computeCastClasses(const FrameParams& p, const std::array<std::size_t, 3>& groups) {
   using C = ComputeGlyphs;
@@ -108,7 +129,8 @@ ComputeGlyphs::ComputeGlyphs(const gl::Api& gl, const gl::ShaderLibrary& lib, st
 
 ComputeGlyphs::~ComputeGlyphs() {
   freeChunks(false);
-  for (GLuint* b : {&vis_, &state_, &candidates_, &tileCount_, &tileStart_, &tileList_}) deleteBuffer(gl_, *b);
+  for (GLuint* b : {&vis_, &state_, &candidates_, &tileCount_, &tileStart_, &tileList_, &keptBatches_})
+    deleteBuffer(gl_, *b);
 }
 
 void ComputeGlyphs::freeChunks(bool scalarsOnly) {
@@ -116,7 +138,11 @@ void ComputeGlyphs::freeChunks(bool scalarsOnly) {
     deleteBuffer(gl_, c.scalars);
     if (!scalarsOnly) deleteBuffer(gl_, c.records);
   }
-  if (!scalarsOnly) chunks_.clear();
+  if (scalarsOnly) return;
+  chunks_.clear();
+  for (GLuint& b : batchBounds_) deleteBuffer(gl_, b);
+  batchBounds_.clear();
+  deleteBuffer(gl_, keptBatches_);
 }
 
 std::string ComputeGlyphs::how() const {
@@ -161,8 +187,16 @@ void ComputeGlyphs::upload(const tensor::GlyphSet& set) {
     c.count = std::min(chunkRecords_, records_ - first);
     gl_.CreateBuffers(1, &c.records);
     chunks_.push_back(c);
-    gl_.NamedBufferStorage(c.records, GLsizeiptr(c.count * sizeof(tensor::GlyphRecord)), set.glyphs.data() + first, 0);
+    const std::span<const tensor::GlyphRecord> records(set.glyphs.data() + first, c.count);
+    gl_.NamedBufferStorage(c.records, GLsizeiptr(c.count * sizeof(tensor::GlyphRecord)), records.data(), 0);
+    const std::vector<BatchBounds> bounds = batchBoundsOf(records);
+    GLuint b = 0;
+    gl_.CreateBuffers(1, &b);
+    batchBounds_.push_back(b);
+    gl_.NamedBufferStorage(b, GLsizeiptr(bounds.size() * sizeof(BatchBounds)), bounds.data(), 0);
   }
+  if (!chunks_.empty())
+    keptBatches_ = makeBuffer(gl_, (std::min(chunkRecords_, records_) + kBatchRecords - 1) / kBatchRecords * 4);
   gl::checkError(gl_, "GlyphRenderer::upload");
 }
 
@@ -248,7 +282,10 @@ void ComputeGlyphs::castPasses(const Camera& cam, const FrameParams& p, const st
   ComputeState s{};
   s.tiledCapacity = GLuint(tiledCapacity_);
   s.entryCapacity = GLuint(entryCapacity_);
+  s.setupDispatch[0] = GLuint(kBatchRecords) / kSetupGroupSize;
+  s.setupDispatch[2] = 1;
   gl_.NamedBufferSubData(state_, 0, sizeof s, &s);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_BATCH_LIST, keptBatches_);
   gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_VIS, vis_);
   gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_COMPUTE_STATE, state_);
   gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_CANDIDATES, candidates_);
@@ -257,6 +294,7 @@ void ComputeGlyphs::castPasses(const Camera& cam, const FrameParams& p, const st
   gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_TILE_LIST, tileList_);
   gl_.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, state_);
   if (!scan_) {
+    cull_ = std::make_unique<gl::Program>(gl_, lib_, std::initializer_list<gl::StageSource>{{GL_COMPUTE_SHADER, "compute_batches.comp"}});
     scan_ = std::make_unique<gl::Program>(gl_, lib_, std::initializer_list<gl::StageSource>{{GL_COMPUTE_SHADER, "compute_scan.comp"}});
     bin_ = std::make_unique<gl::Program>(gl_, lib_, std::initializer_list<gl::StageSource>{{GL_COMPUTE_SHADER, "compute_bin.comp"}});
   }
@@ -269,10 +307,22 @@ void ComputeGlyphs::castPasses(const Camera& cam, const FrameParams& p, const st
       gl_.ClearNamedBufferData(tileCount_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
       gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
       const gl::Program& setup = classProgram(kSetup, c.program);
+      setUniforms(*cull_, cam, p, &c, pass);
       setUniforms(setup, cam, p, &c, pass);
-      for (const RecordChunk& chunk : chunks_) {
-        bindChunk(setup, chunk);
-        dispatchLinear(gl_, chunk.count);
+      for (std::size_t k = 0; k < chunks_.size(); ++k) {
+        // The chunk's batches culled into the set-up's dispatch.
+        gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+        gl_.ClearNamedBufferSubData(state_, GL_R32UI, kSetupDispatchOffset + 4, 4, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+        gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
+        const std::size_t batches = (chunks_[k].count + kBatchRecords - 1) / kBatchRecords;
+        gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_BATCH_BOUNDS, batchBounds_[k]);
+        cull_->set("uBatchCount", int(batches));
+        gl_.UseProgram(cull_->id());
+        gl_.DispatchCompute(GLuint((batches + 63) / 64), 1, 1);
+        gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
+        bindChunk(setup, chunks_[k]);
+        gl_.UseProgram(setup.id());
+        gl_.DispatchComputeIndirect(kSetupDispatchOffset);
       }
       gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
       setUniforms(*scan_, cam, p, &c, pass);
@@ -291,6 +341,7 @@ void ComputeGlyphs::castFrame(const Camera& cam, const FrameParams& p, const std
   allocateFrame(cam.width, cam.height);
   allocateLists(std::min(records_, initialTiled_), initialEntries_);
   drawn_ = 0;
+  batchesKept_ = 0;
   if (classes.empty() || records_ == 0) return;
   // At most twice: the second cast has room for what the first counted.
   for (int attempt = 0; attempt < 2; ++attempt) {
@@ -299,6 +350,7 @@ void ComputeGlyphs::castFrame(const Camera& cam, const FrameParams& p, const std
     ComputeState s{};
     gl_.GetNamedBufferSubData(state_, 0, sizeof s, &s);
     drawn_ = s.drawn;
+    batchesKept_ = s.batchesKept;
     if (s.tiledNeeded <= tiledCapacity_ && s.entryNeeded <= entryCapacity_) break;
     if (attempt == 1)
       throw std::logic_error("ComputeGlyphs::castFrame: the tile lists overflowed a cast sized for them");
@@ -380,7 +432,9 @@ void ComputeGlyphs::drawShadowCasters(const Camera& light, const FrameParams& p,
 std::size_t ComputeGlyphs::gpuBytes() const {
   const std::size_t tiles = std::size_t(tilesX_) * std::size_t(tilesY_);
   const bool scalars = !chunks_.empty() && chunks_[0].scalars;
-  return records_ * (sizeof(tensor::GlyphRecord) + (scalars ? sizeof(float) : 0)) + targets_.bytes() +
+  const std::size_t batches = (records_ + kBatchRecords - 1) / kBatchRecords + chunks_.size();
+  return records_ * (sizeof(tensor::GlyphRecord) + (scalars ? sizeof(float) : 0)) + batches * (sizeof(BatchBounds) + 4) +
+         targets_.bytes() +
          std::size_t(width_) * std::size_t(height_) * 8 + tiles * 12 + tiledCapacity_ * kCandidateBytes +
          entryCapacity_ * 4;
 }

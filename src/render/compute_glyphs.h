@@ -5,8 +5,11 @@
 // compute runs on all of it. Per cast class (the ellipsoid, each march
 // variant, cylinders, boxes: the raster path's programs), from the records
 // as uploaded, so that no parameter or camera change uploads anything:
-//  1. compute_setup.comp, per record (a dispatch per chunk of the records,
-//     whose buffers hold at most one storage block each): the sprite stage's culls and exact
+//  0. compute_batches.comp, per batch of kBatchRecords records (bounds made
+//     at upload): batches no glyph of which the selection keeps or the
+//     frustum holds are left out of the set-up's indirect dispatch;
+//  1. compute_setup.comp, per record of the kept batches (a dispatch per
+//     chunk of the records, whose buffers hold at most one storage block): the sprite stage's culls and exact
 //     screen rectangle; a glyph of at most 16 pixel centres is cast at each
 //     and written to the visibility buffer; a larger one is kept, with the
 //     count of each tile it touches;
@@ -28,12 +31,23 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "render/cast_targets.h"
 #include "render/glyph_path.h"
 
 namespace tg::render {
+
+// lib/compute_vis.glsl's batches: kBatchRecords consecutive records of a
+// chunk (input order, so that a grid's batches are slabs of its rows).
+inline constexpr std::size_t kBatchRecords = 8192;
+struct BatchBounds {
+  float loWC[3], maxAbsEigenvalue;
+  float hiWC[3], maxFA;  // -1 where no record's FA is a number (none is selected)
+};
+static_assert(sizeof(BatchBounds) == 32);
+std::vector<BatchBounds> batchBoundsOf(std::span<const tensor::GlyphRecord> records);
 
 class ComputeGlyphs final : public GlyphPath {
  public:
@@ -61,6 +75,9 @@ class ComputeGlyphs final : public GlyphPath {
   // anti-aliasing then casts whole frames per sample).
   GLuint recordBuffer() const override { return chunks_.size() == 1 ? chunks_[0].records : 0; }
   std::size_t recordChunks() const { return chunks_.size(); }
+  // Batches the last frame's culls kept, summed over its chunks, cast
+  // classes and passes (read back with the frame's counters).
+  std::uint64_t batchesKept() const { return batchesKept_; }
   std::uint64_t drawnGlyphs() const override { return drawn_; }
 
   // Whether the visibility buffer takes one 64-bit atomic (else two 32-bit passes).
@@ -96,7 +113,7 @@ class ComputeGlyphs final : public GlyphPath {
   CastTargets targets_;
   bool vis64_ = false;
   std::array<std::unique_ptr<gl::Program>, std::size_t(kStages) * std::size_t(kPrograms)> programs_;
-  std::unique_ptr<gl::Program> scan_, bin_, depthResolve_;
+  std::unique_ptr<gl::Program> cull_, scan_, bin_, depthResolve_;
   std::size_t records_ = 0, sphereCount_ = 0, definiteCount_ = 0;
   glm::dvec3 centresLoWC_{0.0}, centresHiWC_{0.0};
   double maxAbsEigenvalue_ = 0;
@@ -104,7 +121,10 @@ class ComputeGlyphs final : public GlyphPath {
   bool paramsSet_ = false;
   glm::vec2 colorWindow_{0.0f, 1.0f};
   std::vector<RecordChunk> chunks_;
+  std::vector<GLuint> batchBounds_;  // per chunk
   std::size_t chunkRecords_;
+  GLuint keptBatches_ = 0;
+  std::uint64_t batchesKept_ = 0;
   GLuint vis_ = 0, state_ = 0, candidates_ = 0, tileCount_ = 0, tileStart_ = 0, tileList_ = 0;
   int width_ = 0, height_ = 0, tilesX_ = 0, tilesY_ = 0;
   std::size_t initialTiled_, initialEntries_;

@@ -536,6 +536,63 @@ TEST_F(ComputeGlyphs, RecordsInChunksDrawTheOneChunkPicture) {
   }
 }
 
+// Batches of 8,192 records are culled each frame against the side planes,
+// the FA threshold and the slab: a 32^3 grid is 4 batches of 8 z-layers. A
+// narrow view of the bottom layers keeps fewer, a slab of them one and a
+// threshold above every FA none, and each frame is the raster path's.
+TEST_F(ComputeGlyphs, BatchesOutOfViewOrSelectionAreCulled) {
+  const tensor::GlyphSet set = grid(32, 5);
+  ASSERT_EQ(set.glyphs.size(), 4 * render::kBatchRecords);
+  const double scale = 0.4;
+  ctx_->makeCurrent();
+  render::CameraDesc d;
+  d.lookAtWC = {15.5, 15.5, 2.0};
+  d.eyeWC = {15.5, -60.0, 2.0};
+  d.upWC = {0, 0, 1};
+  d.fovYDeg = 6.0;
+  const auto cam = test::cameraFor(set, scale, d, 160, 120);
+  auto owned = std::make_unique<render::ComputeGlyphs>(ctx_->api(), *lib_);
+  const render::ComputeGlyphs* path = owned.get();
+  render::GlyphRenderer r(ctx_->api(), *lib_, nullptr, std::move(owned));
+  render::GlyphRenderer raster(ctx_->api(), *lib_, nullptr, "raster");
+  r.upload(set);
+  raster.upload(set);
+  render::GBuffer target(ctx_->api(), cam.width, cam.height);
+  const std::uint64_t passes = path->atomics64() ? 1 : 2;
+  auto frame = [&](const render::FrameParams& p, const std::string& what, std::size_t minCovered) {
+    r.render(cam, p, target);
+    Pair s;
+    s.cpu = r.readback(cam, target);
+    raster.render(cam, p, target);
+    s.raster = raster.readback(cam, target);
+    if (minCovered > 0) expectAgree(s, cam, what, minCovered);
+    else EXPECT_EQ(s.raster.id, s.cpu.id) << what;
+    return path->batchesKept();
+  };
+  render::FrameParams p;
+  p.scale = scale;
+  // The view's height at the grid is about 8 layers: the bottom batch, and
+  // its neighbour within a glyph's reach of the edge.
+  const std::uint64_t narrow = frame(p, "narrow view", 2000);
+  EXPECT_GE(narrow, passes);
+  EXPECT_LE(narrow, 2 * passes);
+  p.slab = {2, 0.0, 3.0};
+  EXPECT_EQ(frame(p, "slab of the bottom layers", 2000), passes);
+  p.slab = {};
+  p.faMin = 1.0;  // the grid's positive-definite FAs are below 1; mixed signs may pass it
+  const auto aboveOne = std::count_if(set.glyphs.begin(), set.glyphs.end(), [](const auto& g) { return g.fa >= 1.0f; });
+  frame(p, "FA threshold 1", aboveOne > 0 ? 1 : 0);
+  p.faMin = 1e3;
+  EXPECT_EQ(frame(p, "FA threshold above all", 0), 0u);
+  EXPECT_EQ(r.drawnGlyphs(), 0u);
+  // The whole grid in view keeps every batch.
+  const auto whole = test::cameraFor(set, scale, test::oblique(set, 70.0, render::Projection::Perspective), 160, 120);
+  render::FrameParams all;
+  all.scale = scale;
+  r.render(whole, all, target);
+  EXPECT_EQ(path->batchesKept(), 4 * passes);
+}
+
 TEST_F(ComputeGlyphs, BlobsAreRefusedNamingTheCpuPath) {
   const tensor::GlyphSet set = grid(2, 3);
   ctx_->makeCurrent();
