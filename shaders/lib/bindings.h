@@ -64,5 +64,6 @@
 #define TG_SSBO_COMPUTE_STATE 18
 #define TG_SSBO_BATCH_BOUNDS 19  // the chunk's batches of records: centre box, largest |eigenvalue|, FA
 #define TG_SSBO_BATCH_LIST 20    // the batches left after the cull (compute_batches.comp)
+#define TG_SSBO_ACTIVE_TILES 21  // the tiles with glyphs to cast (compute_scan.comp)
 
 #endif

@@ -190,6 +190,7 @@ layout(std430, binding = TG_SSBO_VIS) buffer Vis { uint64_t vis[]; };
 void visWrite(uint px, float windowDepth, uint record) {
   atomicMin(vis[px], packUint2x32(uvec2(record, visKey(windowDepth))));
 }
+uint visKeyAt(uint px) { return unpackUint2x32(vis[px]).y; }
 #else
 layout(std430, binding = TG_SSBO_VIS) buffer Vis { uint vis[]; };
 void visWrite(uint px, float windowDepth, uint record) {
@@ -197,6 +198,7 @@ void visWrite(uint px, float windowDepth, uint record) {
   if (uPass == 0) atomicMin(vis[2u * px + 1u], key);
   else if (vis[2u * px + 1u] == key) atomicMin(vis[2u * px], record);
 }
+uint visKeyAt(uint px) { return vis[2u * px + 1u]; }
 #endif
 
 // The frame's counters (render/compute_glyphs.cpp, ComputeState).
@@ -212,6 +214,7 @@ layout(std430, binding = TG_SSBO_COMPUTE_STATE) buffer ComputeState {
   uint entryOverflow;   // this class's tiles of glyphs past the capacity
   uvec4 setupDispatch;  // compute_setup.comp's indirect dispatch: x kBatchRecords / 64, y the chunk's kept batches
   uint batchesKept;     // the frame's kept batches over its chunks, classes and passes
+  uvec4 castDispatch;   // compute_cast.comp's indirect dispatch: a workgroup per active tile
 };
 
 // Records in batches of kBatchRecords (render/compute_glyphs.h, BatchBounds),
@@ -228,6 +231,7 @@ layout(std430, binding = TG_SSBO_CANDIDATES) buffer Candidates { CastCandidate c
 layout(std430, binding = TG_SSBO_TILE_COUNT) buffer TileCount { uint tileCount[]; };
 layout(std430, binding = TG_SSBO_TILE_START) buffer TileStart { uint tileStart[]; };  // tiles + 1, then the cursors
 layout(std430, binding = TG_SSBO_TILE_LIST) buffer TileList { uint tileList[]; };
+layout(std430, binding = TG_SSBO_ACTIVE_TILES) buffer ActiveTiles { uint activeTiles[]; };  // in tile order
 
 uniform int uTilesX;
 uniform int uTiles;
@@ -235,6 +239,12 @@ uniform int uTiles;
 // Workgroups are more than a dispatch's 65535 along x at 10^8 glyphs.
 uint linearInvocation(uint localSize) {
   return (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * localSize + gl_LocalInvocationIndex;
+}
+
+// An x-major dispatch of at most 65535 workgroups along x over n items.
+uvec4 dispatchOver(uint n) {
+  uint x = min(n, 65535u);
+  return uvec4(x, x == 0u ? 0u : (n + x - 1u) / x, 1u, 0u);
 }
 
 // The chunk's record of this invocation of a dispatch over the kept

@@ -26,10 +26,12 @@ struct ComputeState {
   GLuint tiledNeeded, entryNeeded, drawn, entryOverflow;
   GLuint setupDispatch[4];
   GLuint batchesKept, pad[3];
+  GLuint castDispatch[4];
 };
-static_assert(sizeof(ComputeState) == 80);
+static_assert(sizeof(ComputeState) == 96);
 constexpr GLintptr kBinDispatchOffset = offsetof(ComputeState, binDispatch);
 constexpr GLintptr kSetupDispatchOffset = offsetof(ComputeState, setupDispatch);
+constexpr GLintptr kCastDispatchOffset = offsetof(ComputeState, castDispatch);
 constexpr GLuint kSetupGroupSize = 64;  // compute_setup.comp's local size
 constexpr std::size_t kCandidateBytes = 80;  // lib/compute_vis.glsl's CastCandidate
 constexpr int kTilePx = 16;
@@ -129,7 +131,7 @@ ComputeGlyphs::ComputeGlyphs(const gl::Api& gl, const gl::ShaderLibrary& lib, st
 
 ComputeGlyphs::~ComputeGlyphs() {
   freeChunks(false);
-  for (GLuint* b : {&vis_, &state_, &candidates_, &tileCount_, &tileStart_, &tileList_, &keptBatches_})
+  for (GLuint* b : {&vis_, &state_, &candidates_, &tileCount_, &tileStart_, &tileList_, &activeTiles_, &keptBatches_})
     deleteBuffer(gl_, *b);
 }
 
@@ -228,10 +230,11 @@ void ComputeGlyphs::allocateFrame(int width, int height) {
   tilesX_ = (width + kTilePx - 1) / kTilePx;
   tilesY_ = (height + kTilePx - 1) / kTilePx;
   const std::size_t tiles = std::size_t(tilesX_) * std::size_t(tilesY_);
-  for (GLuint* b : {&vis_, &tileCount_, &tileStart_}) deleteBuffer(gl_, *b);
+  for (GLuint* b : {&vis_, &tileCount_, &tileStart_, &activeTiles_}) deleteBuffer(gl_, *b);
   vis_ = makeBuffer(gl_, std::size_t(width) * std::size_t(height) * 8);
   tileCount_ = makeBuffer(gl_, tiles * 4);
   tileStart_ = makeBuffer(gl_, (2 * tiles + 1) * 4);
+  activeTiles_ = makeBuffer(gl_, tiles * 4);
 }
 
 void ComputeGlyphs::allocateLists(std::size_t tiled, std::size_t entries) {
@@ -292,6 +295,7 @@ void ComputeGlyphs::castPasses(const Camera& cam, const FrameParams& p, const st
   gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_TILE_COUNT, tileCount_);
   gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_TILE_START, tileStart_);
   gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_TILE_LIST, tileList_);
+  gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_ACTIVE_TILES, activeTiles_);
   gl_.BindBuffer(GL_DISPATCH_INDIRECT_BUFFER, state_);
   if (!scan_) {
     cull_ = std::make_unique<gl::Program>(gl_, lib_, std::initializer_list<gl::StageSource>{{GL_COMPUTE_SHADER, "compute_batches.comp"}});
@@ -332,7 +336,7 @@ void ComputeGlyphs::castPasses(const Camera& cam, const FrameParams& p, const st
       gl_.DispatchComputeIndirect(kBinDispatchOffset);
       gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
       setUniforms(classProgram(kCast, c.program), cam, p, &c, pass);
-      gl_.DispatchCompute(GLuint(tilesX_), GLuint(tilesY_), 1);
+      gl_.DispatchComputeIndirect(kCastDispatchOffset);
       gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
     }
 }
@@ -435,7 +439,7 @@ std::size_t ComputeGlyphs::gpuBytes() const {
   const std::size_t batches = (records_ + kBatchRecords - 1) / kBatchRecords + chunks_.size();
   return records_ * (sizeof(tensor::GlyphRecord) + (scalars ? sizeof(float) : 0)) + batches * (sizeof(BatchBounds) + 4) +
          targets_.bytes() +
-         std::size_t(width_) * std::size_t(height_) * 8 + tiles * 12 + tiledCapacity_ * kCandidateBytes +
+         std::size_t(width_) * std::size_t(height_) * 8 + tiles * 16 + tiledCapacity_ * kCandidateBytes +
          entryCapacity_ * 4;
 }
 

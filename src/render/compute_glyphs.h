@@ -13,11 +13,13 @@
 //     screen rectangle; a glyph of at most 16 pixel centres is cast at each
 //     and written to the visibility buffer; a larger one is kept, with the
 //     count of each tile it touches;
-//  2. compute_scan.comp: the tiles' starts by a prefix sum, and the next
-//     pass's indirect dispatch (no CPU round trip);
+//  2. compute_scan.comp: the tiles' starts and the list of tiles with
+//     glyphs by prefix sums, and the next passes' indirect dispatches (no
+//     CPU round trip);
 //  3. compute_bin.comp: each kept glyph into its tiles' lists;
-//  4. compute_cast.comp, per tile and pixel: its list's glyphs, skipping
-//     those behind the nearest hit so far, the nearest into the buffer.
+//  4. compute_cast.comp, per tile with glyphs and pixel: its list's glyphs
+//     sorted by nearest depth, front to back until the next lies behind
+//     the nearest hit so far, the nearest into the buffer.
 // The visibility buffer holds, per pixel, the minimum of (inverted window
 // depth, record) as 64 bits: by one atomic where GL_NV_shader_atomic_int64
 // is present, else by two passes of 32-bit minima (depth, then the record
@@ -123,7 +125,7 @@ class ComputeGlyphs final : public GlyphPath {
   std::vector<RecordChunk> chunks_;
   std::vector<GLuint> batchBounds_;  // per chunk
   std::size_t chunkRecords_;
-  GLuint keptBatches_ = 0;
+  GLuint keptBatches_ = 0, activeTiles_ = 0;
   std::uint64_t batchesKept_ = 0;
   GLuint vis_ = 0, state_ = 0, candidates_ = 0, tileCount_ = 0, tileStart_ = 0, tileList_ = 0;
   int width_ = 0, height_ = 0, tilesX_ = 0, tilesY_ = 0;

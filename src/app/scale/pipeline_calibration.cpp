@@ -104,15 +104,43 @@ PathCost fitPathCost(const std::vector<double>& glyphs, const std::vector<double
   return {best[0], best[1], best[2]};
 }
 
+namespace {
+
+constexpr double kCalibrationScale = 0.5;  // bench scale's: the largest glyph spans one grid spacing
+
+tensor::GlyphSet calibrationSet(std::size_t n) {
+  const io::TensorField f = synth::randomField(n, 7);
+  return tensor::buildGlyphs(f.positions, f.tensors, f.ids);
+}
+
+}  // namespace
+
+std::vector<std::size_t> calibrationGlyphs(const gl::Api& gl, const gl::ShaderLibrary& lib, const CalibrationPlan& plan) {
+  std::vector<std::size_t> glyphs = plan.glyphs;
+  if (glyphs.empty() || plan.sizes.empty() || !(plan.growUntilMs > 0)) return glyphs;
+  constexpr std::size_t kGrowth = 8;
+  const auto [w, h] = plan.sizes.back();
+  for (;;) {
+    const std::size_t n = *std::max_element(glyphs.begin(), glyphs.end());
+    if (n * kGrowth > plan.maxGlyphs) return glyphs;
+    const tensor::GlyphSet set = calibrationSet(n);
+    render::GlyphRenderer r(gl, lib, {}, "raster");
+    r.upload(set);
+    render::GBuffer target(gl, w, h);
+    render::FrameParams p;
+    p.scale = kCalibrationScale;
+    if (fastestFrameMs(gl, r, sweepCamera(set, kCalibrationScale, w, h), p, target, plan.frames) >= plan.growUntilMs)
+      return glyphs;
+    for (std::size_t& g : glyphs) g *= kGrowth;
+  }
+}
+
 PathCalibration calibratePaths(const gl::Api& gl, const gl::ShaderLibrary& lib, const std::string& key,
                                const CalibrationPlan& plan) {
   PathCalibration cal{key, {}};
   std::map<std::size_t, tensor::GlyphSet> sets;
-  for (const std::size_t n : plan.glyphs) {
-    const io::TensorField f = synth::randomField(n, 7);
-    sets[n] = tensor::buildGlyphs(f.positions, f.tensors, f.ids);
-  }
-  constexpr double kScale = 0.5;  // bench scale's: the largest glyph spans one grid spacing
+  for (const std::size_t n : plan.glyphs) sets[n] = calibrationSet(n);
+  constexpr double kScale = kCalibrationScale;
   for (const std::string_view path : render::kGlyphPathNames)
     for (const CostClass cls : {CostClass::ClosedForm, CostClass::March}) {
       std::vector<double> g, px, t;
@@ -220,11 +248,14 @@ CachedCalibration calibrationFor(const gl::Api& gl, const gl::ShaderLibrary& lib
       }
   }
   const auto t0 = Clock::now();
-  out.cal = calibratePaths(gl, lib, key);
+  CalibrationPlan plan;
+  plan.glyphs = calibrationGlyphs(gl, lib, plan);
+  out.cal = calibratePaths(gl, lib, key, plan);
   out.measured = true;
   out.measuredMs = std::chrono::duration<double, std::milli>(Clock::now() - t0).count();
-  char took[64];
-  std::snprintf(took, sizeof took, "measured the glyph paths on this renderer in %.1f s", out.measuredMs * 1e-3);
+  char took[128];
+  std::snprintf(took, sizeof took, "measured the glyph paths on this renderer in %.1f s (%zu and %zu glyphs)",
+                out.measuredMs * 1e-3, plan.glyphs.front(), plan.glyphs.back());
   const std::string why = problem.empty() ? "" : problem + "; ";
   if (out.file.empty()) {
     out.said = std::string(took) + ", for this run only: no cache directory (TG_CACHE_DIR, XDG_CACHE_HOME and HOME unset or empty)";

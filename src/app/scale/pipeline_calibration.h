@@ -18,7 +18,18 @@ struct CalibrationPlan {
   std::vector<std::size_t> glyphs{2000, 16000};
   std::vector<std::pair<int, int>> sizes{{320, 240}, {800, 600}};
   int frames = 2;  // timed, after one warm-up; the fastest is kept
+  // calibrationGlyphs: on a device that draws the largest count in less
+  // than growUntilMs, every count is multiplied by 8 until it does not, or
+  // the largest would pass maxGlyphs.
+  double growUntilMs = 10.0;
+  std::size_t maxGlyphs = std::size_t(1) << 21;
 };
+
+// The plan's glyph counts for this device: a GPU draws 16,000 glyphs in
+// about a millisecond, where fixed costs hide the per-glyph ones a fit needs,
+// so the counts grow until the raster path's ellipsoid frame at the largest
+// count and size takes growUntilMs (llvmpipe keeps the plan's).
+std::vector<std::size_t> calibrationGlyphs(const gl::Api& gl, const gl::ShaderLibrary& lib, const CalibrationPlan& plan);
 
 // Every path and class of the plan on the current context, fitted.
 PathCalibration calibratePaths(const gl::Api& gl, const gl::ShaderLibrary& lib, const std::string& key,
