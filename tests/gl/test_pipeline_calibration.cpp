@@ -41,6 +41,24 @@ TEST_F(PipelineCalibration, EveryPathAndClassIsMeasured) {
     }
 }
 
+// Counts grow by 8 while the largest draws faster than growUntilMs, up to
+// maxGlyphs: a bound no frame meets grows them to the cap, one every frame
+// meets keeps them.
+TEST_F(PipelineCalibration, TheCountsGrowOnlyWhileFramesAreFasterThanAsked) {
+  ctx_->makeCurrent();
+  app::CalibrationPlan plan;
+  plan.glyphs = {10, 20};
+  plan.sizes = {{16, 16}};
+  plan.frames = 1;
+  plan.maxGlyphs = 1300;
+  plan.growUntilMs = 1e9;
+  EXPECT_EQ(app::calibrationGlyphs(ctx_->api(), *lib_, plan), (std::vector<std::size_t>{640, 1280}));
+  plan.growUntilMs = 1e-9;
+  EXPECT_EQ(app::calibrationGlyphs(ctx_->api(), *lib_, plan), (std::vector<std::size_t>{10, 20}));
+  plan.growUntilMs = 0;
+  EXPECT_EQ(app::calibrationGlyphs(ctx_->api(), *lib_, plan), (std::vector<std::size_t>{10, 20}));
+}
+
 TEST_F(PipelineCalibration, TheCacheIsKeptReusedAndRebuiltWhenUnreadableOrIncomplete) {
   ctx_->makeCurrent();
   const std::filesystem::path dir = std::filesystem::temp_directory_path() / ("tg-calibration-" + std::to_string(::getpid()));
@@ -51,6 +69,8 @@ TEST_F(PipelineCalibration, TheCacheIsKeptReusedAndRebuiltWhenUnreadableOrIncomp
   const app::CachedCalibration first = app::calibrationFor(ctx_->api(), *lib_, "renderer A");
   EXPECT_TRUE(first.measured);
   EXPECT_NE(first.said.find("measured the glyph paths on this renderer in "), std::string::npos) << first.said;
+  // llvmpipe draws 16,000 glyphs at 800x600 slower than the growth bound: the plan's counts.
+  EXPECT_NE(first.said.find(" s (2000 and 16000 glyphs), kept in "), std::string::npos) << first.said;
   EXPECT_NE(first.said.find(", kept in " + file), std::string::npos) << first.said;
   ASSERT_TRUE(std::filesystem::exists(file));
   const app::CachedCalibration again = app::calibrationFor(ctx_->api(), *lib_, "renderer A");
