@@ -122,8 +122,8 @@ ComputeGlyphs::ComputeGlyphs(const gl::Api& gl, const gl::ShaderLibrary& lib, st
   GLint64 maxBlock = 0;
   gl.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
   // GLSL indexes a block with an int; GL guarantees 2^27 bytes.
-  const auto blockBytes = std::size_t(std::clamp<GLint64>(maxBlock, GLint64(1) << 27, std::numeric_limits<GLint>::max()));
-  chunkRecords_ = blockBytes / sizeof(tensor::GlyphRecord);
+  blockBytes_ = std::size_t(std::clamp<GLint64>(maxBlock, GLint64(1) << 27, std::numeric_limits<GLint>::max()));
+  chunkRecords_ = blockBytes_ / sizeof(tensor::GlyphRecord);
   if (chunkRecords > 0) chunkRecords_ = std::min(chunkRecords_, chunkRecords);
   state_ = makeBuffer(gl, sizeof(ComputeState), GL_DYNAMIC_STORAGE_BIT);
   gl::checkError(gl, "ComputeGlyphs");
@@ -223,18 +223,29 @@ void ComputeGlyphs::uploadColorScalars(std::span<const float> byRecord) {
   gl::checkError(gl_, "GlyphRenderer::setColorScalars");
 }
 
-void ComputeGlyphs::allocateFrame(int width, int height) {
-  if (vis_ && width == width_ && height == height_) return;
+void ComputeGlyphs::allocateFrame(int width, int height, bool light) {
+  const std::size_t pixels = std::size_t(width) * std::size_t(height);
+  if (pixels * 8 > blockBytes_)
+    throw std::runtime_error("GlyphRenderer::render: the compute path's visibility buffer for " + std::to_string(width) +
+                             "x" + std::to_string(height) + " is " + std::to_string(pixels * 8) +
+                             " bytes, more than one storage block holds (" + std::to_string(blockBytes_) +
+                             ", GL_MAX_SHADER_STORAGE_BLOCK_SIZE); use a smaller " +
+                             (light ? "--shadow-map-size" : "--size") + " or --pipeline raster");
   width_ = width;
   height_ = height;
   tilesX_ = (width + kTilePx - 1) / kTilePx;
   tilesY_ = (height + kTilePx - 1) / kTilePx;
   const std::size_t tiles = std::size_t(tilesX_) * std::size_t(tilesY_);
+  // Sized for the largest target so far: a frame with shadows alternates
+  // the view's and the light's sizes.
+  if (vis_ && pixels <= pixelCapacity_ && tiles <= tileCapacity_) return;
+  pixelCapacity_ = std::max(pixelCapacity_, pixels);
+  tileCapacity_ = std::max(tileCapacity_, tiles);
   for (GLuint* b : {&vis_, &tileCount_, &tileStart_, &activeTiles_}) deleteBuffer(gl_, *b);
-  vis_ = makeBuffer(gl_, std::size_t(width) * std::size_t(height) * 8);
-  tileCount_ = makeBuffer(gl_, tiles * 4);
-  tileStart_ = makeBuffer(gl_, (2 * tiles + 1) * 4);
-  activeTiles_ = makeBuffer(gl_, tiles * 4);
+  vis_ = makeBuffer(gl_, pixelCapacity_ * 8);
+  tileCount_ = makeBuffer(gl_, tileCapacity_ * 4);
+  tileStart_ = makeBuffer(gl_, (2 * tileCapacity_ + 1) * 4);
+  activeTiles_ = makeBuffer(gl_, tileCapacity_ * 4);
 }
 
 void ComputeGlyphs::allocateLists(std::size_t tiled, std::size_t entries) {
@@ -244,9 +255,7 @@ void ComputeGlyphs::allocateLists(std::size_t tiled, std::size_t entries) {
   tiledCapacity_ = std::max(tiledCapacity_, std::min(records_, first ? tiled : tiled + tiled / 4));
   entryCapacity_ = std::max(entryCapacity_, first ? entries : entries + entries / 4);
   // Storage blocks and GLuint indices bound the lists.
-  GLint64 maxBlock = 0;
-  gl_.GetInteger64v(GL_MAX_SHADER_STORAGE_BLOCK_SIZE, &maxBlock);
-  const auto limit = std::size_t(maxBlock > 0 ? maxBlock : std::numeric_limits<GLint>::max());
+  const std::size_t limit = blockBytes_;
   if (tiledCapacity_ * kCandidateBytes > limit || entryCapacity_ * 4 > limit ||
       entryCapacity_ >= std::numeric_limits<GLuint>::max())
     throw std::runtime_error("GlyphRenderer::render: the compute path's tile lists need " +
@@ -281,7 +290,9 @@ void ComputeGlyphs::bindChunk(const gl::Program& prog, const RecordChunk& c) con
 
 void ComputeGlyphs::castPasses(const Camera& cam, const FrameParams& p, const std::vector<CastClass>& classes) {
   const GLuint ones = 0xFFFFFFFFu, zero = 0;
-  gl_.ClearNamedBufferData(vis_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &ones);
+  const std::size_t tiles = std::size_t(tilesX_) * std::size_t(tilesY_);
+  gl_.ClearNamedBufferSubData(vis_, GL_R32UI, 0, GLsizeiptr(std::size_t(width_) * std::size_t(height_) * 8), GL_RED_INTEGER,
+                              GL_UNSIGNED_INT, &ones);
   ComputeState s{};
   s.tiledCapacity = GLuint(tiledCapacity_);
   s.entryCapacity = GLuint(entryCapacity_);
@@ -308,7 +319,7 @@ void ComputeGlyphs::castPasses(const Camera& cam, const FrameParams& p, const st
       gl_.ClearNamedBufferSubData(state_, GL_R32UI, 0, 8, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
       gl_.ClearNamedBufferSubData(state_, GL_R32UI, offsetof(ComputeState, entryOverflow), 4, GL_RED_INTEGER,
                                   GL_UNSIGNED_INT, &zero);
-      gl_.ClearNamedBufferData(tileCount_, GL_R32UI, GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
+      gl_.ClearNamedBufferSubData(tileCount_, GL_R32UI, 0, GLsizeiptr(tiles * 4), GL_RED_INTEGER, GL_UNSIGNED_INT, &zero);
       gl_.MemoryBarrier(GL_BUFFER_UPDATE_BARRIER_BIT);
       const gl::Program& setup = classProgram(kSetup, c.program);
       setUniforms(*cull_, cam, p, &c, pass);
@@ -341,8 +352,8 @@ void ComputeGlyphs::castPasses(const Camera& cam, const FrameParams& p, const st
     }
 }
 
-void ComputeGlyphs::castFrame(const Camera& cam, const FrameParams& p, const std::vector<CastClass>& classes) {
-  allocateFrame(cam.width, cam.height);
+void ComputeGlyphs::castFrame(const Camera& cam, const FrameParams& p, const std::vector<CastClass>& classes, bool light) {
+  allocateFrame(cam.width, cam.height, light);
   allocateLists(std::min(records_, initialTiled_), initialEntries_);
   drawn_ = 0;
   batchesKept_ = 0;
@@ -410,7 +421,7 @@ void ComputeGlyphs::drawView(const Camera& cam, const FrameParams& p, const GBuf
   if (target.width() != cam.width || target.height() != cam.height)
     throw std::invalid_argument("GlyphRenderer::render: the target is not the camera's size");
   const auto classes = computeCastClasses(p, {sphereCount_, definiteCount_, records_ - sphereCount_ - definiteCount_});
-  castFrame(cam, p, classes);
+  castFrame(cam, p, classes, false);
   targets_.allocateView(cam.width, cam.height);
   if (drawn_ > 0)
     resolve(cam, p, classes, targets_.view(CastTargets::kDepth), targets_.view(CastTargets::kRecord), true,
@@ -427,19 +438,18 @@ std::pair<glm::dvec3, glm::dvec3> ComputeGlyphs::castersBoxWC(const FrameParams&
 void ComputeGlyphs::drawShadowCasters(const Camera& light, const FrameParams& p, ShadowPass& shadow) {
   refuse(p);
   const auto classes = computeCastClasses(p, {sphereCount_, definiteCount_, records_ - sphereCount_ - definiteCount_});
-  castFrame(light, p, classes);
+  castFrame(light, p, classes, true);
   targets_.allocateLight(light.width);
   resolve(light, p, classes, targets_.lightDepth(), targets_.lightRecord(), false, false);
   targets_.writeLight(light.width, shadow);
 }
 
 std::size_t ComputeGlyphs::gpuBytes() const {
-  const std::size_t tiles = std::size_t(tilesX_) * std::size_t(tilesY_);
   const bool scalars = !chunks_.empty() && chunks_[0].scalars;
   const std::size_t batches = (records_ + kBatchRecords - 1) / kBatchRecords + chunks_.size();
   return records_ * (sizeof(tensor::GlyphRecord) + (scalars ? sizeof(float) : 0)) + batches * (sizeof(BatchBounds) + 4) +
          targets_.bytes() +
-         std::size_t(width_) * std::size_t(height_) * 8 + tiles * 16 + tiledCapacity_ * kCandidateBytes +
+         pixelCapacity_ * 8 + tileCapacity_ * 16 + tiledCapacity_ * kCandidateBytes +
          entryCapacity_ * 4;
 }
 

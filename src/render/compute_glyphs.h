@@ -97,10 +97,11 @@ class ComputeGlyphs final : public GlyphPath {
   const gl::Program& classProgram(Stage stage, int program);
   // The visibility buffer of `cam` at p's parameters, and the frame's
   // glyph count; grows the lists and casts again where they overflowed.
-  void castFrame(const Camera& cam, const FrameParams& p, const std::vector<CastClass>& classes);
+  // `light`: cam is the key light's (for messages).
+  void castFrame(const Camera& cam, const FrameParams& p, const std::vector<CastClass>& classes, bool light);
   void castPasses(const Camera& cam, const FrameParams& p, const std::vector<CastClass>& classes);
   void setUniforms(const gl::Program& prog, const Camera& cam, const FrameParams& p, const CastClass* c, int pass) const;
-  void allocateFrame(int width, int height);
+  void allocateFrame(int width, int height, bool light);
   void freeChunks(bool scalarsOnly);
   // c's records bound, and prog's uRecordBase and uRecordCount set.
   void bindChunk(const gl::Program& prog, const RecordChunk& c) const;
@@ -124,11 +125,13 @@ class ComputeGlyphs final : public GlyphPath {
   glm::vec2 colorWindow_{0.0f, 1.0f};
   std::vector<RecordChunk> chunks_;
   std::vector<GLuint> batchBounds_;  // per chunk
+  std::size_t blockBytes_ = 0;  // one storage block, as this path uses it
   std::size_t chunkRecords_;
   GLuint keptBatches_ = 0, activeTiles_ = 0;
   std::uint64_t batchesKept_ = 0;
   GLuint vis_ = 0, state_ = 0, candidates_ = 0, tileCount_ = 0, tileStart_ = 0, tileList_ = 0;
   int width_ = 0, height_ = 0, tilesX_ = 0, tilesY_ = 0;
+  std::size_t pixelCapacity_ = 0, tileCapacity_ = 0;
   std::size_t initialTiled_, initialEntries_;
   std::size_t tiledCapacity_ = 0, entryCapacity_ = 0;
   std::uint64_t drawn_ = 0;

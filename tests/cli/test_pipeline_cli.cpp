@@ -128,3 +128,19 @@ TEST(PipelineCli, KindsOnOnePathNeedNoTableAndBadCachesAreMeasuredAgain) {
   EXPECT_NE(bad.err.find("--pipeline: unknown glyph path \"fastest\"; choose raster, cpu, compute or auto"), std::string::npos)
       << bad.err;
 }
+
+// The compute path's visibility buffer (8 bytes a pixel) is one storage
+// block; llvmpipe's holds 2^27 bytes, so that 4200x4200 (141 MB) and a
+// shadow map of 8192 texels a side (537 MB) are refused naming the option,
+// with no output, where 4096x4096 would fit.
+TEST(PipelineCli, ComputeRefusesAVisibilityBufferPastOneStorageBlock) {
+  const fs::path out = dir() / "big.png";
+  tg::test::expectFailsCleanly("render --pipeline compute --size 4200 4200 -o " + out.string(),
+                               "visibility buffer for 4200x4200 is 141120000 bytes, more than one storage block holds (",
+                               out, dir(), 1);
+  const CmdResult r = run("render --pipeline compute --size 4200 4200 -o " + out.string());
+  EXPECT_EQ(r.code, 1);
+  EXPECT_NE(r.err.find("GL_MAX_SHADER_STORAGE_BLOCK_SIZE); use a smaller --size or --pipeline raster"), std::string::npos) << r.err;
+  tg::test::expectFailsCleanly("render --pipeline compute --size 64 48 --shadows --shadow-map-size 8192 -o " + out.string(),
+                               "use a smaller --shadow-map-size or --pipeline raster", out, dir(), 1);
+}
