@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "render/camera_uniforms.h"
+#include "render/kind_programs.h"
 #include "render/shadow_pass.h"
 #include "shaders/lib/bindings.h"
 
@@ -60,6 +61,10 @@ void CastTargets::fullScreen(const gl::Program& prog) const {
   gl_.DrawArrays(GL_TRIANGLES, 0, 3);
   gl_.DepthFunc(GL_GREATER);  // reversed Z, as the raster path leaves it for the context
 }
+
+void CastTargets::setGlyphParams(const FrameParams& p, const FrameParams* old) const { setGlyphUniforms(gbuffer_, p, old); }
+
+void CastTargets::setColorWindow(glm::dvec2 window) const { gbuffer_.set("uColorWindow", glm::vec2(window)); }
 
 void CastTargets::writeView(const Camera& cam, std::span<const RecordChunk> chunks) const {
   setCameraUniforms(gbuffer_, cam);

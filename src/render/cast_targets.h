@@ -10,6 +10,7 @@
 #include <span>
 
 #include "gl/program.h"
+#include "render/frame_params.h"
 #include "view/camera.h"
 
 namespace tg::render {
@@ -35,8 +36,10 @@ class CastTargets {
   CastTargets(const CastTargets&) = delete;
   CastTargets& operator=(const CastTargets&) = delete;
 
-  // cpu_gbuffer.frag, whose glyph and colour uniforms the path sets.
-  const gl::Program& gbufferProgram() const { return gbuffer_; }
+  // cpu_gbuffer.frag's glyph and colour inputs as the raster path takes
+  // them (RasterGlyphs), for the same colour code.
+  void setGlyphParams(const FrameParams& p, const FrameParams* old) const;
+  void setColorWindow(glm::dvec2 window) const;
   // The view's textures at width x height (reallocated when it changes).
   void allocateView(int width, int height);
   GLuint view(View k) const { return view_[k]; }

@@ -202,14 +202,9 @@ void ComputeGlyphs::upload(const tensor::GlyphSet& set) {
   gl::checkError(gl_, "GlyphRenderer::upload");
 }
 
-void ComputeGlyphs::setParams(const FrameParams& p, const FrameParams* old) {
-  setGlyphUniforms(targets_.gbufferProgram(), p, old);
-}
+void ComputeGlyphs::setParams(const FrameParams& p, const FrameParams* old) { targets_.setGlyphParams(p, old); }
 
-void ComputeGlyphs::setColorWindow(glm::dvec2 window) {
-  colorWindow_ = glm::vec2(window);
-  targets_.gbufferProgram().set("uColorWindow", colorWindow_);
-}
+void ComputeGlyphs::setColorWindow(glm::dvec2 window) { targets_.setColorWindow(window); }
 
 void ComputeGlyphs::uploadColorScalars(std::span<const float> byRecord) {
   if (byRecord.size() != records_)

@@ -122,7 +122,6 @@ class ComputeGlyphs final : public GlyphPath {
   double maxAbsEigenvalue_ = 0;
   FrameParams params_;
   bool paramsSet_ = false;
-  glm::vec2 colorWindow_{0.0f, 1.0f};
   std::vector<RecordChunk> chunks_;
   std::vector<GLuint> batchBounds_;  // per chunk
   std::size_t blockBytes_ = 0;  // one storage block, as this path uses it

@@ -326,16 +326,9 @@ void CpuGlyphs::upload(const tensor::GlyphSet& set) {
   gl::checkError(gl_, "GlyphRenderer::upload");
 }
 
-void CpuGlyphs::setParams(const FrameParams& p, const FrameParams* old) {
-  setGlyphUniforms(targets_.gbufferProgram(), p, old);
-}
+void CpuGlyphs::setParams(const FrameParams& p, const FrameParams* old) { targets_.setGlyphParams(p, old); }
 
-// The colour inputs as the raster path takes them (RasterGlyphs), for the
-// same colour code in cpu_gbuffer.frag.
-void CpuGlyphs::setColorWindow(glm::dvec2 window) {
-  colorWindow_ = glm::vec2(window);
-  targets_.gbufferProgram().set("uColorWindow", colorWindow_);
-}
+void CpuGlyphs::setColorWindow(glm::dvec2 window) { targets_.setColorWindow(window); }
 
 void CpuGlyphs::uploadColorScalars(std::span<const float> byRecord) {
   if (byRecord.size() != records_.size())

@@ -116,7 +116,6 @@ class CpuGlyphs final : public GlyphPath {
   glm::dmat4 centreView_{0.0};
   std::vector<BlobCandidate> blobs_;  // blob frames' set-up, kept between frames
   GLuint buffer_ = 0, scalars_ = 0;  // scalars_: ColorMode::Array's values, by record
-  glm::vec2 colorWindow_{0.0f, 1.0f};
   int threads_;
   std::uint64_t drawn_ = 0;
 };
