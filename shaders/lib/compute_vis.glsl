@@ -215,6 +215,7 @@ layout(std430, binding = TG_SSBO_COMPUTE_STATE) buffer ComputeState {
   uvec4 setupDispatch;  // compute_setup.comp's indirect dispatch: x kBatchRecords / 64, y the chunk's kept batches
   uint batchesKept;     // the frame's kept batches over its chunks, classes and passes
   uvec4 castDispatch;   // compute_cast.comp's indirect dispatch: a workgroup per active tile
+  uvec4 sortDispatch;   // compute_sort.comp's: x an active tile, y a run of kSortRun entries
 };
 
 // Records in batches of kBatchRecords (render/compute_glyphs.h, BatchBounds),
@@ -239,6 +240,17 @@ uniform int uTiles;
 // Workgroups are more than a dispatch's 65535 along x at 10^8 glyphs.
 uint linearInvocation(uint localSize) {
   return (gl_WorkGroupID.y * gl_NumWorkGroups.x + gl_WorkGroupID.x) * localSize + gl_LocalInvocationIndex;
+}
+
+// Tile lists are sorted by nearest depth in runs of kSortRun entries
+// (compute_sort.comp), each run front to back.
+const uint kSortRun = 1024u;
+const uint kSortRunsMax = 65535u;  // a dispatch's workgroups along y: later runs stay unsorted
+
+// Floats as uints that order as the floats do (negative ones reversed).
+uint orderKey(float f) {
+  uint u = floatBitsToUint(f);
+  return (u & 0x80000000u) != 0u ? ~u : u | 0x80000000u;
 }
 
 // An x-major dispatch of at most 65535 workgroups along x over n items.

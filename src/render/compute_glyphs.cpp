@@ -27,11 +27,13 @@ struct ComputeState {
   GLuint setupDispatch[4];
   GLuint batchesKept, pad[3];
   GLuint castDispatch[4];
+  GLuint sortDispatch[4];
 };
-static_assert(sizeof(ComputeState) == 96);
+static_assert(sizeof(ComputeState) == 112);
 constexpr GLintptr kBinDispatchOffset = offsetof(ComputeState, binDispatch);
 constexpr GLintptr kSetupDispatchOffset = offsetof(ComputeState, setupDispatch);
 constexpr GLintptr kCastDispatchOffset = offsetof(ComputeState, castDispatch);
+constexpr GLintptr kSortDispatchOffset = offsetof(ComputeState, sortDispatch);
 constexpr GLuint kSetupGroupSize = 64;  // compute_setup.comp's local size
 constexpr std::size_t kCandidateBytes = 80;  // lib/compute_vis.glsl's CastCandidate
 constexpr int kTilePx = 16;
@@ -306,6 +308,7 @@ void ComputeGlyphs::castPasses(const Camera& cam, const FrameParams& p, const st
   if (!scan_) {
     cull_ = std::make_unique<gl::Program>(gl_, lib_, std::initializer_list<gl::StageSource>{{GL_COMPUTE_SHADER, "compute_batches.comp"}});
     scan_ = std::make_unique<gl::Program>(gl_, lib_, std::initializer_list<gl::StageSource>{{GL_COMPUTE_SHADER, "compute_scan.comp"}});
+    sort_ = std::make_unique<gl::Program>(gl_, lib_, std::initializer_list<gl::StageSource>{{GL_COMPUTE_SHADER, "compute_sort.comp"}});
     bin_ = std::make_unique<gl::Program>(gl_, lib_, std::initializer_list<gl::StageSource>{{GL_COMPUTE_SHADER, "compute_bin.comp"}});
   }
   for (int pass = 0; pass < (vis64_ ? 1 : 2); ++pass)
@@ -340,6 +343,9 @@ void ComputeGlyphs::castPasses(const Camera& cam, const FrameParams& p, const st
       gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT | GL_COMMAND_BARRIER_BIT);
       setUniforms(*bin_, cam, p, &c, pass);
       gl_.DispatchComputeIndirect(kBinDispatchOffset);
+      gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
+      setUniforms(*sort_, cam, p, &c, pass);
+      gl_.DispatchComputeIndirect(kSortDispatchOffset);
       gl_.MemoryBarrier(GL_SHADER_STORAGE_BARRIER_BIT);
       setUniforms(classProgram(kCast, c.program), cam, p, &c, pass);
       gl_.DispatchComputeIndirect(kCastDispatchOffset);

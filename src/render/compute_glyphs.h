@@ -17,9 +17,11 @@
 //     glyphs by prefix sums, and the next passes' indirect dispatches (no
 //     CPU round trip);
 //  3. compute_bin.comp: each kept glyph into its tiles' lists;
-//  4. compute_cast.comp, per tile with glyphs and pixel: its list's glyphs
-//     sorted by nearest depth, front to back until the next lies behind
-//     the nearest hit so far, the nearest into the buffer.
+//  4. compute_sort.comp, per tile with glyphs: its list in runs of 1,024
+//     sorted by nearest depth;
+//  5. compute_cast.comp, per tile with glyphs and pixel: its list's glyphs,
+//     each run front to back until the next lies behind the nearest hit so
+//     far, the nearest into the buffer.
 // The visibility buffer holds, per pixel, the minimum of (inverted window
 // depth, record) as 64 bits: by one atomic where GL_NV_shader_atomic_int64
 // is present, else by two passes of 32-bit minima (depth, then the record
@@ -116,7 +118,7 @@ class ComputeGlyphs final : public GlyphPath {
   CastTargets targets_;
   bool vis64_ = false;
   std::array<std::unique_ptr<gl::Program>, std::size_t(kStages) * std::size_t(kPrograms)> programs_;
-  std::unique_ptr<gl::Program> cull_, scan_, bin_, depthResolve_;
+  std::unique_ptr<gl::Program> cull_, scan_, bin_, sort_, depthResolve_;
   std::size_t records_ = 0, sphereCount_ = 0, definiteCount_ = 0;
   glm::dvec3 centresLoWC_{0.0}, centresHiWC_{0.0};
   double maxAbsEigenvalue_ = 0;
