@@ -255,10 +255,14 @@ void checkKindOptions(const RenderOptions& o, render::GlyphKind kind, bool toFil
   const std::string path = glyphPathFor(o, kind), name(render::glyphKind(kind).name);
   if ((path == "cpu" || path == "compute") && o.tessellate != 0)
     throw UsageError("--pipeline " + path + " casts rays; --tessellate draws a mesh (use --pipeline raster)");
-  if (!pipelineDraws(path, kind))
+  if (!pipelineDraws(path, kind)) {
+    std::string others;
+    for (const std::string_view p : render::kGlyphPathNames)
+      if (p != path && pipelineDraws(p, kind)) others += (others.empty() ? "" : " or ") + std::string(p);
     throw UsageError("--pipeline " + path + " draws " + kindsDrawnBy(path) + " glyphs only; this render draws " + name +
                      " glyphs" + (kind == render::GlyphKind::Blob ? " (each blob pixel needs every bump its ray meets)" : "") +
-                     ": leave --pipeline out");
+                     ": use --pipeline " + others + ", or leave --pipeline out");
+  }
   const bool blob = kind == render::GlyphKind::Blob;
   if (toFile && !o.marchFlag.empty() && (!render::glyphKind(kind).gamma || (blob && o.marchFlag != "--gamma")))
     throw UsageError(o.marchFlag + " applies to --glyph superquadric" + (o.marchFlag == "--gamma" ? " and blob" : "") +

@@ -2,6 +2,8 @@
 // text, and the fit (app/scale/pipeline_choice.h, pipeline_calibration.h).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -97,7 +99,13 @@ TEST(PipelineChoice, TheCacheTextRoundTripsAndIsReadStrictly) {
   const std::string row = "k\traster\tmarch\t1\t2\t3\n";
   EXPECT_EQ(errorOf(head + row), "");
   EXPECT_NE(errorOf("hello\n").find("cache.tsv:1: is not a tensorglyph calibration cache"), std::string::npos);
-  EXPECT_NE(errorOf(text.substr(0, text.size() - 1)).find("cache.tsv:1: does not end with a line break"), std::string::npos);
+  // Cut short: the line it stops in is named.
+  const std::string cut = text.substr(0, text.size() - 1);
+  const std::string lastLine = std::to_string(std::count(cut.begin(), cut.end(), '\n') + 1);
+  EXPECT_NE(errorOf(cut).find("cache.tsv:" + lastLine + ": does not end with a line break"), std::string::npos) << errorOf(cut);
+  EXPECT_NE(errorOf(head + "k\traster\tma").find("cache.tsv:3: does not end with a line break"), std::string::npos);
+  EXPECT_NE(errorOf("\x01\x02 binary").find("cache.tsv:1: is not a tensorglyph calibration cache"), std::string::npos);
+  EXPECT_NE(errorOf("").find("cache.tsv:1: is not a tensorglyph calibration cache"), std::string::npos);
   EXPECT_NE(errorOf(head.substr(0, head.find('\n') + 1) + row).find("cache.tsv:2: the column line"), std::string::npos);
   EXPECT_NE(errorOf(head + "k\traster\tmarch\t1\t2\n").find("cache.tsv:3: has 5 fields; a row has 6"), std::string::npos);
   EXPECT_NE(errorOf(head + "k\ttiles\tmarch\t1\t2\t3\n").find("cache.tsv:3: unknown glyph path \"tiles\""), std::string::npos);

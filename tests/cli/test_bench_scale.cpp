@@ -119,6 +119,8 @@ TEST(BenchScale, WritesOneRowPerMethodAndCount) {
   tg::test::expectFailsCleanly("bench scale --pipelines raster,tiles -o " + csv.string(), "--pipelines: \"tiles\"; choose raster, cpu, compute", csv, dir, 1);
   tg::test::expectFailsCleanly("bench scale --pipelines raster,raster -o " + csv.string(), "named twice", csv, dir, 1);
   tg::test::expectFailsCleanly("bench scale --row-budget 0 -o " + csv.string(), "--row-budget", csv, dir, 1);
+  tg::test::expectFailsCleanly("bench scale --pipelines compute, -o " + csv.string(), "--pipelines: an empty name", csv, dir, 1);
+  tg::test::expectFailsCleanly("bench scale --n 100,100 -o " + csv.string(), "--n: 100 is named twice", csv, dir, 1);
   std::filesystem::remove_all(dir);
 }
 

@@ -108,7 +108,7 @@ TEST(Newcomer, MarchOptionsOnGlyphsThatDoNotMarchAreRefused) {
       {" --blob-threshold 2", "--blob-threshold applies to --glyph blob only; this render draws ellipsoid glyphs"},
       {" --glyph blob --pipeline raster",
        "--pipeline raster draws ellipsoid, superquadric, cylinder and box glyphs only; this render draws blob glyphs "
-       "(each blob pixel needs every bump its ray meets): leave --pipeline out"},
+       "(each blob pixel needs every bump its ray meets): use --pipeline cpu, or leave --pipeline out"},
       {" --glyph blob --blobbiness -0.01 --blob-cutoff 1e-9",
        "--blobbiness -0.01 with --blob-cutoff 1e-09 and --blob-threshold 1: each bump would reach 45.5338 glyph radii (at most 8)"},
       {" --glyph blob --blobbiness -0.01 --blob-cutoff 0.5 --blob-threshold 3",

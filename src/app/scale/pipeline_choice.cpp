@@ -127,10 +127,12 @@ std::vector<PathCalibration> parseCalibrations(std::string_view text, const std:
   if (text.size() > kMaxBytes)
     throw fail(1, "holds " + std::to_string(text.size()) + " bytes; a calibration cache holds at most " +
                       std::to_string(kMaxBytes));
-  if (text.empty() || text.back() != '\n') throw fail(1, "does not end with a line break (a truncated write?)");
-  std::vector<std::string_view> lines = split(text.substr(0, text.size() - 1), '\n');
-  if (lines[0] != kHeader)
+  if (text.substr(0, text.find('\n')) != kHeader)
     throw fail(1, "is not a tensorglyph calibration cache (its first line is not \"" + std::string(kHeader) + "\")");
+  if (text.back() != '\n')
+    throw fail(std::size_t(std::count(text.begin(), text.end(), '\n')) + 1,
+               "does not end with a line break (a truncated write?)");
+  std::vector<std::string_view> lines = split(text.substr(0, text.size() - 1), '\n');
   if (lines.size() < 2 || lines[1] != kColumns) throw fail(2, "the column line is not \"" + std::string(kColumns) + "\"");
   std::vector<PathCalibration> cals;
   for (std::size_t n = 2; n < lines.size(); ++n) {

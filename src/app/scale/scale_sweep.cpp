@@ -77,12 +77,16 @@ ScaleOptions parseScaleOptions(int argc, const char** argv, ScaleOptions o, cons
 
 void checkScaleOptions(const ScaleOptions& o) {
   if (o.csv.empty()) throw UsageError("-o CSV is required");
-  for (double n : o.counts)
-    if (n != double(std::size_t(n))) throw UsageError("--n: each must be a whole number");
+  for (std::size_t k = 0; k < o.counts.size(); ++k) {
+    if (o.counts[k] != double(std::size_t(o.counts[k]))) throw UsageError("--n: each must be a whole number");
+    if (std::find(o.counts.begin(), o.counts.begin() + std::ptrdiff_t(k), o.counts[k]) != o.counts.begin() + std::ptrdiff_t(k))
+      throw UsageError("--n: " + formatNumber(o.counts[k]) + " is named twice");
+  }
   checkFrameSize("--size", o.width, o.height);
   if (o.requireGpu && o.backend != "egl") throw UsageError("--require-gpu needs --backend egl");
   for (std::size_t k = 0; k < o.pipelines.size(); ++k) {
     const std::string& name = o.pipelines[k];
+    if (name.empty()) throw UsageError("--pipelines: an empty name (a stray comma?); choose " + render::glyphPathNames());
     if (std::find(std::begin(render::kGlyphPathNames), std::end(render::kGlyphPathNames), name) ==
         std::end(render::kGlyphPathNames))
       throw UsageError("--pipelines: \"" + name + "\"; choose " + render::glyphPathNames());
