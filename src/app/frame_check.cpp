@@ -100,17 +100,25 @@ FrameCheck checkFrame(const io::TensorField& f, const io::ReadOptions& read) {
   for (std::size_t k = 0; k < readings.size(); ++k) readings[k].score = s.scores[k];
   for (std::size_t k = 0; k < readings.size(); ++k) readings[k].z = s.pairedSe[k] > 0 ? (s.scores[k] - s.scores[0]) / s.pairedSe[k] : 0;
   c.fibreVoxels = s.fibreVoxels;
+  c.blocks = s.blocks;
+  c.coarseBlocks = s.coarseBlocks;
   c.faMin = s.faMin;
   c.asRead = readings[0];
   c.alternatives.assign(readings.begin() + 1, readings.end());
   std::stable_sort(c.alternatives.begin(), c.alternatives.end(),
                    [](const FrameReading& a, const FrameReading& b) { return a.score > b.score; });
+  std::vector<double> all{c.asRead.score};
+  for (const FrameReading& r : c.alternatives) all.push_back(r.score);
+  std::sort(all.begin(), all.end());
+  c.median = (all[(all.size() - 1) / 2] + all[all.size() / 2]) / 2;
   const FrameReading& best = c.alternatives.front();
-  if (c.fibreVoxels >= kMinFibreVoxels && best.score >= c.asRead.score + kClearMargin && best.z >= kClearZ)
+  if (bigEnough(c) && best.score >= c.asRead.score + kClearMargin && best.score >= c.median + kStandOut)
     c.better = best;
   c.milliseconds = threadCpuMs() - start;
   return c;
 }
+
+bool bigEnough(const FrameCheck& c) { return c.fibreVoxels >= kMinFibreVoxels && c.blocks >= kMinBlocks; }
 
 std::string frameWarning(const FrameCheck& c) {
   if (!c.better) return "";
@@ -121,9 +129,11 @@ std::string frameWarning(const FrameCheck& c) {
 
 std::string frameCheckReport(const FrameCheck& c) {
   if (!c.skipped.empty()) return "frame check: not run: " + c.skipped + "\n";
-  char head[160];
-  std::snprintf(head, sizeof head, "frame check: fibre coherence over %zu fibre voxels (FA >= %.2f), in %.1f ms of CPU\n",
-                c.fibreVoxels, c.faMin, c.milliseconds);
+  char head[192];
+  std::snprintf(head, sizeof head,
+                "frame check: fibre coherence over %zu fibre voxels (FA >= %.2f) in %zu blocks of 5^3 and %zu of 10^3 voxels, "
+                "in %.1f ms of CPU\n",
+                c.fibreVoxels, c.faMin, c.blocks, c.coarseBlocks, c.milliseconds);
   std::string out = head;
   out += "  as read: " + score(c.asRead.score) + "\n";
   std::string all;
@@ -132,11 +142,14 @@ std::string frameCheckReport(const FrameCheck& c) {
   out += "  others (--tensor-axes AXES, --frame NAME): " + all + "\n";
   char z[96];
   const double bestZ = c.alternatives.front().z;
-  std::snprintf(z, sizeof z, "  best other: %.2f standard errors %s as read (paired by voxel)\n", std::abs(bestZ),
+  std::snprintf(z, sizeof z, "  best other: %.2f standard errors %s as read (paired by voxel, the blocks as samples)\n", std::abs(bestZ),
                 bestZ < 0 ? "below" : "above");
   out += z;
+  out += "  median reading: " + score(c.median) + "\n";
   if (c.better) out += "  verdict: " + c.better->option + " reads the fibres clearly better (" + c.better->what + ")\n";
-  else if (c.fibreVoxels < kMinFibreVoxels) out += "  verdict: too few fibre voxels to tell\n";
+  else if (!bigEnough(c))
+    out += "  verdict: too small a field to tell (a verdict needs " + std::to_string(kMinFibreVoxels) +
+           " fibre voxels in " + std::to_string(kMinBlocks) + " blocks)\n";
   else out += "  verdict: no alternative reads the fibres clearly better\n";
   return out;
 }

@@ -36,10 +36,16 @@ struct CoherenceParams {
   int reach = 2;
 };
 inline constexpr double kFaFloor = 0.2;
+// A voxel's score reads voxels up to `reach` (2) steps out: blocks of 5
+// voxels a side share few of them.
+inline constexpr int kBlock = 5;
 
 struct CoherenceScores {
   std::vector<double> scores;  // one per candidate, in [0, 1]
-  std::vector<double> pairedSe;  // standard error of scores[c] - scores[0], paired by voxel
+  // The standard error of scores[c] - scores[0], paired by voxel, with
+  // blocks of voxels as the samples: the larger of kBlock^3's and (2 kBlock)^3's.
+  std::vector<double> pairedSe;
+  std::size_t blocks = 0, coarseBlocks = 0;  // the blocks of each size holding scored fibre voxels
   std::size_t fibreVoxels = 0;       // the fibre voxels scored: what the scores are over
   std::size_t fibreVoxelsFound = 0;  // of the examined voxels, those at or above faMin
   double faMin = 0;              // the threshold used
