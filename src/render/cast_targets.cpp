@@ -23,8 +23,8 @@ void makeTextures(const gl::Api& gl, std::size_t n, GLuint* tex, const GLenum* f
 
 }  // namespace
 
-CastTargets::CastTargets(const gl::Api& gl, const gl::ShaderLibrary& lib)
-    : gl_(gl), lib_(lib), gbuffer_(gl, lib, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "cpu_gbuffer.frag"}}) {
+CastTargets::CastTargets(const gl::Api& gl, const gl::ShaderLibrary& lib, GLenum normalFormat)
+    : gl_(gl), lib_(lib), normalFormat_(normalFormat), gbuffer_(gl, lib, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "cpu_gbuffer.frag"}}) {
   gl.CreateVertexArrays(1, &vao_);
   gl::checkError(gl, "CastTargets");
 }
@@ -35,13 +35,22 @@ CastTargets::~CastTargets() {
   gl_.DeleteVertexArrays(1, &vao_);
 }
 
-void CastTargets::allocateView(int width, int height) {
-  if (view_[0] && width_ == width && height_ == height) return;
-  if (view_[0]) gl_.DeleteTextures(4, view_);
-  width_ = width;
-  height_ = height;
-  const GLenum formats[4] = {GL_R32F, GL_R32UI, GL_RGBA32F, GL_RGBA32F};
-  makeTextures(gl_, 4, view_, formats, width, height);
+void CastTargets::allocateView(int width, int height, bool hitGC) {
+  if (!view_[0] || width_ != width || height_ != height) {
+    if (view_[0]) gl_.DeleteTextures(3, view_);
+    width_ = width;
+    height_ = height;
+    const GLenum formats[3] = {GL_R32F, GL_R32UI, normalFormat_};
+    makeTextures(gl_, 3, view_, formats, width, height);
+  }
+  const int hw = hitGC ? width : 1, hh = hitGC ? height : 1;
+  if (!view_[kHitGC] || hitSize_[0] != hw || hitSize_[1] != hh) {
+    if (view_[kHitGC]) gl_.DeleteTextures(1, &view_[kHitGC]);
+    hitSize_[0] = hw;
+    hitSize_[1] = hh;
+    const GLenum format = GL_RGBA32F;
+    makeTextures(gl_, 1, &view_[kHitGC], &format, hw, hh);
+  }
 }
 
 void CastTargets::allocateLight(int size) {
@@ -94,7 +103,8 @@ void CastTargets::writeLight(int size, ShadowPass& shadow) {
 }
 
 std::size_t CastTargets::bytes() const {
-  return (view_[0] ? std::size_t(width_) * std::size_t(height_) * 40 : 0) +
+  return (view_[0] ? std::size_t(width_) * std::size_t(height_) * (normalFormat_ == GL_RGB32F ? 20 : 24) : 0) +
+         std::size_t(hitSize_[0]) * std::size_t(hitSize_[1]) * 16 +
          (light_[0] ? std::size_t(lightSize_) * std::size_t(lightSize_) * 8 : 0);
 }
 

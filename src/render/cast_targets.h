@@ -28,10 +28,16 @@ struct RecordChunk {
 class CastTargets {
  public:
   // The view's textures: window depth (R32F, reversed, 0 where empty),
-  // record + 1 (R32UI, 0: empty), WC normal and GC hit (RGBA32F).
+  // record + 1 (R32UI, 0: empty), WC normal (float, in `normalFormat`) and
+  // GC hit (RGBA32F, 1x1 unless a frame of the sign colour asks for it: 33
+  // MB at 1920x1080). The normal stays float so that cpu_gbuffer.frag's
+  // output rounds it to the G-buffer's half floats as the raster path's
+  // fragments do (an upload rounds otherwise on llvmpipe).
   enum View { kDepth = 0, kRecord = 1, kNormal = 2, kHitGC = 3 };
 
-  CastTargets(const gl::Api& gl, const gl::ShaderLibrary& lib);
+  // normalFormat: GL_RGB32F where the normal is uploaded (12 bytes a
+  // pixel), GL_RGBA32F where a compute shader stores it (an image format).
+  CastTargets(const gl::Api& gl, const gl::ShaderLibrary& lib, GLenum normalFormat);
   ~CastTargets();
   CastTargets(const CastTargets&) = delete;
   CastTargets& operator=(const CastTargets&) = delete;
@@ -40,8 +46,9 @@ class CastTargets {
   // them (RasterGlyphs), for the same colour code.
   void setGlyphParams(const FrameParams& p, const FrameParams* old) const;
   void setColorWindow(glm::dvec2 window) const;
-  // The view's textures at width x height (reallocated when it changes).
-  void allocateView(int width, int height);
+  // The view's textures at width x height, the GC hit's only when `hitGC`
+  // (each reallocated when its size changes).
+  void allocateView(int width, int height, bool hitGC);
   GLuint view(View k) const { return view_[k]; }
   // The light's depth and record textures, size x size.
   void allocateLight(int size);
@@ -61,11 +68,12 @@ class CastTargets {
 
   const gl::Api& gl_;
   const gl::ShaderLibrary& lib_;
+  GLenum normalFormat_;
   gl::Program gbuffer_;
   std::unique_ptr<gl::Program> depth_;  // cpu_depth.frag, built by the first shadow map
   GLuint vao_ = 0;
   GLuint view_[4] = {};
-  int width_ = 0, height_ = 0;
+  int width_ = 0, height_ = 0, hitSize_[2] = {0, 0};
   GLuint light_[2] = {};
   int lightSize_ = 0;
 };

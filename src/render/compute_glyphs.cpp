@@ -117,7 +117,7 @@ ComputeGlyphs::ComputeGlyphs(const gl::Api& gl, const gl::ShaderLibrary& lib, st
                              std::size_t chunkRecords)
     : gl_(gl),
       lib_(lib),
-      targets_(gl, lib),
+      targets_(gl, lib, GL_RGBA32F),
       vis64_(hasExtension(gl, "GL_ARB_gpu_shader_int64") && hasExtension(gl, "GL_NV_shader_atomic_int64")),
       initialTiled_(std::max<std::size_t>(tiled, 1)),
       initialEntries_(std::max<std::size_t>(entries, 1)) {
@@ -423,7 +423,7 @@ void ComputeGlyphs::drawView(const Camera& cam, const FrameParams& p, const GBuf
     throw std::invalid_argument("GlyphRenderer::render: the target is not the camera's size");
   const auto classes = computeCastClasses(p, {sphereCount_, definiteCount_, records_ - sphereCount_ - definiteCount_});
   castFrame(cam, p, classes, false);
-  targets_.allocateView(cam.width, cam.height);
+  targets_.allocateView(cam.width, cam.height, p.color == ColorMode::Sign);
   if (drawn_ > 0)
     resolve(cam, p, classes, targets_.view(CastTargets::kDepth), targets_.view(CastTargets::kRecord), true,
             p.color == ColorMode::Sign);

@@ -120,49 +120,54 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
   // Teem's cylinders and boxes: one closed form for every group (prismSprite, castPrism).
   const bool prisms = glyphKind(p.glyph).draw == KindDraw::ClosedForm;
   const bool cylinders = p.glyph == GlyphKind::Cylinder;
-  // Frames whose glyphs take more than the ellipsoid's cast keep each one's shape.
-  const bool marching = prisms || march.marches();
-  if (out.candidates.size() < m) {
-    out.candidates.resize(m);
+  if (out.keys.size() < m) {
+    out.keys.resize(m);
     out.rects.resize(m);
   }
-  if (marching && out.shapes.size() < m) out.shapes.resize(m);
-  const auto setUp = [&](std::size_t i, std::size_t at) {
+  // Record i's sprite: what its fragments would receive. The first pass
+  // keeps only its rectangle and nearest depth; a tile sets up again those
+  // it casts, with the same arithmetic, so that no frame holds every
+  // glyph's set-up (2 M glyphs: 144 MB).
+  const auto sprite = [&](std::size_t i, Candidate& c, CastShape& shape, PixelRect& r) {
     glsl::GlyphRecord g;
     std::memcpy(&g, &records[i], sizeof g);
-    PixelRect& r = out.rects[at];
     if (prisms) {
       glsl::PrismSprite s;
       if (!general.prismSprite(g, cylinders, s) || !pixelsOf(s.rectNDC, w, h, r)) return false;
-      out.shapes[at] = {glsl::vec3(0.0f), cylinders ? kCastCylinder : kCastBox, std::uint8_t(s.src.z)};
-      out.candidates[at] = {s.centreVC, s.gcFromVC, s.nearVC, std::uint32_t(i)};
+      shape = {glsl::vec3(0.0f), cylinders ? kCastCylinder : kCastBox, std::uint8_t(s.src.z)};
+      c = {s.centreVC, s.gcFromVC, s.nearVC, std::uint32_t(i)};
       return true;
     }
     const std::optional<MarchVariant> v = march.variantOf(records[i]);
     if (!v) {
       glsl::EllipsoidSprite s;
       if (!general.ellipsoidSprite(g, s) || !pixelsOf(s.rectNDC, w, h, r)) return false;
-      if (marching) out.shapes[at] = {glsl::vec3(1.0f), kCastEllipsoid, 0};
-      out.candidates[at] = {s.centreVC, general.ellipsoidGcFromVC(s.rotVC, s.axes),
-                            std::max(s.dist - s.radius, general.uNearVC), std::uint32_t(i)};
+      shape = {glsl::vec3(1.0f), kCastEllipsoid, 0};
+      c = {s.centreVC, general.ellipsoidGcFromVC(s.rotVC, s.axes), std::max(s.dist - s.radius, general.uNearVC),
+           std::uint32_t(i)};
       return true;
     }
     const std::uint8_t kind = castKindOf(*v);
     return withVariant(*v, general, convex, mixed, [&](auto& sq) {
       typename std::remove_reference_t<decltype(sq)>::SuperquadricSprite s;
       if (!sq.superquadricSprite(g, gamma, eps, s) || !pixelsOf(s.rectNDC, w, h, r)) return false;
-      out.shapes[at] = {glsl::vec3(s.shape), kind, std::uint8_t(s.shape.w)};
-      out.candidates[at] = {s.centreVC, s.gcFromVC, s.nearVC, std::uint32_t(i)};
+      shape = {glsl::vec3(s.shape), kind, std::uint8_t(s.shape.w)};
+      c = {s.centreVC, s.gcFromVC, s.nearVC, std::uint32_t(i)};
       return true;
     });
   };
-  const std::size_t count =
-      keepInParts(threads, m, setUp, &out.candidates, &out.rects, marching ? &out.shapes : nullptr);
+  const auto setUp = [&](std::size_t i, std::size_t at) {
+    Candidate c;
+    CastShape shape;
+    if (!sprite(i, c, shape, out.rects[at])) return false;
+    out.keys[at] = {c.nearVC, c.record};
+    return true;
+  };
+  const std::size_t count = keepInParts(threads, m, setUp, &out.keys, &out.rects);
   const bool masked = out.masked();
   out.count = count;
-  const std::vector<Candidate>& cands = out.candidates;
+  const std::vector<CastKey>& keys = out.keys;
   const std::vector<PixelRect>& rects = out.rects;
-  const std::vector<CastShape>& shapes = out.shapes;
   TileBins& bins = out.bins;
   binToTiles(std::span(rects.data(), count), w, h, threads, bins);
 
@@ -183,7 +188,13 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
       float nearVC;
       std::uint32_t k;
     };
+    // The tile's glyphs set up again, in the order first cast.
+    struct Local {
+      Candidate c;
+      CastShape shape;
+    };
     std::vector<Key> order;
+    std::vector<Local> local;
     float bestWin[kTilePixels], bestVC[kTilePixels];
     std::uint32_t best[kTilePixels];
     glsl::vec3 bestGC[kTilePixels], bestGrad[kTilePixels];
@@ -191,7 +202,7 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
       if (bins.start[t] == bins.start[t + 1]) continue;
       order.clear();
       for (std::uint32_t e = bins.start[t]; e < bins.start[t + 1]; ++e)
-        order.push_back({cands[bins.items[e]].nearVC, bins.items[e]});
+        order.push_back({keys[bins.items[e]].nearVC, bins.items[e]});
       // Nearest first; of equal depths the lower record first, as drawn.
       std::sort(order.begin(), order.end(),
                 [](const Key& a, const Key& b) { return a.nearVC < b.nearVC || (a.nearVC == b.nearVC && a.k < b.k); });
@@ -210,6 +221,7 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
           else bestVC[(y - y0) * kTilePx + (x - x0)] = -1.0f;  // nearer than any glyph: cast nothing there
         }
       if (open == 0) continue;
+      local.clear();
       float farVC = std::numeric_limits<float>::infinity();
       bool farStale = true;
       for (const Key& key : order) {
@@ -223,13 +235,21 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
           if (key.nearVC > farVC) break;
         }
         const std::uint32_t k = key.k;
-        const Candidate& c = cands[k];
         const PixelRect& r = rects[k];
-        const std::uint8_t kind = marching ? shapes[k].kind : kCastEllipsoid;
+        std::uint32_t slot = kNone;  // in local, once a pixel casts it
         for (int y = std::max(r.y0, y0); y <= std::min(r.y1, y1); ++y)
           for (int x = std::max(r.x0, x0); x <= std::min(r.x1, x1); ++x) {
             const int q = (y - y0) * kTilePx + (x - x0);
-            if (c.nearVC > bestVC[q]) continue;
+            if (key.nearVC > bestVC[q]) continue;
+            if (slot == kNone) {
+              Local l;
+              PixelRect same;
+              if (!sprite(keys[k].record, l.c, l.shape, same)) throw std::logic_error("castGlyphs: a sprite set up twice differs");
+              slot = std::uint32_t(local.size());
+              local.push_back(l);
+            }
+            const Candidate& c = local[slot].c;
+            const std::uint8_t kind = local[slot].shape.kind;
             const glsl::vec2 fragDC(float(x) + 0.5f, float(y) + 0.5f);
             float depthVC;
             glsl::vec3 pGC, grad(0.0f);
@@ -240,7 +260,7 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
               if (!sh.castPrism(fragDC, c.centreVC, c.gcFromVC, kind == kCastCylinder, depthVC, pGC, grad)) continue;
             } else {
               const bool hit = withVariant(variantOfKind(kind), general, convex, mixed, [&](auto& sq) {
-                const glsl::vec3 shape = shapes[k].shape;
+                const glsl::vec3 shape = local[slot].shape.shape;
                 const auto ray = sq.superquadricRay(fragDC, c.centreVC, c.gcFromVC, shape, eps);
                 if (!ray.inReach) return false;
                 const auto hitM = sq.marchSuperquadricRay(ray, shape, maxIter, eps);
@@ -252,12 +272,12 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
               if (!hit) continue;
             }
             const float win = sh.windowDepthFromViewDepth(depthVC);
-            if (win > bestWin[q] || (best[q] != kNone && win == bestWin[q] && c.record < cands[best[q]].record)) {
+            if (win > bestWin[q] || (best[q] != kNone && win == bestWin[q] && c.record < local[best[q]].c.record)) {
               open -= best[q] == kNone ? 1 : 0;
               farStale = true;
               bestWin[q] = win;
               bestVC[q] = depthVC;
-              best[q] = k;
+              best[q] = slot;
               bestGC[q] = pGC;
               bestGrad[q] = grad;
             }
@@ -267,18 +287,17 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
         for (int x = x0; x <= x1; ++x) {
           const int q = (y - y0) * kTilePx + (x - x0);
           if (best[q] == kNone) continue;
-          const Candidate& c = cands[best[q]];
+          const Candidate& c = local[best[q]].c;
           const std::size_t px = std::size_t(y) * std::size_t(w) + std::size_t(x);
           out.windowDepth[px] = bestWin[q];
           out.record[px] = c.record + 1;
-          const std::uint8_t kind = marching ? shapes[best[q]].kind : kCastEllipsoid;
+          const std::uint8_t kind = local[best[q]].shape.kind;
           const bool ellipsoid = kind == kCastEllipsoid;
-          out.normalWC[px] = glsl::vec4(ellipsoid            ? sh.ellipsoidNormalWC(c.gcFromVC, bestGC[q])
-                                        : kind >= kCastCylinder ? sh.prismNormalWC(c.gcFromVC, bestGrad[q])
-                                                              : general.superquadricNormalWC(c.gcFromVC, bestGrad[q]),
-                                        0.0f);
+          out.normalWC[px] = ellipsoid               ? sh.ellipsoidNormalWC(c.gcFromVC, bestGC[q])
+                             : kind >= kCastCylinder ? sh.prismNormalWC(c.gcFromVC, bestGrad[q])
+                                                     : general.superquadricNormalWC(c.gcFromVC, bestGrad[q]);
           if (hitGC)
-            out.hitGC[px] = glsl::vec4(ellipsoid ? bestGC[q] : ellipsoidOrderGC(bestGC[q], shapes[best[q]].axis), 0.0f);
+            out.hitGC[px] = glsl::vec4(ellipsoid ? bestGC[q] : ellipsoidOrderGC(bestGC[q], local[best[q]].shape.axis), 0.0f);
         }
     }
   });
@@ -286,7 +305,7 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
 }
 
 CpuGlyphs::CpuGlyphs(const gl::Api& gl, const gl::ShaderLibrary& lib)
-    : gl_(gl), targets_(gl, lib), threads_(cpuPathThreads()) {}
+    : gl_(gl), targets_(gl, lib, GL_RGB32F), threads_(cpuPathThreads()) {}
 
 CpuGlyphs::~CpuGlyphs() {
   if (buffer_) gl_.DeleteBuffers(1, &buffer_);
@@ -374,14 +393,14 @@ void CpuGlyphs::drawView(const Camera& cam, const FrameParams& p, const GBuffer&
     centreRecord_ = casts_.record;
     centreView_ = cam.viewWCVC;
   }
-  targets_.allocateView(w, h);
+  targets_.allocateView(w, h, sign);
   target.beginGeometry();
   if (drawn_ == 0) return;
   gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
   gl_.TextureSubImage2D(targets_.view(CastTargets::kDepth), 0, 0, 0, w, h, GL_RED, GL_FLOAT, casts_.windowDepth.data());
   gl_.TextureSubImage2D(targets_.view(CastTargets::kRecord), 0, 0, 0, w, h, GL_RED_INTEGER, GL_UNSIGNED_INT,
                         casts_.record.data());
-  gl_.TextureSubImage2D(targets_.view(CastTargets::kNormal), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, casts_.normalWC.data());
+  gl_.TextureSubImage2D(targets_.view(CastTargets::kNormal), 0, 0, 0, w, h, GL_RGB, GL_FLOAT, casts_.normalWC.data());
   if (sign)
     gl_.TextureSubImage2D(targets_.view(CastTargets::kHitGC), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, casts_.hitGC.data());
   const RecordChunk all{buffer_, scalars_, 0, records_.size()};

@@ -52,17 +52,22 @@ struct CastShape {
   std::uint8_t axis;
 };
 
+// A glyph that reached a tile: what the tiles sort by.
+struct CastKey {
+  float nearVC;
+  std::uint32_t record;
+};
+
 // One pixel's cast: what the CPU path uploads; and the set-up's buffers,
 // kept from frame to frame so that a frame allocates nothing.
 struct CpuCasts {
   int width = 0, height = 0;
   std::vector<float> windowDepth;       // reversed, 0 where empty; rows bottom first as GL's
   std::vector<std::uint32_t> record;    // index into the uploaded records + 1; 0 where empty
-  std::vector<glm::vec4> normalWC;      // unit, w 0
+  std::vector<glm::vec3> normalWC;      // unit
   std::vector<glm::vec4> hitGC;         // the GC hit point; filled only when asked
-  std::vector<CastCandidate> candidates;  // the first `count` hold this frame's, in record order
-  std::vector<PixelRect> rects;           // and their pixels
-  std::vector<CastShape> shapes;          // and, in frames that march, their shapes
+  std::vector<CastKey> keys;     // the first `count` hold this frame's glyphs, in record order
+  std::vector<PixelRect> rects;  // and their pixels
   std::size_t count = 0;
   TileBins bins;
   // When it holds a byte per pixel (rows as `record`'s), only its nonzero
