@@ -11,10 +11,11 @@
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
-layout(binding = TG_IMAGE_CAST_DEPTH, r32f) uniform writeonly image2D uCastDepth;
-layout(binding = TG_IMAGE_CAST_RECORD, r32ui) uniform writeonly uimage2D uCastRecord;
-layout(binding = TG_IMAGE_CAST_NORMAL, rgba32f) uniform writeonly image2D uCastNormalWC;
-layout(binding = TG_IMAGE_CAST_HIT_GC, rgba32f) uniform writeonly image2D uCastHitGC;
+// Image buffers, a texel per pixel, rows bottom first (render/cast_targets.h).
+layout(binding = TG_IMAGE_CAST_DEPTH, r32f) uniform writeonly imageBuffer uCastDepth;
+layout(binding = TG_IMAGE_CAST_RECORD, r32ui) uniform writeonly uimageBuffer uCastRecord;
+layout(binding = TG_IMAGE_CAST_NORMAL, rgba32f) uniform writeonly imageBuffer uCastNormalWC;
+layout(binding = TG_IMAGE_CAST_HIT_GC, rgba32f) uniform writeonly imageBuffer uCastHitGC;
 uniform int uHitGC;
 
 void main() {
@@ -25,8 +26,8 @@ void main() {
   uint record = vis[2u * px], key = vis[2u * px + 1u];
 #ifndef TG_RESOLVE_SURFACE
   bool empty = key == kEmptyKey;
-  imageStore(uCastDepth, p, vec4(empty ? 0.0 : uintBitsToFloat(~key)));
-  imageStore(uCastRecord, p, uvec4(empty ? 0u : record + 1u));
+  imageStore(uCastDepth, int(px), vec4(empty ? 0.0 : uintBitsToFloat(~key)));
+  imageStore(uCastRecord, int(px), uvec4(empty ? 0u : record + 1u));
 #else
   // Per chunk too: the pixels whose record the bound chunk holds.
   uint k = record - uint(uRecordBase);  // wraps past the chunk for records before it
@@ -45,7 +46,7 @@ void main() {
     rayThroughFragment(vec2(p) + 0.5, originVC, dirVC);
     nWC = normalize(transpose(mat3(uViewWCVC)) * -dirVC);
   }
-  imageStore(uCastNormalWC, p, vec4(nWC, 0.0));
-  if (uHitGC == 1) imageStore(uCastHitGC, p, vec4(hitGC, 0.0));
+  imageStore(uCastNormalWC, int(px), vec4(nWC, 0.0));
+  if (uHitGC == 1) imageStore(uCastHitGC, int(px), vec4(hitGC, 0.0));
 #endif
 }

@@ -4,11 +4,14 @@
 // Window depth where a cast hit; elsewhere the cleared map stays.
 #include "lib/bindings.h"
 
-layout(binding = TG_UNIT_CPU_DEPTH) uniform sampler2D uWindowDepth;
-layout(binding = TG_UNIT_CPU_RECORD) uniform usampler2D uRecord;
+// Buffer textures, a texel per pixel, rows bottom first (render/cast_targets.h).
+layout(binding = TG_UNIT_CPU_DEPTH) uniform samplerBuffer uWindowDepth;
+layout(binding = TG_UNIT_CPU_RECORD) uniform usamplerBuffer uRecord;
+uniform int uCastWidth;
 
 void main() {
-  ivec2 p = ivec2(gl_FragCoord.xy);
-  if (texelFetch(uRecord, p, 0).r == 0u) discard;
-  gl_FragDepth = texelFetch(uWindowDepth, p, 0).r;
+  ivec2 xy = ivec2(gl_FragCoord.xy);
+  int p = xy.y * uCastWidth + xy.x;
+  if (texelFetch(uRecord, p).r == 0u) discard;
+  gl_FragDepth = texelFetch(uWindowDepth, p).r;
 }

@@ -12,10 +12,12 @@
 #include "lib/glyph_size.glsl"
 #include "lib/glyph_color.glsl"
 
-layout(binding = TG_UNIT_CPU_DEPTH) uniform sampler2D uWindowDepth;
-layout(binding = TG_UNIT_CPU_RECORD) uniform usampler2D uRecord;
-layout(binding = TG_UNIT_CPU_NORMAL) uniform sampler2D uCastNormalWC;
-layout(binding = TG_UNIT_CPU_HIT_GC) uniform sampler2D uHitGC;
+// Buffer textures, a texel per pixel, rows bottom first (render/cast_targets.h).
+layout(binding = TG_UNIT_CPU_DEPTH) uniform samplerBuffer uWindowDepth;
+layout(binding = TG_UNIT_CPU_RECORD) uniform usamplerBuffer uRecord;
+layout(binding = TG_UNIT_CPU_NORMAL) uniform samplerBuffer uCastNormalWC;
+layout(binding = TG_UNIT_CPU_HIT_GC) uniform samplerBuffer uHitGC;
+uniform int uCastWidth;
 
 layout(location = 0) out vec4 oAlbedo;
 layout(location = 1) out vec4 oNormalWC;
@@ -27,8 +29,9 @@ uniform int uRecordBase;
 uniform int uRecordCount;
 
 void main() {
-  ivec2 p = ivec2(gl_FragCoord.xy);
-  uint r = texelFetch(uRecord, p, 0).r;
+  ivec2 xy = ivec2(gl_FragCoord.xy);
+  int p = xy.y * uCastWidth + xy.x;
+  uint r = texelFetch(uRecord, p).r;
   if (r == 0u) discard;
   uint index = r - 1u - uint(uRecordBase);  // wraps past the chunk for records before it
   if (index >= uint(uRecordCount)) discard;
@@ -37,10 +40,10 @@ void main() {
   vec3 color = glyphVertexColor(index, rotWC[0], g.posWC_fa.w, g.eigenvalues_id.xyz, g.eigenvalues_id.xyz);
   if (uColorMode == kColorSign) {
     mat3 gcFromVC = ellipsoidGcFromVC(mat3(uViewWCVC) * rotWC, glyphAxes(g.eigenvalues_id.xyz));
-    color = signColor(color, texelFetch(uHitGC, p, 0).xyz, gcFromVC);
+    color = signColor(color, texelFetch(uHitGC, p).xyz, gcFromVC);
   }
-  gl_FragDepth = texelFetch(uWindowDepth, p, 0).r;
+  gl_FragDepth = texelFetch(uWindowDepth, p).r;
   oAlbedo = vec4(color, 1.0);
-  oNormalWC = vec4(texelFetch(uCastNormalWC, p, 0).xyz, 0.0);
+  oNormalWC = vec4(texelFetch(uCastNormalWC, p).xyz, 0.0);
   oId = floatBitsToUint(g.eigenvalues_id.w);
 }

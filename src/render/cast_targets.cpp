@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <limits>
+#include <stdexcept>
+#include <string>
 
 #include "render/camera_uniforms.h"
 #include "render/kind_programs.h"
@@ -10,55 +12,83 @@
 
 namespace tg::render {
 
-namespace {
-
-void makeTextures(const gl::Api& gl, std::size_t n, GLuint* tex, const GLenum* formats, int width, int height) {
-  gl.CreateTextures(GL_TEXTURE_2D, GLsizei(n), tex);
-  for (std::size_t k = 0; k < n; ++k) {
-    gl.TextureStorage2D(tex[k], 1, formats[k], width, height);
-    gl.TextureParameteri(tex[k], GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    gl.TextureParameteri(tex[k], GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-  }
-}
-
-}  // namespace
-
-CastTargets::CastTargets(const gl::Api& gl, const gl::ShaderLibrary& lib, GLenum normalFormat)
-    : gl_(gl), lib_(lib), normalFormat_(normalFormat), gbuffer_(gl, lib, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "cpu_gbuffer.frag"}}) {
+CastTargets::CastTargets(const gl::Api& gl, const gl::ShaderLibrary& lib, GLenum normalFormat, bool mapped)
+    : gl_(gl),
+      lib_(lib),
+      normalFormat_(normalFormat),
+      mapped_(mapped),
+      gbuffer_(gl, lib, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "cpu_gbuffer.frag"}}) {
   gl.CreateVertexArrays(1, &vao_);
   gl::checkError(gl, "CastTargets");
 }
 
 CastTargets::~CastTargets() {
-  if (view_[0]) gl_.DeleteTextures(4, view_);
-  if (light_[0]) gl_.DeleteTextures(2, light_);
+  if (reads_) gl_.DeleteSync(reads_);
+  for (Target& t : view_) release(t);
+  for (Target& t : light_) release(t);
   gl_.DeleteVertexArrays(1, &vao_);
 }
 
+void CastTargets::release(Target& t) {
+  if (t.texture) gl_.DeleteTextures(1, &t.texture);
+  if (t.buffer) gl_.DeleteBuffers(1, &t.buffer);  // unmaps it
+  t = {};
+}
+
+void CastTargets::resize(Target& t, GLenum format, std::size_t texelBytes, std::size_t texels) {
+  if (t.texture && t.texels == texels) return;
+  GLint most = 0;
+  gl_.GetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &most);
+  if (texels > std::size_t(std::max(most, 0)))
+    throw std::runtime_error("GlyphRenderer::render: " + std::to_string(texels) + " pixels pass this GL's " +
+                             std::to_string(most) + " texels of a buffer texture (GL_MAX_TEXTURE_BUFFER_SIZE)");
+  waitForReads();
+  release(t);
+  const auto bytes = GLsizeiptr(texels * texelBytes);
+  gl_.CreateBuffers(1, &t.buffer);
+  constexpr GLbitfield kMap = GL_MAP_WRITE_BIT | GL_MAP_PERSISTENT_BIT | GL_MAP_COHERENT_BIT;
+  gl_.NamedBufferStorage(t.buffer, bytes, nullptr, mapped_ ? kMap : 0);
+  if (mapped_) {
+    t.mapped = gl_.MapNamedBufferRange(t.buffer, 0, bytes, kMap);
+    if (!t.mapped) throw std::runtime_error("GlyphRenderer::render: this GL maps no " + std::to_string(bytes) + "-byte buffer for the casts");
+  }
+  gl_.CreateTextures(GL_TEXTURE_BUFFER, 1, &t.texture);
+  gl_.TextureBuffer(t.texture, format, t.buffer);
+  t.texels = texels;
+  gl::checkError(gl_, "CastTargets::allocate");
+}
+
 void CastTargets::allocateView(int width, int height, bool hitGC) {
-  if (!view_[0] || width_ != width || height_ != height) {
-    if (view_[0]) gl_.DeleteTextures(3, view_);
-    width_ = width;
-    height_ = height;
-    const GLenum formats[3] = {GL_R32F, GL_R32UI, normalFormat_};
-    makeTextures(gl_, 3, view_, formats, width, height);
-  }
-  const int hw = hitGC ? width : 1, hh = hitGC ? height : 1;
-  if (!view_[kHitGC] || hitSize_[0] != hw || hitSize_[1] != hh) {
-    if (view_[kHitGC]) gl_.DeleteTextures(1, &view_[kHitGC]);
-    hitSize_[0] = hw;
-    hitSize_[1] = hh;
-    const GLenum format = GL_RGBA32F;
-    makeTextures(gl_, 1, &view_[kHitGC], &format, hw, hh);
-  }
+  const std::size_t n = std::size_t(width) * std::size_t(height);
+  resize(view_[kDepth], GL_R32F, 4, n);
+  resize(view_[kRecord], GL_R32UI, 4, n);
+  resize(view_[kNormal], normalFormat_, normalFormat_ == GL_RGB32F ? 12 : 16, n);
+  resize(view_[kHitGC], GL_RGBA32F, 16, hitGC ? n : 1);
+  width_ = width;
+  height_ = height;
 }
 
 void CastTargets::allocateLight(int size) {
-  if (light_[0] && lightSize_ == size) return;
-  if (light_[0]) gl_.DeleteTextures(2, light_);
+  const std::size_t n = std::size_t(size) * std::size_t(size);
+  resize(light_[0], GL_R32F, 4, n);
+  resize(light_[1], GL_R32UI, 4, n);
   lightSize_ = size;
-  const GLenum formats[2] = {GL_R32F, GL_R32UI};
-  makeTextures(gl_, 2, light_, formats, size, size);
+}
+
+void CastTargets::fence() {
+  if (reads_) gl_.DeleteSync(reads_);
+  reads_ = gl_.FenceSync(GL_SYNC_GPU_COMMANDS_COMPLETE, 0);
+}
+
+void CastTargets::waitForReads() {
+  if (!reads_) return;
+  while (true) {
+    const GLenum r = gl_.ClientWaitSync(reads_, GL_SYNC_FLUSH_COMMANDS_BIT, 1'000'000'000);
+    if (r == GL_ALREADY_SIGNALED || r == GL_CONDITION_SATISFIED) break;
+    if (r == GL_WAIT_FAILED) throw std::runtime_error("CastTargets: waiting for GL to read the casts failed");
+  }
+  gl_.DeleteSync(reads_);
+  reads_ = nullptr;
 }
 
 void CastTargets::fullScreen(const gl::Program& prog) const {
@@ -75,12 +105,13 @@ void CastTargets::setGlyphParams(const FrameParams& p, const FrameParams* old) c
 
 void CastTargets::setColorWindow(glm::dvec2 window) const { gbuffer_.set("uColorWindow", glm::vec2(window)); }
 
-void CastTargets::writeView(const Camera& cam, std::span<const RecordChunk> chunks) const {
+void CastTargets::writeView(const Camera& cam, std::span<const RecordChunk> chunks) {
   setCameraUniforms(gbuffer_, cam);
-  gl_.BindTextureUnit(TG_UNIT_CPU_DEPTH, view_[kDepth]);
-  gl_.BindTextureUnit(TG_UNIT_CPU_RECORD, view_[kRecord]);
-  gl_.BindTextureUnit(TG_UNIT_CPU_NORMAL, view_[kNormal]);
-  gl_.BindTextureUnit(TG_UNIT_CPU_HIT_GC, view_[kHitGC]);
+  gl_.BindTextureUnit(TG_UNIT_CPU_DEPTH, view_[kDepth].texture);
+  gl_.BindTextureUnit(TG_UNIT_CPU_RECORD, view_[kRecord].texture);
+  gl_.BindTextureUnit(TG_UNIT_CPU_NORMAL, view_[kNormal].texture);
+  gl_.BindTextureUnit(TG_UNIT_CPU_HIT_GC, view_[kHitGC].texture);
+  gbuffer_.set("uCastWidth", width_);
   for (const RecordChunk& c : chunks) {
     gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_GLYPHS, c.records);
     if (c.scalars) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_COLOR_SCALARS, c.scalars);
@@ -88,6 +119,7 @@ void CastTargets::writeView(const Camera& cam, std::span<const RecordChunk> chun
     gbuffer_.set("uRecordCount", int(std::min<std::size_t>(c.count, std::numeric_limits<int>::max())));
     fullScreen(gbuffer_);
   }
+  fence();
   gl::checkError(gl_, "CastTargets::writeView");
 }
 
@@ -96,16 +128,18 @@ void CastTargets::writeLight(int size, ShadowPass& shadow) {
     depth_ = std::make_unique<gl::Program>(
         gl_, lib_, std::initializer_list<gl::StageSource>{{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "cpu_depth.frag"}});
   shadow.beginMap(size);
-  gl_.BindTextureUnit(TG_UNIT_CPU_DEPTH, light_[0]);
-  gl_.BindTextureUnit(TG_UNIT_CPU_RECORD, light_[1]);
+  gl_.BindTextureUnit(TG_UNIT_CPU_DEPTH, light_[0].texture);
+  gl_.BindTextureUnit(TG_UNIT_CPU_RECORD, light_[1].texture);
+  depth_->set("uCastWidth", size);
   fullScreen(*depth_);
+  fence();
   gl::checkError(gl_, "CastTargets::writeLight");
 }
 
 std::size_t CastTargets::bytes() const {
-  return (view_[0] ? std::size_t(width_) * std::size_t(height_) * (normalFormat_ == GL_RGB32F ? 20 : 24) : 0) +
-         std::size_t(hitSize_[0]) * std::size_t(hitSize_[1]) * 16 +
-         (light_[0] ? std::size_t(lightSize_) * std::size_t(lightSize_) * 8 : 0);
+  return view_[kDepth].texels * 4 + view_[kRecord].texels * 4 +
+         view_[kNormal].texels * (normalFormat_ == GL_RGB32F ? 12 : 16) + view_[kHitGC].texels * 16 +
+         light_[0].texels * 8;
 }
 
 }  // namespace tg::render

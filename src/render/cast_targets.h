@@ -25,19 +25,25 @@ struct RecordChunk {
   std::size_t first = 0, count = 0;
 };
 
+// Each target is a buffer texture, one texel per pixel, rows bottom first
+// (texel y * width + x): the CPU path writes them in place through a
+// persistent mapping, with no copy into a texture (at 1920x1080 that copy
+// held 41 MB more and took a frame 10 ms on llvmpipe); the compute path
+// stores them as image buffers.
 class CastTargets {
  public:
-  // The view's textures: window depth (R32F, reversed, 0 where empty),
+  // The view's targets: window depth (R32F, reversed, 0 where empty),
   // record + 1 (R32UI, 0: empty), WC normal (float, in `normalFormat`) and
-  // GC hit (RGBA32F, 1x1 unless a frame of the sign colour asks for it: 33
-  // MB at 1920x1080). The normal stays float so that cpu_gbuffer.frag's
-  // output rounds it to the G-buffer's half floats as the raster path's
-  // fragments do (an upload rounds otherwise on llvmpipe).
+  // GC hit (RGBA32F, one texel unless a frame of the sign colour asks for
+  // it: 33 MB at 1920x1080). The normal stays float so that
+  // cpu_gbuffer.frag's output rounds it to the G-buffer's half floats as the
+  // raster path's fragments do.
   enum View { kDepth = 0, kRecord = 1, kNormal = 2, kHitGC = 3 };
 
-  // normalFormat: GL_RGB32F where the normal is uploaded (12 bytes a
+  // normalFormat: GL_RGB32F where the CPU writes the normal (12 bytes a
   // pixel), GL_RGBA32F where a compute shader stores it (an image format).
-  CastTargets(const gl::Api& gl, const gl::ShaderLibrary& lib, GLenum normalFormat);
+  // mapped: the CPU writes the targets (view and viewMapped).
+  CastTargets(const gl::Api& gl, const gl::ShaderLibrary& lib, GLenum normalFormat, bool mapped);
   ~CastTargets();
   CastTargets(const CastTargets&) = delete;
   CastTargets& operator=(const CastTargets&) = delete;
@@ -46,36 +52,54 @@ class CastTargets {
   // them (RasterGlyphs), for the same colour code.
   void setGlyphParams(const FrameParams& p, const FrameParams* old) const;
   void setColorWindow(glm::dvec2 window) const;
-  // The view's textures at width x height, the GC hit's only when `hitGC`
-  // (each reallocated when its size changes).
+  // The view's targets for width x height, the GC hit's only when `hitGC`
+  // (each reallocated when its size changes). Throws std::runtime_error
+  // past GL_MAX_TEXTURE_BUFFER_SIZE texels.
   void allocateView(int width, int height, bool hitGC);
-  GLuint view(View k) const { return view_[k]; }
-  // The light's depth and record textures, size x size.
+  GLuint view(View k) const { return view_[k].texture; }
+  // Where the CPU writes target k (mapped targets only): width x height texels.
+  void* viewMapped(View k) const { return view_[k].mapped; }
+  // The light's depth and record targets, size x size.
   void allocateLight(int size);
-  GLuint lightDepth() const { return light_[0]; }
-  GLuint lightRecord() const { return light_[1]; }
+  GLuint lightDepth() const { return light_[0].texture; }
+  GLuint lightRecord() const { return light_[1].texture; }
+  void* lightMapped(int k) const { return light_[k].mapped; }
+  // Waits until GL has read what the last writeView or writeLight drew
+  // from, so that the CPU may write the mapped targets again.
+  void waitForReads();
 
   // The view textures into the bound geometry framebuffer (what
   // GBuffer::beginGeometry left bound), over the records' chunks, one draw
   // each; leaves the depth test at GL_GREATER, as the raster path.
-  void writeView(const Camera& cam, std::span<const RecordChunk> chunks) const;
+  void writeView(const Camera& cam, std::span<const RecordChunk> chunks);
   // The light textures into shadow's map (ShadowPass::beginMap, which it calls).
   void writeLight(int size, ShadowPass& shadow);
   std::size_t bytes() const;
 
  private:
+  // A buffer and the buffer texture over it.
+  struct Target {
+    GLuint buffer = 0, texture = 0;
+    void* mapped = nullptr;
+    std::size_t texels = 0;
+  };
   void fullScreen(const gl::Program& prog) const;
+  void resize(Target& t, GLenum format, std::size_t texelBytes, std::size_t texels);
+  void release(Target& t);
+  void fence();
 
   const gl::Api& gl_;
   const gl::ShaderLibrary& lib_;
   GLenum normalFormat_;
+  bool mapped_;
   gl::Program gbuffer_;
   std::unique_ptr<gl::Program> depth_;  // cpu_depth.frag, built by the first shadow map
   GLuint vao_ = 0;
-  GLuint view_[4] = {};
-  int width_ = 0, height_ = 0, hitSize_[2] = {0, 0};
-  GLuint light_[2] = {};
+  Target view_[4];
+  int width_ = 0, height_ = 0;
+  Target light_[2];
   int lightSize_ = 0;
+  GLsync reads_ = nullptr;  // after the last draw that read the targets
 };
 
 }  // namespace tg::render

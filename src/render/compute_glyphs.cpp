@@ -117,7 +117,7 @@ ComputeGlyphs::ComputeGlyphs(const gl::Api& gl, const gl::ShaderLibrary& lib, st
                              std::size_t chunkRecords)
     : gl_(gl),
       lib_(lib),
-      targets_(gl, lib, GL_RGBA32F),
+      targets_(gl, lib, GL_RGBA32F, false),
       vis64_(hasExtension(gl, "GL_ARB_gpu_shader_int64") && hasExtension(gl, "GL_NV_shader_atomic_int64")),
       initialTiled_(std::max<std::size_t>(tiled, 1)),
       initialEntries_(std::max<std::size_t>(entries, 1)) {

@@ -265,8 +265,9 @@ std::uint64_t castBlobs(std::span<const tensor::GlyphRecord> records, const Came
           out.windowDepth[px] = sh.windowDepthFromViewDepth(tHit);
           out.record[px] = bumps[bestK].record + 1;
           const float len = length(normalVC);
-          out.normalWC[px] = len > 0.0f ? transpose(glsl::mat3(sh.uViewWCVC)) * (normalVC / len) : glsl::vec3(0.0f, 0.0f, 1.0f);
-          if (hitGC) {
+          if (!out.normalWC.empty())
+            out.normalWC[px] = len > 0.0f ? transpose(glsl::mat3(sh.uViewWCVC)) * (normalVC / len) : glsl::vec3(0.0f, 0.0f, 1.0f);
+          if (!out.hitGC.empty()) {
             // In the ellipsoid's axis order (GC axis k is eigenvector (axis + 1 + k) % 3), for the sign colour.
             const int axis = int(bumps[bestK].shape.w);
             glsl::vec3 e(0.0f);

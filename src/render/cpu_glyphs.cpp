@@ -88,13 +88,29 @@ tensor::GlyphSet withoutRecords(const tensor::GlyphSet& s) {
 }  // namespace
 
 void beginCasts(CpuCasts& out, int width, int height, bool hitGC) {
+  if (width > kMaxCastSide || height > kMaxCastSide)
+    throw std::invalid_argument("GlyphRenderer::render: " + std::to_string(width) + " x " + std::to_string(height) +
+                                " pixels; the cpu glyph path casts at most " + std::to_string(kMaxCastSide) + " a side");
   const std::size_t n = std::size_t(width) * std::size_t(height);
   out.width = width;
   out.height = height;
-  out.windowDepth.resize(n);
-  out.record.assign(n, 0);
-  out.normalWC.resize(n);
-  out.hitGC.resize(hitGC ? n : 0);
+  if (out.into) {
+    const CastStorage& s = *out.into;
+    out.windowDepth = {s.windowDepth, n};
+    out.record = {s.record, n};
+    out.normalWC = {s.normalWC, s.normalWC ? n : 0};
+    out.hitGC = {s.hitGC, s.hitGC && hitGC ? n : 0};
+  } else {
+    out.ownDepth.resize(n);
+    out.ownRecord.resize(n);
+    out.ownNormal.resize(n);
+    out.ownHit.resize(hitGC ? n : 0);
+    out.windowDepth = out.ownDepth;
+    out.record = out.ownRecord;
+    out.normalWC = out.ownNormal;
+    out.hitGC = out.ownHit;
+  }
+  std::fill(out.record.begin(), out.record.end(), 0u);
 }
 
 std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Camera& cam, const FrameParams& p,
@@ -120,8 +136,8 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
   // Teem's cylinders and boxes: one closed form for every group (prismSprite, castPrism).
   const bool prisms = glyphKind(p.glyph).draw == KindDraw::ClosedForm;
   const bool cylinders = p.glyph == GlyphKind::Cylinder;
-  if (out.keys.size() < m) {
-    out.keys.resize(m);
+  if (out.nearVC.size() < m) {
+    out.nearVC.resize(m);
     out.rects.resize(m);
   }
   // Record i's sprite: what its fragments would receive. The first pass
@@ -156,20 +172,30 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
       return true;
     });
   };
-  const auto setUp = [&](std::size_t i, std::size_t at) {
-    Candidate c;
-    CastShape shape;
-    if (!sprite(i, c, shape, out.rects[at])) return false;
-    out.keys[at] = {c.nearVC, c.record};
-    return true;
-  };
-  const std::size_t count = keepInParts(threads, m, setUp, &out.keys, &out.rects);
-  const bool masked = out.masked();
+  // Slot i is record i's: a glyph that reaches no pixel centre keeps an
+  // empty rectangle, which reaches no tile.
+  std::atomic<std::size_t> reached{0};
+  runParts(threads, [&](int part, int parts) {
+    std::size_t mine = 0;
+    for (std::size_t i = partBegin(m, part, parts); i < partBegin(m, part + 1, parts); ++i) {
+      Candidate c;
+      CastShape shape;
+      if (sprite(i, c, shape, out.rects[i])) {
+        out.nearVC[i] = c.nearVC;
+        ++mine;
+      } else {
+        out.rects[i] = kNoPixels;
+      }
+    }
+    reached += mine;
+  });
+  const std::size_t count = reached;
   out.count = count;
-  const std::vector<CastKey>& keys = out.keys;
+  const bool masked = out.masked();
+  const std::vector<float>& nearVC = out.nearVC;
   const std::vector<PixelRect>& rects = out.rects;
   TileBins& bins = out.bins;
-  binToTiles(std::span(rects.data(), count), w, h, threads, bins);
+  binToTiles(std::span(rects.data(), m), w, h, threads, bins);
 
   // Per tile, its glyphs nearest first, each cast at the pixel centres of
   // its rectangle where no hit so far lies nearer than the glyph can be; the
@@ -202,7 +228,7 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
       if (bins.start[t] == bins.start[t + 1]) continue;
       order.clear();
       for (std::uint32_t e = bins.start[t]; e < bins.start[t + 1]; ++e)
-        order.push_back({keys[bins.items[e]].nearVC, bins.items[e]});
+        order.push_back({nearVC[bins.items[e]], bins.items[e]});
       // Nearest first; of equal depths the lower record first, as drawn.
       std::sort(order.begin(), order.end(),
                 [](const Key& a, const Key& b) { return a.nearVC < b.nearVC || (a.nearVC == b.nearVC && a.k < b.k); });
@@ -237,14 +263,14 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
         const std::uint32_t k = key.k;
         const PixelRect& r = rects[k];
         std::uint32_t slot = kNone;  // in local, once a pixel casts it
-        for (int y = std::max(r.y0, y0); y <= std::min(r.y1, y1); ++y)
-          for (int x = std::max(r.x0, x0); x <= std::min(r.x1, x1); ++x) {
+        for (int y = std::max(int(r.y0), y0); y <= std::min(int(r.y1), y1); ++y)
+          for (int x = std::max(int(r.x0), x0); x <= std::min(int(r.x1), x1); ++x) {
             const int q = (y - y0) * kTilePx + (x - x0);
             if (key.nearVC > bestVC[q]) continue;
             if (slot == kNone) {
               Local l;
               PixelRect same;
-              if (!sprite(keys[k].record, l.c, l.shape, same)) throw std::logic_error("castGlyphs: a sprite set up twice differs");
+              if (!sprite(k, l.c, l.shape, same)) throw std::logic_error("castGlyphs: a sprite set up twice differs");
               slot = std::uint32_t(local.size());
               local.push_back(l);
             }
@@ -293,10 +319,11 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
           out.record[px] = c.record + 1;
           const std::uint8_t kind = local[best[q]].shape.kind;
           const bool ellipsoid = kind == kCastEllipsoid;
-          out.normalWC[px] = ellipsoid               ? sh.ellipsoidNormalWC(c.gcFromVC, bestGC[q])
-                             : kind >= kCastCylinder ? sh.prismNormalWC(c.gcFromVC, bestGrad[q])
-                                                     : general.superquadricNormalWC(c.gcFromVC, bestGrad[q]);
-          if (hitGC)
+          if (!out.normalWC.empty())
+            out.normalWC[px] = ellipsoid               ? sh.ellipsoidNormalWC(c.gcFromVC, bestGC[q])
+                               : kind >= kCastCylinder ? sh.prismNormalWC(c.gcFromVC, bestGrad[q])
+                                                       : general.superquadricNormalWC(c.gcFromVC, bestGrad[q]);
+          if (!out.hitGC.empty())
             out.hitGC[px] = glsl::vec4(ellipsoid ? bestGC[q] : ellipsoidOrderGC(bestGC[q], local[best[q]].shape.axis), 0.0f);
         }
     }
@@ -305,7 +332,7 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
 }
 
 CpuGlyphs::CpuGlyphs(const gl::Api& gl, const gl::ShaderLibrary& lib)
-    : gl_(gl), targets_(gl, lib, GL_RGB32F), threads_(cpuPathThreads()) {}
+    : gl_(gl), targets_(gl, lib, GL_RGB32F, true), threads_(cpuPathThreads()) {}
 
 CpuGlyphs::~CpuGlyphs() {
   if (buffer_) gl_.DeleteBuffers(1, &buffer_);
@@ -387,22 +414,21 @@ void CpuGlyphs::drawView(const Camera& cam, const FrameParams& p, const GBuffer&
         casts_.only[std::size_t(y) * std::size_t(w) + std::size_t(x)] = edge;
       }
   }
+  // Cast straight into the mapped targets, once GL has read the last frame's.
+  targets_.allocateView(w, h, sign);
+  targets_.waitForReads();
+  casts_.into = CastStorage{static_cast<float*>(targets_.viewMapped(CastTargets::kDepth)),
+                            static_cast<std::uint32_t*>(targets_.viewMapped(CastTargets::kRecord)),
+                            static_cast<glm::vec3*>(targets_.viewMapped(CastTargets::kNormal)),
+                            static_cast<glm::vec4*>(targets_.viewMapped(CastTargets::kHitGC))};
   drawn_ = glyphKind(p.glyph).draw == KindDraw::Blob ? castBlobs(records_, cam, p, sign, threads_, casts_, blobs_)
                                                      : castGlyphs(records_, cam, p, sign, threads_, casts_);
   if (!sample && p.samples > 1) {  // only a frame that samples again needs them
-    centreRecord_ = casts_.record;
+    centreRecord_.assign(casts_.record.begin(), casts_.record.end());
     centreView_ = cam.viewWCVC;
   }
-  targets_.allocateView(w, h, sign);
   target.beginGeometry();
   if (drawn_ == 0) return;
-  gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  gl_.TextureSubImage2D(targets_.view(CastTargets::kDepth), 0, 0, 0, w, h, GL_RED, GL_FLOAT, casts_.windowDepth.data());
-  gl_.TextureSubImage2D(targets_.view(CastTargets::kRecord), 0, 0, 0, w, h, GL_RED_INTEGER, GL_UNSIGNED_INT,
-                        casts_.record.data());
-  gl_.TextureSubImage2D(targets_.view(CastTargets::kNormal), 0, 0, 0, w, h, GL_RGB, GL_FLOAT, casts_.normalWC.data());
-  if (sign)
-    gl_.TextureSubImage2D(targets_.view(CastTargets::kHitGC), 0, 0, 0, w, h, GL_RGBA, GL_FLOAT, casts_.hitGC.data());
   const RecordChunk all{buffer_, scalars_, 0, records_.size()};
   targets_.writeView(cam, std::span(&all, 1));
 }
@@ -412,17 +438,15 @@ std::pair<glm::dvec3, glm::dvec3> CpuGlyphs::castersBoxWC(const FrameParams& p) 
 }
 
 void CpuGlyphs::castShadowMap(const Camera& light, const FrameParams& p, ShadowPass& shadow) {
-  // Into the view's buffers, which the view's casts refill after: one set
-  // of per-glyph set-ups, not two (2 M glyphs: 144 MB).
+  // Into the light's mapped targets, with the view's per-glyph buffers
+  // (keys, rectangles, tiles), which the view's casts refill after.
   casts_.only.clear();
+  targets_.allocateLight(light.width);
+  targets_.waitForReads();
+  casts_.into = CastStorage{static_cast<float*>(targets_.lightMapped(0)),
+                            static_cast<std::uint32_t*>(targets_.lightMapped(1)), nullptr, nullptr};
   if (glyphKind(p.glyph).draw == KindDraw::Blob) castBlobs(records_, light, p, false, threads_, casts_, blobs_);
   else castGlyphs(records_, light, p, false, threads_, casts_);
-  targets_.allocateLight(light.width);
-  gl_.PixelStorei(GL_UNPACK_ALIGNMENT, 1);
-  gl_.TextureSubImage2D(targets_.lightDepth(), 0, 0, 0, light.width, light.height, GL_RED, GL_FLOAT,
-                        casts_.windowDepth.data());
-  gl_.TextureSubImage2D(targets_.lightRecord(), 0, 0, 0, light.width, light.height, GL_RED_INTEGER, GL_UNSIGNED_INT,
-                        casts_.record.data());
   targets_.writeLight(light.width, shadow);
 }
 

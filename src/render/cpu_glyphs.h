@@ -22,6 +22,8 @@
 // (render/cpu_blobs.h), into the same textures and shadow map.
 #include <cstdint>
 #include <memory>
+#include <optional>
+#include <span>
 #include <vector>
 
 #include <glm/mat3x3.hpp>
@@ -52,23 +54,35 @@ struct CastShape {
   std::uint8_t axis;
 };
 
-// A glyph that reached a tile: what the tiles sort by.
-struct CastKey {
-  float nearVC;
-  std::uint32_t record;
+// Where a frame's casts go, one element per pixel, rows bottom first as
+// GL's: the CPU path's mapped cast targets (render/cast_targets.h). A null
+// normalWC or hitGC is not written.
+struct CastStorage {
+  float* windowDepth = nullptr;
+  std::uint32_t* record = nullptr;
+  glm::vec3* normalWC = nullptr;
+  glm::vec4* hitGC = nullptr;
 };
 
-// One pixel's cast: what the CPU path uploads; and the set-up's buffers,
+// One pixel's cast: what the CPU path hands GL; and the set-up's buffers,
 // kept from frame to frame so that a frame allocates nothing.
 struct CpuCasts {
   int width = 0, height = 0;
-  std::vector<float> windowDepth;       // reversed, 0 where empty; rows bottom first as GL's
-  std::vector<std::uint32_t> record;    // index into the uploaded records + 1; 0 where empty
-  std::vector<glm::vec3> normalWC;      // unit
-  std::vector<glm::vec4> hitGC;         // the GC hit point; filled only when asked
-  std::vector<CastKey> keys;     // the first `count` hold this frame's glyphs, in record order
-  std::vector<PixelRect> rects;  // and their pixels
-  std::size_t count = 0;
+  std::span<float> windowDepth;     // reversed, 0 where empty; rows bottom first as GL's
+  std::span<std::uint32_t> record;  // index into the uploaded records + 1; 0 where empty
+  std::span<glm::vec3> normalWC;    // unit; empty where not asked for
+  std::span<glm::vec4> hitGC;       // the GC hit point; filled only when asked
+  // Where they point: `into` when set, else these, sized per frame.
+  std::optional<CastStorage> into;
+  std::vector<float> ownDepth;
+  std::vector<std::uint32_t> ownRecord;
+  std::vector<glm::vec3> ownNormal;
+  std::vector<glm::vec4> ownHit;
+  // Per record, what the tiles sort by (the raster quad's depth) and its
+  // pixels (kNoPixels where it reaches none; blob frames: per bump).
+  std::vector<float> nearVC;
+  std::vector<PixelRect> rects;
+  std::size_t count = 0;  // the glyphs (blob frames: bumps) that reached a pixel centre
   TileBins bins;
   // When it holds a byte per pixel (rows as `record`'s), only its nonzero
   // pixels are cast, the rest left empty: anti-aliasing's extra samples,
@@ -77,7 +91,8 @@ struct CpuCasts {
   bool masked() const { return only.size() == std::size_t(width) * std::size_t(height); }
 };
 
-// `out` sized for a width x height frame, every pixel empty.
+// `out` sized for a width x height frame (over out.into where set), every
+// pixel empty.
 void beginCasts(CpuCasts& out, int width, int height, bool hitGC);
 
 // The casts of `cam` at p's parameters over `records` on `threads` threads

@@ -16,21 +16,27 @@ namespace tg::render {
 
 inline constexpr int kTilePx = 16;
 
-// Pixel indices, inclusive, in window coordinates (row 0 at the bottom).
+// Pixel indices, inclusive, in window coordinates (row 0 at the bottom);
+// 16 bits each (kMaxCastSide), as a frame keeps one per glyph (2 M glyphs:
+// 16 MB).
 struct PixelRect {
-  int x0, y0, x1, y1;
+  std::uint16_t x0, y0, x1, y1;
 };
+inline constexpr int kMaxCastSide = 65535;
+// No pixel: reaches no tile.
+inline constexpr PixelRect kNoPixels{65535, 65535, 0, 0};
 
 // The pixel centres (k + 0.5) within rectNDC (xmin, ymin, xmax, ymax), as
 // shaders/lib/pixel_centres.glsl's rectMissesEveryPixelCentre maps it;
 // false where none lies in the viewport.
+// width and height at most kMaxCastSide.
 inline bool pixelsOf(const glm::vec4& rectNDC, int width, int height, PixelRect& r) {
   const glm::vec4 dc = (rectNDC + 1.0f) * 0.5f * glm::vec4(float(width), float(height), float(width), float(height));
-  r.x0 = std::max(0, int(std::ceil(dc.x - 0.5f)));
-  r.y0 = std::max(0, int(std::ceil(dc.y - 0.5f)));
-  r.x1 = std::min(width - 1, int(std::floor(dc.z - 0.5f)));
-  r.y1 = std::min(height - 1, int(std::floor(dc.w - 0.5f)));
-  return r.x0 <= r.x1 && r.y0 <= r.y1;
+  const int x0 = std::max(0, int(std::ceil(dc.x - 0.5f))), y0 = std::max(0, int(std::ceil(dc.y - 0.5f)));
+  const int x1 = std::min(width - 1, int(std::floor(dc.z - 0.5f))), y1 = std::min(height - 1, int(std::floor(dc.w - 0.5f)));
+  if (x0 > x1 || y0 > y1) return false;
+  r = {std::uint16_t(x0), std::uint16_t(y0), std::uint16_t(x1), std::uint16_t(y1)};
+  return true;
 }
 
 // Threads the CPU path runs on: every core the machine reports, at least one.
@@ -88,7 +94,7 @@ struct TileBins {
 };
 
 // Bins rects to kTilePx tiles on `parts` threads; each must lie within the
-// width x height viewport and be non-empty (the caller's to ensure). Throws
+// width x height viewport (the caller's to ensure) or be kNoPixels. Throws
 // std::length_error past 2^32 - 1 tile entries.
 void binToTiles(std::span<const PixelRect> rects, int width, int height, int parts, TileBins& bins);
 

@@ -241,6 +241,6 @@ TEST(Blob, ThreadsCastTheSamePixels) {
   const render::Camera cam = blobCamera(set, render::Projection::Perspective, 96, 80);
   const render::FrameParams p = blobParams();
   const Cast one = cast(set, cam, p, 1), three = cast(set, cam, p, 3);
-  EXPECT_EQ(one.casts.record, three.casts.record);
-  EXPECT_EQ(one.casts.windowDepth, three.casts.windowDepth);
+  EXPECT_EQ(one.casts.ownRecord, three.casts.ownRecord);
+  EXPECT_EQ(one.casts.ownDepth, three.casts.ownDepth);
 }
