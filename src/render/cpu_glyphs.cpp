@@ -140,6 +140,10 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
     out.nearVC.resize(m);
     out.rects.resize(m);
   }
+  // Set-ups within kKeptSetUpBytes are kept from the first pass; larger
+  // frames set up again in the tiles what they cast.
+  const bool kept = m * sizeof(CastSetUp) <= kKeptSetUpBytes;
+  if (kept && out.setUps.size() < m) out.setUps.resize(m);
   // Record i's sprite: what its fragments would receive. The first pass
   // keeps only its rectangle and nearest depth; a tile sets up again those
   // it casts, with the same arithmetic, so that no frame holds every
@@ -182,6 +186,7 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
       CastShape shape;
       if (sprite(i, c, shape, out.rects[i])) {
         out.nearVC[i] = c.nearVC;
+        if (kept) out.setUps[i] = {c, shape};
         ++mine;
       } else {
         out.rects[i] = kNoPixels;
@@ -215,10 +220,7 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
       std::uint32_t k;
     };
     // The tile's glyphs set up again, in the order first cast.
-    struct Local {
-      Candidate c;
-      CastShape shape;
-    };
+    using Local = CastSetUp;
     std::vector<Key> order;
     std::vector<Local> local;
     float bestWin[kTilePixels], bestVC[kTilePixels];
@@ -270,7 +272,8 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
             if (slot == kNone) {
               Local l;
               PixelRect same;
-              if (!sprite(k, l.c, l.shape, same)) throw std::logic_error("castGlyphs: a sprite set up twice differs");
+              if (kept) l = out.setUps[k];
+              else if (!sprite(k, l.c, l.shape, same)) throw std::logic_error("castGlyphs: a sprite set up twice differs");
               slot = std::uint32_t(local.size());
               local.push_back(l);
             }

@@ -64,6 +64,16 @@ struct CastStorage {
   glm::vec4* hitGC = nullptr;
 };
 
+// A glyph's set-up: what a tile casts it from.
+struct CastSetUp {
+  CastCandidate c;
+  CastShape shape;
+};
+// Frames whose set-ups take at most this keep them from the set-up pass to
+// the tiles (466,000 glyphs); larger ones set up again what the tiles cast,
+// so that 2 M glyphs hold 24 bytes each, not 96.
+inline constexpr std::size_t kKeptSetUpBytes = std::size_t(32) << 20;
+
 // One pixel's cast: what the CPU path hands GL; and the set-up's buffers,
 // kept from frame to frame so that a frame allocates nothing.
 struct CpuCasts {
@@ -82,6 +92,7 @@ struct CpuCasts {
   // pixels (kNoPixels where it reaches none; blob frames: per bump).
   std::vector<float> nearVC;
   std::vector<PixelRect> rects;
+  std::vector<CastSetUp> setUps;  // per record, in frames within kKeptSetUpBytes
   std::size_t count = 0;  // the glyphs (blob frames: bumps) that reached a pixel centre
   TileBins bins;
   // When it holds a byte per pixel (rows as `record`'s), only its nonzero
