@@ -6,19 +6,23 @@
 # with the load average before and after: the 2 M-tensor field, the dt-helix
 # as ellipsoids and as Kindlmann superquadrics (peers.sh's view), and the
 # point load's 64,000 superquadrics (peers.sh's view).
-#   bash tests/bench/pipelines.sh [-n N_TENSORS] [-r REPEAT] [-b BUILD_DIR]
-# Defaults: 2000000 tensors (synth random), 5 frames, build. LP_NUM_THREADS
+#   bash tests/bench/pipelines.sh [-n N_TENSORS] [-r REPEAT] [-b BUILD_DIR] [-p PRIOR_BUILD]
+# Defaults: 2000000 tensors (synth random), 5 frames, build. With -p, the
+# tensorglyph of another build (for example the commit before the cpu path,
+# built in a worktree) draws each case too, in the same run, with no
+# --pipeline (it had one path): columns "prior ms" and "prior / cpu". LP_NUM_THREADS
 # is passed through: llvmpipe's threads and the cpu path's (every core)
 # run one after the other within a frame, never at once.
 # A bench, not a test: not registered in ctest.
 set -euo pipefail
-n=2000000 repeat=5 build=build
-while getopts "n:r:b:" opt; do
+n=2000000 repeat=5 build=build prior=
+while getopts "n:r:b:p:" opt; do
   case $opt in
     n) n=$OPTARG ;;
     r) repeat=$OPTARG ;;
     b) build=$OPTARG ;;
-    *) echo "usage: $0 [-n N_TENSORS] [-r REPEAT] [-b BUILD_DIR]" >&2; exit 2 ;;
+    p) prior=$(realpath "$OPTARG/tensorglyph") ;;
+    *) echo "usage: $0 [-n N_TENSORS] [-r REPEAT] [-b BUILD_DIR] [-p PRIOR_BUILD]" >&2; exit 2 ;;
   esac
 done
 bin=$(realpath "$build/tensorglyph")
@@ -39,8 +43,8 @@ ms() { sed -n "s/.*median of [0-9]* frames \([0-9.]*\) ms.*/\1/p" "$1"; }
 cpu() { sed -n "s/.*CPU, all threads: \([0-9.]*\) ms.*/\1/p" "$1"; }
 rss() { sed -n "s/.*peak RSS \([0-9.]*\) MiB.*/\1/p" "$1"; }
 took() { sed -n "s/^  glyph path: \([a-z]*\).*/\1/p" "$1"; }
-printf '| %-40s | %10s | %10s | %6s | %13s | %10s | %6s | %10s | %10s | %9s |\n' case "raster ms" "cpu ms" "ratio" "raster CPU ms" "cpu CPU ms" \
-  "ratio" "raster MiB" "cpu MiB" "auto took"
+printf '| %-40s | %10s | %10s | %6s | %13s | %10s | %6s | %10s | %10s | %9s |%s\n' case "raster ms" "cpu ms" "ratio" "raster CPU ms" "cpu CPU ms" \
+  "ratio" "raster MiB" "cpu MiB" "auto took" "${prior:+ prior ms | prior / cpu | prior MiB |}"
 run() {  # LABEL ARGS...
   local label=$1; shift
   local t=() c=() m=()
@@ -51,9 +55,15 @@ run() {  # LABEL ARGS...
     m+=("$(rss "$dir/$p.err")")
   done
   "$bin" render "$@" --pipeline auto -o "$dir/auto.png" --verbose 2>"$dir/auto.err" >/dev/null
-  printf '| %-40s | %10s | %10s | %5sx | %13s | %10s | %5sx | %10s | %10s | %9s |\n' "$label" "${t[0]}" "${t[1]}" \
+  local extra=""
+  if [ -n "$prior" ]; then
+    "$prior" render "$@" -o "$dir/prior.png" --repeat "$repeat" --verbose 2>"$dir/prior.err" >/dev/null
+    local pt; pt=$(ms "$dir/prior.err")
+    extra=" $pt | $(awk -v a="$pt" -v b="${t[1]}" 'BEGIN { printf "%.1f", a / b }')x | $(rss "$dir/prior.err") |"
+  fi
+  printf '| %-40s | %10s | %10s | %5sx | %13s | %10s | %5sx | %10s | %10s | %9s |%s\n' "$label" "${t[0]}" "${t[1]}" \
     "$(awk -v a="${t[0]}" -v b="${t[1]}" 'BEGIN { printf "%.1f", a / b }')" "${c[0]}" "${c[1]}" \
-    "$(awk -v a="${c[0]}" -v b="${c[1]}" 'BEGIN { printf "%.1f", a / b }')" "${m[0]}" "${m[1]}" "$(took "$dir/auto.err")"
+    "$(awk -v a="${c[0]}" -v b="${c[1]}" 'BEGIN { printf "%.1f", a / b }')" "${m[0]}" "${m[1]}" "$(took "$dir/auto.err")" "$extra"
 }
 run "synth random $n, 1920x1080" "$dir/random.vtk" --size 1920 1080
 helixView=(--size 512 512 --scale-mode absolute --scale 0.12 --eye 5.4 -9.6 7.5 --look-at 0 0 0 --up 0 0 1 --fov 30)
