@@ -33,7 +33,7 @@ long glyphPixels(const Image& img) {
 }
 
 // The kitten split into a two-block .vtm by the driver script.
-fs::path writeBlocks(const fs::path& dir, const std::string& input = kKitten, const std::string& extra = "") {
+fs::path writeBlocks(const fs::path& dir, const std::string& input = pvKitten(), const std::string& extra = "") {
   const fs::path vtm = dir / "blocks.vtm";
   const CmdResult w = runPvbatch("--input " + input + " --write-blocks " + vtm.string() + extra, dir);
   EXPECT_EQ(w.code, 0) << w.err;
@@ -111,7 +111,7 @@ TEST_F(ParaViewPlugin, BlocksWithoutTheTensorsAreSkipped) {
   const fs::path full = dir / "full.png", part = dir / "part.png";
   const CmdResult a = runPvbatch("--output " + full.string() + " " + args, dir);
   ASSERT_EQ(a.code, 0) << a.err;
-  const fs::path vtm = writeBlocks(dir, kKitten, " --second-without-tensors");
+  const fs::path vtm = writeBlocks(dir, pvKitten(), " --second-without-tensors");
   const CmdResult b = runPvbatch("--output " + part.string() + " " + args + " --input " + vtm.string(), dir);
   ASSERT_EQ(b.code, 0) << b.err;
   EXPECT_EQ(b.err.find("prepareGlyphInput"), std::string::npos) << b.err;
@@ -265,7 +265,7 @@ TEST_F(ParaViewPlugin, SymmetricTensorsGiveNoWarning) {
   const CmdResult c = tg::test::runBinary("render " + in.string() + " -o " + cliPng.string(), dir);
   ASSERT_EQ(c.code, 0) << c.err;
   EXPECT_TRUE(cliWarnings(c.err, in).empty()) << c.err;
-  for (const std::string& input : {in.string(), kKitten}) {
+  for (const std::string& input : {in.string(), pvKitten()}) {
     const CmdResult r = runPvbatch("--output " + png.string() + " --input " + input, dir);
     ASSERT_EQ(r.code, 0) << r.err;
     EXPECT_EQ(r.err.find("asymmetric"), std::string::npos) << r.err;

@@ -336,7 +336,7 @@ TEST_P(ParaViewColorBy, GlyphsShowTheLookupTablesColours) {
   TG_SKIP_WITHOUT_PARAVIEW();
   const bool gray = GetParam();
   const fs::path field = dir / "height.vtu";
-  const CmdResult w = runPvbatch("--input " + kKitten + " --write-height " + field.string(), dir);
+  const CmdResult w = runPvbatch("--input " + pvKitten() + " --write-height " + field.string(), dir);
   ASSERT_EQ(w.code, 0) << w.err;
   const ShaderColormaps maps = readShaderColormaps();
   ASSERT_EQ(maps.viridis.size(), 9u) << "viridis's knots not found in color.glsl";

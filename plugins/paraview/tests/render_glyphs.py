@@ -381,6 +381,9 @@ def write_height(path, out):
     w = vtkXMLUnstructuredGridWriter()
     w.SetFileName(out)
     w.SetInputData(data)
+    # Inline, not appended: ParaView 5.11 cannot read appended XML data back
+    # under Debian 12's current libexpat1 (tests/paraview/legacy_copy.py).
+    w.SetDataModeToBinary()
     if not w.Write():
         sys.exit("render_glyphs.py: %s: could not be written" % out)
 
@@ -409,6 +412,7 @@ def write_blocks(path, vtm, second_without_tensors=False):
     w = vtkXMLMultiBlockDataWriter()
     w.SetFileName(vtm)
     w.SetInputData(blocks)
+    w.SetDataModeToBinary()  # inline, as write_height
     if not w.Write():
         sys.exit("render_glyphs.py: %s: could not be written" % vtm)
 
