@@ -16,9 +16,12 @@ and the benchmark's one ParaView driver.
   pvbatch render_glyphs.py --input FILE --write-blocks VTM [--second-without-tensors]
   pvbatch render_glyphs.py --input FILE --write-height VTU
 
-Under mpiexec, --redistribute spreads the dataset over the ranks (or give a
-partitioned .pvtu); each rank draws its own glyphs and IceT composites the
-ranks' images by depth. --slice adds a ParaView slice of the same
+Under mpiexec, --redistribute spreads the dataset's cells over the ranks
+(or give a partitioned .pvtu); each rank draws its own glyphs and IceT
+composites the ranks' images by depth. Each rank reads the file itself and
+keeps its run of cells: ParaView's RedistributeDataSet moves data between
+ranks as appended XML, which ParaView 5.11 cannot parse under Debian 12's
+current libexpat1 (tests/paraview/legacy_copy.py). --slice adds a ParaView slice of the same
 dataset, drawn as a surface, to check that the two mix by depth.
 
 --select selects the surface points in a rectangle of display pixels
@@ -85,7 +88,7 @@ def main():
     ap.add_argument("--slice-origin", type=float, nargs=3)
     ap.add_argument("--no-glyphs", action="store_true")
     ap.add_argument("--redistribute", action="store_true",
-                    help="spread the dataset over the MPI ranks (ParaView's RedistributeDataSet)")
+                    help="spread the dataset's cells over the MPI ranks, each rank reading its own")
     ap.add_argument("--fxaa", action="store_true")
     ap.add_argument("--cell-tensors", action="store_true",
                     help="move the tensors to cell data (PointDatatoCellData) and pick that cell array")
@@ -130,7 +133,21 @@ def main():
     if reader is None:
         sys.exit("render_glyphs.py: %s: ParaView has no reader for it" % a.input)
     if a.redistribute:
-        reader = simple.RedistributeDataSet(Input=reader)
+        reader = simple.ProgrammableFilter(Input=reader)
+        reader.Script = "\n".join([
+            "from vtkmodules.vtkCommonCore import vtkIdList",
+            "from vtkmodules.vtkFiltersCore import vtkExtractCells",
+            "from vtkmodules.vtkIOLegacy import vtkDataSetReader",
+            "from vtkmodules.vtkIOXML import vtkXMLGenericDataObjectReader",
+            "from vtkmodules.vtkParallelCore import vtkMultiProcessController",
+            "c = vtkMultiProcessController.GetGlobalController()",
+            "rank, size = (c.GetLocalProcessId(), c.GetNumberOfProcesses()) if c else (0, 1)",
+            "r = vtkDataSetReader() if %r.endswith('.vtk') else vtkXMLGenericDataObjectReader()" % a.input,
+            "r.SetFileName(%r)" % a.input, "r.Update()", "d = r.GetOutput()", "n = d.GetNumberOfCells()",
+            "ids = vtkIdList()",
+            "for i in range(rank * n // size, (rank + 1) * n // size): ids.InsertNextId(i)",
+            "e = vtkExtractCells()", "e.SetInputData(d)", "e.SetCellList(ids)", "e.Update()",
+            "self.GetOutput().ShallowCopy(e.GetOutput())"])
     if a.as_six:
         reader = simple.ProgrammableFilter(Input=reader)
         reader.Script = "\n".join([
