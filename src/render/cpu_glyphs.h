@@ -6,7 +6,8 @@
 // per tile each pixel centre is cast against the tile's glyphs in order of
 // their nearest depth, stopping where the next lies behind the hit
 // (shaders/lib/ellipsoid.glsl's castEllipsoid, the fragment stage's own
-// code). The casts are uploaded and written into the G-buffer by
+// code). The casts are written in place into mapped cast targets
+// (render/cast_targets.h) and into the G-buffer by
 // cpu_gbuffer.frag, which takes albedo and id from the record, so that the
 // deferred passes, context and picking run unchanged.
 //
