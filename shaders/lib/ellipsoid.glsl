@@ -35,10 +35,8 @@ struct EllipseTerms {
   vec2 b;
 };
 
-bool ellipseTerms(mat4 pmt, TG_OUT(EllipseTerms) e) {
-  vec4 r1 = vec4(pmt[0][0], pmt[1][0], pmt[2][0], pmt[3][0]);
-  vec4 r2 = vec4(pmt[0][1], pmt[1][1], pmt[2][1], pmt[3][1]);
-  vec4 r4 = vec4(pmt[0][3], pmt[1][3], pmt[2][3], pmt[3][3]);
+// From pmt's rows 1, 2 and 4 (x, y and w).
+bool ellipseTermsOfRows(vec4 r1, vec4 r2, vec4 r4, TG_OUT(EllipseTerms) e) {
   e.a = formD(r4, r4);
   if (!(e.a < 0.0f)) return false;
   e.x0 = vec2(formD(r1, r4), formD(r2, r4)) / e.a;
@@ -48,14 +46,41 @@ bool ellipseTerms(mat4 pmt, TG_OUT(EllipseTerms) e) {
   return true;
 }
 
-bool ellipsoidRectNDC(mat4 pmt, TG_OUT(vec4) rect) {
-  EllipseTerms e;
-  if (!ellipseTerms(pmt, e)) return false;
+bool ellipseTerms(mat4 pmt, TG_OUT(EllipseTerms) e) {
+  return ellipseTermsOfRows(vec4(pmt[0][0], pmt[1][0], pmt[2][0], pmt[3][0]),
+                            vec4(pmt[0][1], pmt[1][1], pmt[2][1], pmt[3][1]),
+                            vec4(pmt[0][3], pmt[1][3], pmt[2][3], pmt[3][3]), e);
+}
+
+void ellipseRectNDC(EllipseTerms e, TG_OUT(vec4) rect) {
   float a = e.a;
   vec2 x0 = e.x0, b = e.b;
   vec2 s = sqrt(max(b * b - a * vec2(formD(e.u1, e.u1), formD(e.u2, e.u2)), 0.0f));
   vec2 lo = x0 + (b + s) / a, hi = x0 + (b - s) / a;  // a < 0, so (b + s)/a is the smaller root
   rect = vec4(min(lo, hi), max(lo, hi));
+}
+
+bool ellipsoidRectNDC(mat4 pmt, TG_OUT(vec4) rect) {
+  EllipseTerms e;
+  if (!ellipseTerms(pmt, e)) return false;
+  ellipseRectNDC(e, rect);
+  return true;
+}
+
+// The same for the ellipsoid centreVC + m x, |x| <= 1, with pmt = uProjVCCC *
+// [m, centreVC; 0, 1] taken row by row: a projection row p gives (m^T p.xyz,
+// p . (centreVC, 1)), 12 multiply-adds instead of the matrix product's 64,
+// for the set-up and the culls that run on every glyph.
+bool ellipsoidFrameRectNDC(mat3 m, vec3 centreVC, TG_OUT(vec4) rect) {
+  vec4 p1 = vec4(uProjVCCC[0][0], uProjVCCC[1][0], uProjVCCC[2][0], uProjVCCC[3][0]);
+  vec4 p2 = vec4(uProjVCCC[0][1], uProjVCCC[1][1], uProjVCCC[2][1], uProjVCCC[3][1]);
+  vec4 p4 = vec4(uProjVCCC[0][3], uProjVCCC[1][3], uProjVCCC[2][3], uProjVCCC[3][3]);
+  EllipseTerms e;
+  if (!ellipseTermsOfRows(vec4(vec3(p1) * m, dot(vec3(p1), centreVC) + p1.w),
+                          vec4(vec3(p2) * m, dot(vec3(p2), centreVC) + p2.w),
+                          vec4(vec3(p4) * m, dot(vec3(p4), centreVC) + p4.w), e))
+    return false;
+  ellipseRectNDC(e, rect);
   return true;
 }
 

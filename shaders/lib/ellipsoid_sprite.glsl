@@ -30,7 +30,7 @@ bool ellipsoidSprite(GlyphRecord g, TG_OUT(EllipsoidSprite) s) {
   s.rotWC = quatToMat3(g.frameWC);
   s.rotVC = mat3(uViewWCVC) * s.rotWC;
   s.tVC = ellipsoidTVC(s.rotVC, s.axes, s.centreVC);
-  if (!ellipsoidRectNDC(uProjVCCC * s.tVC, s.rectNDC)) s.rectNDC = vec4(-1.0f, -1.0f, 1.0f, 1.0f);
+  if (!ellipsoidFrameRectNDC(mat3(s.tVC), s.centreVC, s.rectNDC)) s.rectNDC = vec4(-1.0f, -1.0f, 1.0f, 1.0f);
   else if (rectMissesEveryPixelCentre(s.rectNDC, kPixelCentreMarginDC)) return false;
   // A quarter pixel of margin so that pixel centres on the exact edge are kept.
   vec2 px = 0.5f / uViewportDC;

@@ -22,8 +22,6 @@ const float kPixelCentreMarginDC = 1.0f / 64.0f;
 // of a dense far field. No claim where the sphere meets the eye plane.
 bool spriteMissesEveryPixelCentre(vec3 centreVC, float rVC) {
   vec4 rectNDC;
-  mat4 pmt = uProjVCCC * mat4(vec4(rVC, 0.0f, 0.0f, 0.0f), vec4(0.0f, rVC, 0.0f, 0.0f), vec4(0.0f, 0.0f, rVC, 0.0f),
-                              vec4(centreVC, 1.0f));
-  if (!ellipsoidRectNDC(pmt, rectNDC)) return false;
+  if (!ellipsoidFrameRectNDC(mat3(rVC), centreVC, rectNDC)) return false;
   return rectMissesEveryPixelCentre(rectNDC, kPixelCentreMarginDC);
 }

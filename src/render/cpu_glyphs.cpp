@@ -140,9 +140,10 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
     out.nearVC.resize(m);
     out.rects.resize(m);
   }
-  // Set-ups within kKeptSetUpBytes are kept from the first pass; larger
-  // frames set up again in the tiles what they cast.
-  const bool kept = m * sizeof(CastSetUp) <= kKeptSetUpBytes;
+  // Set-ups within out.keptSetUpBytes are kept from the first pass; larger
+  // frames bound each glyph by a sphere there and set up in the tiles only
+  // what they cast.
+  const bool kept = m * sizeof(CastSetUp) <= out.keptSetUpBytes;
   if (kept && out.setUps.size() < m) out.setUps.resize(m);
   // Record i's sprite: what its fragments would receive. The first pass
   // keeps only its rectangle and nearest depth; a tile sets up again those
@@ -176,12 +177,46 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
       return true;
     });
   };
+  // A lean frame's first pass: the sphere about the glyph's centre that
+  // holds what its cast can hit (the ellipsoid's longest semi-axis; the
+  // box's half-diagonal for the march, grown by its tolerance as the march's
+  // nearVC is, and for prisms), its rectangle with the sprites' margins and
+  // its nearest depth. Both bound the exact sprite's, which the tile clips
+  // to once it sets the glyph up; 40% of the sprite's arithmetic.
+  const float marchGrow = 1.0f + 4.0f * eps + 1e-5f;
+  const float marginPx = (prisms ? 1.0f : 0.25f) + 1.0f / 64.0f;
+  const glsl::vec2 marginNDC = 2.0f * marginPx / sh.uViewportDC;
+  const auto bound = [&](std::size_t i, float& nearVC, PixelRect& r) {
+    glsl::GlyphRecord g;
+    std::memcpy(&g, &records[i], sizeof g);
+    if (!sh.glyphSelected(g.posWC_fa)) return false;
+    const glsl::vec3 axes = sh.glyphAxes(glsl::vec3(g.eigenvalues_id));
+    const bool ellipsoid = !prisms && !march.variantOf(records[i]);
+    const float radius =
+        ellipsoid ? std::max(axes.x, std::max(axes.y, axes.z)) * (1.0f + 1e-5f) : glm::length(axes) * marchGrow;
+    if (!(radius > 0.0f)) return false;
+    const glsl::vec3 centreVC = glsl::vec3(sh.uViewWCVC * glsl::vec4(glsl::vec3(g.posWC_fa), 1.0f));
+    const float dist = -centreVC.z;
+    if (dist + radius < sh.uNearVC || (sh.uOrtho == 1 && dist - radius > sh.uFarVC)) return false;
+    glsl::vec4 rect;
+    if (!sh.ellipsoidFrameRectNDC(glsl::mat3(radius), centreVC, rect)) rect = glsl::vec4(-1.0f, -1.0f, 1.0f, 1.0f);
+    else if (sh.rectMissesEveryPixelCentre(rect, sh.kPixelCentreMarginDC)) return false;
+    rect = glm::clamp(rect + glsl::vec4(-marginNDC, marginNDC), -1.0f, 1.0f);
+    if (!pixelsOf(rect, w, h, r)) return false;
+    nearVC = std::max(dist - radius, sh.uNearVC);
+    return true;
+  };
   // Slot i is record i's: a glyph that reaches no pixel centre keeps an
   // empty rectangle, which reaches no tile.
   std::atomic<std::size_t> reached{0};
   runParts(threads, [&](int part, int parts) {
     std::size_t mine = 0;
     for (std::size_t i = partBegin(m, part, parts); i < partBegin(m, part + 1, parts); ++i) {
+      if (!kept) {
+        if (bound(i, out.nearVC[i], out.rects[i])) ++mine;
+        else out.rects[i] = kNoPixels;
+        continue;
+      }
       Candidate c;
       CastShape shape;
       if (sprite(i, c, shape, out.rects[i])) {
@@ -219,8 +254,12 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
       float nearVC;
       std::uint32_t k;
     };
-    // The tile's glyphs set up again, in the order first cast.
-    using Local = CastSetUp;
+    // The tile's glyphs set up, in the order first cast, with their exact
+    // rectangles.
+    struct Local {
+      CastSetUp s;
+      PixelRect exact;
+    };
     std::vector<Key> order;
     std::vector<Local> local;
     float bestWin[kTilePixels], bestVC[kTilePixels];
@@ -265,20 +304,27 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
         const std::uint32_t k = key.k;
         const PixelRect& r = rects[k];
         std::uint32_t slot = kNone;  // in local, once a pixel casts it
-        for (int y = std::max(int(r.y0), y0); y <= std::min(int(r.y1), y1); ++y)
+        bool seen = true;            // false once the sprite shows no pixel centre can see it
+        for (int y = std::max(int(r.y0), y0); seen && y <= std::min(int(r.y1), y1); ++y)
           for (int x = std::max(int(r.x0), x0); x <= std::min(int(r.x1), x1); ++x) {
             const int q = (y - y0) * kTilePx + (x - x0);
             if (key.nearVC > bestVC[q]) continue;
             if (slot == kNone) {
               Local l;
-              PixelRect same;
-              if (kept) l = out.setUps[k];
-              else if (!sprite(k, l.c, l.shape, same)) throw std::logic_error("castGlyphs: a sprite set up twice differs");
+              if (kept) {
+                l = {out.setUps[k], r};
+              } else if (!sprite(k, l.s.c, l.s.shape, l.exact)) {
+                seen = false;
+                break;
+              }
               slot = std::uint32_t(local.size());
               local.push_back(l);
             }
-            const Candidate& c = local[slot].c;
-            const std::uint8_t kind = local[slot].shape.kind;
+            const Local& l = local[slot];
+            if (x < l.exact.x0 || x > l.exact.x1 || y < l.exact.y0 || y > l.exact.y1) continue;
+            const Candidate& c = l.s.c;
+            if (c.nearVC > bestVC[q]) continue;
+            const std::uint8_t kind = l.s.shape.kind;
             const glsl::vec2 fragDC(float(x) + 0.5f, float(y) + 0.5f);
             float depthVC;
             glsl::vec3 pGC, grad(0.0f);
@@ -289,7 +335,7 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
               if (!sh.castPrism(fragDC, c.centreVC, c.gcFromVC, kind == kCastCylinder, depthVC, pGC, grad)) continue;
             } else {
               const bool hit = withVariant(variantOfKind(kind), general, convex, mixed, [&](auto& sq) {
-                const glsl::vec3 shape = local[slot].shape.shape;
+                const glsl::vec3 shape = l.s.shape.shape;
                 const auto ray = sq.superquadricRay(fragDC, c.centreVC, c.gcFromVC, shape, eps);
                 if (!ray.inReach) return false;
                 const auto hitM = sq.marchSuperquadricRay(ray, shape, maxIter, eps);
@@ -301,7 +347,7 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
               if (!hit) continue;
             }
             const float win = sh.windowDepthFromViewDepth(depthVC);
-            if (win > bestWin[q] || (best[q] != kNone && win == bestWin[q] && c.record < local[best[q]].c.record)) {
+            if (win > bestWin[q] || (best[q] != kNone && win == bestWin[q] && c.record < local[best[q]].s.c.record)) {
               open -= best[q] == kNone ? 1 : 0;
               farStale = true;
               bestWin[q] = win;
@@ -316,18 +362,18 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
         for (int x = x0; x <= x1; ++x) {
           const int q = (y - y0) * kTilePx + (x - x0);
           if (best[q] == kNone) continue;
-          const Candidate& c = local[best[q]].c;
+          const Candidate& c = local[best[q]].s.c;
           const std::size_t px = std::size_t(y) * std::size_t(w) + std::size_t(x);
           out.windowDepth[px] = bestWin[q];
           out.record[px] = c.record + 1;
-          const std::uint8_t kind = local[best[q]].shape.kind;
+          const std::uint8_t kind = local[best[q]].s.shape.kind;
           const bool ellipsoid = kind == kCastEllipsoid;
           if (!out.normalWC.empty())
             out.normalWC[px] = ellipsoid               ? sh.ellipsoidNormalWC(c.gcFromVC, bestGC[q])
                                : kind >= kCastCylinder ? sh.prismNormalWC(c.gcFromVC, bestGrad[q])
                                                        : general.superquadricNormalWC(c.gcFromVC, bestGrad[q]);
           if (!out.hitGC.empty())
-            out.hitGC[px] = glsl::vec4(ellipsoid ? bestGC[q] : ellipsoidOrderGC(bestGC[q], local[best[q]].shape.axis), 0.0f);
+            out.hitGC[px] = glsl::vec4(ellipsoid ? bestGC[q] : ellipsoidOrderGC(bestGC[q], local[best[q]].s.shape.axis), 0.0f);
         }
     }
   });

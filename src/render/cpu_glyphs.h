@@ -71,8 +71,9 @@ struct CastSetUp {
   CastShape shape;
 };
 // Frames whose set-ups take at most this keep them from the set-up pass to
-// the tiles (466,000 glyphs); larger ones set up again what the tiles cast,
-// so that 2 M glyphs hold 24 bytes each, not 96.
+// the tiles (466,000 glyphs); larger, lean, ones bound each glyph by a
+// sphere there and set up in the tiles only what they cast, so that 2 M
+// glyphs hold 12 bytes each, not 96, and most never pay for a set-up.
 inline constexpr std::size_t kKeptSetUpBytes = std::size_t(32) << 20;
 
 // One pixel's cast: what the CPU path hands GL; and the set-up's buffers,
@@ -93,8 +94,11 @@ struct CpuCasts {
   // pixels (kNoPixels where it reaches none; blob frames: per bump).
   std::vector<float> nearVC;
   std::vector<PixelRect> rects;
-  std::vector<CastSetUp> setUps;  // per record, in frames within kKeptSetUpBytes
-  std::size_t count = 0;  // the glyphs (blob frames: bumps) that reached a pixel centre
+  std::vector<CastSetUp> setUps;  // per record, in frames within keptSetUpBytes
+  std::size_t keptSetUpBytes = kKeptSetUpBytes;  // the tests' 0 makes every frame lean
+  // The glyphs (blob frames: bumps) that reached a pixel centre; in lean
+  // frames, whose bounding spheres did.
+  std::size_t count = 0;
   TileBins bins;
   // When it holds a byte per pixel (rows as `record`'s), only its nonzero
   // pixels are cast, the rest left empty: anti-aliasing's extra samples,

@@ -136,17 +136,75 @@ TEST(CpuCasts, SharedRectangleMatchesTheReference) {
     const glm::vec3 axes = sh.glyphAxes(glm::vec3(r.eigenvalues_id));
     const glm::mat3 rotVC = glm::mat3(sh.uViewWCVC) * sh.quatToMat3(r.frameWC);
     const glm::vec3 centreVC = glm::vec3(sh.uViewWCVC * glm::vec4(glm::vec3(r.posWC_fa), 1.0f));
-    glm::vec4 rect;
-    ASSERT_TRUE(sh.ellipsoidRectNDC(sh.uProjVCCC * sh.ellipsoidTVC(rotVC, axes, centreVC), rect));
+    const glm::mat4 tVC = sh.ellipsoidTVC(rotVC, axes, centreVC);
+    glm::vec4 rect, byRows;
+    ASSERT_TRUE(sh.ellipsoidRectNDC(sh.uProjVCCC * tVC, rect));
+    // What the sprites take: the same rows, a projection row at a time.
+    ASSERT_TRUE(sh.ellipsoidFrameRectNDC(glm::mat3(tVC), centreVC, byRows));
     // A 64th of a pixel: the margin the raster path allows for the rounding.
     const double tolX = 2.0 / 320 / 64, tolY = 2.0 / 240 / 64;
-    EXPECT_NEAR(rect.x, want.xmin, tolX);
-    EXPECT_NEAR(rect.z, want.xmax, tolX);
-    EXPECT_NEAR(rect.y, want.ymin, tolY);
-    EXPECT_NEAR(rect.w, want.ymax, tolY);
+    for (const glm::vec4& got : {rect, byRows}) {
+      EXPECT_NEAR(got.x, want.xmin, tolX);
+      EXPECT_NEAR(got.z, want.xmax, tolX);
+      EXPECT_NEAR(got.y, want.ymin, tolY);
+      EXPECT_NEAR(got.w, want.ymax, tolY);
+    }
     ++checked;
   }
   EXPECT_GT(checked, 50);
+}
+
+// Lean frames (past CpuCasts::keptSetUpBytes: a bounding sphere first, the
+// sprite set up only in the tiles that cast it) cast what kept frames do,
+// bit for bit: every kind and group, both projections, and anti-aliasing's
+// masked casts. The depth test picks one hit per pixel whatever the order.
+TEST(CpuCasts, LeanFramesCastWhatKeptFramesCast) {
+  const tensor::GlyphSet random = glyphsOf(synth::randomField(343, 8));
+  const tensor::GlyphSet extremes = test::withoutFlatGlyphs(synth::extremesGallery(1.0, 1.0));
+  struct Kind {
+    render::GlyphKind kind;
+    double gamma;
+  };
+  const Kind kinds[] = {{render::GlyphKind::Ellipsoid, 0.0}, {render::GlyphKind::Superquadric, 0.0},
+                        {render::GlyphKind::Superquadric, 3.0}, {render::GlyphKind::Superquadric, 20.0},
+                        {render::GlyphKind::Cylinder, 0.0}, {render::GlyphKind::Box, 0.0}};
+  std::size_t compared = 0;
+  for (const tensor::GlyphSet* set : {&random, &extremes})
+    for (const auto proj : {render::Projection::Perspective, render::Projection::Orthographic})
+      for (const Kind& k : kinds)
+        for (const bool masked : {false, true}) {
+          const double scale = set == &random ? 0.6 : 1.0;
+          const auto cam = set == &random ? cameraFor(*set, scale, proj, 200, 150) : galleryCamera(*set, proj);
+          SCOPED_TRACE(std::string(set == &random ? "random" : "extremes") + ", kind " + std::to_string(int(k.kind)) +
+                       ", gamma " + std::to_string(k.gamma) + (masked ? ", masked" : ""));
+          render::FrameParams p;
+          p.scale = scale;
+          p.glyph = k.kind;
+          p.gamma = k.gamma;
+          render::CpuCasts kept, lean;
+          lean.keptSetUpBytes = 0;
+          if (masked)
+            for (render::CpuCasts* c : {&kept, &lean}) {
+              c->only.assign(std::size_t(cam.width) * std::size_t(cam.height), 0);
+              for (std::size_t i = 0; i < c->only.size(); i += 3) c->only[i] = 1;
+            }
+          render::castGlyphs(set->glyphs, cam, p, true, 2, kept);
+          const std::uint64_t leanReached = render::castGlyphs(set->glyphs, cam, p, true, 3, lean);
+          EXPECT_GE(leanReached, kept.count) << "a bounding sphere reaches every pixel its glyph's sprite does";
+          std::size_t hits = 0, differ = 0;
+          for (std::size_t i = 0; i < kept.record.size(); ++i) {
+            if (kept.record[i] != lean.record[i]) ++differ;
+            if (kept.record[i] == 0 || kept.record[i] != lean.record[i]) continue;
+            ++hits;
+            if (kept.windowDepth[i] != lean.windowDepth[i] || kept.normalWC[i] != lean.normalWC[i] ||
+                kept.hitGC[i] != lean.hitGC[i])
+              ++differ;
+          }
+          EXPECT_EQ(differ, 0u);
+          EXPECT_GT(hits, masked ? 200u : 600u);
+          compared += hits;
+        }
+  EXPECT_GT(compared, 100000u);
 }
 
 // Tile bins hold each rectangle in every tile it touches, in index order,
