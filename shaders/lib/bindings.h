@@ -25,7 +25,8 @@
 #define TG_UNIT_CPU_DEPTH 0          // cpu_gbuffer.frag: the CPU path's window depth,
 #define TG_UNIT_CPU_RECORD 1         // record index + 1 (0: empty),
 #define TG_UNIT_CPU_NORMAL 2         // WC normal,
-#define TG_UNIT_CPU_HIT_GC 3         // GC hit point (sign colours only)
+#define TG_UNIT_CPU_HIT_GC 3         // GC hit point (sign colours only);
+#define TG_UNIT_CPU_RUNS 4           // cast_runs.vert: the pixel runs those passes write
 #define TG_UNIT_AA_SAMPLE 9          // anti-aliasing (render/antialias_pass.h): a sample's lit colour,
 #define TG_UNIT_AA_FRAME_ID 10       // the frame's own ids (where edges are),
 #define TG_UNIT_AA_SUM 11            // the samples' sum,

@@ -1,6 +1,7 @@
 #include "render/cast_targets.h"
 
 #include <algorithm>
+#include <cstring>
 #include <limits>
 #include <stdexcept>
 #include <string>
@@ -8,6 +9,7 @@
 #include "render/camera_uniforms.h"
 #include "render/kind_programs.h"
 #include "render/shadow_pass.h"
+#include "render/tile_binning.h"
 #include "shaders/lib/bindings.h"
 
 namespace tg::render {
@@ -17,7 +19,7 @@ CastTargets::CastTargets(const gl::Api& gl, const gl::ShaderLibrary& lib, GLenum
       lib_(lib),
       normalFormat_(normalFormat),
       mapped_(mapped),
-      gbuffer_(gl, lib, {{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "cpu_gbuffer.frag"}}) {
+      gbuffer_(gl, lib, {{GL_VERTEX_SHADER, mapped ? "cast_runs.vert" : "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "cpu_gbuffer.frag"}}) {
   gl.CreateVertexArrays(1, &vao_);
   gl::checkError(gl, "CastTargets");
 }
@@ -26,6 +28,7 @@ CastTargets::~CastTargets() {
   if (reads_) gl_.DeleteSync(reads_);
   for (Target& t : view_) release(t);
   for (Target& t : light_) release(t);
+  release(runs_);
   gl_.DeleteVertexArrays(1, &vao_);
 }
 
@@ -91,13 +94,24 @@ void CastTargets::waitForReads() {
   reads_ = nullptr;
 }
 
-void CastTargets::fullScreen(const gl::Program& prog) const {
+void CastTargets::draw(const gl::Program& prog, int width, int height, std::span<const PixelRect> runs) {
+  if (!mapped_ && !runs.empty()) throw std::logic_error("CastTargets::draw: runs for targets a compute shader wrote");
   gl_.Enable(GL_DEPTH_TEST);
   gl_.DepthFunc(GL_ALWAYS);
   gl_.DepthMask(GL_TRUE);
   gl_.UseProgram(prog.id());
   gl_.BindVertexArray(vao_);
-  gl_.DrawArrays(GL_TRIANGLES, 0, 3);
+  if (!mapped_) {
+    gl_.DrawArrays(GL_TRIANGLES, 0, 3);
+  } else if (!runs.empty()) {
+    static_assert(sizeof(PixelRect) == 8);  // a GL_RG32UI texel: (x0 | y0 << 16, x1 | y1 << 16)
+    if (runs_.texels < runs.size()) resize(runs_, GL_RG32UI, 8, std::max(runs.size(), 2 * runs_.texels));
+    waitForReads();
+    std::memcpy(runs_.mapped, runs.data(), runs.size_bytes());
+    gl_.BindTextureUnit(TG_UNIT_CPU_RUNS, runs_.texture);
+    prog.set("uRunViewportDC", glm::vec2(float(width), float(height)));
+    gl_.DrawArrays(GL_TRIANGLES, 0, GLsizei(6 * runs.size()));
+  }
   gl_.DepthFunc(GL_GREATER);  // reversed Z, as the raster path leaves it for the context
 }
 
@@ -105,7 +119,7 @@ void CastTargets::setGlyphParams(const FrameParams& p, const FrameParams* old) c
 
 void CastTargets::setColorWindow(glm::dvec2 window) const { gbuffer_.set("uColorWindow", glm::vec2(window)); }
 
-void CastTargets::writeView(const Camera& cam, std::span<const RecordChunk> chunks) {
+void CastTargets::writeView(const Camera& cam, std::span<const RecordChunk> chunks, std::span<const PixelRect> runs) {
   setCameraUniforms(gbuffer_, cam);
   gl_.BindTextureUnit(TG_UNIT_CPU_DEPTH, view_[kDepth].texture);
   gl_.BindTextureUnit(TG_UNIT_CPU_RECORD, view_[kRecord].texture);
@@ -117,21 +131,22 @@ void CastTargets::writeView(const Camera& cam, std::span<const RecordChunk> chun
     if (c.scalars) gl_.BindBufferBase(GL_SHADER_STORAGE_BUFFER, TG_SSBO_COLOR_SCALARS, c.scalars);
     gbuffer_.set("uRecordBase", int(c.first));
     gbuffer_.set("uRecordCount", int(std::min<std::size_t>(c.count, std::numeric_limits<int>::max())));
-    fullScreen(gbuffer_);
+    draw(gbuffer_, cam.width, cam.height, runs);
   }
   fence();
   gl::checkError(gl_, "CastTargets::writeView");
 }
 
-void CastTargets::writeLight(int size, ShadowPass& shadow) {
+void CastTargets::writeLight(int size, ShadowPass& shadow, std::span<const PixelRect> runs) {
   if (!depth_)
     depth_ = std::make_unique<gl::Program>(
-        gl_, lib_, std::initializer_list<gl::StageSource>{{GL_VERTEX_SHADER, "fullscreen.vert"}, {GL_FRAGMENT_SHADER, "cpu_depth.frag"}});
+        gl_, lib_, std::initializer_list<gl::StageSource>{{GL_VERTEX_SHADER, mapped_ ? "cast_runs.vert" : "fullscreen.vert"},
+                                                          {GL_FRAGMENT_SHADER, "cpu_depth.frag"}});
   shadow.beginMap(size);
   gl_.BindTextureUnit(TG_UNIT_CPU_DEPTH, light_[0].texture);
   gl_.BindTextureUnit(TG_UNIT_CPU_RECORD, light_[1].texture);
   depth_->set("uCastWidth", size);
-  fullScreen(*depth_);
+  draw(*depth_, size, size, runs);
   fence();
   gl::checkError(gl_, "CastTargets::writeLight");
 }
@@ -139,7 +154,7 @@ void CastTargets::writeLight(int size, ShadowPass& shadow) {
 std::size_t CastTargets::bytes() const {
   return view_[kDepth].texels * 4 + view_[kRecord].texels * 4 +
          view_[kNormal].texels * (normalFormat_ == GL_RGB32F ? 12 : 16) + view_[kHitGC].texels * 16 +
-         light_[0].texels * 8;
+         light_[0].texels * 8 + runs_.texels * 8;
 }
 
 }  // namespace tg::render

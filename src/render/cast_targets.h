@@ -16,6 +16,7 @@
 namespace tg::render {
 
 class ShadowPass;
+struct PixelRect;  // render/tile_binning.h
 
 // Records [first, first + count) in their own buffers (records, and colour
 // scalars or 0): a path whose records pass one storage block
@@ -70,10 +71,13 @@ class CastTargets {
 
   // The view textures into the bound geometry framebuffer (what
   // GBuffer::beginGeometry left bound), over the records' chunks, one draw
-  // each; leaves the depth test at GL_GREATER, as the raster path.
-  void writeView(const Camera& cam, std::span<const RecordChunk> chunks);
-  // The light textures into shadow's map (ShadowPass::beginMap, which it calls).
-  void writeLight(int size, ShadowPass& shadow);
+  // each; leaves the depth test at GL_GREATER, as the raster path. Mapped
+  // targets write only the pixels of `runs` (tileRuns: where glyphs reach),
+  // the others the whole viewport (`runs` empty).
+  void writeView(const Camera& cam, std::span<const RecordChunk> chunks, std::span<const PixelRect> runs = {});
+  // The light textures into shadow's map (ShadowPass::beginMap, which it
+  // calls), over `runs` as writeView.
+  void writeLight(int size, ShadowPass& shadow, std::span<const PixelRect> runs = {});
   std::size_t bytes() const;
 
  private:
@@ -83,7 +87,8 @@ class CastTargets {
     void* mapped = nullptr;
     std::size_t texels = 0;
   };
-  void fullScreen(const gl::Program& prog) const;
+  // prog over `runs` (mapped targets) or the whole viewport.
+  void draw(const gl::Program& prog, int width, int height, std::span<const PixelRect> runs);
   void resize(Target& t, GLenum format, std::size_t texelBytes, std::size_t texels);
   void release(Target& t);
   void fence();
@@ -98,6 +103,7 @@ class CastTargets {
   Target view_[4];
   int width_ = 0, height_ = 0;
   Target light_[2];
+  Target runs_;  // mapped targets: the runs of the last draw, as cast_runs.vert reads them
   int lightSize_ = 0;
   GLsync reads_ = nullptr;  // after the last draw that read the targets
 };

@@ -182,7 +182,8 @@ std::uint64_t castGlyphs(std::span<const tensor::GlyphRecord> records, const Cam
   // box's half-diagonal for the march, grown by its tolerance as the march's
   // nearVC is, and for prisms), its rectangle with the sprites' margins and
   // its nearest depth. Both bound the exact sprite's, which the tile clips
-  // to once it sets the glyph up; 40% of the sprite's arithmetic.
+  // to once it sets the glyph up (2 M glyphs at 1920x1080: this pass 66 ms
+  // against the sprites' 110 on two cores).
   const float marchGrow = 1.0f + 4.0f * eps + 1e-5f;
   const float marginPx = (prisms ? 1.0f : 0.25f) + 1.0f / 64.0f;
   const glsl::vec2 marginNDC = 2.0f * marginPx / sh.uViewportDC;
@@ -479,7 +480,8 @@ void CpuGlyphs::drawView(const Camera& cam, const FrameParams& p, const GBuffer&
   target.beginGeometry();
   if (drawn_ == 0) return;
   const RecordChunk all{buffer_, scalars_, 0, records_.size()};
-  targets_.writeView(cam, std::span(&all, 1));
+  tileRuns(casts_.bins, w, h, runs_);
+  targets_.writeView(cam, std::span(&all, 1), runs_);
 }
 
 std::pair<glm::dvec3, glm::dvec3> CpuGlyphs::castersBoxWC(const FrameParams& p) const {
@@ -496,7 +498,8 @@ void CpuGlyphs::castShadowMap(const Camera& light, const FrameParams& p, ShadowP
                             static_cast<std::uint32_t*>(targets_.lightMapped(1)), nullptr, nullptr};
   if (glyphKind(p.glyph).draw == KindDraw::Blob) castBlobs(records_, light, p, false, threads_, casts_, blobs_);
   else castGlyphs(records_, light, p, false, threads_, casts_);
-  targets_.writeLight(light.width, shadow);
+  tileRuns(casts_.bins, light.width, light.height, runs_);
+  targets_.writeLight(light.width, shadow, runs_);
 }
 
 void CpuGlyphs::drawShadowCasters(const Camera& light, const FrameParams& p, ShadowPass& shadow) {

@@ -151,6 +151,7 @@ class CpuGlyphs final : public GlyphPath {
   std::vector<std::uint32_t> centreRecord_;
   glm::dmat4 centreView_{0.0};
   std::vector<BlobCandidate> blobs_;  // blob frames' set-up, kept between frames
+  std::vector<PixelRect> runs_;       // the last frame's tiles that glyphs reach (tileRuns)
   GLuint buffer_ = 0, scalars_ = 0;  // scalars_: ColorMode::Array's values, by record
   int threads_;
   std::uint64_t drawn_ = 0;

@@ -72,4 +72,23 @@ void binToTiles(std::span<const PixelRect> rects, int width, int height, int par
   });
 }
 
+void tileRuns(const TileBins& bins, int width, int height, std::vector<PixelRect>& runs) {
+  runs.clear();
+  for (int ty = 0; ty < bins.tilesY; ++ty)
+    for (int tx = 0; tx < bins.tilesX;) {
+      auto holds = [&](int x) {
+        const std::size_t t = std::size_t(ty) * std::size_t(bins.tilesX) + std::size_t(x);
+        return bins.start[t] != bins.start[t + 1];
+      };
+      if (!holds(tx)) {
+        ++tx;
+        continue;
+      }
+      const int first = tx;
+      while (tx < bins.tilesX && holds(tx)) ++tx;
+      runs.push_back({std::uint16_t(first * kTilePx), std::uint16_t(ty * kTilePx),
+                      std::uint16_t(std::min(width, tx * kTilePx) - 1), std::uint16_t(std::min(height, (ty + 1) * kTilePx) - 1)});
+    }
+}
+
 }  // namespace tg::render

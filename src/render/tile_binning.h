@@ -98,4 +98,11 @@ struct TileBins {
 // std::length_error past 2^32 - 1 tile entries.
 void binToTiles(std::span<const PixelRect> rects, int width, int height, int parts, TileBins& bins);
 
+// The pixels of the tiles that hold an item, as rectangles: per row of
+// tiles, each run of consecutive such tiles, within the width x height
+// viewport the bins were made for; rows bottom first. What the CPU path
+// writes into GL's targets (shaders/cast_runs.vert), so that the background
+// costs no fragments.
+void tileRuns(const TileBins& bins, int width, int height, std::vector<PixelRect>& runs);
+
 }  // namespace tg::render

@@ -228,3 +228,42 @@ TEST(CpuCasts, TileBinsHoldEachRectangleInOrder) {
     }
   }
 }
+
+// The runs the CPU path writes into GL's targets cover each pixel of a
+// tile that holds an item once, and no other pixel, at sizes that are and
+// are not whole tiles.
+TEST(CpuCasts, TileRunsCoverExactlyTheTilesThatHoldItems) {
+  const std::vector<render::PixelRect> rects = {{0, 0, 0, 0}, {40, 10, 60, 12}, {15, 30, 16, 69}, {99, 60, 99, 69},
+                                                render::kNoPixels, {70, 0, 70, 0}};
+  for (const auto& [w, h] : {std::pair{100, 70}, std::pair{96, 64}}) {
+    std::vector<render::PixelRect> clipped;
+    for (render::PixelRect r : rects)
+      if (r.x0 < w && r.y0 < h)
+        clipped.push_back({r.x0, r.y0, std::uint16_t(std::min<int>(r.x1, w - 1)), std::uint16_t(std::min<int>(r.y1, h - 1))});
+      else if (r.x0 > r.x1)
+        clipped.push_back(r);
+    render::TileBins b;
+    render::binToTiles(clipped, w, h, 2, b);
+    std::vector<render::PixelRect> runs;
+    render::tileRuns(b, w, h, runs);
+    std::vector<int> covered(std::size_t(w) * std::size_t(h), 0);
+    for (const render::PixelRect& r : runs) {
+      ASSERT_LE(r.x0, r.x1);
+      ASSERT_LE(r.y0, r.y1);
+      ASSERT_LT(r.x1, w);
+      ASSERT_LT(r.y1, h);
+      for (int y = r.y0; y <= r.y1; ++y)
+        for (int x = r.x0; x <= r.x1; ++x) ++covered[std::size_t(y) * std::size_t(w) + std::size_t(x)];
+    }
+    std::size_t held = 0;
+    for (int y = 0; y < h; ++y)
+      for (int x = 0; x < w; ++x) {
+        const std::size_t t = std::size_t(y / render::kTilePx) * std::size_t(b.tilesX) + std::size_t(x / render::kTilePx);
+        const int want = b.start[t] != b.start[t + 1] ? 1 : 0;
+        held += std::size_t(want);
+        EXPECT_EQ(covered[std::size_t(y) * std::size_t(w) + std::size_t(x)], want) << x << ", " << y << " of " << w << " x " << h;
+      }
+    EXPECT_GT(held, 5u * 256u);
+    EXPECT_LT(held, std::size_t(w) * std::size_t(h) / 2);
+  }
+}
