@@ -103,8 +103,8 @@ float blobField(vec4 shape, vec3 q, float boundGauge, bool withGrad, TG_OUT(vec3
       gradGC = vec3(0.0f);
       return 0.0f;
     }
-    vec3 grad;
-    float gauge = superquadricGauge(vec3(shape), q, grad);
+    vec3 grad = vec3(0.0f);
+    float gauge = withGrad ? superquadricGauge(vec3(shape), q, grad) : superquadricGaugeValue(vec3(shape), q);
     g2 = gauge * gauge;
     dg2 = 2.0f * gauge * grad;
   }

@@ -74,10 +74,7 @@ bool blobIsQuadricShape(const glsl::vec4& shape) { return shape.x == 1.0f && sha
 float gaugeMinimum(glsl::Shaders& sh, const glsl::vec4& shape, const Span& s) {
   constexpr float r = 0.618034f;
   float a = s.t0, b = s.t1;
-  auto g = [&](float t) {
-    glsl::vec3 unused;
-    return sh.superquadricGauge(glsl::vec3(shape), s.q0 + (t - s.tc) * s.dq, unused);
-  };
+  auto g = [&](float t) { return sh.superquadricGaugeValue(glsl::vec3(shape), s.q0 + (t - s.tc) * s.dq); };
   float c = b - r * (b - a), d = a + r * (b - a), gc = g(c), gd = g(d);
   for (int k = 0; k < 9; ++k) {
     if (gc < gd) {
