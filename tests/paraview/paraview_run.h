@@ -130,9 +130,9 @@ inline std::string skipReason() {
 inline CmdResult runPvbatch(const std::string& args, const fs::path& scratch, int ranks = 0) {
   // Under a display ctest was given (.ci/run's one Xvfb) the first try
   // starts no server.
-  const auto launcher = [ranks](bool ownServer) {
-    std::string l = std::string("timeout -k 10 ") + (ranks > 0 ? "40" : "120") +
-                    " env PYTHONPATH=" + TG_PARAVIEW_PYTHONPATH +
+  const int limitS = ranks > 0 ? 40 : 120, retries = ranks > 0 ? 4 : 2;
+  const auto launcher = [ranks, limitS](bool ownServer) {
+    std::string l = "timeout -k 10 " + std::to_string(limitS) + " env PYTHONPATH=" + TG_PARAVIEW_PYTHONPATH +
                     (ownServer ? " xvfb-run -a -s '-screen 0 640x480x24' " : " ");
     if (ranks > 0) l += "mpiexec --allow-run-as-root --oversubscribe -n " + std::to_string(ranks) + " ";
     l += "pvbatch " TG_PARAVIEW_SCRIPT " --plugin " TG_PARAVIEW_PLUGIN " --input " + pvKitten();
@@ -143,7 +143,7 @@ inline CmdResult runPvbatch(const std::string& args, const fs::path& scratch, in
                            c.err.find("bad X server connection") != std::string::npos || c.code == 124);
   };
   CmdResult r = tg::test::runBinary(args, scratch, launcher(std::getenv("DISPLAY") == nullptr));
-  for (int retry = 0; retry < (ranks > 0 ? 4 : 2) && raced(r); ++retry) r = tg::test::runBinary(args, scratch, launcher(true));
+  for (int retry = 0; retry < retries && raced(r); ++retry) r = tg::test::runBinary(args, scratch, launcher(true));
   return r;
 }
 
